@@ -1,0 +1,80 @@
+# ellvor — build, test, run, benchmark. See README.md.
+#   make run       install missing Debian packages, build, run the main job on the bundled example
+#   make test      install missing packages, build and run the whole test suite
+#   make sanitize  the test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
+#   make bench     build and run the benchmark programs under experiments/
+
+BUILD    ?= build
+CXX      ?= g++
+OPT      ?= -O2 -g
+SANITIZE ?=
+CXXFLAGS := -std=c++17 $(OPT) $(SANITIZE) -Wall -Wextra -Wno-unused-parameter -I. -I/usr/include/eigen3 -MMD -MP
+LDLIBS   := -lflint-arb -lflint -lmpfr -lgmp
+JOBS     ?= 2
+
+LIB_SRC   := $(wildcard util/*.cpp sites/*.cpp subdivision/*.cpp exact/*.cpp predicates/*.cpp graph/*.cpp)
+CLI_SRC   := $(wildcard cli/*.cpp)
+TEST_SRC  := $(wildcard tests/*.cpp tests/*/*.cpp)
+BENCH_SRC := $(wildcard experiments/*.cpp)
+
+LIB_OBJ   := $(LIB_SRC:%.cpp=$(BUILD)/obj/%.o)
+CLI_OBJ   := $(CLI_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJ  := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
+LIBRARY   := $(BUILD)/libellvor.a
+ELLVOR    := $(BUILD)/ellvor
+TESTS     := $(BUILD)/ellvor_tests
+BENCHES   := $(BENCH_SRC:experiments/%.cpp=$(BUILD)/experiments/%)
+DEPS_STAMP := $(BUILD)/.deps-installed
+
+.PHONY: all deps run test check-tests sanitize bench clean
+.DEFAULT_GOAL := all
+
+all: $(ELLVOR) $(TESTS)
+
+# Installs the Debian 12 packages ellvor needs (only the missing ones).
+deps: $(DEPS_STAMP)
+$(DEPS_STAMP): scripts/install-deps.sh
+	@bash scripts/install-deps.sh
+	@mkdir -p $(BUILD) && touch $@
+
+$(BUILD)/obj/%.o: %.cpp | $(DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+# The test and CLI objects need the path of the ellvor binary of this build.
+$(TEST_OBJ): CXXFLAGS += -DELLVOR_BINARY='"$(abspath $(ELLVOR))"' -DELLVOR_SOURCE_DIR='"$(abspath .)"'
+
+$(LIBRARY): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(ELLVOR): $(CLI_OBJ) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) $^ -o $@ $(LDLIBS)
+
+$(TESTS): $(TEST_OBJ) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) $^ -o $@ $(LDLIBS)
+
+$(BUILD)/experiments/%: experiments/%.cpp $(LIBRARY)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -DNDEBUG -frounding-math $< $(LIBRARY) -o $@ $(LDLIBS)
+
+run: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR)
+	$(ELLVOR) check data/example.ell --describe
+
+test: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS)
+	@bash tests/run_suite.sh $(TESTS)
+
+sanitize: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory BUILD=build-sanitize OPT="-O1 -g" \
+	    SANITIZE="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" test
+
+bench: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES)
+	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
+
+clean:
+	rm -rf build build-sanitize
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d)

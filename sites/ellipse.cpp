@@ -1,0 +1,131 @@
+#include "sites/ellipse.hpp"
+
+#include "util/error.hpp"
+
+#include <arb_fmpz_poly.h>
+#include <flint/fmpq_poly.h>
+
+namespace ellvor {
+
+namespace {
+
+// Integer polynomials (X, Y, W) from rational coefficient lists, scaled by the
+// least common multiple of all denominators (a common factor of a homogeneous
+// point changes nothing).
+void scale_to_integers(const std::array<std::array<Rational, 3>, 3>& rational_coeffs,
+                       std::array<IntPolynomial*, 3> out) {
+    Integer lcm(1);
+    for (const auto& poly : rational_coeffs)
+        for (const auto& c : poly) fmpz_lcm(lcm.get(), lcm.get(), fmpq_denref(c.get()));
+    for (int n = 0; n < 3; ++n) {
+        IntPolynomial p;
+        for (int i = 0; i < 3; ++i) {
+            Rational scaled = rational_coeffs[n][i] * Rational(lcm);
+            p.set_coeff(i, scaled.numerator());
+        }
+        *out[n] = p;
+    }
+}
+
+IntPolynomial tangent_component(const IntPolynomial& P, const IntPolynomial& W) {
+    // P' W - P W'
+    IntPolynomial dP, dW, a, b, r;
+    fmpz_poly_derivative(dP.get(), P.get());
+    fmpz_poly_derivative(dW.get(), W.get());
+    fmpz_poly_mul(a.get(), dP.get(), W.get());
+    fmpz_poly_mul(b.get(), P.get(), dW.get());
+    fmpz_poly_sub(r.get(), a.get(), b.get());
+    return r;
+}
+
+}  // namespace
+
+Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
+    : a_(std::move(a)), b_(std::move(b)), w_(std::move(w)), xc_(std::move(xc)), yc_(std::move(yc)) {
+    if (a_.sign() <= 0) throw Error("semi-axis a must be positive, got " + a_.str());
+    if (b_.sign() <= 0) throw Error("semi-axis b must be positive, got " + b_.str());
+    const Rational one(1), two(2);
+    const Rational w2 = w_ * w_;
+    cos_ = (one - w2) / (one + w2);
+    sin_ = two * w_ / (one + w2);
+
+    // Coefficients (constant, t, t^2):
+    //   X = xc (1 + t^2) + a cos (1 - t^2) - 2 b sin t
+    //   Y = yc (1 + t^2) + a sin (1 - t^2) + 2 b cos t
+    //   W = 1 + t^2
+    const Rational ac = a_ * cos_, as = a_ * sin_;
+    std::array<std::array<Rational, 3>, 3> coeffs = {{
+        {xc_ + ac, -(two * b_ * sin_), xc_ - ac},
+        {yc_ + as, two * b_ * cos_, yc_ - as},
+        {one, Rational(0), one},
+    }};
+    scale_to_integers(coeffs, {&X_, &Y_, &W_});
+    Tx_ = tangent_component(X_, W_);
+    Ty_ = tangent_component(Y_, W_);
+
+    // b^2 xi^2 + a^2 eta^2 - a^2 b^2 with xi = c dx + s dy, eta = -s dx + c dy.
+    const Rational a2 = a_ * a_, b2 = b_ * b_;
+    const Rational& c = cos_;
+    const Rational& s = sin_;
+    Rational A = b2 * c * c + a2 * s * s;
+    Rational B = (b2 - a2) * c * s;
+    Rational C = b2 * s * s + a2 * c * c;
+    Rational D = -(A * xc_ + B * yc_);
+    Rational E = -(B * xc_ + C * yc_);
+    Rational F = A * xc_ * xc_ + two * B * xc_ * yc_ + C * yc_ * yc_ - a2 * b2;
+    conic_ = {A, B, C, D, E, F};
+}
+
+Ellipse Ellipse::circle(const Rational& x, const Rational& y, const Rational& r) {
+    return Ellipse(r, r, Rational(0), x, y);
+}
+
+Point Ellipse::point_at(const Rational& t) const {
+    Rational x, y, w;
+    fmpz_poly_evaluate_fmpq(x.get(), X_.get(), t.get());
+    fmpz_poly_evaluate_fmpq(y.get(), Y_.get(), t.get());
+    fmpz_poly_evaluate_fmpq(w.get(), W_.get(), t.get());
+    return {x / w, y / w};
+}
+
+Point Ellipse::i_point() const { return {xc_ - a_ * cos_, yc_ - a_ * sin_}; }
+
+BallPoint Ellipse::point_at(const Ball& t, long prec) const {
+    BallPoint p;
+    Ball w;
+    arb_fmpz_poly_evaluate_arb(p.x.get(), X_.get(), t.get(), prec);
+    arb_fmpz_poly_evaluate_arb(p.y.get(), Y_.get(), t.get(), prec);
+    arb_fmpz_poly_evaluate_arb(w.get(), W_.get(), t.get(), prec);
+    arb_div(p.x.get(), p.x.get(), w.get(), prec);
+    arb_div(p.y.get(), p.y.get(), w.get(), prec);
+    return p;
+}
+
+Rational Ellipse::conic_value(const Rational& x, const Rational& y) const {
+    const auto& k = conic_;
+    const Rational two(2);
+    return k[0] * x * x + two * k[1] * x * y + k[2] * y * y + two * k[3] * x + two * k[4] * y + k[5];
+}
+
+int Ellipse::side_of_point(const Rational& x, const Rational& y) const { return conic_value(x, y).sign(); }
+
+std::string Ellipse::str() const {
+    return a_.str() + " " + b_.str() + " " + w_.str() + " " + xc_.str() + " " + yc_.str();
+}
+
+bool operator==(const Ellipse& p, const Ellipse& q) {
+    return p.a_ == q.a_ && p.b_ == q.b_ && p.w_ == q.w_ && p.xc_ == q.xc_ && p.yc_ == q.yc_;
+}
+
+bool Ellipse::same_shape_and_place(const Ellipse& o) const {
+    // Two ellipses are the same point set iff their normalized conics agree.
+    if (xc_ != o.xc_ || yc_ != o.yc_) return false;
+    // Both conics have F-part normalized by the same construction scale only
+    // when a^2 b^2 agree; compare the quadratic forms divided by a^2 b^2.
+    const Rational s1 = a_ * a_ * b_ * b_, s2 = o.a_ * o.a_ * o.b_ * o.b_;
+    for (int i = 0; i < 3; ++i)
+        if (conic_[i] / s1 != o.conic_[i] / s2) return false;
+    return true;
+}
+
+}  // namespace ellvor

@@ -1,0 +1,86 @@
+// An ellipse site with exact rational parameters (DESIGN.md): semi-axes a, b > 0,
+// rotation w = tan(omega/2) of the a-axis, center (xc, yc).
+//
+// Boundary (seed, section 2), with t = tan(theta/2):
+//   P(t) = C + a cos(theta) u + b sin(theta) v,   u = (cos w, sin w), v = (-sin w, cos w),
+//   cos(theta) = (1 - t^2)/(1 + t^2),  sin(theta) = 2t/(1 + t^2).
+// We keep it homogeneous: P(t) = (X(t) : Y(t) : W(t)) with integer polynomials of
+// degree 2 and W = L (1 + t^2). The point at t = infinity (theta = pi), the
+// "i-point" C - a u, is a real boundary point; parameters live on the projective
+// line and every routine that walks the boundary must treat t = infinity.
+#pragma once
+
+#include "util/flint_types.hpp"
+
+#include <array>
+#include <string>
+
+namespace ellvor {
+
+struct Point {
+    Rational x, y;
+};
+
+struct BallPoint {
+    Ball x, y;
+};
+
+class Ellipse {
+public:
+    // Throws Error unless a > 0 and b > 0.
+    Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc);
+    // A circle of radius r centered at (x, y).
+    static Ellipse circle(const Rational& x, const Rational& y, const Rational& r);
+
+    const Rational& a() const { return a_; }
+    const Rational& b() const { return b_; }
+    const Rational& w() const { return w_; }
+    const Rational& xc() const { return xc_; }
+    const Rational& yc() const { return yc_; }
+    Point center() const { return {xc_, yc_}; }
+    bool is_circle() const { return a_ == b_; }
+    // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
+    const Rational& cos_rotation() const { return cos_; }
+    const Rational& sin_rotation() const { return sin_; }
+
+    // Homogeneous parametrization (X : Y : W), integer polynomials in t.
+    const IntPolynomial& X() const { return X_; }
+    const IntPolynomial& Y() const { return Y_; }
+    const IntPolynomial& W() const { return W_; }
+    // Tangent direction (dX/dt W - X dW/dt, dY/dt W - Y dW/dt), degree <= 2.
+    const IntPolynomial& tangent_x() const { return Tx_; }
+    const IntPolynomial& tangent_y() const { return Ty_; }
+
+    // Boundary point at a rational parameter, exactly.
+    Point point_at(const Rational& t) const;
+    // The i-point, P(infinity) = C - a u.
+    Point i_point() const;
+    // Boundary point at a ball parameter (finite), at precision prec.
+    BallPoint point_at(const Ball& t, long prec) const;
+
+    // Implicit conic A x^2 + 2B xy + C y^2 + 2D x + 2E y + F, scaled so that its
+    // value is negative inside: {A, B, C, D, E, F} = b^2 xi^2 + a^2 eta^2 - a^2 b^2
+    // in the ellipse's own frame (xi, eta).
+    const std::array<Rational, 6>& conic() const { return conic_; }
+    // Value of the conic at (x, y).
+    Rational conic_value(const Rational& x, const Rational& y) const;
+    // -1 strictly inside, 0 on the boundary, +1 strictly outside.
+    int side_of_point(const Rational& x, const Rational& y) const;
+
+    // "a b w xc yc" exactly as read (lossless).
+    std::string str() const;
+
+    friend bool operator==(const Ellipse& p, const Ellipse& q);
+    friend bool operator!=(const Ellipse& p, const Ellipse& q) { return !(p == q); }
+    // Same point set (a circle's rotation does not matter; swapped axes with a
+    // quarter turn are the same ellipse).
+    bool same_shape_and_place(const Ellipse& o) const;
+
+private:
+    Rational a_, b_, w_, xc_, yc_;
+    Rational cos_, sin_;
+    IntPolynomial X_, Y_, W_, Tx_, Ty_;
+    std::array<Rational, 6> conic_;
+};
+
+}  // namespace ellvor

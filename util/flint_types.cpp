@@ -1,0 +1,74 @@
+#include "util/flint_types.hpp"
+
+#include "util/error.hpp"
+
+#include <flint/flint.h>
+
+#include <memory>
+
+namespace ellvor {
+
+namespace {
+// FLINT returns strings allocated with flint_malloc; this owns one.
+struct FlintString {
+    char* s;
+    ~FlintString() { flint_free(s); }
+};
+}  // namespace
+
+std::string Integer::str() const {
+    FlintString s{fmpz_get_str(nullptr, 10, v_)};
+    return s.s;
+}
+
+long Rational::bits() const {
+    long n = fmpz_bits(fmpq_numref(v_));
+    long d = fmpz_bits(fmpq_denref(v_));
+    return n > d ? n : d;
+}
+
+double Rational::to_double() const {
+    arf_t x;
+    arf_init(x);
+    arf_set_fmpz(x, fmpq_numref(v_));
+    arf_div_fmpz(x, x, fmpq_denref(v_), 64, ARF_RND_NEAR);
+    double d = arf_get_d(x, ARF_RND_NEAR);
+    arf_clear(x);
+    return d;
+}
+
+std::string Rational::str() const {
+    FlintString s{fmpq_get_str(nullptr, 10, v_)};
+    return s.s;
+}
+
+Rational operator/(const Rational& a, const Rational& b) {
+    if (b.is_zero()) throw Error("division by zero");
+    Rational r;
+    fmpq_div(r.get(), a.get(), b.get());
+    return r;
+}
+
+IntPolynomial::IntPolynomial(std::initializer_list<long> coeffs_low_first) {
+    fmpz_poly_init(v_);
+    long i = 0;
+    for (long c : coeffs_low_first) fmpz_poly_set_coeff_si(v_, i++, c);
+}
+
+int IntPolynomial::sign_at(const Rational& x) const {
+    Rational y;
+    fmpz_poly_evaluate_fmpq(y.get(), v_, x.get());
+    return y.sign();
+}
+
+std::string IntPolynomial::str() const {
+    FlintString s{fmpz_poly_get_str_pretty(v_, "x")};
+    return s.s;
+}
+
+std::string Ball::str(long digits) const {
+    FlintString s{arb_get_str(v_, digits, 0)};
+    return s.s;
+}
+
+}  // namespace ellvor
