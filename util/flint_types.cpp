@@ -72,3 +72,15 @@ std::string Ball::str(long digits) const {
 }
 
 }  // namespace ellvor
+
+namespace ellvor {
+void ball_endpoints(const Ball& b, Rational& lo, Rational& hi) {
+    arf_t x;
+    arf_init(x);
+    arb_get_lbound_arf(x, b.get(), ARF_PREC_EXACT);
+    arf_get_fmpq(lo.get(), x);
+    arb_get_ubound_arf(x, b.get(), ARF_PREC_EXACT);
+    arf_get_fmpq(hi.get(), x);
+    arf_clear(x);
+}
+}  // namespace ellvor

@@ -144,3 +144,8 @@ private:
 };
 
 }  // namespace ellvor
+
+namespace ellvor {
+// Rational endpoints [lo, hi] of a ball (exact: Arb's endpoints are dyadic).
+void ball_endpoints(const Ball& b, Rational& lo, Rational& hi);
+}  // namespace ellvor

@@ -1,0 +1,20 @@
+// kappa2 (CGAL Vertex_conflict_2 with three sites): the infinite Voronoi
+// vertex of the ordered pair (E1, E2) is the external bitangent line L whose
+// tangency points appear in the order E1, E2, infinity along L; its "disk" H
+// is the open half-plane beyond L (E1 and E2 lie on the other side, on the
+// right of L directed from E1's to E2's tangency point).
+#pragma once
+
+#include "predicates/stage.hpp"
+#include "sites/ellipse.hpp"
+
+namespace ellvor {
+
+// NEGATIVE (-1): Q meets the open half-plane H (conflict); POSITIVE (+1):
+// it does not. Never ZERO: when Q only touches L from the sites' side, the
+// tie is broken as in CGAL: NEGATIVE iff Q's contact point lies strictly
+// between the contact points of E1 and E2.
+// Requires E1, E2 separated or externally tangent (throws Error otherwise).
+SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q);
+
+}  // namespace ellvor

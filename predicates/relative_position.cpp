@@ -1,0 +1,99 @@
+#include "predicates/relative_position.hpp"
+
+#include "sites/ellipse_polynomials.hpp"
+
+#include <flint/fmpz_poly_factor.h>
+
+#include <algorithm>
+
+namespace ellvor {
+
+const char* relative_position_name(RelativePosition p) {
+    switch (p) {
+        case RelativePosition::separated: return "separated";
+        case RelativePosition::externally_tangent: return "externally-tangent";
+        case RelativePosition::intersecting: return "intersecting";
+        case RelativePosition::first_inside: return "first-inside";
+        case RelativePosition::first_inside_tangent: return "first-inside-tangent";
+        case RelativePosition::second_inside: return "second-inside";
+        case RelativePosition::second_inside_tangent: return "second-inside-tangent";
+        case RelativePosition::identical: return "identical";
+    }
+    return "?";
+}
+
+namespace {
+
+// The intersection quartic of E1 against E2 has formal degree 4 in t; a lower
+// actual degree means the i-point of E1 lies on E2, a root at t = infinity.
+constexpr long kIntersectionFormalDegree = 4;
+
+// Where P1(t) meets E2: real roots with odd multiplicity are crossings, roots
+// with even multiplicity are touchings (the sign of E2's conic along E1
+// changes exactly at the former).
+struct ContactPoints {
+    bool crossing = false;
+    bool touching = false;
+};
+
+ContactPoints contact_points(const IntPolynomial& quartic) {
+    ContactPoints c;
+    const long at_infinity = kIntersectionFormalDegree - quartic.degree();
+    if (at_infinity > 0) (at_infinity % 2 ? c.crossing : c.touching) = true;
+    fmpz_poly_factor_t f;
+    fmpz_poly_factor_init(f);
+    fmpz_poly_factor_squarefree(f, quartic.get());
+    for (slong i = 0; i < f->num; ++i) {
+        if (fmpz_poly_degree(f->p + i) < 1) continue;
+        // Exact root count of a squarefree factor of degree <= 4 (cheap here).
+        if (fmpz_poly_num_real_roots(f->p + i) > 0) (f->exp[i] % 2 ? c.crossing : c.touching) = true;
+    }
+    fmpz_poly_factor_clear(f);
+    return c;
+}
+
+// Sign of E2's conic at some boundary point of E1 where it does not vanish:
+// -1 if that point is inside E2, +1 outside. The quartic has at most four
+// real roots, so one of five rational parameters is not a root.
+int side_of_boundary(const IntPolynomial& quartic) {
+    for (long t = 0; t <= kIntersectionFormalDegree; ++t) {
+        int s = quartic.sign_at(Rational(t));
+        if (s != 0) return s;
+    }
+    return 0;  // unreachable for a nonzero quartic
+}
+
+// Exact filter: the circumscribed circles (radius max(a, b)) are apart.
+bool bounding_circles_apart(const Ellipse& e1, const Ellipse& e2) {
+    const Rational r = std::max(e1.a(), e1.b()) + std::max(e2.a(), e2.b());
+    const Rational dx = e1.xc() - e2.xc(), dy = e1.yc() - e2.yc();
+    return dx * dx + dy * dy > r * r;
+}
+
+}  // namespace
+
+RelativePositionResult relative_position_decided(const Ellipse& e1, const Ellipse& e2) {
+    if (bounding_circles_apart(e1, e2)) return {RelativePosition::separated, Stage::filter};
+    const IntPolynomial i12 = intersection_quartic(e1, e2);
+    if (i12.is_zero()) return {RelativePosition::identical, Stage::exact};
+    const ContactPoints contact = contact_points(i12);
+    if (contact.crossing) return {RelativePosition::intersecting, Stage::exact};
+    // No crossing: E1 is inside E2 or not, judged away from the contacts.
+    const bool tangent = contact.touching;
+    if (side_of_boundary(i12) < 0)
+        return {tangent ? RelativePosition::first_inside_tangent : RelativePosition::first_inside, Stage::exact};
+    if (side_of_boundary(intersection_quartic(e2, e1)) < 0)
+        return {tangent ? RelativePosition::second_inside_tangent : RelativePosition::second_inside, Stage::exact};
+    return {tangent ? RelativePosition::externally_tangent : RelativePosition::separated, Stage::exact};
+}
+
+bool is_hidden(const Ellipse& p, const Ellipse& q) {
+    switch (relative_position(p, q)) {
+        case RelativePosition::second_inside:
+        case RelativePosition::second_inside_tangent:
+        case RelativePosition::identical: return true;
+        default: return false;
+    }
+}
+
+}  // namespace ellvor

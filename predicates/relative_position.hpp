@@ -1,0 +1,38 @@
+// Relative position of two ellipses (seed section 1; research digest 2.1),
+// decided exactly from the real roots of the intersection quartic and their
+// multiplicities, after an exact bounding-circle filter.
+#pragma once
+
+#include "predicates/stage.hpp"
+#include "sites/ellipse.hpp"
+
+namespace ellvor {
+
+enum class RelativePosition {
+    separated,              // disjoint closed sets, neither inside the other
+    externally_tangent,     // touching from outside (one or two contact points), no crossing
+    intersecting,           // the boundaries cross: not a valid pair of sites
+    first_inside,           // E1 strictly inside E2 (E1 is hidden by E2)
+    first_inside_tangent,   // E1 inside E2, boundaries touching
+    second_inside,          // E2 strictly inside E1 (E2 is hidden by E1)
+    second_inside_tangent,  // E2 inside E1, boundaries touching
+    identical,              // the same point set
+};
+
+const char* relative_position_name(RelativePosition p);
+
+struct RelativePositionResult {
+    RelativePosition position;
+    Stage stage;  // filter: bounding circles apart; exact: intersection quartic
+};
+
+RelativePositionResult relative_position_decided(const Ellipse& e1, const Ellipse& e2);
+inline RelativePosition relative_position(const Ellipse& e1, const Ellipse& e2) {
+    return relative_position_decided(e1, e2).position;
+}
+
+// CGAL's Is_hidden(p, q): q lies inside p, internal tangency and identical
+// sites included.
+bool is_hidden(const Ellipse& p, const Ellipse& q);
+
+}  // namespace ellvor

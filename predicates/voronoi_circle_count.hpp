@@ -1,0 +1,24 @@
+// How many Voronoi circles an ordered triple of sites has (research digest
+// 2.4): a circle externally tangent to all three with an empty open disk, its
+// tangency points counter-clockwise in the order E1, E2, E3 (the CCW circle)
+// or E1, E3, E2 (the CW circle). Decided from three kappa2 signs only.
+#pragma once
+
+#include "sites/ellipse.hpp"
+
+namespace ellvor {
+
+enum class VoronoiCircles {
+    none,      // neither orientation
+    ccw_only,  // only the circle of (E1, E2, E3)
+    cw_only,   // only the circle of (E1, E3, E2)
+    both,
+};
+
+const char* voronoi_circles_name(VoronoiCircles v);
+
+// Sites must be pairwise separated or externally tangent; a hidden pair gives
+// none.
+VoronoiCircles voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+
+}  // namespace ellvor

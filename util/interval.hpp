@@ -1,0 +1,62 @@
+// Closed intervals of doubles with outward rounding, for the fast filters.
+// Each operation is computed in round-to-nearest and then widened by one ulp
+// on each side, which contains the exact result (the rounding error of one
+// IEEE operation is at most half an ulp). A filter built on these intervals
+// therefore decides only what is provably right, and says "undecided" when an
+// interval straddles zero.
+#pragma once
+
+#include "util/flint_types.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace ellvor {
+
+struct Interval {
+    double lo = 0, hi = 0;
+
+    static double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+    static double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+
+    Interval() = default;
+    // An exact double.
+    explicit Interval(double x) : lo(x), hi(x) {}
+    Interval(double l, double h) : lo(l), hi(h) {}
+    // An enclosure of a real known to within one ulp of x (e.g. a correctly
+    // rounded conversion).
+    static Interval around(double x) { return {down(x), up(x)}; }
+
+    friend Interval operator+(Interval a, Interval b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
+    friend Interval operator-(Interval a, Interval b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }
+    Interval operator-() const { return {-hi, -lo}; }
+    friend Interval operator*(Interval a, Interval b) {
+        const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+        return {down(std::fmin(std::fmin(p1, p2), std::fmin(p3, p4))),
+                up(std::fmax(std::fmax(p1, p2), std::fmax(p3, p4)))};
+    }
+    // Division by an interval that does not contain zero (callers check).
+    friend Interval operator/(Interval a, Interval b) {
+        const double q1 = a.lo / b.lo, q2 = a.lo / b.hi, q3 = a.hi / b.lo, q4 = a.hi / b.hi;
+        return {down(std::fmin(std::fmin(q1, q2), std::fmin(q3, q4))),
+                up(std::fmax(std::fmax(q1, q2), std::fmax(q3, q4)))};
+    }
+    Interval square() const {
+        if (lo >= 0) return {down(lo * lo), up(hi * hi)};
+        if (hi <= 0) return {down(hi * hi), up(lo * lo)};
+        return {0, up(std::fmax(lo * lo, hi * hi))};
+    }
+    // Square root of the nonnegative part.
+    Interval sqrt() const { return {lo > 0 ? down(std::sqrt(lo)) : 0.0, up(std::sqrt(std::fmax(hi, 0.0)))}; }
+
+    bool contains_zero() const { return lo <= 0 && hi >= 0; }
+    bool positive() const { return lo > 0; }
+    bool negative() const { return hi < 0; }
+    bool finite() const { return std::isfinite(lo) && std::isfinite(hi); }
+    double mid() const { return 0.5 * (lo + hi); }
+};
+
+// An enclosure of a rational (conversion within one ulp, then widened).
+inline Interval enclose(const Rational& q) { return Interval::around(q.to_double()); }
+
+}  // namespace ellvor
