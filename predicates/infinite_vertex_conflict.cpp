@@ -4,7 +4,12 @@
 #include "sites/ellipse_polynomials.hpp"
 #include "util/error.hpp"
 
+#include "util/interval.hpp"
+
 #include <arb_fmpz_poly.h>
+
+#include <cmath>
+#include <vector>
 
 namespace ellvor {
 
@@ -13,6 +18,124 @@ namespace {
 constexpr long kBitangentFormalDegree = 4;
 constexpr long kIntersectionFormalDegree = 4;
 constexpr long kStartPrecision = 64;
+
+// ---------------------------------------------------------------- filter --
+//
+// With a direction n (not necessarily unit), the support function of an
+// ellipse is h(n) = n.C + sqrt(a^2 (n.u)^2 + b^2 (n.v)^2): the sites' common
+// external tangent lines are the directions where h1 = h2, and Q meets the
+// open half-plane beyond L iff h_Q(n) > h_1(n). The filter finds the right
+// root in floating point, then proves with interval arithmetic that a tiny
+// parameter interval holds exactly one root (a sign change: there are only two
+// external tangents), that it is the tangent with the sites on the right, and
+// the sign of h_Q - h_1 over the whole interval.
+
+// Support value h(n) and its derivative along the unit circle, h'(phi) =
+// S(phi) . (-sin phi, cos phi) with S the support point, in plain doubles.
+struct SupportDouble {
+    double value, slope;
+};
+SupportDouble support_double(const Ellipse::Enclosure& k, double c, double s) {
+    const double cw = k.cos.mid(), sw = k.sin.mid(), a2 = k.a.mid() * k.a.mid(), b2 = k.b.mid() * k.b.mid();
+    const double nu = c * cw + s * sw, nv = s * cw - c * sw;
+    const double norm = std::sqrt(a2 * nu * nu + b2 * nv * nv);
+    const double lu = a2 * nu / norm, lv = b2 * nv / norm;
+    const double x = k.xc.mid() + cw * lu - sw * lv, y = k.yc.mid() + sw * lu + cw * lv;
+    return {c * k.xc.mid() + s * k.yc.mid() + norm, -x * s + y * c};
+}
+
+// Support value and support point of an ellipse, enclosed, for an enclosed
+// direction n.
+struct SupportEnclosure {
+    Interval value, x, y;
+};
+SupportEnclosure support_enclosure(const Ellipse::Enclosure& k, Interval nx, Interval ny) {
+    const Interval nu = nx * k.cos + ny * k.sin, nv = ny * k.cos - nx * k.sin;
+    const Interval a2 = k.a.square(), b2 = k.b.square();
+    const Interval norm = (a2 * nu.square() + b2 * nv.square()).sqrt();
+    const Interval lu = a2 * nu / norm, lv = b2 * nv / norm;  // local support point
+    const Interval x = k.xc + k.cos * lu - k.sin * lv, y = k.yc + k.sin * lu + k.cos * lv;
+    return {nx * k.xc + ny * k.yc + norm, x, y};
+}
+
+// The direction of angle phi in the rational chart n = +-(1 - tau^2, 2 tau),
+// |tau| <= 1, evaluated for an enclosed tau.
+struct Chart {
+    double sign;
+    Interval nx(Interval tau) const { return (Interval(1.0) - tau.square()) * Interval(sign); }
+    Interval ny(Interval tau) const { return Interval(2.0) * tau * Interval(sign); }
+};
+
+// +1 / -1 when proved, 0 when undecided.
+int filter_stage(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
+    const auto &k1 = e1.enclosure(), &k2 = e2.enclosure(), &kq = q.enclosure();
+    if (!(k1.a.finite() && k1.xc.finite() && k2.a.finite() && k2.xc.finite() && kq.a.finite() && kq.xc.finite()))
+        return 0;
+    auto f = [&](double phi) {
+        const double c = std::cos(phi), s = std::sin(phi);
+        const SupportDouble h1 = support_double(k1, c, s), h2 = support_double(k2, c, s);
+        return SupportDouble{h1.value - h2.value, h1.slope - h2.slope};
+    };
+    // Bracket the roots of h1 - h2 by sampling; refine each by Newton steps
+    // kept inside the bracket (bisection when a step leaves it).
+    constexpr int kSamples = 16;
+    std::vector<double> roots;
+    double prev_phi = -M_PI, prev = f(prev_phi).value;
+    for (int i = 1; i <= kSamples; ++i) {
+        const double phi = -M_PI + 2 * M_PI * i / kSamples, value = f(phi).value;
+        if ((prev < 0) != (value < 0)) {
+            double lo = prev_phi, hi = phi, x = 0.5 * (lo + hi);
+            const bool rising = prev < 0;
+            for (int it = 0; it < 40; ++it) {
+                const SupportDouble v = f(x);
+                if ((v.value < 0) == rising) lo = x;
+                else hi = x;
+                double next = x - v.value / v.slope;
+                if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+                if (std::fabs(next - x) <= 1e-15 * (1 + std::fabs(x))) {
+                    x = next;
+                    break;
+                }
+                x = next;
+            }
+            roots.push_back(x);
+        }
+        prev_phi = phi, prev = value;
+    }
+    for (double phi : roots) {
+        double sign = 1.0;
+        if (std::cos(phi) < 0) {
+            phi = phi > 0 ? phi - M_PI : phi + M_PI;
+            sign = -1.0;
+        }
+        const Chart chart{sign};
+        for (double width : {1e-13, 1e-10, 1e-7}) {
+            const double tau_lo = std::tan(0.5 * (phi - width)), tau_hi = std::tan(0.5 * (phi + width));
+            auto difference = [&](Interval tau) {
+                const Interval nx = chart.nx(tau), ny = chart.ny(tau);
+                return support_enclosure(k1, nx, ny).value - support_enclosure(k2, nx, ny).value;
+            };
+            const Interval at_lo = difference(Interval(tau_lo)), at_hi = difference(Interval(tau_hi));
+            const bool sign_change = (at_lo.negative() && at_hi.positive()) || (at_lo.positive() && at_hi.negative());
+            if (!sign_change) continue;
+            // Exactly one external tangent in the interval: is it L?
+            const Interval tau(tau_lo, tau_hi);
+            const Interval nx = chart.nx(tau), ny = chart.ny(tau);
+            const SupportEnclosure s1 = support_enclosure(k1, nx, ny), s2 = support_enclosure(k2, nx, ny);
+            // d = n turned clockwise; L has E1's contact before E2's along d.
+            const Interval along = (s2.x - s1.x) * ny - (s2.y - s1.y) * nx;
+            if (along.negative()) break;  // the other external tangent
+            if (!along.positive()) return 0;
+            const Interval beyond = support_enclosure(kq, nx, ny).value - s1.value;
+            if (beyond.positive()) return -1;
+            if (beyond.negative()) return 1;
+            return 0;
+        }
+    }
+    return 0;
+}
+
+// ------------------------------------------------------------- exact --
 
 // Outward normal of E at boundary parameter t (the gradient of its conic,
 // i.e. the first two coefficients of the tangent line), enclosed.
@@ -87,9 +210,12 @@ SignDecision break_tangency_tie(const Ellipse& e1, const Ellipse& e2, const Elli
 
 }  // namespace
 
-SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
+SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
+                                      const InfiniteVertexConflictOptions& options) {
     // L is tangent to E1 where the counter-clockwise hull of E1 and E2 arrives
     // on E1: directed from E1's contact to E2's, both sites lie on its right.
+    if (options.use_filter)
+        if (int s = filter_stage(e1, e2, q)) return {s, Stage::filter, 53};
     BoundaryParameter t1 = external_bitangent_on(e1, e2, HullSide::arrival);
     // Does L (the tangent of E1 at t1) cross Q, touch it, or miss it?
     const int meets = sign_at(bitangent_quartic(e1, q), kBitangentFormalDegree, t1);

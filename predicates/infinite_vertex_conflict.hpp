@@ -15,6 +15,13 @@ namespace ellvor {
 // tie is broken as in CGAL: NEGATIVE iff Q's contact point lies strictly
 // between the contact points of E1 and E2.
 // Requires E1, E2 separated or externally tangent (throws Error otherwise).
-SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q);
+// Cascade: double-interval filter on support functions -> exact signs at the
+// bitangent's tangency parameter (a real algebraic number of degree <= 4),
+// with Arb only to order contact points in the tie-break.
+struct InfiniteVertexConflictOptions {
+    bool use_filter = true;  // false: skip the filter (for tests and experiments)
+};
+SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
+                                      const InfiniteVertexConflictOptions& options = {});
 
 }  // namespace ellvor

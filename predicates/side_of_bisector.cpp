@@ -22,9 +22,9 @@ struct LocalPoint {
 };
 
 LocalPoint to_local(const Ellipse& e, const Point& p) {
-    const Interval c = enclose(e.cos_rotation()), s = enclose(e.sin_rotation());
-    const Interval dx = enclose(p.x) - enclose(e.xc()), dy = enclose(p.y) - enclose(e.yc());
-    return {c * dx + s * dy, c * dy - s * dx, enclose(e.a()), enclose(e.b())};
+    const Ellipse::Enclosure& k = e.enclosure();
+    const Interval dx = enclose(p.x) - k.xc, dy = enclose(p.y) - k.yc;
+    return {k.cos * dx + k.sin * dy, k.cos * dy - k.sin * dx, k.a, k.b};
 }
 
 // Sign of (x/a)^2 + (y/b)^2 - 1, or 0 when the filter cannot tell.
@@ -80,10 +80,10 @@ Interval outside_distance_bounds(const LocalPoint& q) {
 }
 
 // +1 / -1 when decided, 0 when undecided.
-int filter_stage(const Ellipse& e1, const Ellipse& e2, const Point& p, int side1, int side2) {
+int filter_stage(const LocalPoint& q1, const LocalPoint& q2, int side1, int side2) {
     if (side1 != 1 || side2 != 1) return 0;  // the inside case goes to Arb
-    const Interval d1 = outside_distance_bounds(to_local(e1, p));
-    const Interval d2 = outside_distance_bounds(to_local(e2, p));
+    const Interval d1 = outside_distance_bounds(q1);
+    const Interval d2 = outside_distance_bounds(q2);
     if (d1.hi < d2.lo) return 1;
     if (d2.hi < d1.lo) return -1;
     return 0;
@@ -165,7 +165,8 @@ SignDecision side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point&
     if (side1 != side2) return {side1 < side2 ? 1 : -1, side_stage, 0};
     if (side1 == 0) return {0, Stage::exact, 0};  // on both boundaries
 
-    if (int s = filter_stage(e1, e2, p, side1, side2)) return {s, Stage::filter, 53};
+    if (options.use_filter)
+        if (int s = filter_stage(q1, q2, side1, side2)) return {s, Stage::filter, 53};
 
     // Both outside: nearer means smaller squared distance; both inside: the
     // signed distance is -d, so nearer means larger d.

@@ -9,6 +9,7 @@
 namespace ellvor {
 
 struct SideOfBisectorOptions {
+    bool use_filter = true;      // false: start at the Arb stage (for tests and experiments)
     long start_precision = 64;   // first Arb precision (bits)
     long max_precision = 512;    // beyond this the exact stage decides
 };

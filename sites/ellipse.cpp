@@ -74,6 +74,7 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
     Rational E = -(B * xc_ + C * yc_);
     Rational F = A * xc_ * xc_ + two * B * xc_ * yc_ + C * yc_ * yc_ - a2 * b2;
     conic_ = {A, B, C, D, E, F};
+    enclosure_ = {enclose(a_), enclose(b_), enclose(cos_), enclose(sin_), enclose(xc_), enclose(yc_)};
 }
 
 Ellipse Ellipse::circle(const Rational& x, const Rational& y, const Rational& r) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "util/flint_types.hpp"
+#include "util/interval.hpp"
 
 #include <array>
 #include <string>
@@ -42,6 +43,13 @@ public:
     // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
     const Rational& cos_rotation() const { return cos_; }
     const Rational& sin_rotation() const { return sin_; }
+
+    // Double enclosures of a, b, cos, sin of the rotation and the center, for
+    // the floating-point filters (computed once; the ellipse is immutable).
+    struct Enclosure {
+        Interval a, b, cos, sin, xc, yc;
+    };
+    const Enclosure& enclosure() const { return enclosure_; }
 
     // Homogeneous parametrization (X : Y : W), integer polynomials in t.
     const IntPolynomial& X() const { return X_; }
@@ -81,6 +89,7 @@ private:
     Rational cos_, sin_;
     IntPolynomial X_, Y_, W_, Tx_, Ty_;
     std::array<Rational, 6> conic_;
+    Enclosure enclosure_;
 };
 
 }  // namespace ellvor

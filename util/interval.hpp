@@ -9,6 +9,8 @@
 #include "util/flint_types.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace ellvor {
@@ -16,8 +18,18 @@ namespace ellvor {
 struct Interval {
     double lo = 0, hi = 0;
 
-    static double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
-    static double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+    // The next double below / above x (what std::nextafter does, inlined:
+    // stepping the IEEE bit pattern). Infinities and NaN pass through.
+    static double up(double x) {
+        if (!(x < std::numeric_limits<double>::infinity())) return x;
+        if (x == 0) return std::numeric_limits<double>::denorm_min();
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        bits += x > 0 ? 1 : -1;
+        std::memcpy(&x, &bits, sizeof bits);
+        return x;
+    }
+    static double down(double x) { return -up(-x); }
 
     Interval() = default;
     // An exact double.
