@@ -3,6 +3,7 @@
 #include "exact/algebraic_real.hpp"
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
+#include "subdivision/nearest_point.hpp"
 #include "util/error.hpp"
 #include "util/interval.hpp"
 
@@ -34,31 +35,12 @@ int filtered_side(const LocalPoint& q) {
     return v.positive() ? 1 : v.negative() ? -1 : 0;
 }
 
-// A floating-point foot point angle: Newton on the derivative of the squared
-// distance, g(theta) = a x sin - b y cos - (a^2 - b^2) sin cos. Only a guess;
-// the bounds below are valid whatever it returns.
-double approximate_foot_angle(double a, double b, double x, double y) {
-    double theta = std::atan2(a * y, b * x);
-    for (int i = 0; i < 30; ++i) {
-        const double s = std::sin(theta), c = std::cos(theta);
-        const double g = a * x * s - b * y * c - (a * a - b * b) * s * c;
-        const double dg = a * x * c + b * y * s - (a * a - b * b) * (c * c - s * s);
-        if (!(dg > 0)) break;
-        double step = g / dg;
-        if (step > 0.5) step = 0.5;
-        if (step < -0.5) step = -0.5;
-        theta -= step;
-        if (std::fabs(step) < 1e-16) break;
-    }
-    return theta;
-}
-
 // Certified bounds on the distance from an outside point to the ellipse:
 // the distance to a boundary point is an upper bound, the distance to the
 // tangent line there (the ellipse lies on one side of it) a lower bound.
 // Both meet at the foot point, so a good guess gives a tight interval.
 Interval outside_distance_bounds(const LocalPoint& q) {
-    double theta = approximate_foot_angle(q.a.mid(), q.b.mid(), q.x.mid(), q.y.mid());
+    double theta = approximate_nearest_angle(q.a.mid(), q.b.mid(), q.x.mid(), q.y.mid());
     // A boundary point through the rational parametrization at an exact double
     // u = tan(theta/2), in the chart where |u| <= 1 (flip by pi otherwise).
     double sign = 1.0;
@@ -100,6 +82,9 @@ struct FootPoints {
 
 FootPoints foot_points(const Ellipse& e, const Point& p) {
     const IntPolynomial f = foot_point_quartic(e, p);
+    // At the center of a circle every boundary point is a foot point; the
+    // point at t = 0 stands for all of them.
+    if (f.is_zero()) return {{AlgebraicReal::from_rational(Rational(0))}, false};
     return {real_roots(f), f.degree() < 4};
 }
 

@@ -4,6 +4,7 @@
 // or E1, E3, E2 (the CW circle). Decided from three kappa2 signs only.
 #pragma once
 
+#include "predicates/stage.hpp"
 #include "sites/ellipse.hpp"
 
 namespace ellvor {
@@ -18,7 +19,14 @@ enum class VoronoiCircles {
 const char* voronoi_circles_name(VoronoiCircles v);
 
 // Sites must be pairwise separated or externally tangent; a hidden pair gives
-// none.
-VoronoiCircles voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+// none. `stage` is the latest stage any of the kappa2 calls needed.
+struct VoronoiCircleCount {
+    VoronoiCircles circles;
+    Stage stage;
+};
+VoronoiCircleCount voronoi_circle_count_decided(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+inline VoronoiCircles voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    return voronoi_circle_count_decided(e1, e2, e3).circles;
+}
 
 }  // namespace ellvor

@@ -149,3 +149,38 @@ namespace ellvor {
 // Rational endpoints [lo, hi] of a ball (exact: Arb's endpoints are dyadic).
 void ball_endpoints(const Ball& b, Rational& lo, Rational& hi);
 }  // namespace ellvor
+
+#include <arb_mat.h>
+
+namespace ellvor {
+
+// An Arb matrix of balls (arb_mat), rows x cols, zero-initialized.
+class BallMatrix {
+public:
+    BallMatrix(long rows, long cols) { arb_mat_init(m_, rows, cols); }
+    BallMatrix(const BallMatrix& o) {
+        arb_mat_init(m_, arb_mat_nrows(o.m_), arb_mat_ncols(o.m_));
+        arb_mat_set(m_, o.m_);
+    }
+    BallMatrix& operator=(const BallMatrix& o) {
+        if (this != &o) {
+            arb_mat_clear(m_);
+            arb_mat_init(m_, arb_mat_nrows(o.m_), arb_mat_ncols(o.m_));
+            arb_mat_set(m_, o.m_);
+        }
+        return *this;
+    }
+    ~BallMatrix() { arb_mat_clear(m_); }
+
+    arb_mat_struct* get() { return m_; }
+    const arb_mat_struct* get() const { return m_; }
+    arb_struct* at(long i, long j) { return arb_mat_entry(m_, i, j); }
+    const arb_struct* at(long i, long j) const { return arb_mat_entry(m_, i, j); }
+    long rows() const { return arb_mat_nrows(m_); }
+    long cols() const { return arb_mat_ncols(m_); }
+
+private:
+    arb_mat_t m_;
+};
+
+}  // namespace ellvor

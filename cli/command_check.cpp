@@ -1,0 +1,192 @@
+// ellvor check FILE [--cin] [--describe]: validates a site file.
+#include "cli/command_list.hpp"
+
+#include "predicates/relative_position.hpp"
+#include "sites/site_io.hpp"
+#include "util/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace ellvor::cli {
+namespace {
+
+const char* const kHelp =
+    "usage: ellvor check FILE [--cin] [--describe]\n"
+    "\n"
+    "Validates a site file: every line parses ('a b w xc yc', exact rationals), a, b > 0,\n"
+    "no two sites are the same ellipse, and every pair of sites is disjoint or nested.\n"
+    "Prints one line per notable pair (ids are 0-based in file order):\n"
+    "  intersecting: I J           the two sites intersect (an error)\n"
+    "  hidden: I inside J          site I lies inside site J (I is a hidden site)\n"
+    "  hidden: I inside J tangent  the same, touching J from inside\n"
+    "  tangent: I J                externally tangent sites\n"
+    "then a summary 'N sites (C circles), H hidden, OK' (or '..., K intersecting pairs, INVALID').\n"
+    "\n"
+    "options:\n"
+    "  --cin        read CGAL's circle format 'x y r' instead of .ell\n"
+    "  --describe   also print a short description (counts, bounding box, axis ranges, bit sizes)\n"
+    "  FILE may be '-' for standard input.\n"
+    "\n"
+    "exit status: 0 valid; 2 a parse error, a duplicate or an intersecting pair\n"
+    "(message 'ellvor: FILE:LINE:COL: what' on stderr); 1 other failure.\n";
+
+struct PairReport {
+    std::size_t i, j;  // i < j
+    RelativePosition position;
+};
+
+Rational max_axis(const Ellipse& e) { return e.a() < e.b() ? e.b() : e.a(); }
+
+void describe(std::ostream& out, const SiteFile& file, std::size_t circles,
+              const std::vector<PairReport>& nested) {
+    const auto& s = file.sites;
+    out << "description of " << file.name << ":\n";
+    out << "  sites: " << s.size() << " (" << circles << " circles, " << s.size() - circles << " ellipses)\n";
+    if (s.empty()) return;
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    Rational amin = s[0].a(), amax = s[0].a(), bmin = s[0].b(), bmax = s[0].b();
+    long max_bits = 0;
+    for (const Ellipse& e : s) {
+        const double a = e.a().to_double(), b = e.b().to_double();
+        const double c = e.cos_rotation().to_double(), sn = e.sin_rotation().to_double();
+        const double hx = std::sqrt(a * a * c * c + b * b * sn * sn), hy = std::sqrt(a * a * sn * sn + b * b * c * c);
+        const double x = e.xc().to_double(), y = e.yc().to_double();
+        x0 = std::min(x0, x - hx), x1 = std::max(x1, x + hx);
+        y0 = std::min(y0, y - hy), y1 = std::max(y1, y + hy);
+        amin = std::min(amin, e.a()), amax = std::max(amax, e.a());
+        bmin = std::min(bmin, e.b()), bmax = std::max(bmax, e.b());
+        for (const Rational* q : {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()}) max_bits = std::max(max_bits, q->bits());
+    }
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "  bounding box (approx.): [%.6g, %.6g] x [%.6g, %.6g]\n", x0, x1, y0, y1);
+    out << buf;
+    std::snprintf(buf, sizeof buf, "  semi-axis a: %.6g .. %.6g, semi-axis b: %.6g .. %.6g (approx.)\n",
+                  amin.to_double(), amax.to_double(), bmin.to_double(), bmax.to_double());
+    out << buf;
+    out << "  largest numerator/denominator: " << max_bits << " bits\n";
+    out << "  nested pairs: " << nested.size();
+    if (!nested.empty()) {
+        out << " (";
+        std::size_t shown = 0;
+        for (const PairReport& p : nested) {
+            if (shown++ == 10) { out << ", ..."; break; }
+            if (shown > 1) out << ", ";
+            const bool first = p.position == RelativePosition::first_inside ||
+                               p.position == RelativePosition::first_inside_tangent;
+            out << (first ? p.i : p.j) << " in " << (first ? p.j : p.i);
+        }
+        out << ")";
+    }
+    out << '\n';
+}
+
+int run_check(const std::vector<std::string>& args) {
+    Arguments parsed(args, {{"--cin", false}, {"--describe", false}});
+    parsed.expect_positional(1, 1, "one site FILE");
+    const std::string path = parsed.positional()[0];
+    const SiteFile file = read_site_file(path, parsed.has("--cin") ? SiteFormat::cin : SiteFormat::ell);
+    const auto& sites = file.sites;
+    const std::size_t n = sites.size();
+
+    // Sweep over the x-extents of the bounding circles: only pairs whose
+    // extents overlap can meet, and among those, pairs with disjoint bounding
+    // circles are separated without calling the predicate.
+    std::vector<Rational> left(n), right(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        Rational r = max_axis(sites[i]);
+        left[i] = sites[i].xc() - r;
+        right[i] = sites[i].xc() + r;
+    }
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+        if (left[p] != left[q]) return left[p] < left[q];
+        return p < q;
+    });
+    const bool progress = n > 2000 && ::isatty(2);
+    std::vector<PairReport> reports;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (progress && k % 500 == 0) std::fprintf(stderr, "\rchecking site %zu of %zu", k, n);
+        const std::size_t p = order[k];
+        for (std::size_t m = k + 1; m < n && left[order[m]] <= right[p]; ++m) {
+            const std::size_t q = order[m];
+            const std::size_t i = std::min(p, q), j = std::max(p, q);
+            const Ellipse& ei = sites[i];
+            const Ellipse& ej = sites[j];
+            Rational dx = ei.xc() - ej.xc(), dy = ei.yc() - ej.yc(), rr = max_axis(ei) + max_axis(ej);
+            if (dx * dx + dy * dy > rr * rr) continue;
+            RelativePosition pos = relative_position(ei, ej);
+            if (pos != RelativePosition::separated) reports.push_back({i, j, pos});
+        }
+    }
+    if (progress) std::fprintf(stderr, "\rchecking site %zu of %zu\n", n, n);
+    std::sort(reports.begin(), reports.end(),
+              [](const PairReport& x, const PairReport& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
+
+    std::set<std::size_t> hidden;
+    std::vector<PairReport> nested, intersecting;
+    std::size_t circles = 0;
+    for (const Ellipse& e : sites) circles += e.is_circle() ? 1 : 0;
+    std::ostream& out = std::cout;
+    for (const PairReport& r : reports) {
+        switch (r.position) {
+            case RelativePosition::intersecting:
+                out << "intersecting: " << r.i << ' ' << r.j << '\n';
+                intersecting.push_back(r);
+                break;
+            case RelativePosition::identical:
+                // The reader rejects duplicates; report it like one all the same.
+                throw InputError(file.name, file.lines[r.j], 1,
+                                 "duplicate site: site " + std::to_string(r.j) + " is the same point set as site " +
+                                     std::to_string(r.i) + " (line " + std::to_string(file.lines[r.i]) + ")");
+            case RelativePosition::first_inside:
+            case RelativePosition::first_inside_tangent:
+                out << "hidden: " << r.i << " inside " << r.j
+                    << (r.position == RelativePosition::first_inside_tangent ? " tangent" : "") << '\n';
+                hidden.insert(r.i);
+                nested.push_back(r);
+                break;
+            case RelativePosition::second_inside:
+            case RelativePosition::second_inside_tangent:
+                out << "hidden: " << r.j << " inside " << r.i
+                    << (r.position == RelativePosition::second_inside_tangent ? " tangent" : "") << '\n';
+                hidden.insert(r.j);
+                nested.push_back(r);
+                break;
+            case RelativePosition::externally_tangent:
+                out << "tangent: " << r.i << ' ' << r.j << '\n';
+                break;
+            case RelativePosition::separated:
+                break;
+        }
+    }
+    if (parsed.has("--describe")) describe(out, file, circles, nested);
+    out << n << " sites (" << circles << " circles), " << hidden.size() << " hidden";
+    if (!intersecting.empty()) {
+        out << ", " << intersecting.size() << " intersecting pair" << (intersecting.size() == 1 ? "" : "s")
+            << ", INVALID\n";
+        out.flush();
+        const PairReport& r = intersecting.front();
+        std::cerr << "ellvor: " << file.name << ':' << file.lines[r.j] << ":1: site " << r.j << " intersects site "
+                  << r.i << " (line " << file.lines[r.i] << "); sites must be disjoint or nested ("
+                  << intersecting.size() << " intersecting pair" << (intersecting.size() == 1 ? "" : "s")
+                  << " in all)\n";
+        return kExitInput;
+    }
+    out << ", OK\n";
+    return kExitOk;
+}
+
+}  // namespace
+
+const Command command_check = {"check", "validate a site file (parse, a, b > 0, pairwise positions)", kHelp,
+                               run_check};
+
+}  // namespace ellvor::cli

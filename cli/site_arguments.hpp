@@ -1,0 +1,19 @@
+// Reading the site file named on a command line, for commands that take a
+// fixed number of sites (E1 E2 [E3] [Q]).
+#pragma once
+
+#include "cli/arguments.hpp"
+#include "sites/site_io.hpp"
+
+#include <string>
+
+namespace ellvor::cli {
+
+// Reads `path` as .ell, or as CGAL .cin when --cin was given.
+SiteFile read_site_argument(const Arguments& parsed, const std::string& path);
+
+// Throws InputError unless the file holds between min and max sites; a
+// surplus site is reported at its line. `roles` names them, e.g. "E1 E2 [Q]".
+void require_site_count(const SiteFile& file, std::size_t min, std::size_t max, const std::string& roles);
+
+}  // namespace ellvor::cli

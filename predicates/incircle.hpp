@@ -1,0 +1,46 @@
+// kappa3, InCircle (CGAL Vertex_conflict_2 with four sites; DESIGN.md): the
+// position of a query site Q relative to the Voronoi circle of the ordered
+// triple (E1, E2, E3) -- externally tangent to the three, tangency points
+// counter-clockwise E1 -> E2 -> E3.
+#pragma once
+
+#include "predicates/stage.hpp"
+#include "sites/ellipse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+
+namespace ellvor {
+
+enum class InCircle {
+    conflict,     // NEGATIVE: Q meets the open Voronoi disk
+    no_conflict,  // POSITIVE
+    tangent,      // ZERO: Q externally tangent to the circle (needs the exact stage)
+    no_circle,    // NEGATIVE by CGAL's rule: the triple has no counter-clockwise Voronoi circle
+    undecided,    // the subdivision stage reached its precision cap (a degenerate or nearly
+                  // degenerate configuration) or could not certify the circle
+};
+
+const char* incircle_name(InCircle r);
+// CGAL's sign: -1 for conflict and no_circle, +1 no_conflict, 0 tangent.
+// Throws Error for undecided.
+int incircle_sign(InCircle r);
+
+struct InCircleOptions {
+    long max_precision = 4096;  // the subdivision stage gives up (undecided) beyond this
+};
+
+struct InCircleDecision {
+    InCircle result = InCircle::undecided;
+    Stage stage = Stage::subdivision;  // of the last stage that ran
+    long precision = 0;                // Arb precision that decided (or the cap)
+    long newton_steps = 0;             // Arb Newton steps spent on the Voronoi circle
+};
+
+// The cascade: existence of the counter-clockwise circle from three kappa2
+// signs; then the certified enclosure of the circle (center V, radius rho) and
+// the certified distance d(V, Q), compared with rho at doubling precision.
+// `solver`, when given, is the cached solver of (E1, E2, E3) and is refined in
+// place (see VoronoiCircleCache).
+InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
+                          const InCircleOptions& options = {}, VoronoiCircleSolver* solver = nullptr);
+
+}  // namespace ellvor

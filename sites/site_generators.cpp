@@ -1,0 +1,321 @@
+#include "sites/site_generators.hpp"
+
+#include "util/error.hpp"
+
+#include <map>
+#include <utility>
+
+namespace ellvor {
+
+// ---- SiteRandom --------------------------------------------------------------
+
+Integer SiteRandom::uniform_integer(const Integer& n) {
+    if (n.sign() < 0) throw Error("uniform_integer: negative bound");
+    if (n.is_zero()) return Integer(0);
+    const ulong nbits = fmpz_bits(n.get());
+    Integer r;
+    for (;;) {
+        fmpz_zero(r.get());
+        for (ulong have = 0; have < nbits; have += 64) {
+            fmpz_mul_2exp(r.get(), r.get(), 64);
+            fmpz_add_ui(r.get(), r.get(), next());
+        }
+        fmpz_fdiv_r_2exp(r.get(), r.get(), nbits);  // keep nbits random bits
+        if (fmpz_cmp(r.get(), n.get()) <= 0) return r;
+    }
+}
+
+std::uint64_t SiteRandom::below(std::uint64_t n) {
+    if (n == 0) throw Error("below: empty range");
+    const std::uint64_t threshold = (0 - n) % n;  // 2^64 mod n
+    for (;;) {
+        std::uint64_t r = next();
+        if (r >= threshold) return r % n;
+    }
+}
+
+Rational SiteRandom::uniform_rational(const Rational& lo, const Rational& hi, long bits) {
+    if (hi < lo) throw Error("uniform_rational: empty interval");
+    Integer max_den;
+    fmpz_one(max_den.get());
+    fmpz_mul_2exp(max_den.get(), max_den.get(), static_cast<ulong>(bits));
+    for (int attempt = 0; attempt < 256; ++attempt) {
+        Integer q = uniform_integer(max_den - Integer(1)) + Integer(1);
+        Rational lq = lo * Rational(q), hq = hi * Rational(q);
+        Integer pmin, pmax;
+        fmpz_cdiv_q(pmin.get(), fmpq_numref(lq.get()), fmpq_denref(lq.get()));
+        fmpz_fdiv_q(pmax.get(), fmpq_numref(hq.get()), fmpq_denref(hq.get()));
+        if (pmax < pmin) continue;
+        Integer p = pmin + uniform_integer(pmax - pmin);
+        return Rational(p, q);
+    }
+    throw Error("cannot draw a rational of bit size " + std::to_string(bits) + " in [" + lo.str() + ", " +
+                hi.str() + "]: the interval is too narrow; use more bits");
+}
+
+// ---- conservative geometric tests -------------------------------------------
+
+namespace {
+const Rational& max_axis(const Ellipse& e) { return e.a() < e.b() ? e.b() : e.a(); }
+const Rational& min_axis(const Ellipse& e) { return e.a() < e.b() ? e.a() : e.b(); }
+Rational squared_distance(const Ellipse& e1, const Ellipse& e2) {
+    Rational dx = e1.xc() - e2.xc(), dy = e1.yc() - e2.yc();
+    return dx * dx + dy * dy;
+}
+}  // namespace
+
+bool bounding_circles_separated(const Ellipse& e1, const Ellipse& e2) {
+    Rational r = max_axis(e1) + max_axis(e2);
+    return squared_distance(e1, e2) > r * r;
+}
+
+bool bounding_circle_inside_inscribed(const Ellipse& inner, const Ellipse& host) {
+    Rational gap = min_axis(host) - max_axis(inner);
+    if (gap.sign() <= 0) return false;
+    return squared_distance(inner, host) < gap * gap;
+}
+
+// ---- random site sets --------------------------------------------------------
+
+std::string describe(const GeneratorOptions& o) {
+    return std::string("ellvor generate ") + (o.kind == SiteKind::circles ? "circles" : "ellipses") +
+           " --count " + std::to_string(o.count) + " --seed " + std::to_string(o.seed) + " --bits " +
+           std::to_string(o.bits) + " --box " + o.box.str() + " --nested-fraction " + o.nested_fraction.str();
+}
+
+namespace {
+
+long isqrt_ceil(long n) {
+    long r = 0;
+    while (r * r < n) ++r;
+    return r;
+}
+
+long floor_to_long(const Rational& q) {
+    Integer f;
+    fmpz_fdiv_q(f.get(), fmpq_numref(q.get()), fmpq_denref(q.get()));
+    return fmpz_get_si(f.get());
+}
+
+}  // namespace
+
+std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
+    if (o.count < 0 || o.count > 1'000'000) throw Error("count must be in [0, 1000000], got " + std::to_string(o.count));
+    if (o.bits < 1 || o.bits > kMaxGeneratorBits)
+        throw Error("bits must be in [1, " + std::to_string(kMaxGeneratorBits) + "], got " + std::to_string(o.bits));
+    if (o.box.sign() <= 0) throw Error("box must be positive, got " + o.box.str());
+    if (o.nested_fraction.sign() < 0 || o.nested_fraction >= Rational(1))
+        throw Error("nested fraction must be in [0, 1), got " + o.nested_fraction.str());
+    if (o.count == 0) return {};
+
+    // round(fraction * count), halves rounded up
+    Rational nested_q = o.nested_fraction * Rational(o.count) + Rational(1, 2);
+    const long nested = floor_to_long(nested_q);
+    const long top = o.count - nested;
+    if (top < 1) throw Error("nested fraction leaves no site to nest into");
+
+    SiteRandom rng(o.seed);
+    const bool circles = o.kind == SiteKind::circles;
+    const long g = isqrt_ceil(top);
+    const Rational rmax = o.box / Rational(4 * g);  // bounding radii in [rmax/4, rmax]
+    const Rational rmin = rmax / Rational(4);
+    const Rational center_extent = o.box - rmax;   // keeps every site inside [-box, box]^2
+    const Rational cell = Rational(2) * rmax;      // grid for the neighbour search
+
+    std::vector<Ellipse> placed;
+    std::map<std::pair<long, long>, std::vector<std::size_t>> grid;
+    const long max_attempts = 1000 + 200 * o.count;
+    long attempts = 0;
+    auto give_up = [&]() {
+        throw Error("could not place " + std::to_string(o.count) + " disjoint sites after " +
+                    std::to_string(max_attempts) + " attempts; use a larger --box or more --bits");
+    };
+
+    auto draw_shape = [&](const Rational& lo, const Rational& hi, Rational& a, Rational& b, Rational& w) {
+        a = rng.uniform_rational(lo, hi, o.bits);
+        if (circles) {
+            b = a;
+            w = Rational(0);
+        } else {
+            b = rng.uniform_rational(lo, hi, o.bits);
+            w = rng.uniform_rational(Rational(-1), Rational(1), o.bits);
+        }
+    };
+
+    while (static_cast<long>(placed.size()) < top) {
+        if (++attempts > max_attempts) give_up();
+        Rational a, b, w;
+        draw_shape(rmin, rmax, a, b, w);
+        Rational xc = rng.uniform_rational(-center_extent, center_extent, o.bits);
+        Rational yc = rng.uniform_rational(-center_extent, center_extent, o.bits);
+        Ellipse e(a, b, w, xc, yc);
+        const long cx = floor_to_long((xc + o.box) / cell), cy = floor_to_long((yc + o.box) / cell);
+        bool ok = true;
+        for (long i = cx - 1; i <= cx + 1 && ok; ++i)
+            for (long j = cy - 1; j <= cy + 1 && ok; ++j) {
+                auto it = grid.find({i, j});
+                if (it == grid.end()) continue;
+                for (std::size_t k : it->second)
+                    if (!bounding_circles_separated(e, placed[k])) { ok = false; break; }
+            }
+        if (!ok) continue;
+        grid[{cx, cy}].push_back(placed.size());
+        placed.push_back(std::move(e));
+    }
+
+    std::vector<std::vector<std::size_t>> inside(placed.size());  // nested sites per host
+    const std::size_t hosts = placed.size();
+    for (long n = 0; n < nested;) {
+        if (++attempts > max_attempts) give_up();
+        const std::size_t h = rng.below(hosts);
+        const Ellipse& host = placed[h];
+        const Rational m = min_axis(host);
+        Rational a, b, w;
+        draw_shape(m / Rational(8), m / Rational(2), a, b, w);
+        const Rational off = m / Rational(4);
+        Rational xc = rng.uniform_rational(host.xc() - off, host.xc() + off, o.bits);
+        Rational yc = rng.uniform_rational(host.yc() - off, host.yc() + off, o.bits);
+        Ellipse e(a, b, w, xc, yc);
+        if (!bounding_circle_inside_inscribed(e, host)) continue;
+        bool ok = true;
+        for (std::size_t k : inside[h])
+            if (!bounding_circles_separated(e, placed[k])) { ok = false; break; }
+        if (!ok) continue;
+        inside[h].push_back(placed.size());
+        placed.push_back(std::move(e));
+        ++n;
+    }
+
+    // Fisher-Yates with our own uniform draws.
+    for (std::size_t i = placed.size(); i > 1; --i) {
+        std::size_t j = rng.below(i);
+        std::swap(placed[i - 1], placed[j]);
+    }
+    return placed;
+}
+
+// ---- paper datasets ----------------------------------------------------------
+
+const char* paper_family_name(PaperFamily family) {
+    switch (family) {
+        case PaperFamily::kappa1: return "kappa1";
+        case PaperFamily::kappa2: return "kappa2";
+        case PaperFamily::incircle: return "incircle";
+    }
+    return "?";
+}
+
+namespace {
+
+Rational power_of_ten_inverse(int k) {
+    Integer p;
+    fmpz_ui_pow_ui(p.get(), 10, static_cast<ulong>(k));
+    return Rational(Integer(1), p);
+}
+
+Rational perturbed(SiteRandom& rng, const Rational& x, const Rational& eps) {
+    return rng.sign() > 0 ? x + eps : x - eps;
+}
+
+Ellipse perturbed_circle(SiteRandom& rng, const Ellipse& c, const Rational& eps) {
+    Rational x = perturbed(rng, c.xc(), eps);
+    Rational y = perturbed(rng, c.yc(), eps);
+    Rational r = perturbed(rng, c.a(), eps);
+    return Ellipse::circle(x, y, r);
+}
+
+std::vector<PaperInstance> degenerate_family(PaperFamily family) {
+    std::vector<PaperInstance> out;
+    const Rational half(1, 2);
+    if (family == PaperFamily::incircle) {
+        std::vector<Ellipse> base = {Ellipse::circle(Rational(-3), Rational(0), Rational(2)),
+                                     Ellipse::circle(Rational(3, 2), Rational(0), Rational(1, 2)),
+                                     Ellipse::circle(Rational(0), Rational(-2), Rational(1))};
+        for (long j = 0; j <= 49 * 8; ++j) {  // y = 1 + j/8, 1 <= y <= 50
+            PaperInstance inst;
+            inst.sites = base;
+            inst.query_site = Ellipse::circle(Rational(0), Rational(1) + Rational(j, 8), Rational(1));
+            out.push_back(std::move(inst));
+        }
+        return out;
+    }
+    std::vector<Ellipse> base = {Ellipse::circle(Rational(-2), Rational(0), Rational(1)),
+                                 Ellipse::circle(Rational(2), Rational(0), Rational(1))};
+    for (long j = 0; j <= 200; ++j) {  // s = j/2: (s, s - 100) from (0,-100) to (100,0)
+        PaperInstance inst;
+        inst.sites = base;
+        Rational s = Rational(j, 2), t = Rational(j, 2) - Rational(100);
+        if (family == PaperFamily::kappa1)
+            inst.query_point = Point{s, t};
+        else
+            inst.query_site = Ellipse::circle(s, t, Rational(1));
+        out.push_back(std::move(inst));
+    }
+    return out;
+}
+
+bool all_separated(const std::vector<Ellipse>& cs) {
+    for (std::size_t i = 0; i < cs.size(); ++i)
+        for (std::size_t j = i + 1; j < cs.size(); ++j)
+            if (!bounding_circles_separated(cs[i], cs[j])) return false;
+    return true;
+}
+
+PaperInstance random_instance(PaperFamily family, SiteRandom& rng, long bits) {
+    const Rational lo(-10), hi(10);
+    const Rational rlo = family == PaperFamily::incircle ? Rational(1, 3) : Rational(0);
+    const Rational rhi = family == PaperFamily::incircle ? Rational(5, 2) : Rational(2);
+    const int n = family == PaperFamily::kappa1 ? 2 : family == PaperFamily::kappa2 ? 3 : 4;
+    for (int attempt = 0; attempt < 100000; ++attempt) {
+        std::vector<Ellipse> cs;
+        for (int i = 0; i < n; ++i) {
+            Rational x = rng.uniform_rational(lo, hi, bits), y = rng.uniform_rational(lo, hi, bits);
+            Rational r = rng.uniform_rational(rlo, rhi, bits);
+            while (r.is_zero()) r = rng.uniform_rational(rlo, rhi, bits);
+            cs.push_back(Ellipse::circle(x, y, r));
+        }
+        if (!all_separated(cs)) continue;
+        PaperInstance inst;
+        if (family == PaperFamily::kappa1) {
+            Rational x = rng.uniform_rational(lo, hi, bits), y = rng.uniform_rational(lo, hi, bits);
+            if (cs[0].side_of_point(x, y) <= 0 || cs[1].side_of_point(x, y) <= 0) continue;
+            inst.query_point = Point{x, y};
+            inst.sites = cs;
+        } else {
+            inst.query_site = cs.back();
+            cs.pop_back();
+            inst.sites = cs;
+        }
+        return inst;
+    }
+    throw Error("could not draw a random paper instance");
+}
+
+}  // namespace
+
+PaperDataset generate_paper_dataset(PaperFamily family, const std::string& set, std::uint64_t seed, long bits) {
+    if (bits < 1 || bits > kMaxGeneratorBits)
+        throw Error("bits must be in [1, " + std::to_string(kMaxGeneratorBits) + "], got " + std::to_string(bits));
+    PaperDataset ds{family, set, {}};
+    SiteRandom rng(seed);
+    if (set == "1") {
+        ds.instances = degenerate_family(family);
+    } else if (set == "2a" || set == "2b" || set == "2c") {
+        const int k = set == "2a" ? 2 : set == "2b" ? 4 : 6;
+        const Rational eps = power_of_ten_inverse(k);
+        for (PaperInstance inst : degenerate_family(family)) {
+            for (Ellipse& c : inst.sites) c = perturbed_circle(rng, c, eps);
+            if (inst.query_site) inst.query_site = perturbed_circle(rng, *inst.query_site, eps);
+            if (inst.query_point)
+                inst.query_point = Point{perturbed(rng, inst.query_point->x, eps), perturbed(rng, inst.query_point->y, eps)};
+            ds.instances.push_back(std::move(inst));
+        }
+    } else if (set == "3") {
+        for (int i = 0; i < 500; ++i) ds.instances.push_back(random_instance(family, rng, bits));
+    } else {
+        throw Error("unknown dataset set '" + set + "'; expected 1, 2a, 2b, 2c or 3");
+    }
+    return ds;
+}
+
+}  // namespace ellvor

@@ -1,0 +1,111 @@
+// Deterministic site generators. Every random draw is an integer draw from a
+// seeded std::mt19937_64 (whose output sequence is fixed by the C++ standard),
+// turned into numbers by our own code: no std::uniform_*_distribution and no
+// std::shuffle (their algorithms are implementation-defined), no floating
+// point. Hence the same seed gives the same sites on every machine.
+//
+// Rationals "of bit size B": a value in [lo, hi] is drawn as p/q with q uniform
+// in [1, 2^B] and p uniform among the integers with lo <= p/q <= hi, so the
+// denominators are at most 2^B and |p| <= max(|lo|, |hi|) 2^B.
+//
+// Disjointness is decided by a conservative sufficient test that does not need
+// the exact predicates: two sites are accepted as separated when their bounding
+// circles (center, radius max(a, b)) are disjoint, and a site is accepted as
+// nested in a host when its bounding circle lies strictly inside the host's
+// inscribed circle (radius min(a, b)), hence strictly inside the host.
+#pragma once
+
+#include "sites/ellipse.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ellvor {
+
+// A uniform integer draw source on top of std::mt19937_64.
+class SiteRandom {
+public:
+    explicit SiteRandom(std::uint64_t seed) : engine_(seed) {}
+    std::uint64_t next() { return engine_(); }
+    // Uniform in [0, n] (n >= 0), by rejection.
+    Integer uniform_integer(const Integer& n);
+    // Uniform in [0, n) for n >= 1.
+    std::uint64_t below(std::uint64_t n);
+    // Uniform p/q in [lo, hi] with q uniform in [1, 2^bits] (see above).
+    Rational uniform_rational(const Rational& lo, const Rational& hi, long bits);
+    // +1 or -1.
+    int sign() { return (next() >> 63) ? 1 : -1; }
+
+private:
+    std::mt19937_64 engine_;
+};
+
+enum class SiteKind { ellipses, circles };
+
+struct GeneratorOptions {
+    SiteKind kind = SiteKind::ellipses;
+    long count = 10;
+    std::uint64_t seed = 1;
+    long bits = 8;                    // denominators up to 2^bits; 1 <= bits <= kMaxGeneratorBits
+    Rational box = Rational(100);     // centers of top-level sites lie in [-box, box]^2
+    Rational nested_fraction = Rational(0);  // round(fraction * count) sites are nested in another
+};
+
+constexpr long kMaxGeneratorBits = 1000;
+
+// Pairwise-disjoint (separated or nested) sites. Exactly round(nested_fraction
+// * count) of them lie strictly inside another (one level deep); they are
+// placed in random order among the others (so a hidden site may come before
+// its host). Throws Error on bad options, or when rejection sampling fails to
+// place the sites (too many for the box).
+std::vector<Ellipse> generate_sites(const GeneratorOptions& options);
+
+// The conservative tests used above (exact).
+bool bounding_circles_separated(const Ellipse& e1, const Ellipse& e2);
+bool bounding_circle_inside_inscribed(const Ellipse& inner, const Ellipse& host);
+
+// A one-line description of the options, for file headers.
+std::string describe(const GeneratorOptions& options);
+
+// ---- The circle datasets of the seed paper, section 5.1 ---------------------
+//
+// family   kappa1:   sites E1 E2, query point q       (side_of_bisector)
+//          kappa2:   sites E1 E2, query site Q        (vertex_conflict with the infinite vertex)
+//          incircle: sites E1 E2 E3, query site Q     (vertex_conflict, InCircle)
+// set "1"  the degenerate family:
+//   kappa1   circles (-2,0) and (2,0) of radius 1; q = (s, s - 100) for s = 0, 1/2, ..., 100
+//            (the segment from (0,-100) to (100,0), each coordinate moving by 1/2): 201 instances.
+//   kappa2   the same circles; Q the circle of radius 1 (the paper does not give it; our choice)
+//            centered at (s, s - 100), s as above: 201 instances.
+//   incircle circles (-3,0) r 2, (3/2,0) r 1/2, (0,-2) r 1; Q of radius 1 centered at (0, y),
+//            y = 1, 9/8, ..., 50: 393 instances.
+// sets "2a", "2b", "2c": set 1 perturbed by 10^-2, 10^-4, 10^-6: our reading is that every
+//   coordinate of every center, every radius and the query point's coordinates each get
+//   + or - 10^-k with an independent random sign.
+// set "3": 500 random instances in [-10,10]^2 with rationals of bit size `bits`:
+//   kappa1 two circles with radii in (0, 2] and a point outside both; kappa2 three circles with
+//   radii in (0, 2]; incircle four circles with radii in [1/3, 5/2]. Circles of one instance are
+//   made pairwise separated (rejection), since the predicates need disjoint sites.
+enum class PaperFamily { kappa1, kappa2, incircle };
+
+struct PaperInstance {
+    std::vector<Ellipse> sites;          // E1 E2 (E3)
+    std::optional<Point> query_point;    // kappa1
+    std::optional<Ellipse> query_site;   // kappa2, incircle
+};
+
+struct PaperDataset {
+    PaperFamily family;
+    std::string set;  // "1", "2a", "2b", "2c", "3"
+    std::vector<PaperInstance> instances;
+};
+
+const char* paper_family_name(PaperFamily family);
+// Throws Error for an unknown set name.
+PaperDataset generate_paper_dataset(PaperFamily family, const std::string& set, std::uint64_t seed,
+                                    long bits = 16);
+
+}  // namespace ellvor

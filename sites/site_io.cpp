@@ -1,0 +1,237 @@
+#include "sites/site_io.hpp"
+
+#include "sites/rational_parse.hpp"
+#include "util/error.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace ellvor {
+
+namespace {
+
+struct Token {
+    std::string_view text;
+    long column;  // 1-based
+};
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+// Reads one line (without '\n', without a trailing '\r') into `line`. Returns
+// false at end of input. Throws when the line exceeds kMaxLineLength.
+bool read_line(std::streambuf& buf, std::string& line, const std::string& name, long line_number) {
+    line.clear();
+    bool any = false;
+    for (;;) {
+        int c = buf.sbumpc();
+        if (c == std::char_traits<char>::eof()) break;
+        any = true;
+        if (c == '\n') break;
+        if (line.size() >= kMaxLineLength)
+            throw InputError(name, line_number, static_cast<long>(kMaxLineLength) + 1,
+                             "line too long: at most " + std::to_string(kMaxLineLength) + " bytes per line");
+        line.push_back(static_cast<char>(c));
+    }
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return any;
+}
+
+std::vector<Token> split(std::string_view line) {
+    std::vector<Token> tokens;
+    std::size_t end = line.find('#');
+    if (end == std::string_view::npos) end = line.size();
+    std::size_t i = 0;
+    while (i < end) {
+        while (i < end && is_space(line[i])) ++i;
+        if (i >= end) break;
+        std::size_t start = i;
+        while (i < end && !is_space(line[i])) ++i;
+        tokens.push_back({line.substr(start, i - start), static_cast<long>(start) + 1});
+    }
+    return tokens;
+}
+
+// Column just after the last character before any comment (for "missing field").
+long end_column(std::string_view line) {
+    std::size_t end = line.find('#');
+    if (end == std::string_view::npos) end = line.size();
+    while (end > 0 && is_space(line[end - 1])) --end;
+    return static_cast<long>(end) + 1;
+}
+
+std::string shown(std::string_view token) {
+    std::string s;
+    for (std::size_t i = 0; i < token.size() && i < 40; ++i) {
+        unsigned char c = static_cast<unsigned char>(token[i]);
+        s += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
+    }
+    if (token.size() > 40) s += "...";
+    return "'" + s + "'";
+}
+
+}  // namespace
+
+SiteFile read_site_file(std::istream& in, const std::string& name, SiteFormat format) {
+    SiteFile file;
+    file.name = name;
+    const bool cin_format = format == SiteFormat::cin;
+    const std::size_t nfields = cin_format ? 3 : 5;
+    const char* fields_text = cin_format ? "3 fields x y r" : "5 fields a b w xc yc";
+    static const char* ell_names[] = {"a", "b", "w", "xc", "yc"};
+    static const char* cin_names[] = {"x", "y", "r"};
+    const char** names = cin_format ? cin_names : ell_names;
+
+    // Sites grouped by center, for the duplicate test (same point set needs the same center).
+    std::map<std::pair<std::string, std::string>, std::vector<std::size_t>> by_center;
+
+    std::streambuf* buf = in.rdbuf();
+    if (!buf) throw InputError(name, 1, 1, "cannot read input");
+    std::string line;
+    long line_number = 0;
+    while (read_line(*buf, line, name, line_number + 1)) {
+        ++line_number;
+        std::size_t nul = line.find('\0');
+        if (nul != std::string::npos && nul < line.find('#'))
+            throw InputError(name, line_number, static_cast<long>(nul) + 1,
+                             "unexpected NUL byte; expected a text file");
+        std::vector<Token> tokens = split(line);
+        if (tokens.empty()) continue;
+        if (tokens.size() < nfields)
+            throw InputError(name, line_number, end_column(line),
+                             std::string("expected ") + fields_text + ", found " + std::to_string(tokens.size()) +
+                                 " (missing field " + names[tokens.size()] + ")");
+        if (tokens.size() > nfields)
+            throw InputError(name, line_number, tokens[nfields].column,
+                             std::string("expected ") + fields_text + ", found " + std::to_string(tokens.size()) +
+                                 " (extra field " + shown(tokens[nfields].text) + ")");
+        std::vector<Rational> values(nfields);
+        for (std::size_t k = 0; k < nfields; ++k) {
+            std::string error;
+            if (!parse_rational(tokens[k].text, values[k], error))
+                throw InputError(name, line_number, tokens[k].column, "field " + std::string(names[k]) + ": " + error);
+        }
+        auto positive = [&](std::size_t k, const char* what) {
+            if (values[k].sign() <= 0)
+                throw InputError(name, line_number, tokens[k].column,
+                                 std::string(what) + " must be positive, found " + values[k].str());
+        };
+        if (cin_format) {
+            positive(2, "radius r");
+        } else {
+            positive(0, "semi-axis a");
+            positive(1, "semi-axis b");
+        }
+        if (file.sites.size() >= kMaxSites)
+            throw InputError(name, line_number, 1, "too many sites: at most " + std::to_string(kMaxSites));
+        Ellipse e = cin_format ? Ellipse::circle(values[0], values[1], values[2])
+                               : Ellipse(values[0], values[1], values[2], values[3], values[4]);
+        const std::size_t id = file.sites.size();
+        auto& group = by_center[{e.xc().str(), e.yc().str()}];
+        for (std::size_t other : group) {
+            const Ellipse& o = file.sites[other];
+            if (o == e || o.same_shape_and_place(e)) {
+                throw InputError(name, line_number, 1,
+                                 "duplicate site: site " + std::to_string(id) + " (line " +
+                                     std::to_string(line_number) + ") is the same " +
+                                     (o == e ? "ellipse" : "point set") + " as site " + std::to_string(other) +
+                                     " (line " + std::to_string(file.lines[other]) + "); sites must be distinct");
+            }
+        }
+        group.push_back(id);
+        file.sites.push_back(std::move(e));
+        file.lines.push_back(line_number);
+    }
+    if (in.bad()) throw InputError(name, line_number + 1, 1, "read error");
+    return file;
+}
+
+SiteFile read_site_file(const std::string& path, SiteFormat format) {
+    if (path == "-") return read_site_file(std::cin, "<stdin>", format);
+    struct stat st;
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        throw InputError(path, 1, 1, "cannot read: is a directory; expected a site file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        const int err = errno;
+        throw InputError(path, 1, 1, std::string("cannot open file: ") + std::strerror(err));
+    }
+    return read_site_file(in, path, format);
+}
+
+std::vector<Ellipse> read_sites(std::istream& in, const std::string& name, SiteFormat format) {
+    return read_site_file(in, name, format).sites;
+}
+
+std::vector<Ellipse> read_sites(const std::string& path, SiteFormat format) {
+    return read_site_file(path, format).sites;
+}
+
+namespace {
+void write_header(std::ostream& out, const std::string& header) {
+    if (header.empty()) return;
+    std::size_t start = 0;
+    while (start <= header.size()) {
+        std::size_t end = header.find('\n', start);
+        if (end == std::string::npos) end = header.size();
+        out << "# " << header.substr(start, end - start) << '\n';
+        if (end == header.size()) break;
+        start = end + 1;
+    }
+}
+}  // namespace
+
+void write_ell(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header) {
+    write_header(out, header);
+    for (const Ellipse& e : sites) out << e.str() << '\n';
+}
+
+void write_cin(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header) {
+    for (std::size_t i = 0; i < sites.size(); ++i)
+        if (!sites[i].is_circle())
+            throw Error("write_cin: site " + std::to_string(i) + " is not a circle (a != b)");
+    write_header(out, header);
+    for (const Ellipse& e : sites) out << e.xc().str() << ' ' << e.yc().str() << ' ' << e.a().str() << '\n';
+}
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    std::string dir = ".", base = path;
+    std::size_t slash = path.rfind('/');
+    if (slash != std::string::npos) {
+        dir = slash == 0 ? "/" : path.substr(0, slash);
+        base = path.substr(slash + 1);
+    }
+    if (base.empty()) throw Error("cannot write '" + path + "': not a file name");
+    std::string tmpl = dir + "/." + base + ".tmp.XXXXXX";
+    std::vector<char> name(tmpl.begin(), tmpl.end());
+    name.push_back('\0');
+    int fd = ::mkstemp(name.data());
+    if (fd < 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    ::close(fd);
+    const std::string tmp(name.data());
+    try {
+        {
+            std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+            if (!out) throw Error("cannot write '" + path + "': cannot open temporary file");
+            write(out);
+            out.flush();
+            if (!out) throw Error("cannot write '" + path + "': write failed");
+        }
+        if (std::rename(tmp.c_str(), path.c_str()) != 0)
+            throw Error("cannot write '" + path + "': " + std::strerror(errno));
+    } catch (...) {
+        std::remove(tmp.c_str());
+        throw;
+    }
+}
+
+}  // namespace ellvor

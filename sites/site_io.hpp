@@ -1,0 +1,67 @@
+// Reading and writing site files (DESIGN.md, "Commands").
+//
+// `.ell`: one ellipse a line, "a b w xc yc", each token a rational as accepted
+// by parse_rational (integer, p/q, exact decimal). `.cin` (CGAL's Apollonius
+// input, read with SiteFormat::cin): one circle a line, "x y r" (center, radius).
+// In both: '#' starts a comment anywhere on a line, blank lines are skipped,
+// fields are separated by spaces or tabs, a trailing '\r' (CRLF files) is
+// ignored, and site ids are 0-based in file order. Unlike CGAL's own reader we
+// keep exactly one site per line, so that every error has a line.
+//
+// Every problem is an InputError "FILE:LINE:COLUMN: what was expected", with the
+// 1-based column of the offending token (or of the end of the line for missing
+// fields; column 1 for whole-line or whole-file problems):
+//   missing or extra fields, a token that is not a rational, nan/inf, zero
+//   denominators, numbers beyond kMaxRationalBits, a <= 0, b <= 0 (r <= 0), two
+//   sites that are the same point set (the message names both lines and ids),
+//   a line longer than kMaxLineLength bytes, more than kMaxSites sites, a NUL
+//   byte, a file that cannot be opened.
+//
+// Writers produce exact "p/q" tokens, so reading back gives equal Ellipses.
+#pragma once
+
+#include "sites/ellipse.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace ellvor {
+
+enum class SiteFormat { ell, cin };
+
+// Input caps: a line longer than this is refused (as soon as the limit is
+// passed, without reading the rest of the line into memory), and so is a file
+// with more sites than kMaxSites.
+constexpr std::size_t kMaxLineLength = 1 << 20;  // 1 MiB
+constexpr std::size_t kMaxSites = 10'000'000;
+
+struct SiteFile {
+    std::string name;             // the display name used in messages
+    std::vector<Ellipse> sites;   // id = index
+    std::vector<long> lines;      // 1-based line of each site
+};
+
+// Read from a stream; `display_name` names it in messages.
+SiteFile read_site_file(std::istream& in, const std::string& display_name, SiteFormat format = SiteFormat::ell);
+// Read from a path ("-" is standard input). Throws InputError "PATH:1:1: cannot open ..." when unreadable.
+SiteFile read_site_file(const std::string& path, SiteFormat format = SiteFormat::ell);
+
+std::vector<Ellipse> read_sites(std::istream& in, const std::string& display_name, SiteFormat format = SiteFormat::ell);
+std::vector<Ellipse> read_sites(const std::string& path, SiteFormat format = SiteFormat::ell);
+
+// Writers. `header` lines (may be empty) are written first, each prefixed with "# ".
+void write_ell(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header = "");
+// Every site must be a circle (a == b), else Error. A circle's rotation is not
+// written, so a circle with w != 0 reads back as the same point set with w = 0.
+void write_cin(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header = "");
+
+// Writes a file atomically: `write` fills a temporary file in the same
+// directory, which is flushed and renamed onto `path` only if everything
+// succeeded; otherwise it is removed and the error rethrown. Throws Error when
+// the file cannot be created or written.
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+}  // namespace ellvor

@@ -1,0 +1,212 @@
+// Deterministic generators: reproducibility, disjointness (conservative and by exact
+// boundary sampling), nested fraction, bit sizes, and the seed paper's datasets.
+#include <catch2/catch.hpp>
+
+#include "sites/site_generators.hpp"
+#include "sites/site_io.hpp"
+#include "util/error.hpp"
+
+#include <set>
+#include <sstream>
+
+using namespace ellvor;
+
+namespace {
+
+std::string text(const std::vector<Ellipse>& sites) {
+    std::ostringstream out;
+    write_ell(out, sites);
+    return out.str();
+}
+
+// Exact boundary points of e: P(t) for t = k/3, |k| <= 12, and the i-point.
+std::vector<Point> boundary_samples(const Ellipse& e) {
+    std::vector<Point> pts;
+    for (long k = -12; k <= 12; ++k) pts.push_back(e.point_at(Rational(k, 3)));
+    pts.push_back(e.i_point());
+    return pts;
+}
+
+// Independent of the generator's own test: sampled boundary points of each ellipse
+// are strictly outside the other (separated pairs), or strictly inside (nested).
+void check_pair_by_sampling(const Ellipse& e1, const Ellipse& e2, bool nested_1_in_2) {
+    for (const Point& p : boundary_samples(e1)) {
+        const int side = e2.side_of_point(p.x, p.y);
+        if (nested_1_in_2) REQUIRE(side < 0);
+        else REQUIRE(side > 0);
+    }
+    if (!nested_1_in_2)
+        for (const Point& p : boundary_samples(e2)) REQUIRE(e1.side_of_point(p.x, p.y) > 0);
+}
+
+long nested_count(const std::vector<Ellipse>& s) {
+    long n = 0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = 0; j < s.size(); ++j)
+            if (i != j && bounding_circle_inside_inscribed(s[i], s[j])) {
+                ++n;
+                break;
+            }
+    return n;
+}
+
+void check_disjoint(const std::vector<Ellipse>& s, bool sample) {
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = i + 1; j < s.size(); ++j) {
+            const bool in_ij = bounding_circle_inside_inscribed(s[i], s[j]);
+            const bool in_ji = bounding_circle_inside_inscribed(s[j], s[i]);
+            INFO("sites " << i << " and " << j << ": " << s[i].str() << " | " << s[j].str());
+            REQUIRE((in_ij || in_ji || bounding_circles_separated(s[i], s[j])));
+            if (!sample) continue;
+            if (in_ij) check_pair_by_sampling(s[i], s[j], true);
+            else if (in_ji) check_pair_by_sampling(s[j], s[i], true);
+            else check_pair_by_sampling(s[i], s[j], false);
+        }
+}
+
+}  // namespace
+
+TEST_CASE("generators are deterministic: same seed, same sites; other seed, other sites", "[sites][generators]") {
+    for (SiteKind kind : {SiteKind::ellipses, SiteKind::circles}) {
+        GeneratorOptions o;
+        o.kind = kind;
+        o.count = 30;
+        o.seed = 42;
+        o.nested_fraction = Rational(1, 3);
+        const std::string a = text(generate_sites(o)), b = text(generate_sites(o));
+        CHECK(a == b);
+        o.seed = 43;
+        CHECK(text(generate_sites(o)) != a);
+    }
+    // A fixed sequence (guards against accidental changes of the draw algorithm,
+    // which would change every generated file).
+    SiteRandom r(7);
+    std::ostringstream s;
+    for (int i = 0; i < 4; ++i) s << r.uniform_rational(Rational(-10), Rational(10), 8).str() << ' ';
+    SiteRandom r2(7);
+    std::ostringstream s2;
+    for (int i = 0; i < 4; ++i) s2 << r2.uniform_rational(Rational(-10), Rational(10), 8).str() << ' ';
+    CHECK(s.str() == s2.str());
+    CHECK(s.str() == "-221/28 -1685/207 283/71 -436/229 ");  // fixed by the algorithm, on every machine
+}
+
+TEST_CASE("random ellipses and circles are pairwise disjoint, nested fraction honoured", "[sites][generators]") {
+    struct Case { SiteKind kind; long count; Rational fraction; long bits; };
+    for (const Case& c : {Case{SiteKind::ellipses, 25, Rational(0), 8}, Case{SiteKind::ellipses, 24, Rational(1, 4), 12},
+                          Case{SiteKind::circles, 20, Rational(1, 2), 6}, Case{SiteKind::ellipses, 9, Rational(1, 3), 3}}) {
+        GeneratorOptions o;
+        o.kind = c.kind;
+        o.count = c.count;
+        o.seed = 5;
+        o.bits = c.bits;
+        o.box = Rational(50);
+        o.nested_fraction = c.fraction;
+        auto s = generate_sites(o);
+        REQUIRE(static_cast<long>(s.size()) == c.count);
+        check_disjoint(s, true);
+        Rational expected = c.fraction * Rational(c.count) + Rational(1, 2);  // round half up
+        CHECK(nested_count(s) == fmpz_get_si(fmpq_numref(expected.get())) / fmpz_get_si(fmpq_denref(expected.get())));
+        for (const Ellipse& e : s) {
+            if (c.kind == SiteKind::circles) CHECK((e.is_circle() && e.w().is_zero()));
+            for (const Rational* v : {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()}) {
+                CHECK(fmpz_bits(fmpq_denref(v->get())) <= static_cast<ulong>(c.bits) + 1);  // q <= 2^bits
+                CHECK(v->to_double() >= -50);
+                CHECK(v->to_double() <= 50);
+            }
+        }
+    }
+    // more sites: conservative test only (sampling is quadratic times 26 points)
+    GeneratorOptions big;
+    big.count = 300;
+    big.seed = 9;
+    big.nested_fraction = Rational(1, 10);
+    auto s = generate_sites(big);
+    check_disjoint(s, false);
+    CHECK(nested_count(s) == 30);
+}
+
+TEST_CASE("generator option errors", "[sites][generators]") {
+    GeneratorOptions o;
+    o.count = -1;
+    CHECK_THROWS_AS(generate_sites(o), Error);
+    o.count = 5;
+    o.bits = 0;
+    CHECK_THROWS_AS(generate_sites(o), Error);
+    o.bits = 8;
+    o.nested_fraction = Rational(1);
+    CHECK_THROWS_AS(generate_sites(o), Error);
+    o.nested_fraction = Rational(0);
+    o.count = 0;
+    CHECK(generate_sites(o).empty());
+}
+
+TEST_CASE("paper datasets of section 5.1", "[sites][generators]") {
+    const Rational half(1, 2);
+    auto k1 = generate_paper_dataset(PaperFamily::kappa1, "1", 1);
+    REQUIRE(k1.instances.size() == 201);
+    CHECK(k1.instances[0].sites[0] == Ellipse::circle(Rational(-2), Rational(0), Rational(1)));
+    CHECK(k1.instances[0].sites[1] == Ellipse::circle(Rational(2), Rational(0), Rational(1)));
+    CHECK(k1.instances[0].query_point->x == Rational(0));
+    CHECK(k1.instances[0].query_point->y == Rational(-100));
+    CHECK(k1.instances[1].query_point->x == half);
+    CHECK(k1.instances[200].query_point->x == Rational(100));
+    CHECK(k1.instances[200].query_point->y == Rational(0));
+    CHECK(!k1.instances[0].query_site);
+
+    auto k2 = generate_paper_dataset(PaperFamily::kappa2, "1", 1);
+    REQUIRE(k2.instances.size() == 201);
+    CHECK(*k2.instances[3].query_site == Ellipse::circle(Rational(3, 2), Rational(-197, 2), Rational(1)));
+
+    auto ic = generate_paper_dataset(PaperFamily::incircle, "1", 1);
+    REQUIRE(ic.instances.size() == 393);
+    CHECK(ic.instances[0].sites[1] == Ellipse::circle(Rational(3, 2), Rational(0), half));
+    CHECK(*ic.instances[392].query_site == Ellipse::circle(Rational(0), Rational(50), Rational(1)));
+    CHECK(*ic.instances[1].query_site == Ellipse::circle(Rational(0), Rational(9, 8), Rational(1)));
+
+    // perturbations: each coordinate moves by exactly +-10^-k, with both signs occurring
+    for (auto [set, den] : {std::pair<const char*, long>{"2a", 100}, {"2b", 10000}, {"2c", 1000000}}) {
+        auto p = generate_paper_dataset(PaperFamily::incircle, set, 3);
+        REQUIRE(p.instances.size() == 393);
+        const Rational eps(1, static_cast<unsigned long>(den));
+        std::set<int> signs;
+        for (std::size_t k = 0; k < p.instances.size(); ++k) {
+            for (std::size_t s = 0; s < 4; ++s) {
+                const Ellipse& a = s < 3 ? p.instances[k].sites[s] : *p.instances[k].query_site;
+                const Ellipse& b = s < 3 ? ic.instances[k].sites[s] : *ic.instances[k].query_site;
+                for (auto d : {a.xc() - b.xc(), a.yc() - b.yc(), a.a() - b.a()}) {
+                    REQUIRE((d == eps || d == -eps));
+                    signs.insert(d.sign());
+                }
+                CHECK(a.is_circle());
+            }
+        }
+        CHECK(signs.size() == 2);
+        CHECK(text(generate_paper_dataset(PaperFamily::incircle, set, 3).instances[7].sites) ==
+              text(p.instances[7].sites));
+        CHECK(text(generate_paper_dataset(PaperFamily::incircle, set, 4).instances[7].sites) !=
+              text(p.instances[7].sites));
+    }
+    auto p1 = generate_paper_dataset(PaperFamily::kappa1, "2b", 1);
+    CHECK(p1.instances[0].query_point->x.sign() != 0);  // the query point is perturbed too
+
+    // random sets: 500 instances, disjoint circles in the box, kappa1 point outside both
+    for (PaperFamily f : {PaperFamily::kappa1, PaperFamily::kappa2, PaperFamily::incircle}) {
+        auto r = generate_paper_dataset(f, "3", 11);
+        REQUIRE(r.instances.size() == 500);
+        for (const PaperInstance& inst : r.instances) {
+            std::vector<Ellipse> all = inst.sites;
+            if (inst.query_site) all.push_back(*inst.query_site);
+            CHECK(all.size() == (f == PaperFamily::kappa1 ? 2u : f == PaperFamily::kappa2 ? 3u : 4u));
+            check_disjoint(all, false);
+            for (const Ellipse& c : all) {
+                CHECK(c.a() <= (f == PaperFamily::incircle ? Rational(5, 2) : Rational(2)));
+                CHECK(c.a() >= (f == PaperFamily::incircle ? Rational(1, 3) : Rational(0)));
+                CHECK(c.xc() >= Rational(-10));
+                CHECK(c.xc() <= Rational(10));
+            }
+            if (inst.query_point)
+                for (const Ellipse& c : inst.sites) CHECK(c.side_of_point(inst.query_point->x, inst.query_point->y) > 0);
+        }
+    }
+    CHECK_THROWS_AS(generate_paper_dataset(PaperFamily::kappa1, "4", 1), Error);
+}
