@@ -9,7 +9,9 @@
     X(check)               \
     X(generate)            \
     X(side_of_bisector)    \
-    X(bitangent)
+    X(bitangent)           \
+    X(incircle)            \
+    X(voronoi_circle)
 
 namespace ellvor::cli {
 #define ELLVOR_DECLARE_COMMAND(id) extern const Command command_##id;

@@ -35,8 +35,12 @@ IntPolynomial squarefree_part(const IntPolynomial& p);
 
 // All distinct real roots of p, sorted ascending, pairwise disjoint, with
 // multiplicities. Throws Error on the zero polynomial; a nonzero constant has
-// no roots. Every interval isolates its root for every squarefree factor of p
-// and for squarefree_part(p); p is nonzero at all non-exact endpoints.
+// no roots. Each open interval contains no root of p other than its own, so
+// it isolates that root for squarefree_part(p) and for the squarefree factor
+// owning it (the one whose exponent is the multiplicity); p is nonzero at all
+// endpoints of non-exact intervals. A rational root is reported exactly only
+// when it has a linear squarefree factor or lands on a bisection point;
+// otherwise it gets an interval like any other root.
 std::vector<IsolatingInterval> isolate_real_roots(const IntPolynomial& p);
 
 // The same for p = prod f_i^{e_i} given by its squarefree factorization

@@ -13,6 +13,7 @@ namespace {
 constexpr int kUnknowns = 6;  // t1, t2, t3, rho, x, y
 constexpr long kStartPrecision = 64;
 constexpr long kGuardBits = 32;
+constexpr long kCertifyPrecisionLimit = 1024;
 
 // Bits of accuracy of a ball: relative for |mid| >= 1, absolute below.
 long ball_bits(const arb_t x) {
@@ -117,22 +118,36 @@ long VoronoiCircleSolver::newton_step(long prec) {
 // m - Y F(m) needs the full precision: Y is any fixed matrix (here a 128-bit
 // approximate inverse), and the last term is of the order of the box radius
 // times |I - Y J|, so it is computed in 128-bit balls (rigorous, merely wider).
+// The box radius is inflated from the Newton correction Y F(m) itself
+// (epsilon-inflation), so ill-conditioned systems get a box that fits them.
 bool VoronoiCircleSolver::krawczyk(long prec) {
     constexpr long kLowPrecision = 128;
-    const long scale = magnitude_bits(midpoint_);
-    BallMatrix X = midpoint_, delta(kUnknowns, 1);
-    // Box radius: well above the rounding level of this precision.
-    for (int j = 0; j < kUnknowns; ++j) {
-        mag_set_ui_2exp_si(arb_radref(delta.at(j, 0)), 1, scale - prec + kGuardBits / 2);
-        arb_add_error(X.at(j, 0), delta.at(j, 0));
-    }
-    BallMatrix F(kUnknowns, 1), Fm(kUnknowns, 1), J(kUnknowns, kUnknowns), Y(kUnknowns, kUnknowns);
+    const long low = std::min(prec, kLowPrecision);
+    BallMatrix Fm(kUnknowns, 1), Flow(kUnknowns, 1), Jm(kUnknowns, kUnknowns), Y(kUnknowns, kUnknowns);
     tritangent_system(charts_, midpoint_, Fm, nullptr, prec);
-    tritangent_system(charts_, X, F, &J, std::min(prec, kLowPrecision));
-    if (!arb_mat_approx_inv(Y.get(), J.get(), kLowPrecision)) return false;
-    BallMatrix YF(kUnknowns, 1), YJ(kUnknowns, kUnknowns), M(kUnknowns, kUnknowns), D(kUnknowns, 1),
-        K(kUnknowns, 1);
+    tritangent_system(charts_, midpoint_, Flow, &Jm, low);
+    if (!arb_mat_approx_inv(Y.get(), Jm.get(), kLowPrecision)) return false;
+    BallMatrix YF(kUnknowns, 1);
     arb_mat_mul(YF.get(), Y.get(), Fm.get(), prec);
+
+    BallMatrix X = midpoint_;
+    for (int j = 0; j < kUnknowns; ++j) {
+        mag_t r, floor;
+        mag_init(r);
+        mag_init(floor);
+        arb_get_mag(r, YF.at(j, 0));
+        mag_mul_2exp_si(r, r, 2);
+        const long size = arf_is_zero(arb_midref(midpoint_.at(j, 0)))
+                              ? 0
+                              : std::max(0L, static_cast<long>(arf_abs_bound_lt_2exp_si(arb_midref(midpoint_.at(j, 0)))));
+        mag_set_ui_2exp_si(floor, 1, size - prec + kGuardBits / 4);
+        mag_add(arb_radref(X.at(j, 0)), r, floor);
+        mag_clear(r);
+        mag_clear(floor);
+    }
+    BallMatrix F(kUnknowns, 1), J(kUnknowns, kUnknowns), YJ(kUnknowns, kUnknowns), M(kUnknowns, kUnknowns),
+        D(kUnknowns, 1), K(kUnknowns, 1);
+    tritangent_system(charts_, X, F, &J, low);
     arb_mat_mul(YJ.get(), Y.get(), J.get(), kLowPrecision);
     arb_mat_one(M.get());
     arb_mat_sub(M.get(), M.get(), YJ.get(), kLowPrecision);
@@ -184,10 +199,14 @@ bool VoronoiCircleSolver::certify() {
     arb_set_d(midpoint_.at(3, 0), guess->radius);
     arb_set_d(midpoint_.at(4, 0), guess->x);
     arb_set_d(midpoint_.at(5, 0), guess->y);
-    for (int it = 0; it < 4; ++it)
-        if (newton_step(kStartPrecision) < 0) return false;
-    certified_ = krawczyk(kStartPrecision);
-    return certified_;
+    // Ill-conditioned triples (huge circles of nearly collinear sites) need
+    // more than the start precision before the Krawczyk test can pass.
+    for (long prec = kStartPrecision; prec <= kCertifyPrecisionLimit; prec *= 2) {
+        for (int it = 0; it < 4; ++it)
+            if (newton_step(prec) < 0) return false;
+        if ((certified_ = krawczyk(prec))) return true;
+    }
+    return false;
 }
 
 bool VoronoiCircleSolver::refine(long bits) {

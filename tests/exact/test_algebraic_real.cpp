@@ -155,9 +155,8 @@ TEST_CASE("sign_at: vanishing and nearly vanishing polynomials", "[exact]") {
     REQUIRE(sign_at(IntPolynomial{-1, 2}, half) == 0);
     REQUIRE(sign_at(IntPolynomial{0, 0, 1}, half) == 1);
     REQUIRE(sign_at(IntPolynomial(), s2) == 0);
-    // Mignotte cluster: q = x^30 - 2(33x-1)^2 has two roots ~33^-15 apart;
-    // the sign of q at a root of q's other factor... use the close root pair:
-    // sign of the derivative at the two close roots differs.
+    // Mignotte cluster: m = x^30 - 2(33x-1)^2 has two roots ~33^-15 apart
+    // on either side of 1/33; m' has opposite signs at them.
     IntPolynomial m;
     fmpz_poly_set_coeff_si(m.get(), 30, 1);
     IntPolynomial sq = mul(IntPolynomial{-1, 33}, IntPolynomial{-1, 33});
@@ -185,8 +184,8 @@ TEST_CASE("AlgebraicReal: to_ball is certified and accurate", "[exact]") {
         REQUIRE(arb_overlaps(b.get(), exact.get()));
         REQUIRE(arb_rel_accuracy_bits(b.get()) >= prec - 4);
     }
-    // A tiny root: 2^100 x - 1 times x^2 - 3 ... use x^2 - 2^-200 scaled.
-    IntPolynomial tiny;  // 2^200 x^2 - 3
+    // Tiny roots +-sqrt(3) 2^-100 of 2^200 x^2 - 3: relative accuracy.
+    IntPolynomial tiny;
     fmpz_poly_set_coeff_fmpz(tiny.get(), 2, pow2(200).numerator().get());
     fmpz_poly_set_coeff_si(tiny.get(), 0, -3);
     auto tr = real_roots(tiny);

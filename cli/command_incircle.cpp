@@ -1,0 +1,68 @@
+// ellvor incircle FILE: kappa3 on the four sites of FILE.
+#include "cli/command_list.hpp"
+
+#include "cli/site_arguments.hpp"
+#include "predicates/incircle.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <iostream>
+
+namespace ellvor::cli {
+namespace {
+
+const char* const kHelp =
+    "usage: ellvor incircle FILE [--cin] [--json] [--max-precision BITS]\n"
+    "\n"
+    "InCircle (kappa3, CGAL's vertex_conflict(E1, E2, E3, Q)) for the four sites of FILE in\n"
+    "the order E1 E2 E3 Q. The Voronoi circle of the ordered triple is externally tangent to\n"
+    "E1, E2, E3 with its tangency points counter-clockwise in that order. Prints one word:\n"
+    "  conflict      Q meets the open Voronoi disk (NEGATIVE)\n"
+    "  no-conflict   it does not (POSITIVE)\n"
+    "  tangent       Q is externally tangent to the circle (ZERO)\n"
+    "  no-circle     the triple has no counter-clockwise Voronoi circle (NEGATIVE, CGAL's rule)\n"
+    "  undecided     the certified subdivision stage reached its precision cap: a degenerate\n"
+    "                or nearly degenerate configuration (no exact stage yet); never a guess\n"
+    "\n"
+    "options:\n"
+    "  --cin                 read CGAL's circle format 'x y r' instead of .ell\n"
+    "  --json                print {result, sign, stage, precision, newton_steps, time_us}\n"
+    "  --max-precision BITS  precision cap of the subdivision stage (default 4096)\n"
+    "\n"
+    "exit status: 0 decided; 3 undecided; 2 bad input (FILE must hold exactly four sites).\n";
+
+constexpr int kExitUndecided = 3;
+
+int run(const std::vector<std::string>& args) {
+    Arguments parsed(args, {{"--cin", false}, {"--json", false}, {"--max-precision", true}});
+    if (parsed.help()) {
+        std::cout << kHelp;
+        return kExitOk;
+    }
+    parsed.expect_positional(1, 1, "FILE");
+    InCircleOptions options;
+    options.max_precision = parsed.integer("--max-precision", options.max_precision, 64, 1L << 24);
+    const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
+    require_site_count(file, 4, 4, "E1 E2 E3 Q");
+    const auto& s = file.sites;
+
+    const auto start = std::chrono::steady_clock::now();
+    const InCircleDecision d = incircle(s[0], s[1], s[2], s[3], options);
+    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+    if (parsed.has("--json")) {
+        nlohmann::json j = {{"result", incircle_name(d.result)}, {"stage", stage_name(d.stage)},
+                            {"precision", d.precision}, {"newton_steps", d.newton_steps}, {"time_us", us}};
+        j["sign"] = d.result == InCircle::undecided ? nlohmann::json(nullptr) : nlohmann::json(incircle_sign(d.result));
+        std::cout << j.dump() << "\n";
+    } else {
+        std::cout << incircle_name(d.result) << "\n";
+    }
+    return d.result == InCircle::undecided ? kExitUndecided : kExitOk;
+}
+
+}  // namespace
+
+const Command command_incircle = {"incircle", "kappa3: a site against the Voronoi circle of three", kHelp, run};
+
+}  // namespace ellvor::cli

@@ -1,0 +1,41 @@
+#include "predicates/bisector_order.hpp"
+
+namespace ellvor {
+
+Ball parameter_angle(const Ball& parameter, bool flipped, long prec) {
+    Ball theta;
+    if (flipped) {
+        Ball one(Rational(1), prec), minus_u;
+        arb_neg(minus_u.get(), parameter.get());
+        arb_atan2(theta.get(), one.get(), minus_u.get(), prec);
+    } else {
+        arb_atan(theta.get(), parameter.get(), prec);
+    }
+    arb_mul_2exp_si(theta.get(), theta.get(), 1);
+    return theta;
+}
+
+BisectorFrame::BisectorFrame(const Ellipse& e1, const Ellipse& e2)
+    : departure_(external_bitangent_on(e1, e2, HullSide::departure)) {}
+
+Ball BisectorFrame::position(const Ball& parameter, bool flipped, long prec) {
+    Ball start;
+    if (departure_.at_infinity()) {
+        arb_const_pi(start.get(), prec);  // the i-point, theta = pi
+    } else {
+        start = parameter_angle(departure_.value->to_ball(prec), false, prec);
+    }
+    Ball p = parameter_angle(parameter, flipped, prec), two_pi;
+    arb_sub(p.get(), p.get(), start.get(), prec);
+    arb_const_pi(two_pi.get(), prec);
+    arb_mul_2exp_si(two_pi.get(), two_pi.get(), 1);
+    // Reduce into (0, 2 pi): both angles lie in intervals of length 2 pi
+    // around 0 or pi, so the raw difference lies in (-2 pi, 3 pi).
+    if (arb_is_negative(p.get())) arb_add(p.get(), p.get(), two_pi.get(), prec);
+    Ball excess;
+    arb_sub(excess.get(), p.get(), two_pi.get(), prec);
+    if (arb_is_nonnegative(excess.get())) p = excess;
+    return p;
+}
+
+}  // namespace ellvor

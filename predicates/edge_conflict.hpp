@@ -1,0 +1,47 @@
+// kappa4 (CGAL Finite_edge_interior_conflict_2): does a query site Q conflict
+// with the Voronoi edge of (E1, E2)? The edge runs between two Voronoi
+// vertices, or to the ends of the bisector (infinite vertices):
+//   6 sites: from VC(E1, E2, E3) to VC(E1, E4, E2);
+//   5 sites: from the end at the infinite vertex (E2, E1, inf) to VC(E1, E2, E3);
+//   4 sites: the whole bisector.
+// `endpoints_in_conflict` (CGAL's b) is Q's conflict status at the edge's
+// vertices. With b = true the answer is "the whole edge is in conflict", with
+// b = false "some interior point of the edge is in conflict".
+//
+// Q's shadow region on the bisector (the points whose Voronoi disk Q meets) is
+// bounded by the Voronoi circles of (E1, E2, Q) and (E1, Q, E2) when both
+// exist; it is one interval, or two rays when it reaches both ends (kappa2).
+// The answer then only needs the position of one of them along the bisector
+// relative to the edge's vertices (bisector_order.hpp); with fewer than two
+// circles the shadow region cannot separate the edge's ends and the answer
+// is b.
+#pragma once
+
+#include "predicates/stage.hpp"
+#include "sites/ellipse.hpp"
+
+#include <optional>
+
+namespace ellvor {
+
+struct EdgeConflictOptions {
+    long max_precision = 4096;  // beyond this the vertex order is undecided
+};
+
+struct EdgeConflictDecision {
+    std::optional<bool> conflict;  // nullopt: undecided (vertices not separated at the cap)
+    Stage stage = Stage::filter;
+    long precision = 0;
+};
+
+EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                   const Ellipse& e4, const Ellipse& q, bool endpoints_in_conflict,
+                                                   const EdgeConflictOptions& options = {});
+EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                   const Ellipse& q, bool endpoints_in_conflict,
+                                                   const EdgeConflictOptions& options = {});
+EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
+                                                   bool endpoints_in_conflict,
+                                                   const EdgeConflictOptions& options = {});
+
+}  // namespace ellvor
