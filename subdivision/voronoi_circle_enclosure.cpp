@@ -202,9 +202,9 @@ bool VoronoiCircleSolver::certify() {
     // Ill-conditioned triples (huge circles of nearly collinear sites) need
     // more than the start precision before the Krawczyk test can pass.
     for (long prec = kStartPrecision; prec <= kCertifyPrecisionLimit; prec *= 2) {
-        for (int it = 0; it < 4; ++it)
-            if (newton_step(prec) < 0) return false;
-        if ((certified_ = krawczyk(prec))) return true;
+        bool singular = false;
+        for (int it = 0; it < 4 && !singular; ++it) singular = newton_step(prec) < 0;
+        if (!singular && (certified_ = krawczyk(prec))) return true;
     }
     return false;
 }

@@ -56,14 +56,18 @@ double scale_of(const std::array<Shape, 3>& e) {
     return s;
 }
 
-// Damped Newton; true when |F| is at rounding level.
+// Damped Newton; true when |F| is at the rounding level of the sites and of
+// the circle (a huge circle of nearly collinear sites has a large center).
 bool newton(const std::array<Shape, 3>& e, Vector6& X) {
-    const double tolerance = 1e-13 * scale_of(e);
+    const double site_scale = scale_of(e);
+    auto tolerance_at = [&](const Vector6& Y) {
+        return 1e-13 * std::max({site_scale, std::fabs(Y[3]), std::fabs(Y[4]), std::fabs(Y[5])});
+    };
     Vector6 F;
     Matrix6 J;
     evaluate(e, X, F, J);
     for (int it = 0; it < 60; ++it) {
-        if (F.norm() < tolerance) return true;
+        if (F.norm() < tolerance_at(X)) return true;
         const Vector6 step = J.partialPivLu().solve(F);
         if (!step.allFinite()) return false;
         double damping = 1;
@@ -76,7 +80,7 @@ bool newton(const std::array<Shape, 3>& e, Vector6& X) {
         }
         X = next, F = Fn, J = Jn;
     }
-    return F.norm() < tolerance;
+    return F.norm() < tolerance_at(X);
 }
 
 // The tangency points appear counter-clockwise on the circle iff the
@@ -142,50 +146,120 @@ Vector6 start_from(const std::array<Shape, 3>& e, const std::array<double, 3>& c
     return X;
 }
 
-std::array<Shape, 3> blend(const std::array<Shape, 3>& e, double lambda) {
-    std::array<Shape, 3> m = e;
-    for (Shape& k : m) {
-        const double r = std::min(k.a, k.b);
+// The three sites as circles of the same centers: radius min(a, b) (inscribed,
+// so still disjoint), the mean, or max(a, b).
+enum class CircleModel { inscribed, mean, circumscribed };
+
+double model_radius(const Shape& k, CircleModel m) {
+    switch (m) {
+        case CircleModel::inscribed: return std::min(k.a, k.b);
+        case CircleModel::mean: return 0.5 * (k.a + k.b);
+        case CircleModel::circumscribed: return std::max(k.a, k.b);
+    }
+    return k.a;
+}
+
+// Shapes morphed from the circle model (lambda = 0) to the ellipses (1).
+std::array<Shape, 3> blend(const std::array<Shape, 3>& e, CircleModel m, double lambda) {
+    std::array<Shape, 3> out = e;
+    for (Shape& k : out) {
+        const double r = model_radius(k, m);
         k.a = r + lambda * (k.a - r);
         k.b = r + lambda * (k.b - r);
     }
-    return m;
+    return out;
+}
+
+// Fallback: Newton in the plane on V for d1(V) = d2(V) = d3(V) (distances to
+// the ellipses, gradients the unit vectors from the nearest points), started
+// from a grid over and around the sites' bounding box.
+std::optional<Vector6> equidistant_point_search(const std::array<Shape, 3>& e) {
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const Shape& k : e) {
+        const double r = std::max(k.a, k.b);
+        x0 = std::min(x0, k.x - r), x1 = std::max(x1, k.x + r);
+        y0 = std::min(y0, k.y - r), y1 = std::max(y1, k.y + r);
+    }
+    const double w = x1 - x0, h = y1 - y0;
+    constexpr int kGrid = 9;
+    for (int gi = 0; gi < kGrid; ++gi)
+        for (int gj = 0; gj < kGrid; ++gj) {
+            double vx = x0 - w + 3 * w * gi / (kGrid - 1), vy = y0 - h + 3 * h * gj / (kGrid - 1);
+            Vector6 X;
+            bool converged = false;
+            for (int it = 0; it < 40 && !converged; ++it) {
+                double d[3], ux[3], uy[3];
+                bool outside = true;
+                for (int i = 0; i < 3; ++i) {
+                    const Shape& k = e[i];
+                    const double dx = vx - k.x, dy = vy - k.y;
+                    const double lx = k.c * dx + k.s * dy, ly = k.c * dy - k.s * dx;
+                    outside = outside && (lx * lx / (k.a * k.a) + ly * ly / (k.b * k.b) > 1);
+                    const double th = approximate_nearest_angle(k.a, k.b, lx, ly);
+                    X[i] = th;
+                    const double px = k.x + k.a * std::cos(th) * k.c - k.b * std::sin(th) * k.s;
+                    const double py = k.y + k.a * std::cos(th) * k.s + k.b * std::sin(th) * k.c;
+                    d[i] = std::hypot(vx - px, vy - py);
+                    ux[i] = (vx - px) / d[i], uy[i] = (vy - py) / d[i];
+                }
+                if (!outside) break;
+                const double g1 = d[0] - d[1], g2 = d[0] - d[2];
+                if (std::fabs(g1) + std::fabs(g2) < 1e-10 * (1 + d[0])) {
+                    X[3] = d[0], X[4] = vx, X[5] = vy;
+                    converged = true;
+                    break;
+                }
+                const double a11 = ux[0] - ux[1], a12 = uy[0] - uy[1], a21 = ux[0] - ux[2], a22 = uy[0] - uy[2];
+                const double det = a11 * a22 - a12 * a21;
+                if (!(std::fabs(det) > 1e-300)) break;
+                vx -= (a22 * g1 - a12 * g2) / det;
+                vy -= (a11 * g2 - a21 * g1) / det;
+            }
+            if (converged && newton(e, X) && is_counterclockwise_solution(e, X)) return X;
+        }
+    return std::nullopt;
 }
 
 }  // namespace
 
 std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     const std::array<Shape, 3> e = {shape_of(e1), shape_of(e2), shape_of(e3)};
-    const std::array<Shape, 3> inscribed = blend(e, 0);
-    const auto circles = apollonius_circles(inscribed, {inscribed[0].a, inscribed[1].a, inscribed[2].a});
     auto accept = [&](const Vector6& X) {
         VoronoiCircleGuess g;
         for (int i = 0; i < 3; ++i) g.theta[i] = std::remainder(X[i], 2 * M_PI);
         g.radius = X[3], g.x = X[4], g.y = X[5];
         return g;
     };
-    // Direct Newton on the ellipses from each Apollonius circle.
-    for (const auto& circle : circles) {
-        Vector6 X = start_from(e, circle);
-        if (newton(e, X) && is_counterclockwise_solution(e, X)) return accept(X);
-    }
-    // Continuation from the inscribed circles to the ellipses.
-    for (const auto& circle : circles) {
-        Vector6 X = start_from(inscribed, circle);
-        if (!newton(inscribed, X) || !is_counterclockwise_solution(inscribed, X)) continue;
-        double lambda = 0, step = 0.25;
-        while (lambda < 1 && step > 1e-4) {
-            const double next = std::min(1.0, lambda + step);
-            Vector6 Y = X;
-            const auto shapes = blend(e, next);
-            if (newton(shapes, Y) && is_counterclockwise_solution(shapes, Y)) {
-                X = Y, lambda = next, step *= 1.5;
-            } else {
-                step *= 0.5;
-            }
+    constexpr CircleModel kModels[] = {CircleModel::inscribed, CircleModel::mean, CircleModel::circumscribed};
+    // Direct Newton on the ellipses from each Apollonius circle of each model.
+    for (CircleModel m : kModels) {
+        const auto circles = blend(e, m, 0);
+        for (const auto& circle : apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a})) {
+            Vector6 X = start_from(e, circle);
+            if (newton(e, X) && is_counterclockwise_solution(e, X)) return accept(X);
         }
-        if (lambda == 1) return accept(X);
     }
+    // Continuation from each model's counter-clockwise circle to the ellipses.
+    for (CircleModel m : kModels) {
+        const auto circles = blend(e, m, 0);
+        for (const auto& circle : apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a})) {
+            Vector6 X = start_from(circles, circle);
+            if (!newton(circles, X) || !is_counterclockwise_solution(circles, X)) continue;
+            double lambda = 0, step = 0.25;
+            while (lambda < 1 && step > 1e-4) {
+                const double next = std::min(1.0, lambda + step);
+                Vector6 Y = X;
+                const auto shapes = blend(e, m, next);
+                if (newton(shapes, Y) && is_counterclockwise_solution(shapes, Y)) {
+                    X = Y, lambda = next, step *= 1.5;
+                } else {
+                    step *= 0.5;
+                }
+            }
+            if (lambda == 1) return accept(X);
+        }
+    }
+    if (const auto X = equidistant_point_search(e)) return accept(*X);
     return std::nullopt;
 }
 
