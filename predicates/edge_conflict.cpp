@@ -148,4 +148,27 @@ EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Elli
     return decide(e1, e2, q, b, edge, options);
 }
 
+EdgeConflictDecision infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+                                                     const Ellipse& q, bool b) {
+    // Contact points on E2 of the edge's ends and of Q's boundary lines.
+    BoundaryParameter from = external_bitangent_on(e2, e3, HullSide::arrival);   // vertex (E2, E3, inf)
+    BoundaryParameter to = external_bitangent_on(e2, e4, HullSide::departure);   // vertex (E4, E2, inf)
+    BoundaryParameter start = external_bitangent_on(e2, q, HullSide::departure);  // vertex (Q, E2, inf)
+    EdgeConflictDecision d;
+    d.stage = Stage::exact;
+    int inside = position_in_arc(from, to, start);
+    if (inside == 0) {  // Q's line coincides with an end: use its other line (Q, E2)
+        BoundaryParameter other = external_bitangent_on(e2, q, HullSide::arrival);  // vertex (E2, Q, inf)
+        inside = position_in_arc(from, to, other);
+        if (inside == 0) {
+            d.conflict = !b;
+            return d;
+        }
+    }
+    // b: the whole edge is in conflict unless Q's conflict region begins inside
+    // it; !b: some interior point is in conflict iff it begins inside it.
+    d.conflict = b ? inside < 0 : inside > 0;
+    return d;
+}
+
 }  // namespace ellvor

@@ -44,4 +44,14 @@ EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Elli
                                                    bool endpoints_in_conflict,
                                                    const EdgeConflictOptions& options = {});
 
+// kappa4 for the Voronoi edge dual to the Delaunay edge (infinity, E2), whose
+// neighbours on the convex hull are E3 (before) and E4 (after) (CGAL
+// Infinite_edge_interior_conflict_2). The edge is made of the tangent lines of
+// E2 turning counter-clockwise from the infinite vertex of the hull face
+// (E2, E3, inf) to that of (E4, E2, inf); Q's conflict region on it is bounded
+// by the tangent lines of the infinite vertices (Q, E2, inf) and (E2, Q, inf). Everything is an exact comparison of degree-4
+// tangency parameters on E2, so the answer is always decided.
+EdgeConflictDecision infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+                                                     const Ellipse& q, bool endpoints_in_conflict);
+
 }  // namespace ellvor

@@ -21,6 +21,19 @@ int sign_at(const IntPolynomial& p, long formal_degree, BoundaryParameter& t) {
     return ellvor::sign_at(p, *t.value);
 }
 
+int compare(BoundaryParameter& a, BoundaryParameter& b) {
+    if (a.at_infinity() || b.at_infinity()) return a.at_infinity() - b.at_infinity();
+    return ellvor::compare(*a.value, *b.value);
+}
+
+int position_in_arc(BoundaryParameter& from, BoundaryParameter& to, BoundaryParameter& x) {
+    const int after_from = compare(x, from), before_to = compare(to, x);
+    if (after_from == 0 || before_to == 0) return 0;
+    const bool inside = compare(from, to) < 0 ? (after_from > 0 && before_to > 0)   // from < x < to
+                                              : (after_from > 0 || before_to > 0);  // wraps through infinity
+    return inside ? 1 : -1;
+}
+
 BallPoint boundary_point(const Ellipse& e, BoundaryParameter& t, long prec) {
     if (t.at_infinity()) {
         const Point ip = e.i_point();

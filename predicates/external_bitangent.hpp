@@ -18,6 +18,13 @@ struct BoundaryParameter {
     bool at_infinity() const { return !value.has_value(); }
 };
 
+// Exact order of two parameters on the projective line cut at infinity
+// (ascending t, then infinity): -1, 0, +1.
+int compare(BoundaryParameter& a, BoundaryParameter& b);
+// Whether x lies strictly inside (+1), at an end (0) or outside (-1) the
+// counter-clockwise arc from `from` to `to` (from != to).
+int position_in_arc(BoundaryParameter& from, BoundaryParameter& to, BoundaryParameter& x);
+
 // Sign of p at a boundary parameter; p has formal degree `formal_degree`
 // (its value at infinity is the sign of that coefficient, 0 if it vanishes).
 int sign_at(const IntPolynomial& p, long formal_degree, BoundaryParameter& t);
