@@ -96,8 +96,12 @@ long jacobian_precision(long prec) { return std::max(kStartPrecision, prec / 2 +
 long VoronoiCircleSolver::newton_step(long prec) {
     const long jprec = jacobian_precision(prec);
     BallMatrix F(kUnknowns, 1), Fj(kUnknowns, 1), J(kUnknowns, kUnknowns), step(kUnknowns, 1);
-    tritangent_system(charts_, midpoint_, F, nullptr, prec);
-    tritangent_system(charts_, midpoint_, Fj, &J, jprec);
+    if (jprec >= prec) {
+        tritangent_system(charts_, midpoint_, F, &J, prec);
+    } else {
+        tritangent_system(charts_, midpoint_, F, nullptr, prec);
+        tritangent_system(charts_, midpoint_, Fj, &J, jprec);
+    }
     if (!arb_mat_approx_solve(step.get(), J.get(), F.get(), jprec)) return -1;
     for (int j = 0; j < kUnknowns; ++j) {
         arb_sub(midpoint_.at(j, 0), midpoint_.at(j, 0), step.at(j, 0), prec);
@@ -124,8 +128,12 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     constexpr long kLowPrecision = 128;
     const long low = std::min(prec, kLowPrecision);
     BallMatrix Fm(kUnknowns, 1), Flow(kUnknowns, 1), Jm(kUnknowns, kUnknowns), Y(kUnknowns, kUnknowns);
-    tritangent_system(charts_, midpoint_, Fm, nullptr, prec);
-    tritangent_system(charts_, midpoint_, Flow, &Jm, low);
+    if (low >= prec) {
+        tritangent_system(charts_, midpoint_, Fm, &Jm, prec);
+    } else {
+        tritangent_system(charts_, midpoint_, Fm, nullptr, prec);
+        tritangent_system(charts_, midpoint_, Flow, &Jm, low);
+    }
     if (!arb_mat_approx_inv(Y.get(), Jm.get(), kLowPrecision)) return false;
     BallMatrix YF(kUnknowns, 1);
     arb_mat_mul(YF.get(), Y.get(), Fm.get(), prec);
@@ -202,9 +210,13 @@ bool VoronoiCircleSolver::certify() {
     // Ill-conditioned triples (huge circles of nearly collinear sites) need
     // more than the start precision before the Krawczyk test can pass.
     for (long prec = kStartPrecision; prec <= kCertifyPrecisionLimit; prec *= 2) {
+        // The floating-point guess is good to about 50 bits: one step reaches
+        // the start precision; more only when the certificate fails.
         bool singular = false;
-        for (int it = 0; it < 4 && !singular; ++it) singular = newton_step(prec) < 0;
-        if (!singular && (certified_ = krawczyk(prec))) return true;
+        for (int it = 0; it < 4 && !singular; ++it) {
+            singular = newton_step(prec) < 0;
+            if (!singular && (certified_ = krawczyk(prec))) return true;
+        }
     }
     return false;
 }
