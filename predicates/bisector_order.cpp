@@ -1,5 +1,7 @@
 #include "predicates/bisector_order.hpp"
 
+#include <algorithm>
+
 namespace ellvor {
 
 Ball parameter_angle(const Ball& parameter, bool flipped, long prec) {
@@ -36,6 +38,28 @@ Ball BisectorFrame::position(const Ball& parameter, bool flipped, long prec) {
     arb_sub(excess.get(), p.get(), two_pi.get(), prec);
     if (arb_is_nonnegative(excess.get())) p = excess;
     return p;
+}
+
+bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec, Ball& position) {
+    constexpr long kGuard = 16;
+    if (!solver.refine(std::max(prec - kGuard, 1L))) return false;
+    const auto& c = solver.enclosure();
+    position = frame.position(c.parameter[index], c.flipped[index], prec);
+    return true;
+}
+
+std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
+                                     VoronoiCircleSolver& b, int index_b, long max_precision, long& precision) {
+    constexpr long kStartPrecision = 64;
+    for (long prec = kStartPrecision; prec <= max_precision; prec *= 2) {
+        precision = prec;
+        Ball pa, pb, difference;
+        if (!vertex_position(frame, a, index_a, prec, pa) || !vertex_position(frame, b, index_b, prec, pb))
+            return std::nullopt;
+        arb_sub(difference.get(), pa.get(), pb.get(), prec);
+        if (int s = difference.certain_sign()) return s;
+    }
+    return std::nullopt;
 }
 
 }  // namespace ellvor

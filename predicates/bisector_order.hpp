@@ -27,6 +27,19 @@ private:
     BoundaryParameter departure_;
 };
 
+// Position along the bisector frame of the Voronoi vertex certified by
+// `solver`, whose triple has the frame's E1 at `index`: refines the solver to
+// about prec bits first. False when the solver cannot certify (undecided).
+bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec, Ball& position);
+
+// Order of two Voronoi vertices along the bisector of (E1, E2) (both circles
+// touch E1 and E2; `index` is E1's place in each triple): -1 if `a` comes
+// first from the departure end, +1 if after, nullopt when they cannot be
+// separated below max_precision (equal vertices need the exact stage).
+// `precision` receives the last precision used.
+std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
+                                     VoronoiCircleSolver& b, int index_b, long max_precision, long& precision);
+
 // Angle theta of E's parametrization (t = tan(theta/2)) for a chart
 // parameter: 2 atan(t), or 2 atan2(1, -u) in the flipped chart (continuous
 // through the i-point, theta = pi).

@@ -13,8 +13,6 @@ namespace ellvor {
 
 namespace {
 
-constexpr long kStartPrecision = 64;
-
 // Where Q's shadow region on the bisector of (E1, E2) begins: the Voronoi
 // circle of (E1, E2, Q). `present` is false when the region has fewer than two
 // boundary circles.
@@ -38,60 +36,34 @@ ShadowRegion shadow_region(const Ellipse& e1, const Ellipse& e2, const Ellipse& 
     return s;
 }
 
-// Is the shadow boundary VC(E1, E2, Q) strictly inside the edge interval?
-// The edge is given by its vertices (triples starting with E1) and by whether
-// it reaches the departure end (position 0) or the arrival end (2 pi).
+// An edge of the bisector of (E1, E2): its finite vertices (triples starting
+// with E1); with one vertex it is the ray from the departure end (the
+// infinite vertex (E2, E1, inf)), with none the whole bisector.
 struct EdgeShape {
-    std::vector<std::array<const Ellipse*, 3>> vertices;  // 0, 1 or 2 finite vertices
-    bool from_departure_end = false;
-    bool to_arrival_end = false;
+    std::vector<std::array<const Ellipse*, 3>> vertices;
 };
 
-// true/false when decided; nullopt when some circle cannot be certified or the
-// positions cannot be separated below the precision cap.
+// Whether the shadow boundary VC(E1, E2, Q) lies strictly inside the edge:
+// true/false when decided; nullopt when some circle cannot be certified or
+// the positions cannot be separated below the precision cap.
 std::optional<bool> boundary_inside_edge(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, const EdgeShape& edge,
                                          const EdgeConflictOptions& options, long& precision) {
     BisectorFrame frame(e1, e2);
-    std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers;
-    for (const auto& v : edge.vertices) solvers.push_back(std::make_unique<VoronoiCircleSolver>(*v[0], *v[1], *v[2]));
     VoronoiCircleSolver boundary(e1, e2, q);
-    for (long prec = kStartPrecision; prec <= options.max_precision; prec *= 2) {
-        precision = prec;
-        if (!boundary.refine(prec - 16)) return std::nullopt;
-        const auto& b = boundary.enclosure();
-        const Ball s = frame.position(b.parameter[0], b.flipped[0], prec);
-        // Positions of the edge's ends: a finite vertex, or an end of the bisector.
-        std::vector<Ball> ends;
-        for (auto& solver : solvers) {
-            if (!solver->refine(prec - 16)) return std::nullopt;
-            const auto& c = solver->enclosure();
-            ends.push_back(frame.position(c.parameter[0], c.flipped[0], prec));
-        }
-        // s strictly after the lower end and strictly before the upper end?
-        int above_low = 1, below_high = 1;  // an end of the bisector is passed by every finite circle
-        Ball d;
-        if (edge.from_departure_end) {
-            if (!ends.empty()) {
-                arb_sub(d.get(), ends[0].get(), s.get(), prec);
-                below_high = d.certain_sign();
-            }
-        } else if (edge.to_arrival_end) {
-            arb_sub(d.get(), s.get(), ends[0].get(), prec);
-            above_low = d.certain_sign();
-        } else if (ends.size() == 2) {
-            Ball lo = ends[0], hi = ends[1], diff;
-            arb_sub(diff.get(), hi.get(), lo.get(), prec);
-            if (diff.certain_sign() == 0) continue;
-            if (diff.certain_sign() < 0) std::swap(lo, hi);
-            arb_sub(d.get(), s.get(), lo.get(), prec);
-            above_low = d.certain_sign();
-            arb_sub(d.get(), hi.get(), s.get(), prec);
-            below_high = d.certain_sign();
-        }
-        if (above_low < 0 || below_high < 0) return false;
-        if (above_low > 0 && below_high > 0) return true;
+    std::vector<std::unique_ptr<VoronoiCircleSolver>> ends;  // the edge's finite vertices
+    for (const auto& v : edge.vertices) ends.push_back(std::make_unique<VoronoiCircleSolver>(*v[0], *v[1], *v[2]));
+    if (ends.empty()) return true;  // the whole bisector
+    if (ends.size() == 1) {
+        // The ray from the departure end to the vertex.
+        const auto order = order_on_bisector(frame, boundary, 0, *ends[0], 0, options.max_precision, precision);
+        if (!order) return std::nullopt;
+        return *order < 0;
     }
-    return std::nullopt;
+    const auto first = order_on_bisector(frame, boundary, 0, *ends[0], 0, options.max_precision, precision);
+    if (!first) return std::nullopt;
+    const auto second = order_on_bisector(frame, boundary, 0, *ends[1], 0, options.max_precision, precision);
+    if (!second) return std::nullopt;
+    return *first != *second;  // after one end and before the other
 }
 
 EdgeConflictDecision decide(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, bool b, const EdgeShape& edge,
@@ -137,15 +109,12 @@ EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Elli
                                                    const Ellipse& q, bool b, const EdgeConflictOptions& options) {
     EdgeShape edge;
     edge.vertices = {{&e1, &e2, &e3}};
-    edge.from_departure_end = true;
     return decide(e1, e2, q, b, edge, options);
 }
 
 EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, bool b,
                                                    const EdgeConflictOptions& options) {
-    EdgeShape edge;
-    edge.from_departure_end = edge.to_arrival_end = true;
-    return decide(e1, e2, q, b, edge, options);
+    return decide(e1, e2, q, b, EdgeShape{}, options);
 }
 
 EdgeConflictDecision infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,

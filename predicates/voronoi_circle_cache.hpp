@@ -1,0 +1,43 @@
+// Cache of certified Voronoi circles, keyed by the ordered triple of site ids
+// (a cyclic rotation of a triple is the same circle with the same
+// orientation, so all three rotations share one entry). The cache belongs to
+// whoever builds it -- a graph, a benchmark, a CLI call -- and holds pointers
+// to sites that must outlive it; sites are never mutated.
+#pragma once
+
+#include "sites/ellipse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <memory>
+
+namespace ellvor {
+
+using SiteId = std::size_t;
+
+class VoronoiCircleCache {
+public:
+    struct Entry {
+        std::array<SiteId, 3> ids;  // rotated so that the smallest id comes first
+        std::unique_ptr<VoronoiCircleSolver> solver;
+        // Index in the solver's triple of the site with this id.
+        int index_of(SiteId id) const;
+    };
+
+    // The entry of the Voronoi circle of the ordered triple (i, j, k) of
+    // sites, created (not yet certified) on first use.
+    Entry& at(SiteId i, const Ellipse& ei, SiteId j, const Ellipse& ej, SiteId k, const Ellipse& ek);
+
+    std::size_t size() const { return entries_.size(); }
+    std::size_t hits() const { return hits_; }
+    std::size_t misses() const { return misses_; }
+    void clear() { entries_.clear(); }
+
+private:
+    std::map<std::array<SiteId, 3>, Entry> entries_;
+    std::size_t hits_ = 0, misses_ = 0;
+};
+
+}  // namespace ellvor
