@@ -1,5 +1,6 @@
 #include "predicates/incircle.hpp"
 
+#include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/point_ellipse_distance.hpp"
 #include "util/error.hpp"
@@ -37,8 +38,21 @@ constexpr long kStartPrecision = 64;
 // The enclosure is refined to this many bits below the working precision.
 constexpr long kEnclosureGuard = 16;
 
+// d(V, Q) - rho with double intervals (the filter): -1, +1, or 0.
+int filtered_distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q) {
+    const LocalPoint v = to_local(q, enclose(c.center_x), enclose(c.center_y));
+    const int side = filtered_side(v);
+    if (side < 0) return -1;  // the center is inside Q
+    if (side == 0) return 0;
+    const Interval distance = outside_distance_bounds(v), radius = enclose(c.radius);
+    if (distance.lo > radius.hi) return 1;
+    if (distance.hi < radius.lo) return -1;
+    return 0;
+}
+
 // d(V, Q) - rho at precision prec: -1, +1, or 0 when undecided.
 int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, long prec) {
+    if (int s = filtered_distance_minus_radius(c, q)) return s;
     const int side = certified_side(q, c.center_x, c.center_y, prec);
     if (side < 0) return -1;  // the center is inside Q
     if (side == 0) return 0;

@@ -3,7 +3,7 @@
 #include "exact/algebraic_real.hpp"
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
-#include "subdivision/nearest_point.hpp"
+#include "predicates/distance_filter.hpp"
 #include "util/error.hpp"
 #include "util/interval.hpp"
 
@@ -16,50 +16,6 @@ namespace ellvor {
 namespace {
 
 // ---------------------------------------------------------------- filter --
-
-// The point p in the ellipse's own frame (xi along the a-axis), enclosed.
-struct LocalPoint {
-    Interval x, y, a, b;
-};
-
-LocalPoint to_local(const Ellipse& e, const Point& p) {
-    const Ellipse::Enclosure& k = e.enclosure();
-    const Interval dx = enclose(p.x) - k.xc, dy = enclose(p.y) - k.yc;
-    return {k.cos * dx + k.sin * dy, k.cos * dy - k.sin * dx, k.a, k.b};
-}
-
-// Sign of (x/a)^2 + (y/b)^2 - 1, or 0 when the filter cannot tell.
-int filtered_side(const LocalPoint& q) {
-    const Interval v = (q.x / q.a).square() + (q.y / q.b).square() - Interval(1.0);
-    if (!v.finite()) return 0;
-    return v.positive() ? 1 : v.negative() ? -1 : 0;
-}
-
-// Certified bounds on the distance from an outside point to the ellipse:
-// the distance to a boundary point is an upper bound, the distance to the
-// tangent line there (the ellipse lies on one side of it) a lower bound.
-// Both meet at the foot point, so a good guess gives a tight interval.
-Interval outside_distance_bounds(const LocalPoint& q) {
-    double theta = approximate_nearest_angle(q.a.mid(), q.b.mid(), q.x.mid(), q.y.mid());
-    // A boundary point through the rational parametrization at an exact double
-    // u = tan(theta/2), in the chart where |u| <= 1 (flip by pi otherwise).
-    double sign = 1.0;
-    if (std::cos(theta) < 0) {
-        theta = theta > 0 ? theta - M_PI : theta + M_PI;
-        sign = -1.0;
-    }
-    const Interval u(std::tan(theta / 2));
-    const Interval den = Interval(1.0) + u.square();
-    const Interval c = (Interval(1.0) - u.square()) / den * Interval(sign);
-    const Interval s = (Interval(2.0) * u) / den * Interval(sign);
-    const Interval bx = q.a * c, by = q.b * s;
-    const Interval dx = q.x - bx, dy = q.y - by;
-    const Interval upper = (dx.square() + dy.square()).sqrt();
-    const Interval nx = c / q.a, ny = s / q.b;
-    const Interval lower = (nx * dx + ny * dy) / (nx.square() + ny.square()).sqrt();
-    const Interval d(std::fmax(lower.lo, 0.0), upper.hi);
-    return d.finite() ? d : Interval(0.0, INFINITY);
-}
 
 // +1 / -1 when decided, 0 when undecided.
 int filter_stage(const LocalPoint& q1, const LocalPoint& q2, int side1, int side2) {
@@ -139,7 +95,8 @@ SignDecision side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point&
                               const SideOfBisectorOptions& options) {
     // Which side of each boundary p is on: inside one and outside the other
     // decides at once (signed distances).
-    const LocalPoint q1 = to_local(e1, p), q2 = to_local(e2, p);
+    const Interval px = enclose(p.x), py = enclose(p.y);
+    const LocalPoint q1 = to_local(e1, px, py), q2 = to_local(e2, px, py);
     int side1 = filtered_side(q1), side2 = filtered_side(q2);
     Stage side_stage = Stage::filter;
     if (side1 == 0 || side2 == 0) {

@@ -68,6 +68,18 @@ struct Interval {
     double mid() const { return 0.5 * (lo + hi); }
 };
 
+// An enclosure of a ball (its endpoints rounded outward).
+inline Interval enclose(const Ball& b) {
+    arf_t x;
+    arf_init(x);
+    arb_get_lbound_arf(x, b.get(), 64);
+    const double lo = arf_get_d(x, ARF_RND_FLOOR);
+    arb_get_ubound_arf(x, b.get(), 64);
+    const double hi = arf_get_d(x, ARF_RND_CEIL);
+    arf_clear(x);
+    return {lo, hi};
+}
+
 // An enclosure of a rational (conversion within one ulp, then widened).
 inline Interval enclose(const Rational& q) { return Interval::around(q.to_double()); }
 
