@@ -14,7 +14,10 @@ namespace ellvor {
 // it does not. Never ZERO: when Q only touches L from the sites' side, the
 // tie is broken as in CGAL: NEGATIVE iff Q's contact point lies strictly
 // between the contact points of E1 and E2.
-// Requires E1, E2 separated or externally tangent (throws Error otherwise).
+// Precondition: E1, E2 separated or externally tangent, as every pair of
+// valid sites is. The exact stage checks it and throws Error; the filter does
+// not spend time on it (for crossing E1, E2 the external bitangent still
+// exists and its answer is the geometric one).
 // Cascade: double-interval filter on support functions -> exact signs at the
 // bitangent's tangency parameter (a real algebraic number of degree <= 4),
 // with Arb only to order contact points in the tie-break.

@@ -1,0 +1,349 @@
+// kappa3 incircle(E1, E2, E3, Q): Q against the counter-clockwise Voronoi
+// circle of (E1, E2, E3). Oracles: CGAL's Apollonius Vertex_conflict_2 on
+// integer circles (exact in doubles), the closed-form Apollonius oracle
+// (apollonius_oracle.hpp), exactly tangent configurations built by symmetry
+// and their perturbations by 10^-k.
+//
+// CGAL's inversion-based code returns an artifact sign when the triple has
+// no counter-clockwise circle; ellvor returns no_circle (NEGATIVE, DESIGN.md)
+// there. So CGAL is compared only where the CCW circle exists.
+#include "predicates/incircle.hpp"
+#include "predicates/voronoi_circle_count.hpp"
+#include "tests/predicates/apollonius_oracle.hpp"
+
+#include <CGAL/Apollonius_graph_filtered_traits_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+using namespace ellvor;
+
+namespace {
+
+using Rng = std::mt19937_64;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Traits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
+using CSite = Traits::Site_2;
+using CPoint = Traits::Point_2;
+
+bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
+
+bool apart(const apollonius::Circle& a, const apollonius::Circle& b) {
+    const Rational dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
+    return dx * dx + dy * dy > r * r;
+}
+
+CSite cgal_site(long x, long y, long r) { return CSite(CPoint(double(x), double(y)), double(r)); }
+
+int cgal_sign(CGAL::Sign s) { return s == CGAL::NEGATIVE ? -1 : (s == CGAL::POSITIVE ? 1 : 0); }
+
+Rational ten_to_minus(int k) {
+    Rational r(1);
+    for (int i = 0; i < k; ++i) r = r / Rational(10);
+    return r;
+}
+
+std::string show(const InCircleDecision& d) {
+    return std::string("result ") + incircle_name(d.result) + " stage " + stage_name(d.stage) + " precision " +
+           std::to_string(d.precision) + " newton " + std::to_string(d.newton_steps);
+}
+
+bool has_ccw(VoronoiCircles v) { return v == VoronoiCircles::ccw_only || v == VoronoiCircles::both; }
+
+}  // namespace
+
+TEST_CASE("incircle on 1200 random integer circle quadruples agrees with CGAL and the closed form",
+          "[predicates][incircle]") {
+    Rng rng(314159);
+    std::uniform_int_distribution<long> coord(-25, 25), rad(1, 7);
+    Traits traits;
+    const auto cgal_conflict = traits.vertex_conflict_2_object();
+    int total = 0, with_ccw = 0, no_circle = 0, undecided = 0, oracle_skipped = 0;
+    int cgal_artifact_positive = 0, sign_count[3] = {};
+    StageCounters stages;
+    std::string undecided_cases;
+    while (total < 1200) {
+        long v[4][3];
+        apollonius::Circle c[4];
+        for (int i = 0; i < 4; ++i) {
+            v[i][0] = coord(rng), v[i][1] = coord(rng), v[i][2] = rad(rng);
+            c[i] = {v[i][0], v[i][1], v[i][2]};
+        }
+        bool ok = true;
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) ok = ok && apart(c[i], c[j]);
+        if (!ok) continue;
+        ++total;
+        const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse(), q = c[3].ellipse();
+        INFO(apollonius::ell({&e1, &e2, &e3, &q}));
+        const VoronoiCircleCount count = voronoi_circle_count_decided(e1, e2, e3);
+        const InCircleDecision got = incircle(e1, e2, e3, q);
+        INFO(show(got) << " count " << voronoi_circles_name(count.circles));
+        stages.record(got.stage);
+        const int cgal = cgal_sign(cgal_conflict(cgal_site(v[0][0], v[0][1], v[0][2]), cgal_site(v[1][0], v[1][1], v[1][2]),
+                                                 cgal_site(v[2][0], v[2][1], v[2][2]), cgal_site(v[3][0], v[3][1], v[3][2])));
+        INFO("CGAL " << cgal);
+        const int want = apollonius::incircle(c[0], c[1], c[2], c[3]);
+        INFO("oracle " << want);
+        if (!has_ccw(count.circles)) {
+            ++no_circle;
+            CHECK(got.result == InCircle::no_circle);
+            CHECK(got.stage == count.stage);  // decided by the kappa2 calls
+            if (want == 3)
+                ++oracle_skipped;
+            else
+                CHECK(want == -1);  // the oracle finds no CCW circle either
+            if (cgal == 1) ++cgal_artifact_positive;
+            continue;
+        }
+        ++with_ccw;
+        CHECK(got.result != InCircle::no_circle);
+        if (got.result == InCircle::undecided) {
+            ++undecided;
+            undecided_cases += apollonius::ell({&e1, &e2, &e3, &q});
+            continue;
+        }
+        const int sign = incircle_sign(got.result);
+        ++sign_count[sign + 1];
+        CHECK(sign == cgal);
+        if (want == 3 || want == 2) {
+            ++oracle_skipped;
+        } else {
+            CHECK(sign == want);
+        }
+    }
+    if (verbose()) {
+        std::printf("[incircle/circles] total %d, ccw %d (conflict %d, tangent %d, no_conflict %d), no_circle %d "
+                    "(CGAL positive there %d), undecided %d, oracle skipped %d; stages filter %lu subdivision %lu exact %lu\n",
+                    total, with_ccw, sign_count[0], sign_count[1], sign_count[2], no_circle, cgal_artifact_positive,
+                    undecided, oracle_skipped, (unsigned long)stages.decided[0], (unsigned long)stages.decided[1],
+                    (unsigned long)stages.decided[2]);
+        if (!undecided_cases.empty()) std::printf("[incircle/circles] undecided:%s", undecided_cases.c_str());
+    }
+    INFO("undecided cases:" << undecided_cases);
+    CHECK(undecided * 100 <= total);  // at most 1%
+    CHECK(with_ccw >= 400);
+    CHECK(no_circle >= 100);
+    CHECK(sign_count[0] >= 100);
+    CHECK(sign_count[2] >= 100);
+    CHECK(oracle_skipped == 0);
+}
+
+TEST_CASE("incircle on random ellipse quadruples: which stage decided", "[predicates][incircle]") {
+    // A random non-degenerate case is decided by the subdivision stage at the
+    // start precision; no_circle cases report the stage of the kappa2 calls.
+    Rng rng(2718);
+    auto rnd = [&](long lo, long hi, long den) {
+        std::uniform_int_distribution<long> n(lo * den, hi * den);
+        return Rational(n(rng), static_cast<unsigned long>(den));
+    };
+    auto rnd_pos = [&](long lo_num, long hi_num, long den) {
+        std::uniform_int_distribution<long> n(lo_num, hi_num);
+        return Rational(n(rng), static_cast<unsigned long>(den));
+    };
+    auto bounding_apart = [](const Ellipse& a, const Ellipse& b) {
+        const Rational r = std::max(a.a(), a.b()) + std::max(b.a(), b.b());
+        const Rational dx = a.xc() - b.xc(), dy = a.yc() - b.yc();
+        return dx * dx + dy * dy > r * r;
+    };
+    int total = 0, decided_at_start = 0, decided_higher = 0, undecided = 0, no_circle = 0;
+    StageCounters stages, no_circle_stages;
+    while (total < 200) {
+        std::vector<Ellipse> e;
+        for (int i = 0; i < 4; ++i)
+            e.emplace_back(rnd_pos(2, 30, 10), rnd_pos(2, 30, 10), rnd(-3, 3, 11), rnd(-10, 10, 13), rnd(-10, 10, 7));
+        bool ok = true;
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) ok = ok && bounding_apart(e[i], e[j]);
+        if (!ok) continue;
+        ++total;
+        INFO(apollonius::ell({&e[0], &e[1], &e[2], &e[3]}));
+        const VoronoiCircleCount count = voronoi_circle_count_decided(e[0], e[1], e[2]);
+        const InCircleDecision got = incircle(e[0], e[1], e[2], e[3]);
+        INFO(show(got) << " count " << voronoi_circles_name(count.circles));
+        stages.record(got.stage);
+        if (!has_ccw(count.circles)) {
+            ++no_circle;
+            no_circle_stages.record(got.stage);
+            CHECK(got.result == InCircle::no_circle);
+            CHECK(got.stage == count.stage);
+            continue;
+        }
+        if (got.result == InCircle::undecided) {
+            ++undecided;
+            if (verbose()) std::printf("[incircle/ellipses] undecided (%s):%s", show(got).c_str(),
+                                       apollonius::ell({&e[0], &e[1], &e[2], &e[3]}).c_str());
+            continue;
+        }
+        CHECK(got.stage == Stage::subdivision);
+        CHECK((got.result == InCircle::conflict || got.result == InCircle::no_conflict));
+        CHECK(got.newton_steps > 0);
+        if (got.precision <= 64)
+            ++decided_at_start;
+        else
+            ++decided_higher;
+        // The same answer with a cached solver, and a second call reuses it.
+        VoronoiCircleSolver solver(e[0], e[1], e[2]);
+        const InCircleDecision a = incircle(e[0], e[1], e[2], e[3], {}, &solver);
+        const InCircleDecision b = incircle(e[0], e[1], e[2], e[3], {}, &solver);
+        CHECK(a.result == got.result);
+        CHECK(b.result == got.result);
+    }
+    if (verbose())
+        std::printf("[incircle/ellipses] total %d, at 64 bits %d, higher %d, undecided %d, no_circle %d (filter %lu "
+                    "subdivision %lu exact %lu)\n",
+                    total, decided_at_start, decided_higher, undecided, no_circle,
+                    (unsigned long)no_circle_stages.decided[0], (unsigned long)no_circle_stages.decided[1],
+                    (unsigned long)no_circle_stages.decided[2]);
+    CHECK(decided_at_start >= 9 * (total - no_circle) / 10);
+    CHECK(undecided * 50 <= total);
+    CHECK(no_circle >= 20);
+}
+
+TEST_CASE("incircle on an exactly tangent ellipse quadruple and its perturbations", "[predicates][incircle]") {
+    // E = (2, 1, 0, (5, 0)) and its rotations by 90, 180, 270 degrees about the
+    // origin; each has the origin on its a-axis at distance 5, nearest point the
+    // vertex at distance 3: all four touch the circle |x| = 3 from outside,
+    // at (3,0), (0,3), (-3,0), (0,-3), counter-clockwise.
+    const Ellipse e1(2, 1, 0, 5, 0), e2(2, 1, 1, 0, 5), e3(2, 1, 0, -5, 0), e4(2, 1, 1, 0, -5);
+    const Ellipse* s[4] = {&e1, &e2, &e3, &e4};
+    InCircleOptions capped;
+    capped.max_precision = 512;
+    for (int rot = 0; rot < 4; ++rot) {
+        const Ellipse &a = *s[rot], &b = *s[(rot + 1) % 4], &c = *s[(rot + 2) % 4], &q = *s[(rot + 3) % 4];
+        INFO(apollonius::ell({&a, &b, &c, &q}));
+        const InCircleDecision d = incircle(a, b, c, q, capped);
+        if (verbose()) std::printf("[incircle/tangent ellipses] rotation %d: %s\n", rot, show(d).c_str());
+        INFO(show(d));
+        CHECK((d.result == InCircle::undecided || d.result == InCircle::tangent));
+        if (d.result == InCircle::undecided) {
+            CHECK(d.stage == Stage::subdivision);
+            CHECK(d.precision >= 512);
+        }
+    }
+    // The fourth site moved by 10^-k: away from the circle -> no_conflict,
+    // toward it -> conflict; the precision needed grows with k.
+    long previous = 0;
+    for (int k : {6, 30, 100}) {
+        const Rational eps = ten_to_minus(k);
+        const Ellipse away(2, 1, 1, 0, Rational(-5) - eps), toward(2, 1, 1, 0, Rational(-5) + eps);
+        long used = 0;
+        for (const Ellipse* q : {&away, &toward}) {
+            INFO("k " << k << apollonius::ell({&e1, &e2, &e3, q}));
+            const InCircleDecision d = incircle(e1, e2, e3, *q);
+            INFO(show(d));
+            CHECK(d.result == (q == &away ? InCircle::no_conflict : InCircle::conflict));
+            CHECK(d.stage == Stage::subdivision);
+            used = std::max(used, d.precision);
+        }
+        if (verbose()) std::printf("[incircle/tangent ellipses] k %d precision %ld\n", k, used);
+        INFO("k " << k << " precision " << used << " previous " << previous);
+        CHECK(used > previous);
+        CHECK(used > 3.33 * k);  // 10^-k needs more than k log2(10) bits
+        previous = used;
+    }
+}
+
+TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and perturbations", "[predicates][incircle]") {
+    // Unit circles centered at distance 6 from the origin at rational points
+    // (6,0), (0,6), (-6,0), 6 (3/5, -4/5): all tangent to the circle of radius 5.
+    const apollonius::Circle c1{6, 0, 1}, c2{0, 6, 1}, c3{-6, 0, 1}, cq{Rational(18, 5UL), Rational(-24, 5UL), 1};
+    const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), e3 = c3.ellipse(), q = cq.ellipse();
+    INFO(apollonius::ell({&e1, &e2, &e3, &q}));
+    InCircleOptions capped;
+    capped.max_precision = 512;
+    const InCircleDecision d = incircle(e1, e2, e3, q, capped);
+    INFO(show(d));
+    CHECK((d.result == InCircle::undecided || d.result == InCircle::tangent));
+    if (d.result == InCircle::undecided) CHECK(d.precision >= 512);
+    // The closed form cannot certify a sign either.
+    const int o = apollonius::incircle(c1, c2, c3, cq);
+    CHECK((o == 0 || o == 2));
+    // CGAL (its input is exact here except 18/5, -24/5: use the integer point (0,-6)).
+    Traits traits;
+    const auto cgal_conflict = traits.vertex_conflict_2_object();
+    CHECK(cgal_conflict(cgal_site(6, 0, 1), cgal_site(0, 6, 1), cgal_site(-6, 0, 1), cgal_site(0, -6, 1)) == CGAL::ZERO);
+    {
+        const Ellipse q2 = Ellipse::circle(0, -6, 1);
+        INFO(apollonius::ell({&e1, &e2, &e3, &q2}));
+        const InCircleDecision d2 = incircle(e1, e2, e3, q2, capped);
+        INFO(show(d2));
+        CHECK((d2.result == InCircle::undecided || d2.result == InCircle::tangent));
+    }
+    // CGAL with a larger / smaller fourth radius.
+    CHECK(cgal_conflict(cgal_site(6, 0, 1), cgal_site(0, 6, 1), cgal_site(-6, 0, 1), cgal_site(0, -6, 2)) == CGAL::NEGATIVE);
+    // Radius of Q changed by 10^-k: larger -> conflict, smaller -> no_conflict.
+    long previous = 0;
+    for (int k : {6, 30, 100}) {
+        const Rational eps = ten_to_minus(k);
+        long used = 0;
+        for (int dir : {1, -1}) {
+            const apollonius::Circle cp{cq.x, cq.y, dir > 0 ? Rational(1) + eps : Rational(1) - eps};
+            const Ellipse qp = cp.ellipse();
+            INFO("k " << k << apollonius::ell({&e1, &e2, &e3, &qp}));
+            const InCircleDecision dp = incircle(e1, e2, e3, qp);
+            INFO(show(dp));
+            CHECK(dp.result == (dir > 0 ? InCircle::conflict : InCircle::no_conflict));
+            CHECK(apollonius::incircle(c1, c2, c3, cp) == (dir > 0 ? -1 : 1));
+            used = std::max(used, dp.precision);
+        }
+        if (verbose()) std::printf("[incircle/tangent circles] k %d precision %ld\n", k, used);
+        INFO("k " << k << " precision " << used);
+        CHECK(used > previous);
+        CHECK(used > 3.33 * k);
+        previous = used;
+    }
+}
+
+TEST_CASE("incircle: triples without a counter-clockwise circle give no_circle", "[predicates][incircle]") {
+    // The three circles of the tangent configuration in clockwise order: the
+    // only tangent circle (equal radii: the circumcenter) is clockwise.
+    const Ellipse e1 = Ellipse::circle(6, 0, 1), e2 = Ellipse::circle(0, 6, 1), e3 = Ellipse::circle(-6, 0, 1);
+    for (const Ellipse& q : {Ellipse::circle(0, 0, 1), Ellipse::circle(0, -6, 1), Ellipse::circle(100, 100, 1)}) {
+        INFO(apollonius::ell({&e3, &e2, &e1, &q}));
+        const InCircleDecision d = incircle(e3, e2, e1, q);
+        INFO(show(d));
+        CHECK(d.result == InCircle::no_circle);
+        CHECK(incircle_sign(d.result) == -1);
+        CHECK(d.newton_steps == 0);
+    }
+    CHECK_THROWS(incircle_sign(InCircle::undecided));
+}
+
+// Regression (found by this suite before 978734a, which made the
+// certification escalate its precision): well-separated integer circle
+// quadruples whose counter-clockwise Voronoi circle is large (radius ~900 ..
+// 15000, tangency points close together) came back `undecided` at precision
+// 64 although the cap is 4096: certify() ran Krawczyk at 64 bits only. The
+// closed form and CGAL decide every one with a wide margin.
+TEST_CASE("incircle decides well-separated quadruples with a large Voronoi circle", "[predicates][incircle]") {
+    struct Case { long v[4][3]; int want; };
+    const Case cases[] = {
+        {{{17, -12, 7}, {-3, -9, 4}, {-20, -4, 4}, {8, 9, 7}}, 1},        // CCW radius ~1604
+        {{{1, 15, 1}, {-5, 20, 5}, {20, 14, 3}, {-5, -20, 6}}, -1},       // CCW radius ~15249
+        {{{-9, 2, 7}, {22, -23, 3}, {12, -14, 5}, {-18, 16, 4}}, 1},      // CCW radius ~2367
+        {{{16, 1, 6}, {-1, -7, 6}, {-14, -19, 1}, {19, 17, 1}}, 1},       // CCW radius ~933
+    };
+    Traits traits;
+    const auto cgal_conflict = traits.vertex_conflict_2_object();
+    for (const Case& k : cases) {
+        apollonius::Circle c[4];
+        for (int i = 0; i < 4; ++i) c[i] = {k.v[i][0], k.v[i][1], k.v[i][2]};
+        const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse(), q = c[3].ellipse();
+        INFO(apollonius::ell({&e1, &e2, &e3, &q}));
+        REQUIRE(apollonius::incircle(c[0], c[1], c[2], c[3]) == k.want);
+        REQUIRE(cgal_sign(cgal_conflict(cgal_site(k.v[0][0], k.v[0][1], k.v[0][2]), cgal_site(k.v[1][0], k.v[1][1], k.v[1][2]),
+                                        cgal_site(k.v[2][0], k.v[2][1], k.v[2][2]), cgal_site(k.v[3][0], k.v[3][1], k.v[3][2]))) ==
+                k.want);
+        const InCircleDecision d = incircle(e1, e2, e3, q);
+        INFO(show(d));
+        CHECK(d.result != InCircle::undecided);
+        if (d.result != InCircle::undecided) CHECK(incircle_sign(d.result) == k.want);
+        VoronoiCircleSolver solver(e1, e2, e3);
+        CHECK(solver.certify());
+    }
+}
