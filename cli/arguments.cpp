@@ -3,7 +3,6 @@
 #include "sites/rational_parse.hpp"
 
 #include <cerrno>
-#include <cstdlib>
 
 namespace ellvor::cli {
 
@@ -33,10 +32,9 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::vector<Opt
         }
         const OptionSpec* spec = find(name);
         if (!spec) {
-            // A negative number is a positional argument (e.g. a coordinate).
-            char* end = nullptr;
-            std::strtod(arg.c_str(), &end);
-            if (end && *end == '\0' && arg.size() > 1 && (arg[1] == '.' || (arg[1] >= '0' && arg[1] <= '9'))) {
+            // A negative number ("-2", "-1/3", "-.5e-3") is a positional argument
+            // (a coordinate); its syntax is checked where it is parsed.
+            if (arg.size() > 1 && (arg[1] == '.' || (arg[1] >= '0' && arg[1] <= '9'))) {
                 positional_.push_back(arg);
                 continue;
             }

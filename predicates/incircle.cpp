@@ -1,12 +1,16 @@
 #include "predicates/incircle.hpp"
 
 #include "predicates/distance_filter.hpp"
+#include "predicates/voronoi_vertex_equality.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/point_ellipse_distance.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
+#include <array>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace ellvor {
 
@@ -35,6 +39,10 @@ int incircle_sign(InCircle r) {
 namespace {
 
 constexpr long kStartPrecision = 64;
+// Precision limits of the exact stage's root isolation and of the separation
+// of a query proven non-tangent (both far above anything seen in practice).
+constexpr long kExactIsolationLimit = 1L << 16;
+constexpr long kNonDegenerateLimit = 1L << 22;
 // The enclosure is refined to this many bits below the working precision.
 constexpr long kEnclosureGuard = 16;
 
@@ -62,6 +70,30 @@ int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, lon
     return difference.certain_sign();
 }
 
+// The exact stage (seed section 3.1): Q is externally tangent to the circle
+// of (E1, E2, E3) iff that circle is also a Voronoi circle of (E1, E2, Q) or
+// (E1, Q, E2), i.e. iff one of those touches E1 at the same point. nullopt
+// when the enclosures could not be made to isolate their resultant roots.
+std::optional<bool> tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
+                                    VoronoiCircleSolver& solver, long prec) {
+    const VoronoiCircles with_q = voronoi_circle_count(e1, e2, q);
+    std::vector<std::array<const Ellipse*, 3>> candidates;
+    if (with_q == VoronoiCircles::ccw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &e2, &q});
+    if (with_q == VoronoiCircles::cw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &q, &e2});
+    for (const auto& triple : candidates) {
+        VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2]);
+        ContactComparison comparison({{&e1, &e2, &e3}, &solver, 0}, {triple, &other, 0});
+        std::optional<bool> same;
+        for (long p = prec; !same && p <= kExactIsolationLimit; p *= 2) {
+            if (!solver.refine(p) || !other.refine(p)) return std::nullopt;
+            same = comparison.same_contact_point();
+        }
+        if (!same) return std::nullopt;
+        if (*same) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
@@ -78,8 +110,24 @@ InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e
         own = std::make_unique<VoronoiCircleSolver>(e1, e2, e3);
         solver = own.get();
     }
+    // Subdivision up to the cap; past it, only after the exact stage proved
+    // that Q is not tangent (then some precision separates, and the loop
+    // ends: kNonDegenerateLimit is only a guard against internal errors).
     d.stage = Stage::subdivision;
-    for (long prec = kStartPrecision; prec <= options.max_precision; prec *= 2) {
+    bool proven_nonzero = false;
+    for (long prec = kStartPrecision; prec <= kNonDegenerateLimit; prec *= 2) {
+        if (prec > options.max_precision && !proven_nonzero) {
+            if (!options.exact_stage) return d;  // undecided at the cap
+            d.stage = Stage::exact;
+            const auto tangent = tangent_exactly(e1, e2, e3, q, *solver, d.precision);
+            d.newton_steps = solver->enclosure().newton_steps;
+            if (!tangent) return d;
+            if (*tangent) {
+                d.result = InCircle::tangent;
+                return d;
+            }
+            proven_nonzero = true;
+        }
         d.precision = prec;
         const bool ok = solver->refine(std::max(prec - kEnclosureGuard, 1L));
         d.newton_steps = solver->enclosure().newton_steps;
@@ -89,7 +137,7 @@ InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e
             return d;
         }
     }
-    return d;  // undecided at the precision cap
+    throw Error("incircle: a proven non-tangent query was not separated (internal error)");
 }
 
 }  // namespace ellvor

@@ -13,10 +13,10 @@ namespace ellvor {
 enum class InCircle {
     conflict,     // NEGATIVE: Q meets the open Voronoi disk
     no_conflict,  // POSITIVE
-    tangent,      // ZERO: Q externally tangent to the circle (needs the exact stage)
+    tangent,      // ZERO: Q externally tangent to the circle (proven by the exact stage)
     no_circle,    // NEGATIVE by CGAL's rule: the triple has no counter-clockwise Voronoi circle
-    undecided,    // the subdivision stage reached its precision cap (a degenerate or nearly
-                  // degenerate configuration) or could not certify the circle
+    undecided,    // the Voronoi circle could not be certified, or (exact_stage = false)
+                  // the subdivision stage reached its precision cap
 };
 
 const char* incircle_name(InCircle r);
@@ -25,7 +25,8 @@ const char* incircle_name(InCircle r);
 int incircle_sign(InCircle r);
 
 struct InCircleOptions {
-    long max_precision = 4096;  // the subdivision stage gives up (undecided) beyond this
+    long max_precision = 4096;  // the subdivision stage hands over to the exact stage beyond this
+    bool exact_stage = true;    // false: stop at the cap with "undecided" (experiments, tests)
 };
 
 struct InCircleDecision {
@@ -37,7 +38,10 @@ struct InCircleDecision {
 
 // The cascade: existence of the counter-clockwise circle from three kappa2
 // signs; then the certified enclosure of the circle (center V, radius rho) and
-// the certified distance d(V, Q), compared with rho at doubling precision.
+// the distance d(V, Q) -- double intervals first, then Arb -- compared with
+// rho at doubling precision; past the cap, the exact stage decides whether Q
+// is tangent (resultants, voronoi_vertex_equality.hpp) and, if it is not,
+// the subdivision resumes until it separates.
 // `solver`, when given, is the cached solver of (E1, E2, E3) and is refined in
 // place (see VoronoiCircleCache).
 InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,

@@ -1,0 +1,49 @@
+// The exact stage for comparisons of Voronoi vertices (seed section 3.1,
+// Lemma 3.1): when two certified Voronoi circles share a site E and their
+// enclosures cannot be separated, decide exactly whether they touch E at the
+// same point. Each contact parameter on E is a root of the InCircle resultant
+// of its triple (degree 184 for three ellipses); the enclosure isolates that
+// root, and the two are equal iff the gcd of the two resultants has a root in
+// both enclosures.
+//
+// Contacts at or near E's i-point (t = infinity) are handled by computing the
+// resultants for E's quarter-turned twin (b, a, w'') -- the same point set,
+// parametrized from a point a quarter turn away -- in which the contact has a
+// finite parameter.
+#pragma once
+
+#include "sites/ellipse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+
+#include <array>
+#include <optional>
+
+namespace ellvor {
+
+// A certified Voronoi circle of an ordered triple, and where the shared site
+// is in that triple.
+struct CertifiedVoronoiCircle {
+    std::array<const Ellipse*, 3> triple;
+    VoronoiCircleSolver* solver;  // certified
+    int index;                    // the shared site is triple[index]
+};
+
+class ContactComparison {
+public:
+    ContactComparison(const CertifiedVoronoiCircle& a, const CertifiedVoronoiCircle& b) : a_(a), b_(b) {}
+    // true / false, proven; nullopt when an enclosure does not yet isolate a
+    // single root of its resultant (refine the solvers and ask again). The
+    // resultants are computed on first need and kept.
+    std::optional<bool> same_contact_point();
+
+private:
+    enum class Chart { t, twin_minus, twin_plus };  // parameter of E, or of its twin turned by -+ pi/2
+    Ball contact(const CertifiedVoronoiCircle& c) const;
+    IntPolynomial polynomial(const CertifiedVoronoiCircle& c) const;
+
+    CertifiedVoronoiCircle a_, b_;
+    std::optional<Chart> chart_;
+    std::optional<IntPolynomial> pa_, pb_;
+};
+
+}  // namespace ellvor
