@@ -30,7 +30,7 @@ const char* const kHelp =
     "A triple without a counter-clockwise circle prints {\"exists\": false, \"circles\": ...}.\n"
     "\n"
     "options:\n"
-    "  --bits N   correct bits wanted (53 .. 10^7)\n"
+    "  --bits N   correct bits wanted (1 .. 10^7)\n"
     "  --cin      read CGAL's circle format 'x y r' instead of .ell\n"
     "\n"
     "exit status: 0 done; 3 no certificate (undecided); 2 bad input (three sites needed).\n";

@@ -1,5 +1,8 @@
 #include "predicates/bisector_order.hpp"
 
+#include "predicates/voronoi_vertex_equality.hpp"
+#include "util/error.hpp"
+
 #include <algorithm>
 
 namespace ellvor {
@@ -51,7 +54,21 @@ bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int inde
 std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
                                      VoronoiCircleSolver& b, int index_b, long max_precision, long& precision) {
     constexpr long kStartPrecision = 64;
-    for (long prec = kStartPrecision; prec <= max_precision; prec *= 2) {
+    // A guard against internal errors only: distinct algebraic numbers separate.
+    constexpr long kNonDegenerateLimit = 1L << 22;
+    bool proven_distinct = false;
+    for (long prec = kStartPrecision; prec <= kNonDegenerateLimit; prec *= 2) {
+        if (prec > max_precision && !proven_distinct) {
+            ContactComparison exact({a.sites(), &a, index_a}, {b.sites(), &b, index_b});
+            std::optional<bool> same;
+            for (long p = precision; !same && p <= kNonDegenerateLimit; p *= 2) {
+                if (!a.refine(p) || !b.refine(p)) return std::nullopt;
+                same = exact.same_contact_point();
+            }
+            if (!same) return std::nullopt;
+            if (*same) return 0;
+            proven_distinct = true;
+        }
         precision = prec;
         Ball pa, pb, difference;
         if (!vertex_position(frame, a, index_a, prec, pa) || !vertex_position(frame, b, index_b, prec, pb))
@@ -59,7 +76,7 @@ std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& 
         arb_sub(difference.get(), pa.get(), pb.get(), prec);
         if (int s = difference.certain_sign()) return s;
     }
-    return std::nullopt;
+    throw Error("order_on_bisector: vertices proven distinct were not separated (internal error)");
 }
 
 }  // namespace ellvor

@@ -34,9 +34,11 @@ bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int inde
 
 // Order of two Voronoi vertices along the bisector of (E1, E2) (both circles
 // touch E1 and E2; `index` is E1's place in each triple): -1 if `a` comes
-// first from the departure end, +1 if after, nullopt when they cannot be
-// separated below max_precision (equal vertices need the exact stage).
-// `precision` receives the last precision used.
+// first from the departure end, +1 if after, 0 if they are the same vertex.
+// Subdivision up to max_precision; then the exact stage decides whether they
+// touch E1 at the same point (voronoi_vertex_equality.hpp), and if not, the
+// subdivision resumes until it separates them. nullopt only when a circle
+// cannot be certified. `precision` receives the last precision used.
 std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
                                      VoronoiCircleSolver& b, int index_b, long max_precision, long& precision);
 

@@ -43,27 +43,77 @@ struct EdgeShape {
     std::vector<std::array<const Ellipse*, 3>> vertices;
 };
 
-// Whether the shadow boundary VC(E1, E2, Q) lies strictly inside the edge:
-// true/false when decided; nullopt when some circle cannot be certified or
-// the positions cannot be separated below the precision cap.
-std::optional<bool> boundary_inside_edge(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, const EdgeShape& edge,
-                                         const EdgeConflictOptions& options, long& precision) {
-    BisectorFrame frame(e1, e2);
-    VoronoiCircleSolver boundary(e1, e2, q);
-    std::vector<std::unique_ptr<VoronoiCircleSolver>> ends;  // the edge's finite vertices
-    for (const auto& v : edge.vertices) ends.push_back(std::make_unique<VoronoiCircleSolver>(*v[0], *v[1], *v[2]));
-    if (ends.empty()) return true;  // the whole bisector
-    if (ends.size() == 1) {
-        // The ray from the departure end to the vertex.
-        const auto order = order_on_bisector(frame, boundary, 0, *ends[0], 0, options.max_precision, precision);
-        if (!order) return std::nullopt;
-        return *order < 0;
+// Positions along the bisector of (E1, E2): a Voronoi vertex (a solver of a
+// triple with E1 first), or an end of the bisector (departure = -inf,
+// arrival = +inf).
+struct BisectorPoint {
+    VoronoiCircleSolver* vertex = nullptr;
+    int end = 0;  // -1, +1 for the ends; 0 for a vertex
+};
+
+class EdgeGeometry {
+public:
+    EdgeGeometry(const Ellipse& e1, const Ellipse& e2, const EdgeConflictOptions& options, long& precision)
+        : frame_(e1, e2), options_(options), precision_(precision) {}
+    // -1, 0, +1 (0: the same point, proven by the exact stage); nullopt when a
+    // circle cannot be certified.
+    std::optional<int> compare(const BisectorPoint& a, const BisectorPoint& b) {
+        if (a.end || b.end) return a.end == b.end ? 0 : (a.end ? a.end : -b.end);
+        return order_on_bisector(frame_, *a.vertex, 0, *b.vertex, 0, options_.max_precision, precision_);
     }
-    const auto first = order_on_bisector(frame, boundary, 0, *ends[0], 0, options.max_precision, precision);
-    if (!first) return std::nullopt;
-    const auto second = order_on_bisector(frame, boundary, 0, *ends[1], 0, options.max_precision, precision);
-    if (!second) return std::nullopt;
-    return *first != *second;  // after one end and before the other
+
+private:
+    BisectorFrame frame_;
+    const EdgeConflictOptions& options_;
+    long& precision_;
+};
+
+// The edge [lo, hi] and Q's shadow boundaries c1 = VC(E1, E2, Q), c2 =
+// VC(E1, Q, E2). Generic case: the shadow meets the open edge (interval
+// shadow) or misses the closed edge (two-ray shadow) depending only on
+// whether c1 lies strictly inside the edge. When c1 coincides with a vertex
+// (a degenerate configuration proven by the exact stage) the general interval
+// tests below decide, with c2 as well.
+std::optional<bool> shadow_meets_edge(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, const EdgeShape& edge,
+                                      bool connected, const EdgeConflictOptions& options, long& precision) {
+    EdgeGeometry geometry(e1, e2, options, precision);
+    VoronoiCircleSolver c1_solver(e1, e2, q);
+    std::vector<std::unique_ptr<VoronoiCircleSolver>> vertices;
+    for (const auto& v : edge.vertices) vertices.push_back(std::make_unique<VoronoiCircleSolver>(*v[0], *v[1], *v[2]));
+    BisectorPoint lo{nullptr, -1}, hi{nullptr, +1};  // the whole bisector by default
+    if (vertices.size() == 1) hi = {vertices[0].get(), 0};  // the ray from the departure end
+    if (vertices.size() == 2) {
+        lo = {vertices[0].get(), 0}, hi = {vertices[1].get(), 0};
+        const auto o = geometry.compare(lo, hi);
+        if (!o) return std::nullopt;
+        if (*o > 0) std::swap(lo, hi);
+    }
+    const BisectorPoint c1{&c1_solver, 0};
+    const auto after_lo = geometry.compare(c1, lo), before_hi = geometry.compare(hi, c1);
+    if (!after_lo || !before_hi) return std::nullopt;
+    if (*after_lo != 0 && *before_hi != 0) {
+        const bool inside = *after_lo > 0 && *before_hi > 0;
+        return connected ? inside : !inside;
+    }
+    VoronoiCircleSolver c2_solver(e1, q, e2);
+    BisectorPoint s_lo = c1, s_hi{&c2_solver, 0};
+    const auto o = geometry.compare(s_lo, s_hi);
+    if (!o) return std::nullopt;
+    if (*o > 0) std::swap(s_lo, s_hi);
+    auto less = [&](const BisectorPoint& a, const BisectorPoint& b) -> std::optional<bool> {
+        const auto r = geometry.compare(a, b);
+        if (!r) return std::nullopt;
+        return *r < 0;
+    };
+    if (connected) {  // open (s_lo, s_hi) meets open (lo, hi)?
+        const auto a = less(s_lo, hi), b = less(lo, s_hi);
+        if (!a || !b) return std::nullopt;
+        return *a && *b;
+    }
+    // closed [lo, hi] inside (-inf, s_lo) u (s_hi, +inf)?
+    const auto a = less(hi, s_lo), b = less(s_hi, lo);
+    if (!a || !b) return std::nullopt;
+    return *a || *b;
 }
 
 EdgeConflictDecision decide(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, bool b, const EdgeShape& edge,
@@ -85,13 +135,11 @@ EdgeConflictDecision decide(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         d.conflict = false;
         return d;
     }
+    // Interval shadow, free ends: does it meet the open edge? Two-ray shadow,
+    // ends in conflict: does it contain the whole closed edge?
     d.stage = Stage::subdivision;
-    const auto inside = boundary_inside_edge(e1, e2, q, edge, options, d.precision);
-    if (!inside) return d;
-    // Interval shadow, free ends: it meets the edge iff it lies inside it.
-    // Two-ray shadow, ends in conflict: the whole edge is in conflict iff the
-    // gap between the rays is not inside the edge.
-    d.conflict = shadow.connected ? *inside : !*inside;
+    d.conflict = shadow_meets_edge(e1, e2, q, edge, shadow.connected, options, d.precision);
+    if (d.precision > options.max_precision) d.stage = Stage::exact;
     return d;
 }
 

@@ -52,6 +52,7 @@ public:
     bool refine(long bits);
 
     bool certified() const { return certified_; }
+    const std::array<const Ellipse*, 3>& sites() const { return sites_; }
     const VoronoiCircleEnclosure& enclosure() const { return enclosure_; }
 
 private:

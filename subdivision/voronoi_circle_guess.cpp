@@ -134,6 +134,26 @@ std::vector<std::array<double, 3>> apollonius_circles(const std::array<Shape, 3>
     return out;
 }
 
+// The Apollonius circles of a circle model. With collinear centers the
+// linear part is singular: then the circles of the model with its middle
+// center nudged off the line (either side) serve as starting points -- only a
+// guess, which Newton on the true system corrects.
+std::vector<std::array<double, 3>> model_circles(const std::array<Shape, 3>& circles) {
+    auto found = apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a});
+    if (!found.empty()) return found;
+    const double dx = circles[2].x - circles[0].x, dy = circles[2].y - circles[0].y;
+    const double length = std::hypot(dx, dy);
+    if (!(length > 0)) return found;
+    for (double side : {1.0, -1.0}) {
+        std::array<Shape, 3> nudged = circles;
+        const double shift = side * 1e-3 * length;
+        nudged[1].x += -dy / length * shift;
+        nudged[1].y += dx / length * shift;
+        for (const auto& c : apollonius_circles(nudged, {nudged[0].a, nudged[1].a, nudged[2].a})) found.push_back(c);
+    }
+    return found;
+}
+
 // Start point for circle (x, y, rho): each tangency at the nearest point of E_i.
 Vector6 start_from(const std::array<Shape, 3>& e, const std::array<double, 3>& circle) {
     Vector6 X;
@@ -234,7 +254,7 @@ std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const 
     // Direct Newton on the ellipses from each Apollonius circle of each model.
     for (CircleModel m : kModels) {
         const auto circles = blend(e, m, 0);
-        for (const auto& circle : apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a})) {
+        for (const auto& circle : model_circles(circles)) {
             Vector6 X = start_from(e, circle);
             if (newton(e, X) && is_counterclockwise_solution(e, X)) return accept(X);
         }
@@ -242,7 +262,7 @@ std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const 
     // Continuation from each model's counter-clockwise circle to the ellipses.
     for (CircleModel m : kModels) {
         const auto circles = blend(e, m, 0);
-        for (const auto& circle : apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a})) {
+        for (const auto& circle : model_circles(circles)) {
             Vector6 X = start_from(circles, circle);
             if (!newton(circles, X) || !is_counterclockwise_solution(circles, X)) continue;
             double lambda = 0, step = 0.25;

@@ -1,0 +1,362 @@
+// The predicate commands of the real ellvor binary (ELLVOR_BINARY) on files
+// written to a temporary directory: side-of-bisector, bitangent, incircle,
+// voronoi-circle -- their words, JSON, exit statuses and input errors.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+using nlohmann::json;
+
+struct Run {
+    int status;
+    std::string out, err;
+};
+
+std::string read_all(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Scratch {
+public:
+    Scratch() {
+        char pattern[] = "/tmp/ellvor_pred_XXXXXX";
+        REQUIRE(::mkdtemp(pattern) != nullptr);
+        dir_ = pattern;
+    }
+    ~Scratch() { std::system(("rm -rf '" + dir_ + "'").c_str()); }
+    Scratch(const Scratch&) = delete;
+    Scratch& operator=(const Scratch&) = delete;
+
+    // Writes `content` to dir/name and returns the path.
+    std::string file(const std::string& name, const std::string& content) const {
+        const std::string path = dir_ + "/" + name;
+        std::ofstream(path, std::ios::binary) << content;
+        return path;
+    }
+    // Runs `ellvor ARGS` with stdout and stderr captured.
+    Run ellvor(const std::string& args) const {
+        const std::string out = dir_ + "/.out", err = dir_ + "/.err";
+        const std::string cmd =
+            std::string("'") + ELLVOR_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
+        const int raw = std::system(cmd.c_str());
+        return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(out), read_all(err)};
+    }
+
+private:
+    std::string dir_;
+};
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+json parse(const Run& r) {
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    json j;
+    REQUIRE_NOTHROW(j = json::parse(r.out));
+    return j;
+}
+
+}  // namespace
+
+TEST_CASE("predicate commands: --help exits 0 with the usage line", "[cli]") {
+    Scratch s;
+    for (const char* cmd : {"side-of-bisector", "bitangent", "incircle", "voronoi-circle"}) {
+        for (const char* form : {" --help", " -h"}) {
+            const Run r = s.ellvor(std::string(cmd) + form);
+            INFO(cmd << form << "\n" << r.err);
+            CHECK(r.status == 0);
+            CHECK(r.out.rfind(std::string("usage: ellvor ") + cmd, 0) == 0);
+            CHECK(r.err.empty());
+        }
+    }
+    // The program's help lists them.
+    const Run r = s.ellvor("--help");
+    CHECK(r.status == 0);
+    for (const char* cmd : {"side-of-bisector", "bitangent", "incircle", "voronoi-circle"}) CHECK(has(r.out, cmd));
+}
+
+TEST_CASE("side-of-bisector: first, second and an exact tie", "[cli]") {
+    Scratch s;
+    // Circles (3, 4, r = 1) and (-6, 8, r = 6): the origin is at distance
+    // 5 - 1 = 4 = 10 - 6 from both, an exact tie.
+    const std::string ell = s.file("pair.ell", "1 1 0 3 4\n6 6 0 -6 8\n");
+    const std::string cin = s.file("pair.cin", "3 4 1\n-6 8 6\n");
+    struct Case {
+        std::string args, word;
+    };
+    const Case cases[] = {
+        {ell + " 0 0", "equidistant"},
+        {cin + " 0 0 --cin", "equidistant"},
+        {ell + " 0.0 0/7", "equidistant"},  // decimals and fractions are exact
+        {ell + " 3 3", "first"},            // on E1's boundary: distance 0 vs 4.3
+        {ell + " -6 3", "second"},          // inside E2: negative distance
+        {ell + " 1/1000 0", "first"},       // a hair toward E1 breaks the tie
+        {ell + " -0.001 0", "second"},
+        {cin + " 100 -100 --cin", "first"},
+    };
+    for (const Case& c : cases) {
+        const Run r = s.ellvor("side-of-bisector " + c.args);
+        INFO(c.args << "\n" << r.err);
+        CHECK(r.status == 0);
+        CHECK(r.out == c.word + "\n");
+    }
+    // --json: result, sign, stage (the tie needs the exact stage), precision, time.
+    const Run r = s.ellvor("side-of-bisector " + ell + " 0 0 --json");
+    REQUIRE(r.status == 0);
+    const json j = parse(r);
+    CHECK(j.at("result") == "equidistant");
+    CHECK(j.at("sign") == 0);
+    CHECK(j.at("stage") == "exact");
+    CHECK(j.contains("precision"));
+    CHECK(j.contains("time_us"));
+    const json f = parse(s.ellvor("side-of-bisector " + ell + " 3 3 --json"));
+    CHECK(f.at("result") == "first");
+    CHECK(f.at("sign") == 1);  // CGAL's ON_POSITIVE_SIDE
+    const std::string stage = f.at("stage");
+    CHECK((stage == "filter" || stage == "subdivision" || stage == "exact"));
+    const json g = parse(s.ellvor("side-of-bisector " + ell + " -6 3 --json"));
+    CHECK(g.at("result") == "second");
+    CHECK(g.at("sign") == -1);
+}
+
+// Negative coordinates, also as fractions, are positional arguments, not
+// options; "--" ends the options too.
+TEST_CASE("side-of-bisector: negative fractions as coordinates", "[cli]") {
+    Scratch s;
+    const std::string ell = s.file("pair.ell", "1 1 0 3 4\n6 6 0 -6 8\n");
+    const Run workaround = s.ellvor("side-of-bisector " + ell + " -- -1/1000 0");
+    CHECK(workaround.status == 0);
+    CHECK(workaround.out == "second\n");
+    const Run r = s.ellvor("side-of-bisector " + ell + " -1/1000 0");
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(r.out == "second\n");
+}
+
+TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
+    Scratch s;
+    // CGAL's kappa2 vectors: p1 = (1, 100, 49), p2 = (0, -100, 50); the
+    // bitangent is the line x = 50, touching at (50, 100) and (50, -100).
+    const std::string pair = s.file("pair.cin", "1 100 49\n0 -100 50\n");
+    Run r = s.ellvor("bitangent " + pair + " --cin");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(has(r.out, "contact on E1"));
+    CHECK(has(r.out, "contact on E2"));
+    CHECK(has(r.out, "(50, 100)"));
+    CHECK(has(r.out, "(50, -100)"));
+    CHECK(!has(r.out, "conflict"));  // no third site, no kappa2
+    json j = parse(s.ellvor("bitangent " + pair + " --cin --json"));
+    CHECK(j.at("first").at("t") == "0");
+    CHECK(j.at("first").at("point_approx") == json::array({50.0, 100.0}));
+    CHECK(j.at("second").at("point_approx") == json::array({50.0, -100.0}));
+    CHECK(!j.contains("kappa2"));
+
+    // q = (-1, 0, 51) touches the line at (50, 0), between the contacts -> conflict.
+    const std::string between = s.file("between.cin", "1 100 49\n0 -100 50\n-1 0 51\n");
+    r = s.ellvor("bitangent " + between + " --cin");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(has(r.out, "contact on E1"));
+    CHECK(has(r.out, "\nconflict\n"));
+    CHECK(has(r.out, "voronoi circles: "));
+    // q = (-1, 200, 51) touches it at (50, 200), outside -> no conflict.
+    const std::string outside = s.file("outside.cin", "1 100 49\n0 -100 50\n-1 200 51\n");
+    r = s.ellvor("bitangent " + outside + " --cin");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(has(r.out, "\nno-conflict\n"));
+    CHECK(has(r.out, "voronoi circles: "));
+    j = parse(s.ellvor("bitangent " + outside + " --cin --json"));
+    CHECK(j.at("kappa2").at("result") == "no-conflict");
+    CHECK(j.at("kappa2").at("sign") == 1);
+    CHECK(j.at("kappa2").contains("stage"));
+    const std::string circles = j.at("voronoi_circles");
+    CHECK((circles == "none" || circles == "ccw" || circles == "cw" || circles == "both"));
+    j = parse(s.ellvor("bitangent " + between + " --cin --json"));
+    CHECK(j.at("kappa2").at("result") == "conflict");
+    CHECK(j.at("kappa2").at("sign") == -1);
+
+    // Three unit circles counter-clockwise around the origin: one Voronoi
+    // circle in that orientation; reversed: the other.
+    const std::string ccw = s.file("ccw.ell", "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n");
+    r = s.ellvor("bitangent " + ccw);
+    REQUIRE(r.status == 0);
+    CHECK(has(r.out, "voronoi circles: ccw\n"));
+    const std::string cw = s.file("cw.ell", "1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n");
+    r = s.ellvor("bitangent " + cw);
+    REQUIRE(r.status == 0);
+    CHECK(has(r.out, "voronoi circles: cw\n"));
+}
+
+TEST_CASE("incircle: conflict, no-conflict, no-circle and an undecided degenerate case", "[cli]") {
+    Scratch s;
+    // Unit circles at (6,0), (0,6), (-6,0), counter-clockwise: Voronoi circle
+    // centered at the origin, radius 5.
+    const std::string triple = "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n";
+    struct Case {
+        std::string sites, word;
+        int sign;
+    };
+    const Case cases[] = {
+        {triple + "1 1 0 0 -5\n", "conflict", -1},           // reaches the origin's disk
+        {triple + "1 1 0 30 30\n", "no-conflict", 1},        // far away
+        {triple + "2 1 1 0 -13/2\n", "conflict", -1},        // an ellipse reaching y = -4.5
+        {"1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n1 1 0 0 -5\n", "no-circle", -1},  // clockwise triple
+    };
+    int n = 0;
+    for (const Case& c : cases) {
+        const std::string file = s.file("q" + std::to_string(n++) + ".ell", c.sites);
+        Run r = s.ellvor("incircle " + file);
+        INFO(c.sites << r.err);
+        CHECK(r.status == 0);
+        CHECK(r.out == c.word + "\n");
+        r = s.ellvor("incircle " + file + " --json");
+        CHECK(r.status == 0);
+        const json j = parse(r);
+        CHECK(j.at("result") == c.word);
+        CHECK(j.at("sign") == c.sign);
+        for (const char* key : {"stage", "precision", "newton_steps", "time_us"}) CHECK(j.contains(key));
+        if (c.word == "no-circle") CHECK(j.at("newton_steps") == 0);
+        else CHECK(j.at("stage") == "subdivision");
+    }
+    // CGAL's .cin form.
+    const std::string cin = s.file("far.cin", "6 0 1\n0 6 1\n-6 0 1\n30 30 1\n");
+    Run r = s.ellvor("incircle " + cin + " --cin");
+    CHECK(r.status == 0);
+    CHECK(r.out == "no-conflict\n");
+
+    // Exactly degenerate: the ellipse (a=2, b=1, w=0) at (5, 0) and its
+    // rotations by 90, 180, 270 degrees about the origin all touch the circle
+    // of radius 3 at the origin: Q is tangent to the Voronoi circle. The
+    // subdivision stage cannot decide that: capped at 256 bits it either says
+    // "undecided" with exit status 3 or, when the exact stage is built in
+    // (InCircleOptions::exact_stage), hands over and proves "tangent".
+    const std::string degenerate = s.file("degenerate.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5\n");
+    for (const char* json_flag : {"", " --json"}) {
+        r = s.ellvor("incircle " + degenerate + " --max-precision 256" + json_flag);
+        INFO(json_flag << "\nstdout: " << r.out << "\nstderr: " << r.err);
+        std::string word = r.out;
+        if (*json_flag) {
+            const json j = parse(r);
+            word = j.at("result").get<std::string>() + "\n";
+            CHECK(j.at("precision") >= 256);
+            if (word == "tangent\n") {
+                CHECK(j.at("sign") == 0);
+                CHECK(j.at("stage") == "exact");
+            } else {
+                CHECK(j.at("sign").is_null());
+            }
+        }
+        CHECK((word == "undecided\n" || word == "tangent\n"));
+        CHECK(r.status == (word == "undecided\n" ? 3 : 0));
+        CHECK(r.err.empty());
+    }
+}
+
+TEST_CASE("voronoi-circle: certified JSON, clockwise triples, --bits", "[cli]") {
+    Scratch s;
+    const std::string ccw = s.file("ccw.ell", "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n");
+    for (long bits : {53L, 200L}) {
+        const Run r = s.ellvor("voronoi-circle " + ccw + " --bits " + std::to_string(bits));
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        const json j = parse(r);
+        CHECK(j.at("exists") == true);
+        CHECK(j.at("bits") == bits);
+        CHECK(j.at("correct_bits").get<long>() >= bits);
+        CHECK(j.at("precision").get<long>() > 0);
+        CHECK(j.at("newton_steps").get<long>() > 0);
+        REQUIRE(j.at("tangency").size() == 3);
+        for (const json& t : j.at("tangency")) {
+            CHECK(t.at("t").is_string());
+            const std::string chart = t.at("chart");
+            CHECK((chart == "t" || chart == "-1/t"));
+            CHECK(t.at("chart_parameter").is_string());
+        }
+        REQUIRE(j.at("center").size() == 2);
+        // Center (0, 0) and radius 5, as Arb balls "[mid +/- rad]".
+        const std::string radius = j.at("radius");
+        CHECK(radius.rfind("[5.", 0) == 0);
+        const std::string cx = j.at("center")[0];
+        CHECK(cx.front() == '[');
+    }
+    // --cin and an ellipse triple.
+    const std::string cin = s.file("ccw.cin", "6 0 1\n0 6 1\n-6 0 1\n");
+    Run r = s.ellvor("voronoi-circle " + cin + " --cin --bits 64");
+    REQUIRE(r.status == 0);
+    CHECK(parse(r).at("exists") == true);
+    const std::string ellipses = s.file("ellipses.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n");
+    r = s.ellvor("voronoi-circle " + ellipses + " --bits 100");
+    REQUIRE(r.status == 0);
+    json j = parse(r);
+    CHECK(j.at("exists") == true);
+    CHECK(j.at("correct_bits").get<long>() >= 100);
+    CHECK(j.at("radius").get<std::string>().rfind("[3", 0) == 0);  // the circle of radius 3
+
+    // Clockwise: no counter-clockwise circle.
+    const std::string cw = s.file("cw.ell", "1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n");
+    r = s.ellvor("voronoi-circle " + cw + " --bits 64");
+    REQUIRE(r.status == 0);
+    j = parse(r);
+    CHECK(j.at("exists") == false);
+    CHECK(j.at("circles") == "cw");
+
+    // --bits is required and must be an integer.
+    r = s.ellvor("voronoi-circle " + ccw);
+    CHECK(r.status == 2);
+    CHECK(has(r.err, "--bits"));
+    CHECK(r.out.empty());
+    r = s.ellvor("voronoi-circle " + ccw + " --bits many");
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+}
+
+TEST_CASE("predicate commands: wrong site counts exit 2", "[cli]") {
+    Scratch s;
+    const std::string one = s.file("one.ell", "1 1 0 0 0\n");
+    const std::string two = s.file("two.ell", "1 1 0 0 0\n1 1 0 10 0\n");
+    const std::string three = s.file("three.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n");
+    const std::string four = s.file("four.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n# a comment\n\n1 1 0 10 10\n");
+    const std::string five =
+        s.file("five.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n1 1 0 10 10\n   2 2 0 -10 -10\n");
+    struct Case {
+        std::string args, location;  // location: ":LINE:" of the surplus site, or "" for too few
+    };
+    const Case cases[] = {
+        {"side-of-bisector " + one + " 0 0", ""},
+        {"side-of-bisector " + three + " 0 0", ":3:"},
+        {"bitangent " + one, ""},
+        {"bitangent " + four, ":6:"},  // comment and blank line counted in line numbers
+        {"incircle " + three, ""},
+        {"incircle " + five, ":5:"},
+        {"voronoi-circle " + two + " --bits 64", ""},
+        {"voronoi-circle " + four + " --bits 64", ":6:"},
+    };
+    for (const Case& c : cases) {
+        const Run r = s.ellvor(c.args);
+        INFO(c.args << "\nstderr: " << r.err);
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());  // nothing half-written
+        const std::string file = c.args.substr(c.args.find(' ') + 1, c.args.find(".ell") + 4 - c.args.find(' ') - 1);
+        CHECK(r.err.rfind("ellvor: " + file + c.location, 0) == 0);
+        if (!c.location.empty()) {  // ...:LINE:COL: with a column number
+            const std::size_t col = ("ellvor: " + file + c.location).size();
+            CHECK(r.err.size() > col + 1);
+            CHECK(std::isdigit(static_cast<unsigned char>(r.err[col])));
+        }
+        CHECK(has(r.err, "expected"));
+        CHECK(has(r.err, "found"));
+    }
+}

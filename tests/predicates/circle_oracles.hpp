@@ -1,0 +1,280 @@
+// Independent oracles for the two-site predicates, written from first
+// principles for the tests (they never call ellvor's predicates):
+//  * circles: closed forms evaluated exactly in rationals where possible and
+//    otherwise with Arb balls at high precision; every oracle reports whether
+//    its ball answer is certain;
+//  * ellipses: brute-force numerics in long double (dense sampling plus local
+//    refinement), used only away from ties (the caller demands a margin).
+#pragma once
+
+#include "sites/ellipse.hpp"
+
+#include <arb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace oracle {
+
+using ellvor::Ball;
+using ellvor::Ellipse;
+using ellvor::Point;
+using ellvor::Rational;
+
+constexpr long kPrec = 256;
+
+struct Circle {
+    Rational x, y, r;
+    Ellipse ellipse() const { return Ellipse::circle(x, y, r); }
+};
+
+// A replayable .ell snippet (one site a line) for INFO messages.
+inline std::string ell(std::initializer_list<const Ellipse*> sites) {
+    std::ostringstream s;
+    s << "\n# .ell\n";
+    for (const Ellipse* e : sites) s << e->str() << "\n";
+    return s.str();
+}
+inline std::string ell_point(const Point& p) { return "# point " + p.x.str() + " " + p.y.str() + "\n"; }
+
+// ---------------------------------------------------------------------------
+// Small Arb helpers (results are fresh Balls).
+inline Ball ball(const Rational& q) { return Ball(q, kPrec); }
+inline Ball add(const Ball& a, const Ball& b) { Ball r; arb_add(r.get(), a.get(), b.get(), kPrec); return r; }
+inline Ball sub(const Ball& a, const Ball& b) { Ball r; arb_sub(r.get(), a.get(), b.get(), kPrec); return r; }
+inline Ball mul(const Ball& a, const Ball& b) { Ball r; arb_mul(r.get(), a.get(), b.get(), kPrec); return r; }
+inline Ball div(const Ball& a, const Ball& b) { Ball r; arb_div(r.get(), a.get(), b.get(), kPrec); return r; }
+inline Ball sqrt_(const Ball& a) { Ball r; arb_sqrt(r.get(), a.get(), kPrec); return r; }
+inline Ball hypot_(const Ball& dx, const Ball& dy) { return sqrt_(add(mul(dx, dx), mul(dy, dy))); }
+
+// Sign of a ball: -1/+1 when certain, 0 when it is exactly zero, 2 when undecided.
+inline int ball_sign(const Ball& b) {
+    if (arb_is_zero(b.get())) return 0;
+    int s = b.certain_sign();
+    return s == 0 ? 2 : s;
+}
+
+// ---------------------------------------------------------------------------
+// kappa1 on circles: sign((|p - c2| - r2) - (|p - c1| - r1)); +1 = closer to c1.
+// Returns 2 when the ball does not decide (never for random data at 256 bits).
+inline int side_of_bisector(const Circle& c1, const Circle& c2, const Point& p) {
+    Ball d1 = sub(hypot_(ball(p.x - c1.x), ball(p.y - c1.y)), ball(c1.r));
+    Ball d2 = sub(hypot_(ball(p.x - c2.x), ball(p.y - c2.y)), ball(c2.r));
+    return ball_sign(sub(d2, d1));
+}
+
+// ---------------------------------------------------------------------------
+// kappa2 on circles. With D = c2 - c1 and dr = r1 - r2, the unit normal n of the
+// external bitangent L pointing into H solves n.D = dr and lies on the side
+// where cross(D, n) > 0 (H on the left of T1 -> T2):
+//   n = (dr D + sqrt(|D|^2 - dr^2) rot90(D)) / |D|^2.
+// Support value h(n) = n.c + r. Conflict (-1) iff h_Q(n) > h_1(n); +1 iff <.
+// On a tie, CGAL's rule: -1 iff Q's contact point c_q + r_q n lies strictly
+// between T1 and T2 along L. Returns 2 if a ball does not decide.
+struct InfiniteConflict {
+    int sign = 2;       // -1, +1, or 2 (undecided)
+    bool tie = false;   // h_Q == h_1 decided exactly (only with rational sqrt)
+};
+inline InfiniteConflict infinite_vertex_conflict(const Circle& c1, const Circle& c2, const Circle& q) {
+    const Rational Dx = c2.x - c1.x, Dy = c2.y - c1.y, dr = c1.r - c2.r;
+    const Rational D2 = Dx * Dx + Dy * Dy;
+    Ball s = sqrt_(ball(D2 - dr * dr));
+    Ball nx = div(sub(ball(dr * Dx), mul(s, ball(Dy))), ball(D2));
+    Ball ny = div(add(ball(dr * Dy), mul(s, ball(Dx))), ball(D2));
+    auto h = [&](const Circle& c) { return add(add(mul(nx, ball(c.x)), mul(ny, ball(c.y))), ball(c.r)); };
+    InfiniteConflict out;
+    int sg = ball_sign(sub(h(q), h(c1)));
+    if (sg == 1) { out.sign = -1; return out; }
+    if (sg == -1) { out.sign = 1; return out; }
+    if (sg == 2) return out;
+    out.tie = true;
+    // Direction along L from T1 to T2: t = (ny, -nx) (H = n on its left).
+    auto along = [&](const Circle& c) {
+        Ball px = add(ball(c.x), mul(ball(c.r), nx)), py = add(ball(c.y), mul(ball(c.r), ny));
+        return sub(mul(px, ny), mul(py, nx));
+    };
+    Ball a1 = along(c1), a2 = along(c2), aq = along(q);
+    int s1 = ball_sign(sub(aq, a1)), s2 = ball_sign(sub(a2, aq));
+    if (s1 == 2 || s2 == 2) return out;
+    out.sign = (s1 == 1 && s2 == 1) ? -1 : 1;
+    return out;
+}
+
+// ---------------------------------------------------------------------------
+// Voronoi circles of three circles: the circles (X, R), R > 0, with
+// |X - c_i| = R + r_i for i = 1, 2, 3 (external tangency; with only three
+// sites such a disk is automatically empty of them). Subtracting the first
+// equation from the others gives two linear equations m_i . (x, y, R) = b_i,
+// solved exactly: (x, y, R) = P + s k with k = m2 x m3; the first equation then
+// is a quadratic in s with rational coefficients. Tangency points are
+// X + R (c_i - X)/|c_i - X|; their orientation decides CCW vs CW.
+enum class Count { none, ccw_only, cw_only, both, undecided };
+inline const char* count_name(Count c) {
+    switch (c) {
+        case Count::none: return "none";
+        case Count::ccw_only: return "ccw_only";
+        case Count::cw_only: return "cw_only";
+        case Count::both: return "both";
+        case Count::undecided: return "undecided";
+    }
+    return "?";
+}
+struct Vec3 { Rational x, y, z; };
+inline Vec3 cross3(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline Rational dot3(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+inline Count voronoi_circles(const Circle& c1, const Circle& c2, const Circle& c3) {
+    auto row = [&](const Circle& ci, Vec3& m, Rational& b) {
+        m = {Rational(2) * (ci.x - c1.x), Rational(2) * (ci.y - c1.y), Rational(2) * (ci.r - c1.r)};
+        b = ci.x * ci.x + ci.y * ci.y - c1.x * c1.x - c1.y * c1.y - ci.r * ci.r + c1.r * c1.r;
+    };
+    Vec3 m2, m3;
+    Rational b2, b3;
+    row(c2, m2, b2);
+    row(c3, m3, b3);
+    const Vec3 k = cross3(m2, m3);
+    const Rational kk = dot3(k, k);
+    // (c_i, r_i) collinear in R^3: the distance minus radius along the line is
+    // strictly convex in the line parameter, so no three equal values: none.
+    if (kk.is_zero()) return Count::none;
+    const Vec3 u = cross3(m3, k), v = cross3(k, m2);
+    const Vec3 P{(b2 * u.x + b3 * v.x) / kk, (b2 * u.y + b3 * v.y) / kk, (b2 * u.z + b3 * v.z) / kk};
+    const Rational ex = P.x - c1.x, ey = P.y - c1.y, er = P.z + c1.r;
+    const Rational A = k.x * k.x + k.y * k.y - k.z * k.z;
+    const Rational B = Rational(2) * (ex * k.x + ey * k.y - er * k.z);
+    const Rational C = ex * ex + ey * ey - er * er;
+    std::vector<Ball> roots;
+    if (A.is_zero()) {
+        if (B.is_zero()) return Count::undecided;
+        roots.push_back(ball(-C / B));
+    } else {
+        const Rational disc = B * B - Rational(4) * A * C;
+        if (disc.sign() < 0) return Count::none;
+        if (disc.is_zero()) return Count::undecided;  // a double root: degenerate, not for random tests
+        Ball sq = sqrt_(ball(disc));
+        roots.push_back(div(sub(ball(-B), sq), ball(Rational(2) * A)));
+        roots.push_back(div(add(ball(-B), sq), ball(Rational(2) * A)));
+    }
+    bool ccw = false, cw = false;
+    for (const Ball& s : roots) {
+        Ball R = add(ball(P.z), mul(s, ball(k.z)));
+        int sr = ball_sign(R);
+        if (sr == 2 || sr == 0) return Count::undecided;
+        if (sr < 0) continue;
+        Ball X = add(ball(P.x), mul(s, ball(k.x))), Y = add(ball(P.y), mul(s, ball(k.y)));
+        Ball ux[3], uy[3];
+        const Circle* cs[3] = {&c1, &c2, &c3};
+        for (int i = 0; i < 3; ++i) {
+            Ball dx = sub(ball(cs[i]->x), X), dy = sub(ball(cs[i]->y), Y);
+            Ball len = hypot_(dx, dy);
+            ux[i] = div(dx, len);
+            uy[i] = div(dy, len);
+        }
+        Ball o = sub(mul(sub(ux[1], ux[0]), sub(uy[2], uy[0])), mul(sub(uy[1], uy[0]), sub(ux[2], ux[0])));
+        int so = ball_sign(o);
+        if (so == 2 || so == 0) return Count::undecided;
+        if (so > 0) {
+            if (ccw) return Count::undecided;  // two CCW circles would contradict the theory
+            ccw = true;
+        } else {
+            if (cw) return Count::undecided;
+            cw = true;
+        }
+    }
+    if (ccw && cw) return Count::both;
+    if (ccw) return Count::ccw_only;
+    if (cw) return Count::cw_only;
+    return Count::none;
+}
+
+// ---------------------------------------------------------------------------
+// Ellipses by brute force in long double.
+using LD = long double;
+constexpr LD kPi = 3.141592653589793238462643383279502884L;
+
+struct NumEllipse {
+    LD a, b, c, s, x, y;  // semi-axes, cos/sin of the rotation, center
+};
+inline LD ld(const Rational& q) {
+    // Through Arb: exact to long double's precision (to_double is only 53 bits).
+    Ball v = ball(q);
+    char* str = arb_get_str(v.get(), 30, ARB_STR_NO_RADIUS);
+    LD r = std::strtold(str, nullptr);
+    flint_free(str);
+    return r;
+}
+inline NumEllipse num(const Ellipse& e) {
+    return {ld(e.a()), ld(e.b()), ld(e.cos_rotation()), ld(e.sin_rotation()), ld(e.xc()), ld(e.yc())};
+}
+
+// Unsigned distance from (px, py) to the boundary of e.
+inline LD boundary_distance(const NumEllipse& e, LD px, LD py) {
+    const LD dx = px - e.x, dy = py - e.y;
+    const LD xi = e.c * dx + e.s * dy, eta = -e.s * dx + e.c * dy;
+    auto f = [&](LD th) {
+        LD u = e.a * std::cos(th) - xi, v = e.b * std::sin(th) - eta;
+        return u * u + v * v;
+    };
+    const int N = 720;
+    std::vector<LD> vals(N);
+    for (int i = 0; i < N; ++i) vals[i] = f(2 * kPi * i / N);
+    LD best = vals[0];
+    for (int i = 0; i < N; ++i) {
+        if (vals[i] > vals[(i + N - 1) % N] || vals[i] > vals[(i + 1) % N]) continue;  // not a local min
+        // Golden-section search on [th - h, th + h].
+        LD lo = 2 * kPi * (i - 1) / N, hi = 2 * kPi * (i + 1) / N;
+        const LD g = (std::sqrt(5.0L) - 1) / 2;
+        LD x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+        for (int it = 0; it < 120; ++it) {
+            if (f1 < f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = f(x1); }
+            else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = f(x2); }
+        }
+        best = std::min({best, f1, f2, vals[i]});
+    }
+    return std::sqrt(best);
+}
+// Signed distance (negative inside), the inside test done exactly.
+inline LD signed_distance(const Ellipse& e, const Point& p) {
+    LD d = boundary_distance(num(e), ld(p.x), ld(p.y));
+    return e.side_of_point(p.x, p.y) < 0 ? -d : d;
+}
+
+// Support function h(n) = n.C + sqrt(a^2 (n.u)^2 + b^2 (n.v)^2), n = (cos phi, sin phi).
+inline LD support(const NumEllipse& e, LD phi) {
+    const LD nx = std::cos(phi), ny = std::sin(phi);
+    const LD nu = nx * e.c + ny * e.s, nv = -nx * e.s + ny * e.c;
+    return nx * e.x + ny * e.y + std::sqrt(e.a * e.a * nu * nu + e.b * e.b * nv * nv);
+}
+// The normal angle of kappa2's bitangent L of (E1, E2). With f = h1 - h2,
+// h'(phi) = T(phi).rot90(n) (T = support point), so f' = (T1 - T2).rot90(n);
+// "H = side of n is on the left of T1 -> T2" means n.rot90(T2 - T1) > 0, i.e.
+// (T1 - T2).rot90(n) > 0: L is the zero of f where f increases. Returns false
+// if the sampling does not find exactly one such crossing.
+inline bool bitangent_normal(const NumEllipse& e1, const NumEllipse& e2, LD& phi_out) {
+    const int N = 4096;
+    auto f = [&](LD phi) { return support(e1, phi) - support(e2, phi); };
+    int found = 0;
+    LD prev = f(0);
+    for (int i = 1; i <= N; ++i) {
+        LD phi = 2 * kPi * i / N, cur = f(phi);
+        if (prev < 0 && cur >= 0) {
+            LD lo = 2 * kPi * (i - 1) / N, hi = phi;
+            for (int it = 0; it < 100; ++it) {
+                LD mid = (lo + hi) / 2;
+                (f(mid) < 0 ? lo : hi) = mid;
+            }
+            phi_out = (lo + hi) / 2;
+            ++found;
+        }
+        prev = cur;
+    }
+    return found == 1;
+}
+
+}  // namespace oracle

@@ -1,0 +1,111 @@
+// voronoi_circle_count(E1, E2, E3): none / ccw_only / cw_only / both, against
+// an independent solution of the Apollonius problem for circles
+// (circle_oracles.hpp) and hand cases, CGAL's collinear three-site tests
+// among them.
+#include "predicates/voronoi_circle_count.hpp"
+#include "tests/predicates/circle_oracles.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace ellvor;
+
+namespace {
+
+using Rng = std::mt19937_64;
+
+Rational rnd(Rng& rng, long lo, long hi, long den) {
+    std::uniform_int_distribution<long> n(lo * den, hi * den);
+    return Rational(n(rng), static_cast<unsigned long>(den));
+}
+Rational rnd_pos(Rng& rng, long hi, long den) {
+    std::uniform_int_distribution<long> n(1, hi * den);
+    return Rational(n(rng), static_cast<unsigned long>(den));
+}
+bool circles_apart(const oracle::Circle& a, const oracle::Circle& b) {
+    const Rational dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
+    return dx * dx + dy * dy > r * r;
+}
+
+const char* name(oracle::Count c) { return oracle::count_name(c); }
+const char* name(VoronoiCircles v) {
+    switch (v) {
+        case VoronoiCircles::none: return "none";
+        case VoronoiCircles::ccw_only: return "ccw_only";
+        case VoronoiCircles::cw_only: return "cw_only";
+        case VoronoiCircles::both: return "both";
+    }
+    return "?";
+}
+
+VoronoiCircles reversed(VoronoiCircles v) {
+    if (v == VoronoiCircles::ccw_only) return VoronoiCircles::cw_only;
+    if (v == VoronoiCircles::cw_only) return VoronoiCircles::ccw_only;
+    return v;
+}
+
+void expect(const oracle::Circle& a, const oracle::Circle& b, const oracle::Circle& c, VoronoiCircles want) {
+    const Ellipse e1 = a.ellipse(), e2 = b.ellipse(), e3 = c.ellipse();
+    INFO("want " << name(want) << oracle::ell({&e1, &e2, &e3}));
+    CHECK(name(voronoi_circle_count(e1, e2, e3)) == std::string(name(want)));
+    // Rotating the triple keeps the orientation, swapping two reverses it.
+    CHECK(name(voronoi_circle_count(e2, e3, e1)) == std::string(name(want)));
+    CHECK(name(voronoi_circle_count(e1, e3, e2)) == std::string(name(reversed(want))));
+}
+
+}  // namespace
+
+TEST_CASE("voronoi circle count: hand cases", "[predicates][voronoi_circle_count]") {
+    // Three small far-apart circles: one circle through (almost) the three centers, whose
+    // tangency points follow the orientation of the centers.
+    expect({0, 0, 1}, {100, 0, 1}, {0, 100, 1}, VoronoiCircles::ccw_only);
+    expect({0, 0, 1}, {0, 100, 1}, {100, 0, 1}, VoronoiCircles::cw_only);
+    // The oracle agrees.
+    CHECK(oracle::voronoi_circles({0, 0, 1}, {100, 0, 1}, {0, 100, 1}) == oracle::Count::ccw_only);
+    CHECK(oracle::voronoi_circles({0, 0, 1}, {0, 100, 1}, {100, 0, 1}) == oracle::Count::cw_only);
+}
+
+TEST_CASE("voronoi circle count: CGAL's collinear three-site configurations", "[predicates][voronoi_circle_count]") {
+    // Centers (100,100), (150,150), (200,200). Along the center line, with p the
+    // foot of the query point X and h its distance to the line, the weighted distance
+    // g(t) = sqrt((t - p)^2 + h^2) - r(t) must take one value at the three sites.
+    // Radii linear in t (5,10,15 or 20,20,20): g is strictly convex -> none (CGAL:
+    // all faces infinite). Middle 25 (outer 20): symmetry forces p at the middle, where
+    // g(middle) = h - 25 < sqrt(L^2 + h^2) - 20: none (CGAL: the middle site on the hull).
+    // Middle 15: h + 5 = sqrt(L^2 + h^2) gives h = +-(L^2 - 25)/10 with L = 50 sqrt 2:
+    // two circles, one each side -> both (CGAL: two finite faces, middle not on hull).
+    const Rational x1(100), x2(150), x3(200);
+    struct Case { long r1, r2, r3; VoronoiCircles want; };
+    for (const Case& c : {Case{5, 10, 15, VoronoiCircles::none}, Case{20, 20, 20, VoronoiCircles::none},
+                          Case{20, 25, 20, VoronoiCircles::none}, Case{20, 15, 20, VoronoiCircles::both},
+                          Case{15, 10, 5, VoronoiCircles::none}}) {
+        const oracle::Circle a{x1, x1, c.r1}, b{x2, x2, c.r2}, d{x3, x3, c.r3};
+        INFO("radii " << c.r1 << " " << c.r2 << " " << c.r3);
+        CHECK(name(oracle::voronoi_circles(a, b, d)) == std::string(name(c.want == VoronoiCircles::none ? oracle::Count::none : oracle::Count::both)));
+        expect(a, b, d, c.want);
+        expect(d, b, a, c.want);  // the other insertion order
+        expect(b, a, d, c.want);  // the middle site first
+    }
+}
+
+TEST_CASE("voronoi circle count on 500 random disjoint circle triples agrees with the Apollonius oracle", "[predicates][voronoi_circle_count]") {
+    Rng rng(6174);
+    int n = 0, seen[4] = {};
+    while (n < 600) {
+        // Radii up to 4 in a [-10,10]^2 box: crowded triples, so all four answers occur.
+        oracle::Circle c1{rnd(rng, -10, 10, 97), rnd(rng, -10, 10, 89), rnd_pos(rng, 4, 53)};
+        oracle::Circle c2{rnd(rng, -10, 10, 83), rnd(rng, -10, 10, 79), rnd_pos(rng, 4, 47)};
+        oracle::Circle c3{rnd(rng, -10, 10, 71), rnd(rng, -10, 10, 67), rnd_pos(rng, 4, 43)};
+        if (!circles_apart(c1, c2) || !circles_apart(c1, c3) || !circles_apart(c2, c3)) continue;
+        ++n;
+        const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), e3 = c3.ellipse();
+        INFO(oracle::ell({&e1, &e2, &e3}));
+        const oracle::Count want = oracle::voronoi_circles(c1, c2, c3);
+        REQUIRE(want != oracle::Count::undecided);
+        ++seen[static_cast<int>(want)];
+        CHECK(name(voronoi_circle_count(e1, e2, e3)) == std::string(name(want)));
+    }
+    INFO("none " << seen[0] << " ccw " << seen[1] << " cw " << seen[2] << " both " << seen[3]);
+    for (int k = 0; k < 4; ++k) CHECK(seen[k] > 5);
+}
