@@ -11,7 +11,8 @@
     X(side_of_bisector)    \
     X(bitangent)           \
     X(incircle)            \
-    X(voronoi_circle)
+    X(voronoi_circle)      \
+    X(resultant)
 
 namespace ellvor::cli {
 #define ELLVOR_DECLARE_COMMAND(id) extern const Command command_##id;

@@ -53,10 +53,9 @@ int run(const std::vector<std::string>& args) {
         e << "degree: " << r.degree << "\n"
           << "expected degree: " << r.expected_degree << "\n"
           << "full R2 degree: " << r.r2_degree << "\n"
-          << "removed factors:";
-        if (r.removed_factors.empty()) e << " none";
-        for (const auto& f : r.removed_factors) e << " " << f.first << "^" << f.second;
-        e << "\n"
+          << "removed factors: " << r.removed_factors.size() << "\n";
+        for (const auto& f : r.removed_factors) e << "  " << f.first << "  exponent " << f.second << "\n";
+        e
           << "seed exponents held: " << (r.generic_exponents ? "yes" : "no") << "\n"
           << "primes used: " << r.primes_used << "\n"
           << "coefficient bits: " << r.coefficient_bits << "\n"
