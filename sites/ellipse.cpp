@@ -27,8 +27,9 @@ void scale_to_integers(const std::array<std::array<Rational, 3>, 3>& rational_co
     }
 }
 
-IntPolynomial tangent_component(const IntPolynomial& P, const IntPolynomial& W) {
-    // P' W - P W'
+}  // namespace
+
+IntPolynomial homogeneous_tangent(const IntPolynomial& P, const IntPolynomial& W) {
     IntPolynomial dP, dW, a, b, r;
     fmpz_poly_derivative(dP.get(), P.get());
     fmpz_poly_derivative(dW.get(), W.get());
@@ -37,8 +38,6 @@ IntPolynomial tangent_component(const IntPolynomial& P, const IntPolynomial& W) 
     fmpz_poly_sub(r.get(), a.get(), b.get());
     return r;
 }
-
-}  // namespace
 
 Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
     : a_(std::move(a)), b_(std::move(b)), w_(std::move(w)), xc_(std::move(xc)), yc_(std::move(yc)) {
@@ -60,8 +59,8 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
         {one, Rational(0), one},
     }};
     scale_to_integers(coeffs, {&X_, &Y_, &W_});
-    Tx_ = tangent_component(X_, W_);
-    Ty_ = tangent_component(Y_, W_);
+    Tx_ = homogeneous_tangent(X_, W_);
+    Ty_ = homogeneous_tangent(Y_, W_);
 
     // b^2 xi^2 + a^2 eta^2 - a^2 b^2 with xi = c dx + s dy, eta = -s dx + c dy.
     const Rational a2 = a_ * a_, b2 = b_ * b_;

@@ -26,6 +26,10 @@ struct BallPoint {
     Ball x, y;
 };
 
+// P' W - P W' for a coordinate P of a homogeneous parametrization (P : W):
+// W^2 times the derivative of P / W.
+IntPolynomial homogeneous_tangent(const IntPolynomial& P, const IntPolynomial& W);
+
 class Ellipse {
 public:
     // Throws Error unless a > 0 and b > 0.

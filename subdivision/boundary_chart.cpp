@@ -2,7 +2,6 @@
 
 #include <arb_fmpz_poly.h>
 
-
 namespace ellvor {
 
 namespace {
@@ -13,16 +12,6 @@ IntPolynomial flip(const IntPolynomial& p) {
     r.set_coeff(0, p.coeff(2));
     r.set_coeff(1, -p.coeff(1));
     r.set_coeff(2, p.coeff(0));
-    return r;
-}
-
-IntPolynomial tangent(const IntPolynomial& P, const IntPolynomial& W) {
-    IntPolynomial dP, dW, a, b, r;
-    fmpz_poly_derivative(dP.get(), P.get());
-    fmpz_poly_derivative(dW.get(), W.get());
-    fmpz_poly_mul(a.get(), dP.get(), W.get());
-    fmpz_poly_mul(b.get(), P.get(), dW.get());
-    fmpz_poly_sub(r.get(), a.get(), b.get());
     return r;
 }
 
@@ -38,8 +27,8 @@ BoundaryChart::BoundaryChart(const Ellipse& e, bool flipped) : flipped_(flipped)
     X_ = flipped ? flip(e.X()) : e.X();
     Y_ = flipped ? flip(e.Y()) : e.Y();
     W_ = flipped ? flip(e.W()) : e.W();
-    Tx_ = tangent(X_, W_);
-    Ty_ = tangent(Y_, W_);
+    Tx_ = homogeneous_tangent(X_, W_);
+    Ty_ = homogeneous_tangent(Y_, W_);
     dTx_ = derivative(Tx_);
     dTy_ = derivative(Ty_);
 }
