@@ -61,7 +61,7 @@ std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& 
         if (prec > max_precision && !proven_distinct) {
             ContactComparison exact({a.sites(), &a, index_a}, {b.sites(), &b, index_b});
             std::optional<bool> same;
-            for (long p = precision; !same && p <= kNonDegenerateLimit; p *= 2) {
+            for (long p = std::max(precision, kStartPrecision); !same && p <= kNonDegenerateLimit; p *= 2) {
                 if (!a.refine(p) || !b.refine(p)) return std::nullopt;
                 same = exact.same_contact_point();
             }

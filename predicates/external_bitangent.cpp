@@ -27,6 +27,8 @@ int compare(BoundaryParameter& a, BoundaryParameter& b) {
 }
 
 int position_in_arc(BoundaryParameter& from, BoundaryParameter& to, BoundaryParameter& x) {
+    // from == to is an arc of length zero (a degenerate edge), not the circle.
+    if (compare(from, to) == 0) return compare(x, from) == 0 ? 0 : -1;
     const int after_from = compare(x, from), before_to = compare(to, x);
     if (after_from == 0 || before_to == 0) return 0;
     const bool inside = compare(from, to) < 0 ? (after_from > 0 && before_to > 0)   // from < x < to

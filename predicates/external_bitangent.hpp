@@ -22,7 +22,7 @@ struct BoundaryParameter {
 // (ascending t, then infinity): -1, 0, +1.
 int compare(BoundaryParameter& a, BoundaryParameter& b);
 // Whether x lies strictly inside (+1), at an end (0) or outside (-1) the
-// counter-clockwise arc from `from` to `to` (from != to).
+// counter-clockwise arc from `from` to `to` (a single point when from == to).
 int position_in_arc(BoundaryParameter& from, BoundaryParameter& to, BoundaryParameter& x);
 
 // Sign of p at a boundary parameter; p has formal degree `formal_degree`

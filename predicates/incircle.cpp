@@ -84,7 +84,7 @@ std::optional<bool> tangent_exactly(const Ellipse& e1, const Ellipse& e2, const 
         VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2]);
         ContactComparison comparison({{&e1, &e2, &e3}, &solver, 0}, {triple, &other, 0});
         std::optional<bool> same;
-        for (long p = prec; !same && p <= kExactIsolationLimit; p *= 2) {
+        for (long p = std::max(prec, kStartPrecision); !same && p <= kExactIsolationLimit; p *= 2) {
             if (!solver.refine(p) || !other.refine(p)) return std::nullopt;
             same = comparison.same_contact_point();
         }

@@ -194,19 +194,26 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
 
 bool VoronoiCircleSolver::certify() {
     if (certified_) return true;
-    const auto guess = guess_voronoi_circle(*sites_[0], *sites_[1], *sites_[2]);
-    if (!guess) return false;
+    for_each_voronoi_circle_guess(*sites_[0], *sites_[1], *sites_[2], [&](const VoronoiCircleGuess& guess) {
+        return certified_ = certify_from(guess);
+    });
+    return certified_;
+}
+
+bool VoronoiCircleSolver::certify_from(const VoronoiCircleGuess& guess) {
     // Chart: t = tan(theta/2) for |theta| <= pi/2, else u = -1/t = -cot(theta/2).
+    charts_.clear();
+    enclosure_ = VoronoiCircleEnclosure{};
     for (int i = 0; i < 3; ++i) {
-        const double theta = guess->theta[i];
+        const double theta = guess.theta[i];
         const bool flipped = std::fabs(theta) > M_PI / 2;
         charts_.emplace_back(*sites_[i], flipped);
         enclosure_.flipped[i] = flipped;
         arb_set_d(midpoint_.at(i, 0), flipped ? -1 / std::tan(theta / 2) : std::tan(theta / 2));
     }
-    arb_set_d(midpoint_.at(3, 0), guess->radius);
-    arb_set_d(midpoint_.at(4, 0), guess->x);
-    arb_set_d(midpoint_.at(5, 0), guess->y);
+    arb_set_d(midpoint_.at(3, 0), guess.radius);
+    arb_set_d(midpoint_.at(4, 0), guess.x);
+    arb_set_d(midpoint_.at(5, 0), guess.y);
     // Ill-conditioned triples (huge circles of nearly collinear sites) need
     // more than the start precision before the Krawczyk test can pass.
     for (long prec = kStartPrecision; prec <= kCertifyPrecisionLimit; prec *= 2) {
@@ -215,7 +222,7 @@ bool VoronoiCircleSolver::certify() {
         bool singular = false;
         for (int it = 0; it < 4 && !singular; ++it) {
             singular = newton_step(prec) < 0;
-            if (!singular && (certified_ = krawczyk(prec))) return true;
+            if (!singular && krawczyk(prec)) return true;
         }
     }
     return false;

@@ -16,6 +16,7 @@
 
 #include "sites/ellipse.hpp"
 #include "subdivision/boundary_chart.hpp"
+#include "subdivision/voronoi_circle_guess.hpp"
 
 #include <array>
 #include <vector>
@@ -56,6 +57,7 @@ public:
     const VoronoiCircleEnclosure& enclosure() const { return enclosure_; }
 
 private:
+    bool certify_from(const VoronoiCircleGuess& guess);
     bool krawczyk(long prec);
     // One Newton step on the midpoint; returns the step's size in bits below
     // the values (larger = smaller step), or -1 if the Jacobian is singular.

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <vector>
 
@@ -134,24 +135,39 @@ std::vector<std::array<double, 3>> apollonius_circles(const std::array<Shape, 3>
     return out;
 }
 
-// The Apollonius circles of a circle model. With collinear centers the
-// linear part is singular: then the circles of the model with its middle
-// center nudged off the line (either side) serve as starting points -- only a
-// guess, which Newton on the true system corrects.
+// Apollonius circles when the three centers are (nearly) collinear: in a
+// frame with the line as x-axis the subtracted equations are linear in
+// (X, rho), and Y^2 = (rho + r1)^2 - (X - x1)^2 gives the two circles.
+std::vector<std::array<double, 3>> collinear_apollonius_circles(const std::array<Shape, 3>& c) {
+    std::vector<std::array<double, 3>> out;
+    const double dx = c[2].x - c[0].x, dy = c[2].y - c[0].y, length = std::hypot(dx, dy);
+    if (!(length > 0)) return out;
+    const double ex = dx / length, ey = dy / length;
+    double x[3], r[3];
+    for (int i = 0; i < 3; ++i) x[i] = (c[i].x - c[0].x) * ex + (c[i].y - c[0].y) * ey, r[i] = c[i].a;
+    // 2 X (x1 - xi) - 2 rho (ri - r1) = ri^2 - r1^2 - xi^2 + x1^2, i = 2, 3
+    Eigen::Matrix2d A;
+    Eigen::Vector2d b;
+    for (int i = 1; i < 3; ++i) {
+        A(i - 1, 0) = 2 * (x[0] - x[i]);
+        A(i - 1, 1) = -2 * (r[i] - r[0]);
+        b[i - 1] = r[i] * r[i] - r[0] * r[0] - x[i] * x[i] + x[0] * x[0];
+    }
+    if (!(std::fabs(A.determinant()) > 1e-12 * A.cwiseAbs().maxCoeff() * A.cwiseAbs().maxCoeff())) return out;
+    const Eigen::Vector2d sol = A.inverse() * b;
+    const double X = sol[0], rho = sol[1], y2 = (rho + r[0]) * (rho + r[0]) - (X - x[0]) * (X - x[0]);
+    if (!(rho > 0) || !(y2 >= 0)) return out;
+    for (double side : {1.0, -1.0}) {
+        const double Y = side * std::sqrt(y2);
+        out.push_back({rho, c[0].x + X * ex - Y * ey, c[0].y + X * ey + Y * ex});
+    }
+    return out;
+}
+
+// The Apollonius circles of a circle model, the collinear case included.
 std::vector<std::array<double, 3>> model_circles(const std::array<Shape, 3>& circles) {
     auto found = apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a});
-    if (!found.empty()) return found;
-    const double dx = circles[2].x - circles[0].x, dy = circles[2].y - circles[0].y;
-    const double length = std::hypot(dx, dy);
-    if (!(length > 0)) return found;
-    for (double side : {1.0, -1.0}) {
-        std::array<Shape, 3> nudged = circles;
-        const double shift = side * 1e-3 * length;
-        nudged[1].x += -dy / length * shift;
-        nudged[1].y += dx / length * shift;
-        for (const auto& c : apollonius_circles(nudged, {nudged[0].a, nudged[1].a, nudged[2].a})) found.push_back(c);
-    }
-    return found;
+    return found.empty() ? collinear_apollonius_circles(circles) : found;
 }
 
 // Start point for circle (x, y, rho): each tangency at the nearest point of E_i.
@@ -193,7 +209,7 @@ std::array<Shape, 3> blend(const std::array<Shape, 3>& e, CircleModel m, double 
 // Fallback: Newton in the plane on V for d1(V) = d2(V) = d3(V) (distances to
 // the ellipses, gradients the unit vectors from the nearest points), started
 // from a grid over and around the sites' bounding box.
-std::optional<Vector6> equidistant_point_search(const std::array<Shape, 3>& e) {
+bool equidistant_point_search(const std::array<Shape, 3>& e, const std::function<bool(const Vector6&)>& offer) {
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (const Shape& k : e) {
         const double r = std::max(k.a, k.b);
@@ -235,20 +251,26 @@ std::optional<Vector6> equidistant_point_search(const std::array<Shape, 3>& e) {
                 vx -= (a22 * g1 - a12 * g2) / det;
                 vy -= (a11 * g2 - a21 * g1) / det;
             }
-            if (converged && newton(e, X) && is_counterclockwise_solution(e, X)) return X;
+            if (converged && newton(e, X) && is_counterclockwise_solution(e, X) && offer(X)) return true;
         }
-    return std::nullopt;
+    return false;
 }
 
 }  // namespace
 
-std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
     const std::array<Shape, 3> e = {shape_of(e1), shape_of(e2), shape_of(e3)};
-    auto accept = [&](const Vector6& X) {
+    std::vector<Vector6> tried;
+    // Offers a solution unless an equal one was offered already.
+    auto offer = [&](const Vector6& X) {
+        for (const Vector6& Y : tried)
+            if ((X.tail<3>() - Y.tail<3>()).norm() <= 1e-9 * (1 + X.tail<3>().norm())) return false;
+        tried.push_back(X);
         VoronoiCircleGuess g;
         for (int i = 0; i < 3; ++i) g.theta[i] = std::remainder(X[i], 2 * M_PI);
         g.radius = X[3], g.x = X[4], g.y = X[5];
-        return g;
+        return try_guess(g);
     };
     constexpr CircleModel kModels[] = {CircleModel::inscribed, CircleModel::mean, CircleModel::circumscribed};
     // Direct Newton on the ellipses from each Apollonius circle of each model.
@@ -256,7 +278,7 @@ std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const 
         const auto circles = blend(e, m, 0);
         for (const auto& circle : model_circles(circles)) {
             Vector6 X = start_from(e, circle);
-            if (newton(e, X) && is_counterclockwise_solution(e, X)) return accept(X);
+            if (newton(e, X) && is_counterclockwise_solution(e, X) && offer(X)) return true;
         }
     }
     // Continuation from each model's counter-clockwise circle to the ellipses.
@@ -276,11 +298,10 @@ std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const 
                     step *= 0.5;
                 }
             }
-            if (lambda == 1) return accept(X);
+            if (lambda == 1 && offer(X)) return true;
         }
     }
-    if (const auto X = equidistant_point_search(e)) return accept(*X);
-    return std::nullopt;
+    return equidistant_point_search(e, offer);
 }
 
 }  // namespace ellvor

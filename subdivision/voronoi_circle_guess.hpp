@@ -7,7 +7,7 @@
 #include "sites/ellipse.hpp"
 
 #include <array>
-#include <optional>
+#include <functional>
 
 namespace ellvor {
 
@@ -20,10 +20,16 @@ struct VoronoiCircleGuess {
     double radius, x, y;
 };
 
-// Newton from the Apollonius circles of the inscribed circles (radius
-// min(a, b)), then, if that fails, continuation from those circles to the
-// ellipses. nullopt when no counter-clockwise solution with positive radius
-// was found (the caller reports "undecided").
-std::optional<VoronoiCircleGuess> guess_voronoi_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+// Floating-point solutions with positive radius and counter-clockwise
+// tangency points, offered to `try_guess` until it accepts one (returns
+// true): first Newton from the Apollonius circles of three circle models of
+// the sites (inscribed, mean, circumscribed radius; collinear centers
+// included), then continuation from those circles to the ellipses, then
+// Newton in the plane for equal distances from a grid of start points. A
+// floating-point solution can be spurious (e.g. a huge circle of nearly
+// collinear sites); the caller's certificate is what decides. Returns false
+// when no offered guess was accepted.
+bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess);
 
 }  // namespace ellvor

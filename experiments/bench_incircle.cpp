@@ -1,0 +1,591 @@
+// Time per InCircle call (kappa3): ellvor's incircle() on
+//   (a) random pairwise-disjoint ellipse quadruples (E1 E2 E3 | Q), ordered so
+//       that (E1, E2, E3) has its counter-clockwise Voronoi circle;
+//   (b) the seed paper's InCircle circle datasets (1), (2a), (2b), (2c), (3)
+//       (generate_paper_dataset), side by side with CGAL's Apollonius
+//       Vertex_conflict_2 on the same circles (seed Table 2, last five columns:
+//       "Our code" 4.22 / 6.01 / 6.09 / 7.02 / 11.18 ms, Apollonius 0.040 /
+//       0.052 / 0.057 / 0.069 / 0.295 ms).
+//
+// Per instance: the median of `reps` timed calls (ellvor: one call each, a
+// fresh solver every time = cold; CGAL: a batch of 32 calls divided by 32);
+// per dataset: median and p99 (nearest rank) of the per-instance times.
+// Warm: a solver of (E1, E2, E3) is made and used once with Q, then the call
+// with another query Q' (Q with halved semi-axes, same center: disjoint from
+// the triple since it lies inside Q) reusing that solver is timed.
+//
+// CGAL reads doubles: each rational is rounded to the nearest double, so CGAL
+// sees rounded input except on set (1) (dyadic). Agreement is counted only
+// where ellvor's voronoi_circle_count says the counter-clockwise circle exists
+// (ccw_only or both); elsewhere ellvor answers no-circle by DESIGN.md's rule
+// and CGAL's sign is an artifact of a vertex that does not exist.
+//
+//   build/experiments/bench_incircle                      # default (make bench), stdout only
+//   build/experiments/bench_incircle --full --out experiments/results
+//       # 11 repetitions, 2000 random quadruples; writes incircle.csv (one row per
+//       # instance; the sites only for notable rows) and incircle.md into the folder
+// Each instance's ellvor calls are first run once in a forked child with a
+// 20 s limit: a crash or hang of the library becomes an "error" row.
+// Options: --reps N, --random N, --seed S, --bits B (random quadruples), --out DIR.
+#include "predicates/incircle.hpp"
+#include "predicates/voronoi_circle_count.hpp"
+#include "sites/ellipse.hpp"
+#include "sites/site_generators.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "util/error.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Apollonius_graph_filtered_traits_2.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Traits = CGAL::Apollonius_graph_filtered_traits_2<K>;
+using CSite = Traits::Site_2;
+using CPoint = Traits::Point_2;
+
+struct Instance {
+    std::vector<Ellipse> sites;  // E1 E2 E3
+    std::optional<Ellipse> q;
+};
+
+struct Dataset {
+    std::string name;
+    bool circles = false;
+    std::vector<Instance> instances;
+};
+
+struct Row {
+    std::string dataset;
+    long index = 0;
+    std::string circles;       // voronoi_circle_count of (E1, E2, E3)
+    std::string result;        // ellvor's answer (or "error")
+    std::string stage;
+    long precision = 0, newton_steps = 0;
+    double ellvor_us = 0;
+    double warm_us = -1;       // only where the CCW circle exists
+    std::string warm_result;
+    double count_us = -1;      // voronoi_circle_count alone
+    double solver_us = -1;     // a fresh solver's refine(48) alone (what the 64-bit stage asks), CCW circle only
+    int cgal_sign = 2;         // 2: not run (ellipses)
+    double cgal_us = -1;
+    std::string agree;         // "yes", "no", "n/a" (no CCW circle), "undecided"
+    std::string replay;        // the four sites
+};
+
+double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// Nearest-rank percentile.
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    std::size_t k = static_cast<std::size_t>(std::ceil(p / 100 * v.size()));
+    return v[std::min(v.size(), std::max<std::size_t>(k, 1)) - 1];
+}
+
+CSite to_cgal(const Ellipse& c) { return CSite(CPoint(c.xc().to_double(), c.yc().to_double()), c.a().to_double()); }
+
+Ellipse shrunk(const Ellipse& q) {
+    return Ellipse(q.a() * Rational(1, 2), q.b() * Rational(1, 2), q.w(), q.xc(), q.yc());
+}
+
+volatile long sink = 0;
+
+Dataset random_quadruples(long count, std::uint64_t seed, long bits, long& dropped) {
+    Dataset ds{"random-ellipses", false, {}};
+    dropped = 0;
+    for (std::uint64_t s = seed; static_cast<long>(ds.instances.size()) < count; ++s) {
+        GeneratorOptions o;
+        o.kind = SiteKind::ellipses;
+        o.count = 4;
+        o.seed = s;
+        o.bits = bits;
+        o.box = Rational(10);
+        std::vector<Ellipse> e = generate_sites(o);
+        Ellipse q = e.back();
+        e.pop_back();
+        const VoronoiCircles c = voronoi_circle_count(e[0], e[1], e[2]);
+        if (c == VoronoiCircles::cw_only) std::swap(e[1], e[2]);
+        if (c == VoronoiCircles::none) {
+            ++dropped;
+            continue;
+        }
+        ds.instances.push_back({std::move(e), std::move(q)});
+    }
+    return ds;
+}
+
+Dataset paper_set(const std::string& set, std::uint64_t seed, long& swapped) {
+    PaperDataset p = generate_paper_dataset(PaperFamily::incircle, set, seed);
+    Dataset ds{"paper-" + set, true, {}};
+    for (PaperInstance& in : p.instances) {
+        // The order the generator gives may have only the clockwise circle
+        // (set (1)'s base triple does); swap E2 and E3 then, for both libraries.
+        if (voronoi_circle_count(in.sites[0], in.sites[1], in.sites[2]) == VoronoiCircles::cw_only) {
+            std::swap(in.sites[1], in.sites[2]);
+            ++swapped;
+        }
+        ds.instances.push_back({std::move(in.sites), std::move(in.query_site)});
+    }
+    return ds;
+}
+
+std::string sites_text(const Instance& in) {
+    return in.sites[0].str() + " | " + in.sites[1].str() + " | " + in.sites[2].str() + " | Q " + in.q->str();
+}
+
+int ellvor_sign(InCircle r) {
+    switch (r) {
+        case InCircle::conflict: return -1;
+        case InCircle::no_conflict: return 1;
+        case InCircle::tangent: return 0;
+        default: return 2;
+    }
+}
+
+// Runs the instance's ellvor calls (cold, then warm) once in a child process
+// with a time limit, so that a crash or a hang in the library is reported as
+// an anomaly of that instance instead of ending (or stalling) the benchmark.
+// Empty when the calls returned; otherwise what happened.
+std::string screen(const Instance& in, unsigned seconds) {
+    std::cout.flush();
+    std::cerr.flush();
+    const pid_t pid = fork();
+    if (pid < 0) return std::string();  // cannot screen: run unguarded
+    if (pid == 0) {
+        alarm(seconds);
+        try {
+            const Ellipse &e1 = in.sites[0], &e2 = in.sites[1], &e3 = in.sites[2], &q = *in.q;
+            incircle(e1, e2, e3, q);
+            const VoronoiCircles c = voronoi_circle_count(e1, e2, e3);
+            if (c == VoronoiCircles::ccw_only || c == VoronoiCircles::both) {
+                VoronoiCircleSolver solver(e1, e2, e3);
+                incircle(e1, e2, e3, q, {}, &solver);
+                incircle(e1, e2, e3, shrunk(q), {}, &solver);
+            }
+        } catch (...) {
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return std::string();
+    if (WIFSIGNALED(status)) {
+        const int sig = WTERMSIG(status);
+        return sig == SIGALRM ? "timeout (> " + std::to_string(seconds) + " s)" : "crash (signal " + std::to_string(sig) + ")";
+    }
+    return "child exit " + std::to_string(WEXITSTATUS(status));
+}
+
+Row run_instance(const std::string& dataset, long index, const Instance& in, bool circles, int reps) {
+    Row row;
+    row.dataset = dataset;
+    row.index = index;
+    row.replay = sites_text(in);
+    const Ellipse &e1 = in.sites[0], &e2 = in.sites[1], &e3 = in.sites[2], &q = *in.q;
+    const VoronoiCircles count = voronoi_circle_count(e1, e2, e3);
+    row.circles = voronoi_circles_name(count);
+    const bool has_ccw = count == VoronoiCircles::ccw_only || count == VoronoiCircles::both;
+
+    // ellvor, cold (a fresh solver inside every call)
+    std::vector<double> t;
+    InCircleDecision d;
+    const std::string failure = screen(in, 20);
+    if (!failure.empty()) {
+        std::cerr << "ANOMALY: " << dataset << " #" << index << ": " << failure << " — " << row.replay << "\n";
+        row.result = "error";
+        row.stage = failure;
+        row.agree = "error";
+        return row;
+    }
+    try {
+        for (int r = 0; r < reps; ++r) {
+            const double t0 = now();
+            d = incircle(e1, e2, e3, q);
+            t.push_back(now() - t0);
+            sink += static_cast<int>(d.result);
+        }
+        row.result = incircle_name(d.result);
+        row.stage = stage_name(d.stage);
+        row.precision = d.precision;
+        row.newton_steps = d.newton_steps;
+        row.ellvor_us = median(t) * 1e6;
+    } catch (const std::exception& ex) {
+        row.result = "error";
+        row.stage = ex.what();
+    }
+
+    // ellvor, warm: the same triple's solver, another query
+    if (has_ccw && row.result != "error") {
+        try {
+            const Ellipse q2 = shrunk(q);
+            VoronoiCircleSolver solver(e1, e2, e3);
+            incircle(e1, e2, e3, q, {}, &solver);
+            std::vector<double> w;
+            InCircleDecision d2;
+            for (int r = 0; r < reps; ++r) {
+                const double t0 = now();
+                d2 = incircle(e1, e2, e3, q2, {}, &solver);
+                w.push_back(now() - t0);
+                sink += static_cast<int>(d2.result);
+            }
+            row.warm_us = median(w) * 1e6;
+            row.warm_result = incircle_name(d2.result);
+        } catch (const std::exception& ex) {
+            row.warm_result = std::string("error: ") + ex.what();
+        }
+    }
+
+    // Breakdown: the kappa2-based circle count, and the solver alone.
+    {
+        std::vector<double> a, b;
+        for (int r = 0; r < reps; ++r) {
+            double t0 = now();
+            sink += static_cast<int>(voronoi_circle_count(e1, e2, e3));
+            a.push_back(now() - t0);
+            if (!has_ccw) continue;
+            t0 = now();
+            VoronoiCircleSolver solver(e1, e2, e3);
+            sink += solver.refine(48);
+            b.push_back(now() - t0);
+        }
+        row.count_us = median(a) * 1e6;
+        if (!b.empty()) row.solver_us = median(b) * 1e6;
+    }
+
+    // CGAL on the rounded circles
+    if (circles) {
+        const Traits traits;
+        const auto vc = traits.vertex_conflict_2_object();
+        const CSite p1 = to_cgal(e1), p2 = to_cgal(e2), p3 = to_cgal(e3), cq = to_cgal(q);
+        constexpr int kBatch = 32;
+        std::vector<double> c;
+        CGAL::Sign s = CGAL::ZERO;
+        for (int r = 0; r < reps; ++r) {
+            const double t0 = now();
+            for (int k = 0; k < kBatch; ++k) {
+                // The sites escape and memory is clobbered: every call is evaluated anew.
+                asm volatile("" : : "r"(&p1), "r"(&p2), "r"(&p3), "r"(&cq) : "memory");
+                s = vc(p1, p2, p3, cq);
+                asm volatile("" : : "r"(&s) : "memory");
+            }
+            c.push_back((now() - t0) / kBatch);
+            sink += static_cast<int>(s);
+        }
+        row.cgal_sign = static_cast<int>(s);
+        row.cgal_us = median(c) * 1e6;
+        if (!has_ccw)
+            row.agree = "n/a";
+        else if (row.result == "undecided" || row.result == "error")
+            row.agree = "undecided";
+        else
+            row.agree = ellvor_sign(d.result) == row.cgal_sign ? "yes" : "no";
+    } else {
+        row.agree = "-";
+    }
+    return row;
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown";
+    int n = 0;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
+        if (line.rfind("processor", 0) == 0) ++n;
+    }
+    return model + ", " + std::to_string(n) + " logical CPUs";
+}
+
+// The source state the numbers come from (other sessions edit the library).
+std::string source_state() {
+    std::string out;
+    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
+        char buf[128];
+        std::string head, dirty;
+        if (fgets(buf, sizeof buf, f)) head = buf;
+        if (fgets(buf, sizeof buf, f)) dirty = buf;
+        pclose(f);
+        auto trim = [](std::string& s) { while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back(); };
+        trim(head);
+        trim(dirty);
+        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
+    }
+    return out.empty() ? "unknown (not run from the repository)" : out;
+}
+
+std::string loadavg() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+}
+
+std::string fmt(const char* f, double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, x);
+    return buf;
+}
+
+// Rows whose sites go into the CSV (the others are replayed from dataset and
+// index: the generators are deterministic).
+bool notable(const Row& r) {
+    return r.agree == "no" || r.result == "undecided" || r.result == "error" || r.result == "tangent" ||
+           r.warm_result == "undecided" || r.warm_result == "tangent" || r.warm_result.rfind("error", 0) == 0;
+}
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"") == std::string::npos) return s;
+    std::string o = "\"";
+    for (char ch : s) o += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return o + "\"";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int reps = 3;
+    long random_count = 500, bits = 8;
+    std::uint64_t seed = 1;
+    bool full = false;
+    std::string out_dir;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> const char* {
+            if (i + 1 >= argc) {
+                std::cerr << "missing value after " << a << "\n";
+                std::exit(2);
+            }
+            return argv[++i];
+        };
+        if (a == "--full") {
+            full = true;
+        } else if (a == "--reps") {
+            reps = std::atoi(next());
+        } else if (a == "--random") {
+            random_count = std::atol(next());
+        } else if (a == "--seed") {
+            seed = std::strtoull(next(), nullptr, 10);
+        } else if (a == "--bits") {
+            bits = std::atol(next());
+        } else if (a == "--out") {
+            out_dir = next();
+        } else {
+            std::cerr << "usage: bench_incircle [--full] [--reps N] [--random N] [--seed S] [--bits B] [--out DIR]\n";
+            return 2;
+        }
+    }
+    if (full) {
+        reps = std::max(reps, 11);
+        random_count = std::max(random_count, 2000L);
+    }
+    if (reps < 1 || random_count < 1) {
+        std::cerr << "reps and random must be positive\n";
+        return 2;
+    }
+    std::string command = "build/experiments/bench_incircle";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+    const std::string load_before = loadavg();
+
+    std::vector<Dataset> datasets;
+    long dropped = 0;
+    datasets.push_back(random_quadruples(random_count, seed, bits, dropped));
+    std::vector<long> swapped_count;
+    for (const char* s : {"1", "2a", "2b", "2c", "3"}) {
+        long swapped = 0;
+        datasets.push_back(paper_set(s, seed, swapped));
+        swapped_count.push_back(swapped);
+    }
+
+    std::vector<Row> rows;
+    for (const Dataset& ds : datasets) {
+        std::cerr << "[bench_incircle] " << ds.name << ": " << ds.instances.size() << " instances\n";
+        const double t0 = now();
+        for (std::size_t i = 0; i < ds.instances.size(); ++i)
+            rows.push_back(run_instance(ds.name, static_cast<long>(i), ds.instances[i], ds.circles, reps));
+        std::cerr << "  done in " << fmt("%.2f", now() - t0) << " s\n";
+    }
+    // Cross-check of CGAL's per-call time: whole passes over a dataset (a new
+    // input every call), best of `reps` passes, divided by the instance count.
+    std::vector<double> cgal_pass_us(datasets.size(), NAN);
+    for (std::size_t k = 0; k < datasets.size(); ++k) {
+        const Dataset& ds = datasets[k];
+        if (!ds.circles) continue;
+        std::vector<std::array<CSite, 4>> sites;
+        for (const Instance& in : ds.instances)
+            sites.push_back({to_cgal(in.sites[0]), to_cgal(in.sites[1]), to_cgal(in.sites[2]), to_cgal(*in.q)});
+        const Traits traits;
+        const auto vc = traits.vertex_conflict_2_object();
+        double best = 1e300;
+        for (int r = 0; r < std::max(reps, 5); ++r) {
+            const double t0 = now();
+            long acc = 0;
+            for (const auto& s4 : sites) acc += static_cast<int>(vc(s4[0], s4[1], s4[2], s4[3]));
+            best = std::min(best, now() - t0);
+            sink += acc;
+        }
+        cgal_pass_us[k] = best / sites.size() * 1e6;
+    }
+    const std::string load_after = loadavg();
+
+    // Summary per dataset
+    std::ostringstream md;
+    md << "# InCircle: time per call, ellvor vs CGAL Apollonius\n\n"
+       << "- Machine: " << cpu_model() << "\n"
+       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
+       << "- Source: " << source_state() << "\n"
+       << "- Command: `make build/experiments/bench_incircle && " << command << "`\n"
+       << "- Repetitions per instance: " << reps
+       << " (per-instance time = median of the repetitions; ellvor: one call each with a fresh solver; CGAL: "
+          "batches of 32 calls / 32); median and p99 (nearest rank) over instances. \"CGAL pass\": best of "
+       << std::max(reps, 5) << " whole passes over the dataset (a new input every call) / n, a cross-check.\n"
+       << "- Random ellipses: generate_sites(ellipses, count 4, bits " << bits << ", box 10, seeds " << seed << ", "
+       << seed + 1 << ", ...): E1 E2 E3 | Q, E2 and E3 swapped when only the clockwise circle exists; " << dropped
+       << " quadruples without either circle skipped.\n"
+       << "- Paper sets: generate_paper_dataset(incircle, set, seed " << seed
+       << "), circles; where the generated order (E1, E2, E3) has only the clockwise circle, E2 and E3 are "
+          "swapped for both libraries (instances swapped: 1: "
+       << swapped_count[0] << ", 2a: " << swapped_count[1] << ", 2b: " << swapped_count[2] << ", 2c: "
+       << swapped_count[3] << ", 3: " << swapped_count[4]
+       << "). CGAL: Apollonius_graph_filtered_traits_2<Epick>::Vertex_conflict_2 on the circles rounded "
+          "to double (exact input only for set (1), which is dyadic).\n"
+       << "- Warm: a second call on the same triple with Q' = Q with halved semi-axes, reusing the triple's "
+          "VoronoiCircleSolver (last argument of incircle); only where the CCW circle exists. \"cold (same)\" is the "
+          "cold median over those same instances.\n"
+       << "- Agreement: sign of ellvor (conflict -1, no-conflict +1, tangent 0) vs CGAL's sign, only where "
+          "voronoi_circle_count is ccw or both.\n\n";
+    md << "| dataset | n | ellvor median µs | ellvor p99 µs | CGAL median µs | CGAL p99 µs | ratio (medians) | "
+          "paper ratio | warm median µs | cold (same) median µs | CGAL pass µs/call |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    const std::vector<std::pair<std::string, double>> paper_ratio = {
+        {"paper-1", 4.220 / 0.040}, {"paper-2a", 6.010 / 0.052}, {"paper-2b", 6.090 / 0.057},
+        {"paper-2c", 7.017 / 0.069}, {"paper-3", 11.180 / 0.295}};
+    std::ostringstream stages;
+    stages << "| dataset | circles none/ccw/cw/both | conflict | no-conflict | tangent | no-circle | undecided | error | "
+              "decided by filter/subdivision/exact | max precision | agree / compared | disagree |\n"
+           << "|---|---|---:|---:|---:|---:|---:|---:|---|---:|---|---:|\n";
+    std::ostringstream breakdown;
+    breakdown << "| dataset | voronoi_circle_count median µs | solver refine(48) median µs | solver p99 µs |\n"
+              << "|---|---:|---:|---:|\n";
+    std::vector<const Row*> anomalies;
+    int bad_targets = 0;
+    for (std::size_t dk = 0; dk < datasets.size(); ++dk) {
+        const Dataset& ds = datasets[dk];
+        std::vector<double> e, c, w, cw, cnt, sol;
+        long n_circ[4] = {0, 0, 0, 0}, res[6] = {0, 0, 0, 0, 0, 0}, st[3] = {0, 0, 0}, agree = 0, compared = 0,
+             disagree = 0, maxprec = 0;
+        for (const Row& r : rows) {
+            if (r.dataset != ds.name) continue;
+            if (r.result != "error") e.push_back(r.ellvor_us);
+            if (r.cgal_us >= 0) c.push_back(r.cgal_us);
+            if (r.count_us >= 0) cnt.push_back(r.count_us);
+            if (r.solver_us >= 0) sol.push_back(r.solver_us);
+            if (r.warm_us >= 0) {
+                w.push_back(r.warm_us);
+                cw.push_back(r.ellvor_us);
+            }
+            const char* names[4] = {"none", "ccw", "cw", "both"};
+            for (int k = 0; k < 4; ++k) n_circ[k] += r.circles == names[k];
+            const char* rn[6] = {"conflict", "no-conflict", "tangent", "no-circle", "undecided", "error"};
+            for (int k = 0; k < 6; ++k) res[k] += r.result == rn[k];
+            if (r.result != "undecided" && r.result != "error")
+                for (int k = 0; k < 3; ++k) st[k] += r.stage == stage_name(static_cast<Stage>(k));
+            maxprec = std::max(maxprec, r.precision);
+            if (r.agree == "yes" || r.agree == "no") ++compared;
+            agree += r.agree == "yes";
+            disagree += r.agree == "no";
+            if (r.agree == "no" || r.result == "undecided" || r.result == "error" || r.result == "tangent" ||
+                r.warm_result == "undecided" || r.warm_result.rfind("error", 0) == 0)
+                anomalies.push_back(&r);
+        }
+        const double em = median(e), cm = c.empty() ? NAN : median(c);
+        std::string pr = "—";
+        for (const auto& [name, ratio] : paper_ratio)
+            if (name == ds.name) pr = fmt("%.0f×", ratio);
+        md << "| " << ds.name << " | " << ds.instances.size() << " | " << fmt("%.1f", em) << " | "
+           << fmt("%.1f", percentile(e, 99)) << " | " << (c.empty() ? "—" : fmt("%.2f", cm)) << " | "
+           << (c.empty() ? "—" : fmt("%.2f", percentile(c, 99))) << " | " << (c.empty() ? "—" : fmt("%.1f×", em / cm))
+           << " | " << pr << " | " << (w.empty() ? "—" : fmt("%.1f", median(w))) << " | "
+           << (cw.empty() ? "—" : fmt("%.1f", median(cw))) << " | "
+           << (ds.circles ? fmt("%.3f", cgal_pass_us[dk]) : std::string("—")) << " |\n";
+        breakdown << "| " << ds.name << " | " << fmt("%.1f", median(cnt)) << " | "
+                  << (sol.empty() ? "—" : fmt("%.1f", median(sol))) << " | " << (sol.empty() ? "—" : fmt("%.1f", percentile(sol, 99)))
+                  << " |\n";
+        stages << "| " << ds.name << " | " << n_circ[0] << "/" << n_circ[1] << "/" << n_circ[2] << "/" << n_circ[3]
+               << " | " << res[0] << " | " << res[1] << " | " << res[2] << " | " << res[3] << " | " << res[4] << " | "
+               << res[5] << " | " << st[0] << "/" << st[1] << "/" << st[2] << " | " << maxprec << " | "
+               << (ds.circles ? std::to_string(agree) + " / " + std::to_string(compared) : std::string("—")) << " | "
+               << (ds.circles ? std::to_string(disagree) : std::string("—")) << " |\n";
+        if (ds.name == "random-ellipses" && em > 50) ++bad_targets;
+        if (ds.circles && em > 10 * cm) ++bad_targets;
+    }
+    md << "\nTargets: median ≤ 50 µs on random ellipses; ≤ 10× CGAL on circles (seed: 38–116× slower than CGAL). "
+       << "Rows missing a target: " << bad_targets << ".\n\n"
+       << "## Where the cold time goes\n\n"
+       << "Each part timed alone (median of the repetitions per instance, median over instances; the solver only "
+          "where the CCW circle exists). A cold incircle call = the count + the solver + the certified distance "
+          "d(V, Q) at 64 bits (+ more precision when needed).\n\n"
+       << breakdown.str() << "\n"
+       << "## Which stage decided\n\n"
+       << stages.str()
+       << "\nStages of answered calls (conflict / no-conflict / tangent / no-circle) by the last stage that ran; "
+          "max precision = largest Arb precision any call used (the cap is 4096).\n\n"
+       << "## Anomalies and degenerate cases (undecided, error = crash/timeout/exception in a child run, tangent, "
+          "disagreement with CGAL where the CCW circle exists)\n\n";
+    if (anomalies.empty()) md << "None.\n";
+    const std::size_t kShown = 20;
+    for (std::size_t k = 0; k < anomalies.size() && k < kShown; ++k) {
+        const Row& r = *anomalies[k];
+        md << "- " << r.dataset << " #" << r.index << ": ellvor " << r.result << " (" << r.stage << ", prec "
+           << r.precision << "), warm " << (r.warm_result.empty() ? "—" : r.warm_result) << ", CGAL "
+           << (r.cgal_sign == 2 ? std::string("—") : std::to_string(r.cgal_sign)) << ", circles " << r.circles
+           << " — `" << r.replay << "`\n";
+    }
+    if (anomalies.size() > kShown)
+        md << "- … " << anomalies.size() - kShown << " more (see incircle.csv)\n";
+
+    std::cout << md.str();
+    if (!out_dir.empty()) {
+        std::ofstream csv(out_dir + "/incircle.csv");
+        csv << "dataset,index,circles,result,stage,precision,newton_steps,ellvor_us,warm_us,warm_result,cgal_sign,"
+               "cgal_us,agree,count_us,solver_us,sites\n";
+        for (const Row& r : rows)
+            csv << r.dataset << "," << r.index << "," << r.circles << "," << r.result << "," << csv_field(r.stage)
+                << "," << r.precision << "," << r.newton_steps << "," << fmt("%.3f", r.ellvor_us) << ","
+                << (r.warm_us >= 0 ? fmt("%.3f", r.warm_us) : std::string()) << "," << csv_field(r.warm_result) << ","
+                << (r.cgal_sign == 2 ? std::string() : std::to_string(r.cgal_sign)) << ","
+                << (r.cgal_us >= 0 ? fmt("%.4f", r.cgal_us) : std::string()) << "," << r.agree << ","
+                << fmt("%.3f", r.count_us) << "," << (r.solver_us >= 0 ? fmt("%.3f", r.solver_us) : std::string())
+                << "," << (notable(r) ? csv_field(r.replay) : std::string()) << "\n";
+        std::ofstream(out_dir + "/incircle.md") << md.str();
+        std::cerr << "[bench_incircle] wrote " << out_dir << "/incircle.{csv,md}\n";
+    }
+    return 0;
+}

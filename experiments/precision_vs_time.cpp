@@ -1,0 +1,365 @@
+// Precision versus time of the certified Voronoi circle (seed paper, Table 1,
+// row "subdivision": 2^-b reached in 0.20 / 0.58 / 1.06 / 10.65 / 31.61 s for
+// b = 53 / 900 / 2000 / 12000 / 24000).
+//
+// For a few ordered ellipse triples, each with a counter-clockwise Voronoi
+// circle, the wall time of a fresh VoronoiCircleSolver's refine(b) (which
+// certifies first): construction + floating-point guess + Krawczyk certificate
+// at 64 bits + Newton doubling + final certificate. Small b: median of
+// repetitions (repeat until 0.2 s of measured time and 3 runs, at most 50); 10^6 bits:
+// once, and only with --full.
+//
+//   build/experiments/precision_vs_time                  # default (make bench): b <= 100000, stdout only
+//   build/experiments/precision_vs_time --full --out experiments/results
+//       # adds b = 10^6 and writes precision_vs_time.csv and .md into the folder
+//
+// Every enclosure is checked against the most accurate one of its triple
+// (all six components must overlap); a failed certificate or a mismatch is
+// printed as an ANOMALY and makes the program exit with status 1.
+#include "predicates/voronoi_circle_count.hpp"
+#include "sites/ellipse.hpp"
+#include "sites/site_generators.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "util/error.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+struct Triple {
+    std::string name, description;
+    std::vector<Ellipse> sites;  // ordered so that the counter-clockwise circle exists
+};
+
+// Puts the triple in an order with a counter-clockwise Voronoi circle (swaps
+// E2 and E3 if only the clockwise one exists). False if neither exists.
+bool orient(std::vector<Ellipse>& s) {
+    const VoronoiCircles c = voronoi_circle_count(s[0], s[1], s[2]);
+    if (c == VoronoiCircles::ccw_only || c == VoronoiCircles::both) return true;
+    if (c == VoronoiCircles::cw_only) {
+        std::swap(s[1], s[2]);
+        return true;
+    }
+    return false;
+}
+
+bool certifies(const std::vector<Ellipse>& s) {
+    VoronoiCircleSolver solver(s[0], s[1], s[2]);
+    return solver.certify();
+}
+
+Triple make_triple(const std::string& name, const std::string& description, std::vector<Ellipse> s) {
+    if (!orient(s) || !certifies(s)) throw Error("triple " + name + " has no certifiable counter-clockwise circle");
+    return {name, description, std::move(s)};
+}
+
+std::string sites_text(const std::vector<Ellipse>& s) {
+    std::string out;
+    for (std::size_t i = 0; i < s.size(); ++i) out += (i ? " | " : "") + s[i].str();
+    return out;
+}
+
+std::vector<Triple> triples() {
+    std::vector<Triple> out;
+    // (1) Paper style: random ellipses with small rational parameters (the
+    // first generator seed whose triple has a certifiable CCW circle).
+    for (std::uint64_t seed = 1;; ++seed) {
+        GeneratorOptions o;
+        o.kind = SiteKind::ellipses;
+        o.count = 3;
+        o.seed = seed;
+        o.bits = 4;
+        o.box = Rational(10);
+        std::vector<Ellipse> s = generate_sites(o);
+        if (!orient(s) || !certifies(s)) continue;
+        out.push_back({"random", "generate_sites(ellipses, count 3, bits 4, box 10, seed " + std::to_string(seed) + ")",
+                       std::move(s)});
+        break;
+    }
+    // (2) Circles: random circles with small rational parameters (generic).
+    for (std::uint64_t seed = 1;; ++seed) {
+        GeneratorOptions o;
+        o.kind = SiteKind::circles;
+        o.count = 3;
+        o.seed = seed;
+        o.bits = 4;
+        o.box = Rational(10);
+        std::vector<Ellipse> s = generate_sites(o);
+        if (!orient(s) || !certifies(s)) continue;
+        out.push_back({"circles", "generate_sites(circles, count 3, bits 4, box 10, seed " + std::to_string(seed) + ")",
+                       std::move(s)});
+        break;
+    }
+    // (2') The base triple of the paper's InCircle dataset (1): its Voronoi
+    // circle is the unit circle centered at 0 (rational, several parameters
+    // exactly 0), a special rather than a typical case.
+    out.push_back(make_triple("circles-set1", "paper InCircle set (1): (-3,0) r 2, (3/2,0) r 1/2, (0,-2) r 1",
+                              {Ellipse::circle(Rational(-3), Rational(0), Rational(2)),
+                               Ellipse::circle(Rational(3, 2), Rational(0), Rational(1, 2)),
+                               Ellipse::circle(Rational(0), Rational(-2), Rational(1))}));
+    // (3) Elongated: a/b = 10, three orientations around a common empty disk.
+    out.push_back(make_triple("elongated", "a = 10, b = 1; w = 0, 1/2, -1/3 (no symmetry)",
+                              {Ellipse(Rational(10), Rational(1), Rational(0), Rational(0), Rational(-14)),
+                               Ellipse(Rational(10), Rational(1), Rational(1, 2), Rational(13), Rational(9)),
+                               Ellipse(Rational(10), Rational(1), Rational(-1, 3), Rational(-12), Rational(10))}));
+    // (4) Tangency near the i-point: E1 (a = 2, b = 1, w = 0, centered at 0)
+    // has its i-point at (-2, 0); two unit circles to the left, nearly
+    // symmetric about the x-axis, make the circle touch E1 just off it.
+    out.push_back(make_triple("i-point", "E1 = (2, 1, w 0, (0,0)), i-point (-2,0); circles (-6,3) r 1, (-6,-3-1/64) r 1",
+                              {Ellipse(Rational(2), Rational(1), Rational(0), Rational(0), Rational(0)),
+                               Ellipse::circle(Rational(-6), Rational(3), Rational(1)),
+                               Ellipse::circle(Rational(-6), Rational(-3) - Rational(1, 64), Rational(1))}));
+    return out;
+}
+
+double now_wall() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double now_cpu() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+struct Measurement {
+    std::string triple;
+    long bits = 0;
+    double seconds = 0, cpu_seconds = 0;
+    int repetitions = 0;
+    long newton_steps = 0, correct_bits = 0, precision = 0;
+    bool ok = true;
+    VoronoiCircleEnclosure enclosure;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+Measurement measure(const Triple& t, long bits, bool once) {
+    Measurement m;
+    m.triple = t.name;
+    m.bits = bits;
+    std::vector<double> wall, cpu;
+    double total = 0;
+    while (true) {
+        const double w0 = now_wall(), c0 = now_cpu();
+        VoronoiCircleSolver solver(t.sites[0], t.sites[1], t.sites[2]);
+        const bool ok = solver.refine(bits);
+        const double w1 = now_wall(), c1 = now_cpu();
+        wall.push_back(w1 - w0);
+        cpu.push_back(c1 - c0);
+        total += w1 - w0;
+        m.ok = m.ok && ok;
+        m.newton_steps = solver.enclosure().newton_steps;
+        m.correct_bits = ok ? solver.enclosure().correct_bits() : -1;
+        m.precision = solver.enclosure().precision;
+        m.enclosure = solver.enclosure();
+        if (once || (total >= 0.2 && wall.size() >= 3) || wall.size() >= 50) break;
+    }
+    m.seconds = median(wall);
+    m.cpu_seconds = median(cpu);
+    m.repetitions = static_cast<int>(wall.size());
+    return m;
+}
+
+bool overlaps(const VoronoiCircleEnclosure& a, const VoronoiCircleEnclosure& b) {
+    for (int i = 0; i < 3; ++i)
+        if (a.flipped[i] != b.flipped[i] || !arb_overlaps(a.parameter[i].get(), b.parameter[i].get())) return false;
+    return arb_overlaps(a.radius.get(), b.radius.get()) && arb_overlaps(a.center_x.get(), b.center_x.get()) &&
+           arb_overlaps(a.center_y.get(), b.center_y.get());
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown";
+    int n = 0;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
+        if (line.rfind("processor", 0) == 0) ++n;
+    }
+    return model + ", " + std::to_string(n) + " logical CPUs";
+}
+
+// The source state the numbers come from (other sessions edit the library).
+std::string source_state() {
+    std::string out;
+    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
+        char buf[128];
+        std::string head, dirty;
+        if (fgets(buf, sizeof buf, f)) head = buf;
+        if (fgets(buf, sizeof buf, f)) dirty = buf;
+        pclose(f);
+        auto trim = [](std::string& s) { while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back(); };
+        trim(head);
+        trim(dirty);
+        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
+    }
+    return out.empty() ? "unknown (not run from the repository)" : out;
+}
+
+std::string loadavg() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+}
+
+std::string fmt(const char* f, double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, x);
+    return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool full = false;
+    std::string out_dir;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--full"))
+            full = true;
+        else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
+            out_dir = argv[++i];
+        else {
+            std::cerr << "usage: precision_vs_time [--full] [--out DIR]\n"
+                         "  --full     also certify 10^6 bits (once per triple; minutes in total)\n"
+                         "  --out DIR  write DIR/precision_vs_time.csv and DIR/precision_vs_time.md\n";
+            return 2;
+        }
+    }
+    std::string command = "build/experiments/precision_vs_time";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+
+    std::vector<long> bit_list = {53, 900, 2000, 12000, 24000, 100000};
+    if (full) bit_list.push_back(1000000);
+    const std::vector<double> paper = {0.20, 0.58, 1.06, 10.65, 31.61};  // b = 53 ... 24000
+
+    const std::string load_before = loadavg();
+    const std::vector<Triple> ts = triples();
+    std::vector<std::vector<Measurement>> results;
+    int anomalies = 0;
+    for (const Triple& t : ts) {
+        std::cerr << "[precision_vs_time] " << t.name << ": " << sites_text(t.sites) << "\n";
+        std::vector<Measurement> row;
+        for (long b : bit_list) {
+            Measurement m = measure(t, b, b >= 1000000);
+            std::cerr << "  b = " << b << ": " << fmt("%.6f", m.seconds) << " s (" << m.repetitions
+                      << " reps), newton " << m.newton_steps << ", prec " << m.precision << ", correct "
+                      << m.correct_bits << "\n";
+            if (!m.ok || m.correct_bits < b) {
+                std::cerr << "ANOMALY: " << t.name << " b = " << b << " not certified (correct bits " << m.correct_bits
+                          << "); sites " << sites_text(t.sites) << "\n";
+                ++anomalies;
+            }
+            row.push_back(std::move(m));
+        }
+        for (const Measurement& m : row)
+            if (m.ok && !overlaps(m.enclosure, row.back().enclosure)) {
+                std::cerr << "ANOMALY: " << t.name << " b = " << m.bits << " enclosure disjoint from b = "
+                          << row.back().bits << "\n";
+                ++anomalies;
+            }
+        results.push_back(std::move(row));
+    }
+    const std::string load_after = loadavg();
+
+    // CSV
+    std::ostringstream csv;
+    csv << "triple,bits,seconds,newton_steps,correct_bits,precision,repetitions,cpu_seconds\n";
+    for (const auto& row : results)
+        for (const Measurement& m : row)
+            csv << m.triple << "," << m.bits << "," << fmt("%.6g", m.seconds) << "," << m.newton_steps << ","
+                << m.correct_bits << "," << m.precision << "," << m.repetitions << "," << fmt("%.6g", m.cpu_seconds)
+                << "\n";
+
+    // Markdown
+    std::ostringstream md;
+    md << "# Precision versus time: certified Voronoi circle\n\n"
+       << "Wall time of a fresh `VoronoiCircleSolver(e1, e2, e3).refine(b)` (floating-point guess, Krawczyk "
+          "certificate at 64 bits, Newton at doubling precision, final certificate), until every component of "
+          "the enclosure (three tangency parameters, radius, center) has at least b correct bits. Median of "
+          "repetitions (repeat until 0.2 s measured and at least 3 runs, at most 50); b = 10^6 once. Paper: seed Table 1, row "
+          "\"subdivision\" (mpfr, 2007 hardware: P4 2.6 GHz); ratio = paper / ours.\n\n"
+       << "- Machine: " << cpu_model() << "\n"
+       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
+       << "- Source: " << source_state() << "\n"
+       << "- Command: `make build/experiments/precision_vs_time && " << command << "`"
+       << "; plot: `python3 experiments/plot_svg.py experiments/results/precision_vs_time.csv "
+          "experiments/results/precision_vs_time.svg --points \"paper (Table 1, s)\" "
+          "53:0.20,900:0.58,2000:1.06,12000:10.65,24000:31.61`\n"
+       << "- By default (`make bench`) b = 10^6 is skipped and nothing is written; `--full` adds it, `--out DIR` "
+          "writes the CSV and this file.\n\n"
+       << "Triples (ordered E1 E2 E3 with a counter-clockwise Voronoi circle; ellipse = `a b w xc yc`):\n\n";
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+        const Triple& t = ts[i];
+        const VoronoiCircleEnclosure& e = results[i].front().enclosure;
+        md << "- **" << t.name << "**: " << t.description << " — `" << sites_text(t.sites) << "`; circle center ("
+           << fmt("%.6g", e.center_x.mid_double()) << ", " << fmt("%.6g", e.center_y.mid_double()) << "), radius "
+           << fmt("%.6g", e.radius.mid_double()) << "; chart parameters";
+        for (int j = 0; j < 3; ++j)
+            md << (j ? ", " : " ") << (e.flipped[j] ? "u" : "t") << (j + 1) << " = "
+               << fmt("%.4g", e.parameter[j].mid_double());
+        md << " (u = -1/t; u = 0 is the i-point)\n";
+    }
+    md << "\n| b | paper (s) |";
+    for (const Triple& t : ts) md << " " << t.name << " (ms) | ratio |";
+    md << "\n|---:|---:|";
+    for (std::size_t i = 0; i < ts.size(); ++i) md << "---:|---:|";
+    md << "\n";
+    for (std::size_t k = 0; k < bit_list.size(); ++k) {
+        md << "| " << bit_list[k] << " | " << (k < paper.size() ? fmt("%.2f", paper[k]) : std::string("—")) << " |";
+        for (const auto& row : results) {
+            const Measurement& m = row[k];
+            md << " " << fmt("%.3f", m.seconds * 1e3) << " | "
+               << (k < paper.size() ? fmt("%.0f×", paper[k] / m.seconds) : std::string("—")) << " |";
+        }
+        md << "\n";
+    }
+    md << "\nNewton steps (cumulative, all precisions) / final working precision (bits):\n\n| b |";
+    for (const Triple& t : ts) md << " " << t.name << " |";
+    md << "\n|---:|";
+    for (std::size_t i = 0; i < ts.size(); ++i) md << "---:|";
+    md << "\n";
+    for (std::size_t k = 0; k < bit_list.size(); ++k) {
+        md << "| " << bit_list[k] << " |";
+        for (const auto& row : results) md << " " << row[k].newton_steps << " / " << row[k].precision << " |";
+        md << "\n";
+    }
+    md << "\nTargets: 24,000 bits ≤ 10 ms";
+    if (full) md << "; 10^6 bits ≤ 1 s";
+    md << ".\n\n";
+    for (const auto& row : results) {
+        for (const Measurement& m : row) {
+            if (m.bits == 24000)
+                md << "- " << m.triple << ": 24,000 bits in " << fmt("%.2f", m.seconds * 1e3) << " ms — "
+                   << (m.seconds <= 0.010 ? "met" : "MISSED") << "\n";
+            if (m.bits == 1000000)
+                md << "- " << m.triple << ": 10^6 bits in " << fmt("%.3f", m.seconds) << " s — "
+                   << (m.seconds <= 1.0 ? "met" : "MISSED") << "\n";
+        }
+    }
+    md << "\nAnomalies (failed certificate, fewer bits than asked, enclosures disagreeing across b): " << anomalies
+       << ".\n";
+    if (!full) md << "\nb = 10^6 skipped (run with --full).\n";
+
+    std::cout << md.str();
+    if (!out_dir.empty()) {
+        std::ofstream(out_dir + "/precision_vs_time.csv") << csv.str();
+        std::ofstream(out_dir + "/precision_vs_time.md") << md.str();
+        std::cerr << "[precision_vs_time] wrote " << out_dir << "/precision_vs_time.{csv,md}\n";
+    }
+    return anomalies ? 1 : 0;
+}

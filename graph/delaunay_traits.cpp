@@ -1,0 +1,112 @@
+#include "graph/delaunay_traits.hpp"
+
+#include "predicates/edge_conflict.hpp"
+#include "predicates/incircle.hpp"
+#include "predicates/infinite_vertex_conflict.hpp"
+#include "predicates/relative_position.hpp"
+#include "predicates/side_of_bisector.hpp"
+#include "util/error.hpp"
+
+#include <utility>
+
+namespace ellvor {
+namespace {
+
+std::string ids(std::initializer_list<SiteId> list) {
+    std::string s;
+    for (SiteId i : list) s += (s.empty() ? "" : ", ") + std::to_string(i);
+    return s;
+}
+
+bool decided_or_throw(const EdgeConflictDecision& d, const char* what, const std::string& sites) {
+    if (!d.conflict)
+        throw Error(std::string("undecided predicate: ") + what + " of sites (" + sites +
+                    ") could not be certified (precision " + std::to_string(d.precision) + ")");
+    return *d.conflict;
+}
+
+}  // namespace
+
+DelaunayTraits::DelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {}
+
+bool DelaunayTraits::is_hidden(SiteId p, SiteId q) {
+    if (p == q) return true;
+    const std::uint64_t key = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint64_t>(q);
+    auto found = hidden_memo_.find(key);
+    if (found != hidden_memo_.end()) return found->second;
+    ++stats_.is_hidden.calls;
+    const RelativePositionResult r = relative_position_decided(site(p), site(q));
+    stats_.is_hidden.stages.record(r.stage);
+    if (r.position == RelativePosition::intersecting)
+        throw Error("invalid input: sites " + ids({p, q}) + " intersect (sites must be disjoint or nested)");
+    bool q_in_p = false, p_in_q = false;
+    switch (r.position) {
+        case RelativePosition::second_inside:
+        case RelativePosition::second_inside_tangent: q_in_p = true; break;
+        case RelativePosition::first_inside:
+        case RelativePosition::first_inside_tangent: p_in_q = true; break;
+        case RelativePosition::identical: q_in_p = p_in_q = true; break;
+        default: break;
+    }
+    hidden_memo_[key] = q_in_p;
+    hidden_memo_[(static_cast<std::uint64_t>(q) << 32) | static_cast<std::uint64_t>(p)] = p_in_q;
+    return q_in_p;
+}
+
+int DelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
+    ++stats_.side_of_bisector.calls;
+    const SignDecision d = ellvor::side_of_bisector(site(i), site(j), site(k).center());
+    stats_.side_of_bisector.stages.record(d.stage);
+    return d.sign;
+}
+
+int DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
+    ++stats_.vertex_conflict3.calls;
+    const SignDecision d = infinite_vertex_conflict(site(i), site(j), site(q));
+    stats_.vertex_conflict3.stages.record(d.stage);
+    if (d.sign == 0) throw Error("internal error: infinite vertex conflict returned 0 for sites (" + ids({i, j, q}) + ")");
+    return d.sign;
+}
+
+int DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
+    ++stats_.vertex_conflict4.calls;
+    VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
+    // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
+    const InCircleDecision d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
+                                        entry.solver.get());
+    stats_.vertex_conflict4.stages.record(d.stage);
+    if (d.result == InCircle::undecided)
+        throw Error("undecided predicate: incircle of sites (" + ids({i, j, k, q}) +
+                    "): the Voronoi circle could not be certified");
+    return incircle_sign(d.result);
+}
+
+bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
+    ++stats_.finite_edge.calls;
+    const auto d = finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b);
+    stats_.finite_edge.stages.record(d.stage);
+    return decided_or_throw(d, "finite edge interior conflict", ids({p1, p2, p3, p4, q}));
+}
+
+bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
+    ++stats_.finite_edge.calls;
+    const auto d = finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b);
+    stats_.finite_edge.stages.record(d.stage);
+    return decided_or_throw(d, "finite edge interior conflict", ids({p1, p2, p3, q}));
+}
+
+bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) {
+    ++stats_.finite_edge.calls;
+    const auto d = finite_edge_interior_conflict(site(p1), site(p2), site(q), b);
+    stats_.finite_edge.stages.record(d.stage);
+    return decided_or_throw(d, "finite edge interior conflict", ids({p1, p2, q}));
+}
+
+bool DelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
+    ++stats_.infinite_edge.calls;
+    const auto d = infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b);
+    stats_.infinite_edge.stages.record(d.stage);
+    return decided_or_throw(d, "infinite edge interior conflict", ids({p2, p3, p4, q}));
+}
+
+}  // namespace ellvor
