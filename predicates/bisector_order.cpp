@@ -54,8 +54,10 @@ bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int inde
 std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
                                      VoronoiCircleSolver& b, int index_b, long max_precision, long& precision) {
     constexpr long kStartPrecision = 64;
-    // A guard against internal errors only: distinct algebraic numbers separate.
-    constexpr long kNonDegenerateLimit = 1L << 22;
+    // A guard against internal errors only: distinct algebraic numbers
+    // separate (and GMP's temporaries for much larger numbers would not fit
+    // the stack).
+    constexpr long kNonDegenerateLimit = 1L << 17;
     bool proven_distinct = false;
     for (long prec = kStartPrecision; prec <= kNonDegenerateLimit; prec *= 2) {
         if (prec > max_precision && !proven_distinct) {

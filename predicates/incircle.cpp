@@ -2,12 +2,15 @@
 
 #include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
+#include "subdivision/boundary_chart.hpp"
+#include "subdivision/nearest_point.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/point_ellipse_distance.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -41,8 +44,9 @@ namespace {
 constexpr long kStartPrecision = 64;
 // Precision limits of the exact stage's root isolation and of the separation
 // of a query proven non-tangent (both far above anything seen in practice).
+// (GMP's temporaries for much larger numbers would not fit the stack.)
 constexpr long kExactIsolationLimit = 1L << 16;
-constexpr long kNonDegenerateLimit = 1L << 22;
+constexpr long kNonDegenerateLimit = 1L << 17;
 // The enclosure is refined to this many bits below the working precision.
 constexpr long kEnclosureGuard = 16;
 
@@ -58,12 +62,34 @@ int filtered_distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellips
     return 0;
 }
 
+// When V cannot be placed inside or outside Q it is within rounding of Q's
+// boundary, so d(V, Q) is tiny and, rho being positive, Q conflicts: proven
+// by the distance from V to a boundary point of Q near it (an upper bound of
+// d(V, Q)) being below rho. 0 when even that is undecided.
+int center_near_boundary(const VoronoiCircleEnclosure& c, const Ellipse& q, long prec) {
+    const auto& k = q.enclosure();
+    const double dx = c.center_x.mid_double() - k.xc.mid(), dy = c.center_y.mid_double() - k.yc.mid();
+    const double theta = approximate_nearest_angle(k.a.mid(), k.b.mid(), k.cos.mid() * dx + k.sin.mid() * dy,
+                                                   k.cos.mid() * dy - k.sin.mid() * dx);
+    if (!std::isfinite(theta)) return 0;
+    const bool flipped = std::fabs(theta) > M_PI / 2;
+    const BoundaryChart chart(q, flipped);
+    Ball t, dxb, dyb, distance, difference;
+    arb_set_d(t.get(), flipped ? -1 / std::tan(theta / 2) : std::tan(theta / 2));
+    const BoundaryChart::Local p = chart.evaluate(t, prec, false);
+    arb_sub(dxb.get(), c.center_x.get(), p.px.get(), prec);
+    arb_sub(dyb.get(), c.center_y.get(), p.py.get(), prec);
+    arb_hypot(distance.get(), dxb.get(), dyb.get(), prec);
+    arb_sub(difference.get(), distance.get(), c.radius.get(), prec);
+    return difference.certain_sign() < 0 ? -1 : 0;
+}
+
 // d(V, Q) - rho at precision prec: -1, +1, or 0 when undecided.
 int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, long prec) {
     if (int s = filtered_distance_minus_radius(c, q)) return s;
     const int side = certified_side(q, c.center_x, c.center_y, prec);
     if (side < 0) return -1;  // the center is inside Q
-    if (side == 0) return 0;
+    if (side == 0) return center_near_boundary(c, q, prec);
     Ball distance, difference;
     if (!certified_outside_distance(q, c.center_x, c.center_y, prec, distance)) return 0;
     arb_sub(difference.get(), distance.get(), c.radius.get(), prec);
