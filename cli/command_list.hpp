@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 
 #define ELLVOR_COMMANDS(X) \
+    X(build)               \
     X(check)               \
     X(generate)            \
     X(side_of_bisector)    \

@@ -18,13 +18,17 @@ std::string str(SiteId i) { return std::to_string(i); }
 DelaunayGraph::DelaunayGraph(std::vector<Ellipse> sites)
     : traits_(std::move(sites)), hidden_in_(traits_.size()), inserted_(traits_.size(), 0) {}
 
-void DelaunayGraph::insert_all() {
+void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress) {
     std::vector<SiteId> order(traits_.size());
     std::iota(order.begin(), order.end(), 0);
     std::vector<Rational> area(order.size());
     for (SiteId i : order) area[i] = traits_.site(i).a() * traits_.site(i).b();
     std::stable_sort(order.begin(), order.end(), [&](SiteId x, SiteId y) { return area[y] < area[x]; });
-    for (SiteId i : order) insert(i);
+    std::size_t done = 0;
+    for (SiteId i : order) {
+        insert(i);
+        if (progress) progress(++done, order.size());
+    }
 }
 
 void DelaunayGraph::insert(SiteId p) {

@@ -15,6 +15,7 @@
 #include "graph/triangulation.hpp"
 
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,7 +35,7 @@ public:
 
     // Inserts every site, largest area first (CGAL's bulk order; the graph
     // does not depend on the order except in degenerate configurations).
-    void insert_all();
+    void insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress = {});
     // Inserts one site (each id at most once).
     void insert(SiteId id);
 
