@@ -1,6 +1,6 @@
 // Malformed inputs fed to the real `ellvor` binary: exit status 2 and
 // "ellvor: FILE:LINE:COL: what" on stderr.
-#include <catch2/catch.hpp>
+#include "tests/support/command_runner.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -12,40 +12,12 @@
 
 namespace {
 
-struct Run {
-    int status;
-    std::string out, err;
-};
+using Run = ellvor::test::CommandResult;
+using TempDir = ellvor::test::ScratchDirectory;
+using ellvor::test::read_file;
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// A temporary directory, removed at the end of the test case.
-struct TempDir {
-    std::string path;
-    TempDir() {
-        char t[] = "/tmp/ellvor_cli_XXXXXX";
-        REQUIRE(::mkdtemp(t) != nullptr);
-        path = t;
-    }
-    ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
-    std::string write(const std::string& name, const std::string& content) const {
-        std::string p = path + "/" + name;
-        std::ofstream(p, std::ios::binary) << content;
-        return p;
-    }
-};
-
-Run run_ellvor(const TempDir& dir, const std::string& args) {
-    const std::string out = dir.path + "/.stdout", err = dir.path + "/.stderr";
-    const std::string cmd = std::string("'") + ELLVOR_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
-    int raw = std::system(cmd.c_str());
-    Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-    return r;
+Run run_ellvor(const TempDir& dir, const std::string& args, const std::string& stdin_file = "/dev/null") {
+    return dir.ellvor(args, stdin_file);
 }
 
 struct Malformed {
@@ -124,11 +96,11 @@ TEST_CASE("intersecting pairs are all listed by id", "[cli]") {
 
 TEST_CASE("unreadable files and bad command lines exit 2", "[cli]") {
     TempDir dir;
-    Run r = run_ellvor(dir, "check " + dir.path + "/missing.ell");
+    Run r = run_ellvor(dir, "check " + dir.path() + "/missing.ell");
     CHECK(r.status == 2);
-    CHECK(r.err.find("ellvor: " + dir.path + "/missing.ell:1:1: cannot open file") == 0);
+    CHECK(r.err.find("ellvor: " + dir.path() + "/missing.ell:1:1: cannot open file") == 0);
 
-    r = run_ellvor(dir, "check " + dir.path);
+    r = run_ellvor(dir, "check " + dir.path());
     CHECK(r.status == 2);
     CHECK(r.err.find("is a directory") != std::string::npos);
 

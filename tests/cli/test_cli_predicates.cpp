@@ -1,7 +1,7 @@
 // The predicate commands of the real ellvor binary (ELLVOR_BINARY) on files
 // written to a temporary directory: side-of-bisector, bitangent, incircle,
 // voronoi-circle -- their words, JSON, exit statuses and input errors.
-#include <catch2/catch.hpp>
+#include "tests/support/command_runner.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cctype>
@@ -16,46 +16,13 @@ namespace {
 
 using nlohmann::json;
 
-struct Run {
-    int status;
-    std::string out, err;
-};
+using Run = ellvor::test::CommandResult;
+using ellvor::test::read_file;
 
-std::string read_all(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-class Scratch {
+// The shared scratch directory, under the names these tests use.
+class Scratch : public ellvor::test::ScratchDirectory {
 public:
-    Scratch() {
-        char pattern[] = "/tmp/ellvor_pred_XXXXXX";
-        REQUIRE(::mkdtemp(pattern) != nullptr);
-        dir_ = pattern;
-    }
-    ~Scratch() { std::system(("rm -rf '" + dir_ + "'").c_str()); }
-    Scratch(const Scratch&) = delete;
-    Scratch& operator=(const Scratch&) = delete;
-
-    // Writes `content` to dir/name and returns the path.
-    std::string file(const std::string& name, const std::string& content) const {
-        const std::string path = dir_ + "/" + name;
-        std::ofstream(path, std::ios::binary) << content;
-        return path;
-    }
-    // Runs `ellvor ARGS` with stdout and stderr captured.
-    Run ellvor(const std::string& args) const {
-        const std::string out = dir_ + "/.out", err = dir_ + "/.err";
-        const std::string cmd =
-            std::string("'") + ELLVOR_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
-        const int raw = std::system(cmd.c_str());
-        return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(out), read_all(err)};
-    }
-
-private:
-    std::string dir_;
+    std::string file(const std::string& name, const std::string& content) const { return write(name, content); }
 };
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
