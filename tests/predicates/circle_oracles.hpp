@@ -7,6 +7,8 @@
 //    refinement), used only away from ties (the caller demands a margin).
 #pragma once
 
+#include <random>
+
 #include "sites/ellipse.hpp"
 
 #include <arb.h>
@@ -275,6 +277,26 @@ inline bool bitangent_normal(const NumEllipse& e1, const NumEllipse& e2, LD& phi
         prev = cur;
     }
     return found == 1;
+}
+
+
+// Random test data shared by the predicate tests.
+using Rng = std::mt19937_64;
+
+// p/den with p uniform in [lo*den, hi*den].
+inline Rational rnd(Rng& rng, long lo, long hi, long den) {
+    std::uniform_int_distribution<long> n(lo * den, hi * den);
+    return Rational(n(rng), static_cast<unsigned long>(den));
+}
+// Uniform in (0, hi] with denominator den.
+inline Rational rnd_pos(Rng& rng, long hi, long den) {
+    std::uniform_int_distribution<long> n(1, hi * den);
+    return Rational(n(rng), static_cast<unsigned long>(den));
+}
+// Disjoint closed disks.
+inline bool circles_apart(const Circle& a, const Circle& b) {
+    const Rational dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
+    return dx * dx + dy * dy > r * r;
 }
 
 }  // namespace oracle

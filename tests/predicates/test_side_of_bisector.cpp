@@ -13,18 +13,11 @@ using namespace ellvor;
 
 namespace {
 
-using Rng = std::mt19937_64;
+using oracle::circles_apart;
+using oracle::rnd;
+using oracle::rnd_pos;
+using oracle::Rng;
 
-// p/den with p uniform in [lo*den, hi*den].
-Rational rnd(Rng& rng, long lo, long hi, long den) {
-    std::uniform_int_distribution<long> n(lo * den, hi * den);
-    return Rational(n(rng), static_cast<unsigned long>(den));
-}
-// Uniform in (0, hi] with denominator den.
-Rational rnd_pos(Rng& rng, long hi, long den) {
-    std::uniform_int_distribution<long> n(1, hi * den);
-    return Rational(n(rng), static_cast<unsigned long>(den));
-}
 Rational ten_to_minus(int k) {
     Rational r(1);
     for (int i = 0; i < k; ++i) r = r / Rational(10);

@@ -13,20 +13,10 @@ using namespace ellvor;
 
 namespace {
 
-using Rng = std::mt19937_64;
-
-Rational rnd(Rng& rng, long lo, long hi, long den) {
-    std::uniform_int_distribution<long> n(lo * den, hi * den);
-    return Rational(n(rng), static_cast<unsigned long>(den));
-}
-Rational rnd_pos(Rng& rng, long hi, long den) {
-    std::uniform_int_distribution<long> n(1, hi * den);
-    return Rational(n(rng), static_cast<unsigned long>(den));
-}
-bool circles_apart(const oracle::Circle& a, const oracle::Circle& b) {
-    const Rational dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
-    return dx * dx + dy * dy > r * r;
-}
+using oracle::circles_apart;
+using oracle::rnd;
+using oracle::rnd_pos;
+using oracle::Rng;
 
 const char* name(oracle::Count c) { return oracle::count_name(c); }
 const char* name(VoronoiCircles v) {
