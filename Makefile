@@ -69,9 +69,12 @@ test: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS)
 	@bash tests/run_suite.sh $(TESTS)
 
+# shift-base is left out: CGAL's MP_Float (used by the tests that compare with
+# CGAL) left-shifts negative numbers, which C++20 defines and every compiler
+# does as expected; all other undefined behaviour aborts the run.
 sanitize: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory BUILD=build-sanitize OPT="-O1 -g" \
-	    SANITIZE="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer" test
+	    SANITIZE="-fsanitize=address,undefined -fno-sanitize=shift-base -fno-sanitize-recover=undefined -fno-omit-frame-pointer" test
 
 bench: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES)
