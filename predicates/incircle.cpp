@@ -1,5 +1,6 @@
 #include "predicates/incircle.hpp"
 
+#include "predicates/circle_incircle_filter.hpp"
 #include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
 #include "subdivision/boundary_chart.hpp"
@@ -125,6 +126,14 @@ std::optional<bool> tangent_exactly(const Ellipse& e1, const Ellipse& e2, const 
 InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
                           const InCircleOptions& options, VoronoiCircleSolver* solver) {
     InCircleDecision d;
+    if (options.use_filter)
+        if (const auto circles = circle_incircle_filter(e1, e2, e3, q)) {
+            d.stage = Stage::filter;
+            d.result = *circles == CircleInCircle::conflict      ? InCircle::conflict
+                       : *circles == CircleInCircle::no_conflict ? InCircle::no_conflict
+                                                                 : InCircle::no_circle;
+            return d;
+        }
     const VoronoiCircleCount count = voronoi_circle_count_decided(e1, e2, e3);
     if (count.circles == VoronoiCircles::none || count.circles == VoronoiCircles::cw_only) {
         d.result = InCircle::no_circle;

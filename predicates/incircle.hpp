@@ -27,6 +27,7 @@ int incircle_sign(InCircle r);
 struct InCircleOptions {
     long max_precision = 4096;  // the subdivision stage hands over to the exact stage beyond this
     bool exact_stage = true;    // false: stop at the cap with "undecided" (experiments, tests)
+    bool use_filter = true;     // false: skip the closed-form filter for four circles
 };
 
 struct InCircleDecision {
@@ -36,8 +37,9 @@ struct InCircleDecision {
     long newton_steps = 0;             // Arb Newton steps spent on the Voronoi circle
 };
 
-// The cascade: existence of the counter-clockwise circle from three kappa2
-// signs; then the certified enclosure of the circle (center V, radius rho) and
+// The cascade: for four circles, a closed-form filter in double intervals
+// (circle_incircle_filter.hpp); then the existence of the counter-clockwise
+// circle from three kappa2 signs; then the certified enclosure of the circle (center V, radius rho) and
 // the distance d(V, Q) -- double intervals first, then Arb -- compared with
 // rho at doubling precision; past the cap, the exact stage decides whether Q
 // is tangent (resultants, voronoi_vertex_equality.hpp) and, if it is not,

@@ -277,6 +277,10 @@ TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and per
     // CGAL with a larger / smaller fourth radius.
     CHECK(cgal_conflict(cgal_site(6, 0, 1), cgal_site(0, 6, 1), cgal_site(-6, 0, 1), cgal_site(0, -6, 2)) == CGAL::NEGATIVE);
     // Radius of Q changed by 10^-k: larger -> conflict, smaller -> no_conflict.
+    // The subdivision's precision must grow with k (the circle filter, which
+    // would decide k = 6 in doubles, is switched off to watch it).
+    InCircleOptions subdivision_only;
+    subdivision_only.use_filter = false;
     long previous = 0;
     for (int k : {6, 30, 100}) {
         const Rational eps = ten_to_minus(k);
@@ -285,9 +289,10 @@ TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and per
             const apollonius::Circle cp{cq.x, cq.y, dir > 0 ? Rational(1) + eps : Rational(1) - eps};
             const Ellipse qp = cp.ellipse();
             INFO("k " << k << apollonius::ell({&e1, &e2, &e3, &qp}));
-            const InCircleDecision dp = incircle(e1, e2, e3, qp);
+            const InCircleDecision dp = incircle(e1, e2, e3, qp, subdivision_only);
             INFO(show(dp));
             CHECK(dp.result == (dir > 0 ? InCircle::conflict : InCircle::no_conflict));
+            CHECK(incircle(e1, e2, e3, qp).result == dp.result);  // with the filter
             CHECK(apollonius::incircle(c1, c2, c3, cp) == (dir > 0 ? -1 : 1));
             used = std::max(used, dp.precision);
         }

@@ -201,11 +201,16 @@ TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[
                 const InCircle want = dir > 0 ? InCircle::no_conflict : InCircle::conflict;
                 INFO(c.name << " k " << k << (dir > 0 ? " away" : " toward") << ell({&c.e1, &c.e2, &c.e3, &q}));
                 // Default cap: the subdivision separates (10^-100 needs ~340 bits).
-                const InCircleDecision d = incircle(c.e1, c.e2, c.e3, q);
+                // (For four circles the closed-form filter may decide first, in
+                // doubles; it is switched off to watch the subdivision.)
+                InCircleOptions no_filter;
+                no_filter.use_filter = false;
+                const InCircleDecision d = incircle(c.e1, c.e2, c.e3, q, no_filter);
                 INFO("default: " << show(d));
                 CHECK(d.result == want);
                 CHECK(d.stage == Stage::subdivision);
                 CHECK(d.precision > 3.32 * k);
+                CHECK(incircle(c.e1, c.e2, c.e3, q).result == want);  // with the filter
                 // Cap below the precision needed: the exact stage proves
                 // non-tangency, then the subdivision resumes and separates.
                 // 10^-100 under cap 256 for (b) and (c); for (a), whose i-point

@@ -116,7 +116,7 @@ TEST_CASE("cache: incircle refines the cached solver once and reuses it", "[pred
     VoronoiCircleCache::Entry& entry = cache.at(0, e1, 1, e2, 2, e3);
     // Two queries decided at the start precision, one on each side of the circle.
     const Ellipse q1 = site(3);  // reaches y = -4.5 > -5 on the y-axis: conflict
-    const Ellipse q2 = Ellipse::circle(30, 30, 2);  // far away: no conflict
+    const Ellipse q2(2, 1, 0, 30, 30);  // far away: no conflict (an ellipse, so the four-circle filter is not used)
     const InCircleDecision d1 = incircle(e1, e2, e3, q1, {}, entry.solver.get());
     INFO(show(d1) << ell({&e1, &e2, &e3, &q1}));
     REQUIRE(d1.result == InCircle::conflict);

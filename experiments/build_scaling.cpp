@@ -1,0 +1,529 @@
+// Build time of the Delaunay graph against the number of sites (seed paper,
+// Table 1, row "insertion": 0.752 / 5.916 / 13.000 / 19.200 / 25.602 s for
+// 5 / 10 / 15 / 20 / 25 ellipses, P4 2.6 GHz), and ellvor against CGAL's
+// Apollonius_graph_2 on circles.
+//
+// For every n: DelaunayGraph::insert_all on
+//   ellipses         generate_sites(ellipses, seed 1, bits 8, box 100)
+//   ellipses-nest10  the same with nested fraction 1/10
+//   circles          generate_sites(circles, seed 1, bits 1, box 256 ceil(sqrt n)): every number
+//                    is a multiple of 1/2 below 2^20, hence exact in double; the same circles,
+//                    converted to double, go to CGAL's
+//                    Apollonius_graph_2<Apollonius_graph_filtered_traits_2<Epick>> (bulk insert,
+//                    which sorts by decreasing radius as insert_all does), in the same program.
+// On the circle sets ellvor's graph (visible sites, hidden pairs, finite edges
+// as a multiset, hull) is compared with CGAL's. Each ellvor graph is checked
+// with validate(), and with brute_force_check() up to 300 sites.
+//
+// Times: wall and CPU time of the build only (site generation and checks
+// excluded); below 0.3 s a build is repeated (median, at most 20 runs).
+//
+//   build/experiments/build_scaling                       # default (make bench): n <= 1000, stdout only
+//   build/experiments/build_scaling --full --out experiments/results
+//       # adds n = 10^4; writes build_scaling.csv, build_scaling.md and build_scaling.svg
+//
+// An invalid graph, a disagreement with CGAL or an exception is printed as an
+// ANOMALY and makes the program exit with status 1.
+#include "graph/delaunay_graph.hpp"
+#include "sites/ellipse.hpp"
+#include "sites/site_generators.hpp"
+#include "util/error.hpp"
+
+#include <CGAL/Apollonius_graph_2.h>
+#include <CGAL/Apollonius_graph_filtered_traits_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <random>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using AGTraits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
+using AG = CGAL::Apollonius_graph_2<AGTraits>;
+using Pairs = std::vector<std::pair<SiteId, SiteId>>;
+
+double now_wall() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double now_cpu() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+std::string fmt(const char* f, double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, x);
+    return buf;
+}
+
+// Runs `build` until 0.3 s of wall time (at least once, at most 20 times), medians.
+template <class F>
+void timed(F build, double& wall, double& cpu, int& reps) {
+    std::vector<double> w, c;
+    double total = 0;
+    while (true) {
+        const double w0 = now_wall(), c0 = now_cpu();
+        build();
+        const double w1 = now_wall(), c1 = now_cpu();
+        w.push_back(w1 - w0);
+        c.push_back(c1 - c0);
+        total += w1 - w0;
+        if (total >= 0.3 || w.size() >= 20) break;
+    }
+    wall = median(w);
+    cpu = median(c);
+    reps = static_cast<int>(w.size());
+}
+
+struct Summary {
+    std::vector<SiteId> visible;
+    Pairs hidden, edges, hull;
+};
+
+struct Row {
+    std::string set;
+    long n = 0;
+    double seconds = 0, cpu_seconds = 0;
+    int reps = 0;
+    std::size_t edges = 0, faces = 0, hidden = 0, visible = 0;
+    TraitsStats stats;
+    GraphStats gstats;
+    std::string validate = "-", brute = "-", cgal = "-";  // "ok", a problem, or "-" (not run)
+    double kappa1_us = 0;  // mean CPU time of one kappa1 call (micro-benchmark)
+};
+
+std::string one_line(std::string s) {
+    for (char& c : s)
+        if (c == '\n' || c == ',' || c == '|') c = ' ';
+    if (s.size() > 120) s = s.substr(0, 120) + "...";
+    return s;
+}
+
+Summary summary_of(DelaunayGraph& g) {
+    Summary s{g.visible_sites(), g.hidden(), g.edges(), {}};
+    if (s.visible.size() >= 3) s.hull = g.hull();
+    return s;
+}
+
+// CGAL's graph of the circles (bulk insertion), its build time, and its summary in ellvor's ids.
+Summary cgal_graph(const std::vector<Ellipse>& sites, double& wall, double& cpu, int& reps) {
+    std::vector<AG::Site_2> input;
+    std::map<std::tuple<double, double, double>, SiteId> id;
+    for (SiteId i = 0; i < sites.size(); ++i) {
+        const double x = sites[i].xc().to_double(), y = sites[i].yc().to_double(), r = sites[i].a().to_double();
+        input.push_back(AG::Site_2(AG::Point_2(x, y), r));
+        id[{x, y, r}] = i;
+    }
+    AG ag;
+    timed([&] {
+        ag.clear();
+        ag.insert(input.begin(), input.end());
+    }, wall, cpu, reps);
+    auto site_id = [&](const AG::Site_2& s) {
+        return id.at({CGAL::to_double(s.point().x()), CGAL::to_double(s.point().y()), CGAL::to_double(s.weight())});
+    };
+    Summary out;
+    for (auto v = ag.finite_vertices_begin(); v != ag.finite_vertices_end(); ++v) {
+        out.visible.push_back(site_id(v->site()));
+        for (auto h = v->hidden_sites_begin(); h != v->hidden_sites_end(); ++h)
+            out.hidden.push_back({site_id(*h), site_id(v->site())});
+    }
+    for (auto e = ag.finite_edges_begin(); e != ag.finite_edges_end(); ++e) {
+        const SiteId a = site_id(e->first->vertex(ccw(e->second))->site());
+        const SiteId b = site_id(e->first->vertex(cw(e->second))->site());
+        out.edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+    if (ag.number_of_vertices() >= 3)
+        for (auto f = ag.all_faces_begin(); f != ag.all_faces_end(); ++f) {
+            if (!ag.is_infinite(f)) continue;
+            const int k = f->index(ag.infinite_vertex());
+            out.hull.push_back({site_id(f->vertex(ccw(k))->site()), site_id(f->vertex(cw(k))->site())});
+        }
+    std::sort(out.visible.begin(), out.visible.end());
+    std::sort(out.hidden.begin(), out.hidden.end());
+    std::sort(out.edges.begin(), out.edges.end());
+    std::sort(out.hull.begin(), out.hull.end());
+    return out;
+}
+
+std::string compare(const Summary& a, const Summary& b) {
+    std::string out;
+    if (a.visible != b.visible) out += "visible sites differ; ";
+    if (a.hidden != b.hidden) out += "hidden pairs differ; ";
+    if (a.edges != b.edges)
+        out += "edges differ (" + std::to_string(a.edges.size()) + " vs " + std::to_string(b.edges.size()) + "); ";
+    if (a.hull != b.hull) out += "hull differs; ";
+    return out.empty() ? "ok" : out;
+}
+
+std::vector<Ellipse> make_sites(const std::string& set, long n) {
+    GeneratorOptions o;
+    o.count = n;
+    o.seed = 1;
+    if (set == "circles") {
+        o.kind = SiteKind::circles;
+        o.bits = 1;
+        o.box = Rational(256 * static_cast<long>(std::ceil(std::sqrt(double(n)) - 1e-9)));
+    } else {
+        o.kind = SiteKind::ellipses;
+        o.bits = 8;
+        o.box = Rational(100);
+        if (set == "ellipses-nest10") o.nested_fraction = Rational(1, 10);
+    }
+    return generate_sites(o);
+}
+
+std::string describe_set(const std::string& set) {
+    if (set == "circles") return "generate_sites(circles, seed 1, bits 1, box 256 ceil(sqrt n)) — dyadic, exact in double";
+    if (set == "ellipses-nest10") return "generate_sites(ellipses, seed 1, bits 8, box 100, nested fraction 1/10)";
+    return "generate_sites(ellipses, seed 1, bits 8, box 100)";
+}
+
+Row run_ellvor(const std::string& set, const std::string& label, const std::vector<Ellipse>& sites, Summary* summary,
+               int& anomalies) {
+    Row r;
+    r.set = label;
+    r.n = static_cast<long>(sites.size());
+    const long n = r.n;
+    try {
+        std::unique_ptr<DelaunayGraph> g;
+        timed([&] {
+            g.reset(new DelaunayGraph(sites));
+            std::size_t step = std::max<std::size_t>(1, sites.size() / 10);
+            g->insert_all([&](std::size_t done, std::size_t total) {
+                if (total >= 1000 && done % step == 0)
+                    std::cerr << "\r  " << label << " n = " << n << ": " << done << " / " << total << std::flush;
+            });
+            if (sites.size() >= 1000) std::cerr << "\n";
+        }, r.seconds, r.cpu_seconds, r.reps);
+        r.edges = g->edges().size();
+        r.faces = g->faces().size();
+        r.hidden = g->hidden().size();
+        r.visible = g->visible_sites().size();
+        r.stats = g->predicate_stats();
+        r.gstats = g->stats();
+        std::string v = g->validate();
+        r.validate = v.empty() ? "ok" : one_line(v);
+        if (!v.empty()) {
+            std::cerr << "ANOMALY: " << label << " n = " << n << ": validate: " << v << "\n";
+            ++anomalies;
+        }
+        if (n <= 300) {
+            std::string b = g->brute_force_check();
+            r.brute = b.empty() ? "ok" : one_line(b);
+            if (!b.empty()) {
+                std::cerr << "ANOMALY: " << label << " n = " << n << ": brute force: " << b << "\n";
+                ++anomalies;
+            }
+        }
+        if (summary) *summary = summary_of(*g);
+    } catch (const std::exception& e) {
+        std::cerr << "ANOMALY: " << label << " n = " << n << ": " << e.what() << "\n";
+        r.validate = std::string("exception: ") + one_line(e.what());
+        ++anomalies;
+    }
+    (void)set;
+    return r;
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown";
+    int n = 0;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
+        if (line.rfind("processor", 0) == 0) ++n;
+    }
+    return model + ", " + std::to_string(n) + " logical CPUs";
+}
+
+std::string source_state() {
+    std::string out;
+    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
+        char buf[128];
+        std::string head, dirty;
+        if (fgets(buf, sizeof buf, f)) head = buf;
+        if (fgets(buf, sizeof buf, f)) dirty = buf;
+        pclose(f);
+        auto trim = [](std::string& s) { while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back(); };
+        trim(head);
+        trim(dirty);
+        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
+    }
+    return out.empty() ? "unknown (not run from the repository)" : out;
+}
+
+std::string loadavg() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+}
+
+// Mean time of one kappa1 (side_of_bisector) call, on a fresh DelaunayTraits
+// of the sites, for pseudo-random triples of distinct sites (seconds).
+double kappa1_seconds(const std::vector<Ellipse>& sites) {
+    if (sites.size() < 3) return 0;
+    DelaunayTraits t(sites);
+    std::mt19937_64 rng(3);
+    const std::size_t calls = 20000, n = sites.size();
+    std::vector<std::array<SiteId, 3>> triples;
+    while (triples.size() < calls) {
+        const SiteId i = rng() % n, j = rng() % n, k = rng() % n;
+        if (i != j && j != k && i != k) triples.push_back({i, j, k});
+    }
+    long sum = 0;
+    const double c0 = now_cpu();
+    for (const auto& q : triples) sum += t.side_of_bisector(q[0], q[1], q[2]);
+    const double c1 = now_cpu();
+    (void)sum;
+    return (c1 - c0) / calls;
+}
+
+struct Pred {
+    const char* name;
+    const PredicateCount TraitsStats::*field;
+};
+const Pred kPreds[] = {
+    {"is_hidden", &TraitsStats::is_hidden},
+    {"kappa1", &TraitsStats::side_of_bisector},
+    {"kappa2", &TraitsStats::vertex_conflict3},
+    {"kappa3", &TraitsStats::vertex_conflict4},
+    {"kappa4_finite", &TraitsStats::finite_edge},
+    {"kappa4_infinite", &TraitsStats::infinite_edge},
+};
+
+std::string stage_triple(const PredicateCount& p) {
+    if (p.calls == 0) return "0";
+    return std::to_string(p.calls) + " (" + std::to_string(p.stages.decided[0]) + "/" +
+           std::to_string(p.stages.decided[1]) + "/" + std::to_string(p.stages.decided[2]) + ")";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool full = false;
+    std::string out_dir;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--full"))
+            full = true;
+        else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
+            out_dir = argv[++i];
+        else {
+            std::cerr << "usage: build_scaling [--full] [--out DIR]\n"
+                         "  --full     also n = 10^4 (about a minute)\n"
+                         "  --out DIR  write DIR/build_scaling.csv, .md and .svg\n";
+            return 2;
+        }
+    }
+    std::string command = "build/experiments/build_scaling";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+
+    std::vector<long> ns = {5, 10, 15, 20, 25, 100, 1000};
+    if (full) ns.push_back(10000);
+    const std::vector<double> paper = {0.752, 5.916, 13.000, 19.200, 25.602};
+    const std::vector<std::string> sets = {"ellipses", "ellipses-nest10", "circles"};
+
+    const std::string load_before = loadavg();
+    std::vector<Row> rows;
+    int anomalies = 0;
+    for (long n : ns) {
+        for (const std::string& set : sets) {
+            std::vector<Ellipse> sites;
+            try {
+                sites = make_sites(set, n);
+            } catch (const std::exception& e) {
+                std::cerr << "ANOMALY: cannot generate " << set << " n = " << n << ": " << e.what() << "\n";
+                ++anomalies;
+                continue;
+            }
+            const std::string label = set == "circles" ? "ellvor-circles" : set;
+            Summary mine;
+            Row r = run_ellvor(set, label, sites, set == "circles" ? &mine : nullptr, anomalies);
+            if (n >= 100) r.kappa1_us = 1e6 * kappa1_seconds(sites);
+            std::cerr << "[build_scaling] " << label << " n = " << n << ": " << fmt("%.4f", r.seconds) << " s wall, "
+                      << fmt("%.4f", r.cpu_seconds) << " s cpu (" << r.reps << " runs), " << r.edges << " edges, "
+                      << r.hidden << " hidden, validate " << r.validate << ", brute force " << r.brute << "\n";
+            if (set == "circles") {
+                Row c;
+                c.set = "cgal-circles";
+                c.n = n;
+                const Summary want = cgal_graph(sites, c.seconds, c.cpu_seconds, c.reps);
+                c.edges = want.edges.size();
+                c.hidden = want.hidden.size();
+                c.visible = want.visible.size();
+                if (r.validate.rfind("exception", 0) != 0) {
+                    r.cgal = compare(mine, want);
+                    if (r.cgal != "ok") {
+                        std::cerr << "ANOMALY: circles n = " << n << ": ellvor differs from CGAL: " << r.cgal << "\n";
+                        ++anomalies;
+                    }
+                }
+                c.cgal = r.cgal;
+                std::cerr << "[build_scaling] cgal-circles n = " << n << ": " << fmt("%.5f", c.seconds) << " s wall, "
+                          << fmt("%.5f", c.cpu_seconds) << " s cpu (" << c.reps << " runs); ellvor / CGAL (cpu) = "
+                          << fmt("%.1f", r.cpu_seconds / c.cpu_seconds) << "; graphs " << r.cgal << "\n";
+                rows.push_back(r);
+                rows.push_back(c);
+            } else {
+                rows.push_back(r);
+            }
+        }
+    }
+    const std::string load_after = loadavg();
+
+    auto find = [&](const std::string& set, long n) -> const Row* {
+        for (const Row& r : rows)
+            if (r.set == set && r.n == n) return &r;
+        return nullptr;
+    };
+
+    // CSV
+    std::ostringstream csv;
+    csv << "set,n,seconds,cpu_seconds,runs,us_per_insertion,visible,hidden,edges,faces";
+    for (const Pred& p : kPreds) csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
+    csv << ",walk_steps,conflict_faces,degree2_insertions,validate,brute_force,equals_cgal,kappa1_us_per_call\n";
+    for (const Row& r : rows) {
+        csv << r.set << "," << r.n << "," << fmt("%.6g", r.seconds) << "," << fmt("%.6g", r.cpu_seconds) << "," << r.reps
+            << "," << fmt("%.6g", 1e6 * r.seconds / r.n) << "," << r.visible << "," << r.hidden << "," << r.edges << ","
+            << (r.set == "cgal-circles" ? std::string("") : std::to_string(r.faces));
+        for (const Pred& p : kPreds) {
+            const PredicateCount& c = r.stats.*(p.field);
+            if (r.set == "cgal-circles")
+                csv << ",,,,";
+            else
+                csv << "," << c.calls << "," << c.stages.decided[0] << "," << c.stages.decided[1] << "," << c.stages.decided[2];
+        }
+        if (r.set == "cgal-circles")
+            csv << ",,,," << "-,-," << r.cgal << ",\n";
+        else
+            csv << "," << r.gstats.walk_steps << "," << r.gstats.conflict_faces << "," << r.gstats.degree_2_insertions
+                << "," << r.validate << "," << r.brute << "," << r.cgal << "," << fmt("%.4g", r.kappa1_us) << "\n";
+    }
+
+    // Markdown
+    std::ostringstream md;
+    md << "# Build time against the number of sites\n\n"
+       << "Total time of `DelaunayGraph::insert_all` (every site, largest area first) from a fresh graph; site "
+          "generation and the checks are not timed. Below 0.3 s a build is repeated and the median taken (at most "
+          "20 runs). Paper: seed Table 1, row \"insertion\" (P4 2.6 GHz, 2007; its ellipses are not given, so only "
+          "n matches).\n\n"
+       << "- Machine: " << cpu_model() << " (shared with other jobs: compare CPU seconds)\n"
+       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
+       << "- Source: " << source_state() << "\n"
+       << "- Command: `make build/experiments/build_scaling && " << command << "`; plot: `python3 "
+          "experiments/plot_svg.py experiments/results/build_scaling.csv experiments/results/build_scaling.svg "
+          "--x n --y cpu_seconds --series set --title \"Delaunay graph build time\" --xlabel \"n (sites)\" "
+          "--ylabel \"CPU time (s)\" --points \"paper (Table 1, insertion)\" "
+          "5:0.752,10:5.916,15:13.000,20:19.200,25:25.602`\n"
+       << "- By default (`make bench`) n ≤ 1000 and nothing is written; `--full` adds n = 10^4, `--out DIR` writes "
+          "the CSV and this file.\n\n"
+       << "Site sets:\n\n";
+    for (const std::string& set : sets) md << "- **" << (set == "circles" ? "ellvor-circles" : set) << "**: " << describe_set(set) << "\n";
+    md << "- **cgal-circles**: the same circles as ellvor-circles, converted to double (exactly: every coordinate "
+          "and radius is a multiple of 1/2 below 2^20), bulk-inserted into CGAL "
+          "`Apollonius_graph_2<Apollonius_graph_filtered_traits_2<Epick>>` (which also inserts by decreasing "
+          "radius); timed in the same program.\n\n";
+
+    md << "## Times\n\n| n | paper (s) | ellipses (s) | µs / insertion | ellipses-nest10 (s) | ellvor circles (s) | "
+          "CGAL circles (s) | ellvor / CGAL |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (std::size_t k = 0; k < ns.size(); ++k) {
+        const long n = ns[k];
+        const Row *e = find("ellipses", n), *en = find("ellipses-nest10", n), *ec = find("ellvor-circles", n),
+                  *cc = find("cgal-circles", n);
+        auto t = [](const Row* r) { return r ? fmt("%.3g", r->cpu_seconds) + " (" + fmt("%.3g", r->seconds) + ")" : std::string("—"); };
+        md << "| " << n << " | " << (k < paper.size() ? fmt("%.3f", paper[k]) : std::string("—")) << " | " << t(e)
+           << " | " << (e ? fmt("%.0f", 1e6 * e->cpu_seconds / n) : std::string("—")) << " | " << t(en) << " | " << t(ec)
+           << " | " << t(cc) << " | "
+           << (ec && cc ? fmt("%.1f×", ec->cpu_seconds / cc->cpu_seconds) : std::string("—")) << " |\n";
+    }
+    md << "\nCPU seconds, wall seconds in parentheses; ratio on CPU time.\n\n";
+
+    md << "## Graphs and checks\n\n| set | n | visible | hidden | Delaunay edges | faces | walk steps | validate() | "
+          "brute force (n ≤ 300) | equals CGAL |\n|---|---:|---:|---:|---:|---:|---:|---|---|---|\n";
+    for (const Row& r : rows) {
+        if (r.set == "cgal-circles") continue;
+        md << "| " << r.set << " | " << r.n << " | " << r.visible << " | " << r.hidden << " | " << r.edges << " | "
+           << r.faces << " | " << r.gstats.walk_steps << " | " << r.validate << " | " << r.brute << " | " << r.cgal
+           << " |\n";
+    }
+
+    md << "\n## Predicate calls per stage\n\ncalls (filter / subdivision / exact); memoized answers are not "
+          "counted. kappa1 = side_of_bisector (nearest-neighbour walk), kappa2 = infinite Voronoi vertex, kappa3 = "
+          "InCircle, kappa4 = edge conflicts.\n\n| set | n |";
+    for (const Pred& p : kPreds) md << " " << p.name << " |";
+    md << "\n|---|---:|";
+    for (std::size_t i = 0; i < sizeof kPreds / sizeof kPreds[0]; ++i) md << "---|";
+    md << "\n";
+    for (const Row& r : rows) {
+        if (r.set == "cgal-circles") continue;
+        md << "| " << r.set << " | " << r.n << " |";
+        for (const Pred& p : kPreds) md << " " << stage_triple(r.stats.*(p.field)) << " |";
+        md << "\n";
+    }
+
+    md << "\n## Where the time goes: the nearest-neighbour walk (kappa1)\n\nkappa1 calls × the mean CPU time of "
+          "one kappa1 call (micro-benchmark: 20000 calls on random site triples with a fresh DelaunayTraits), "
+          "against the whole build's CPU time. An estimate: the walk's triples are neighbours, not random sites.\n\n"
+          "| set | n | kappa1 calls | per insertion | µs / call | estimated kappa1 time (s) | share of build |\n"
+          "|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const Row& r : rows) {
+        if (r.set == "cgal-circles" || r.kappa1_us <= 0) continue;
+        const double calls = double(r.stats.side_of_bisector.calls), est = calls * r.kappa1_us * 1e-6;
+        md << "| " << r.set << " | " << r.n << " | " << r.stats.side_of_bisector.calls << " | "
+           << fmt("%.0f", calls / r.n) << " | " << fmt("%.2f", r.kappa1_us) << " | " << fmt("%.3g", est) << " | "
+           << fmt("%.0f%%", 100 * est / r.cpu_seconds) << " |\n";
+    }
+
+    md << "\n## Targets\n\n";
+    if (const Row* e = find("ellipses", 10000))
+        md << "- 10^4 random ellipses in ≤ 30 s: " << fmt("%.2f", e->cpu_seconds) << " s CPU (" << fmt("%.2f", e->seconds)
+           << " s wall) — " << (e->seconds <= 30 ? "met" : "MISSED") << "\n";
+    else
+        md << "- 10^4 random ellipses in ≤ 30 s: not run (use --full)\n";
+    for (long n : ns) {
+        const Row *ec = find("ellvor-circles", n), *cc = find("cgal-circles", n);
+        if (!ec || !cc || n < 100) continue;
+        const double ratio = ec->cpu_seconds / cc->cpu_seconds;
+        md << "- random circles within 5× of CGAL, n = " << n << ": " << fmt("%.1f×", ratio) << " — "
+           << (ratio <= 5 ? "met" : "MISSED") << "\n";
+    }
+    md << "\nAnomalies (invalid graph, disagreement with CGAL, exception): " << anomalies << ".\n";
+    if (!full) md << "\nn = 10^4 skipped (run with --full).\n";
+
+    std::cout << md.str();
+    if (!out_dir.empty()) {
+        std::ofstream(out_dir + "/build_scaling.csv") << csv.str();
+        std::ofstream(out_dir + "/build_scaling.md") << md.str();
+        const std::string plot = "python3 experiments/plot_svg.py '" + out_dir + "/build_scaling.csv' '" + out_dir +
+                                 "/build_scaling.svg' --x n --y cpu_seconds --series set --title 'Delaunay graph build "
+                                 "time' --xlabel 'n (sites)' --ylabel 'CPU time (s)' --points 'paper (Table 1, "
+                                 "insertion)' 5:0.752,10:5.916,15:13.000,20:19.200,25:25.602";
+        if (std::system(plot.c_str()) != 0) std::cerr << "[build_scaling] plot failed: " << plot << "\n";
+        std::cerr << "[build_scaling] wrote " << out_dir << "/build_scaling.{csv,md,svg}\n";
+    }
+    return anomalies ? 1 : 0;
+}

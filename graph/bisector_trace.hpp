@@ -1,0 +1,120 @@
+// Floating-point tracing of the bisector of two ellipses, for drawing only
+// (the SVG output). Nothing here decides anything about the graph: the
+// combinatorics come from DelaunayGraph, the Voronoi vertices from the
+// certified Voronoi circles; this only joins them by polylines.
+//
+// The bisector of disjoint ellipses Ep, Eq is parametrized by the angle theta
+// of the tangency point on Ep: the center of the circle tangent to Ep at
+// P(theta) from outside is V = P(theta) + rho n(theta) (n the outward unit
+// normal), and rho solves d(V(rho), Eq) = rho. f(rho) = d(V(rho), Eq) - rho is
+// nonincreasing with f(0) > 0, so rho is found by a safeguarded Newton /
+// bisection; a root exists iff h_q(n) > h_p(n) (h the support function), i.e.
+// for theta in an open arc A of Ep whose two ends are the directions of the
+// external bitangents (the two Voronoi vertices at infinity).
+//
+// Orientation (checked by the tests): for the Delaunay edge p -> q with the
+// face f on its left and g on its right, the dual Voronoi edge runs from the
+// vertex of f to the vertex of g, and on Ep the tangency angle DEcreases
+// along it; an infinite vertex on the left is the counter-clockwise end of A,
+// one on the right the clockwise end.
+#pragma once
+
+#include "graph/delaunay_graph.hpp"
+#include "sites/ellipse.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace ellvor {
+
+// An ellipse in doubles (a, b, cos and sin of the rotation, center).
+struct EllipseShape {
+    double a = 1, b = 1, c = 1, s = 0, xc = 0, yc = 0;
+
+    static EllipseShape of(const Ellipse& e);
+    // Boundary point and outward unit normal at the angle theta:
+    // P = C + a cos(theta) u + b sin(theta) v.
+    void point(double theta, double& x, double& y) const;
+    void normal(double theta, double& nx, double& ny) const;
+    // Is (x, y) strictly inside?
+    bool inside(double x, double y) const;
+    // Angle of the boundary point nearest to (x, y) (a point outside or on the
+    // boundary; for a point inside, a boundary point with a normal through it).
+    double nearest_angle(double x, double y) const;
+    // Distance from (x, y) to the ellipse, negative inside (for inside points
+    // only the sign is meaningful here).
+    double signed_distance(double x, double y) const;
+    // Support function max over the ellipse of (nx, ny) . point.
+    double support(double nx, double ny) const;
+    // Axis-aligned half extents.
+    double half_width() const;
+    double half_height() const;
+};
+
+struct DrawingBox {
+    double xmin = 0, ymin = 0, xmax = 1, ymax = 1;
+    double width() const { return xmax - xmin; }
+    double height() const { return ymax - ymin; }
+    double size() const { return width() > height() ? width() : height(); }
+    double diagonal() const;
+    bool contains(double x, double y, double slack = 0) const {
+        return x >= xmin - slack && x <= xmax + slack && y >= ymin - slack && y <= ymax + slack;
+    }
+};
+
+struct BisectorPoint {
+    double x = 0, y = 0;
+    double theta = 0;  // tangency angle on the first site
+    double rho = 0;    // distance to both sites
+};
+
+struct TraceOptions {
+    DrawingBox box;
+    // Consecutive points of a traced arc are closer than this.
+    double tolerance = 0.01;
+    // An unbounded end is traced until its points are at least this far from
+    // the box's center (0: twice the box's diagonal).
+    double far_distance = 0;
+};
+
+// The portion of the bisector of (p, q) between two tangency angles on p, in
+// the direction of decreasing angle. `from` empty: start at the
+// counter-clockwise end of the arc A (infinity); `to` empty: end at its
+// clockwise end. Unbounded ends are traced until they are far outside the
+// box. `ok` (optional) is false when the angles did not follow that order in
+// A (then the arc between them is traced the other way round).
+std::vector<BisectorPoint> trace_bisector(const EllipseShape& p, const EllipseShape& q, std::optional<double> from,
+                                          std::optional<double> to, const TraceOptions& options,
+                                          bool* ok = nullptr);
+
+// One Voronoi edge of the diagram, traced.
+struct VoronoiEdgeArc {
+    SiteId p = 0, q = 0;                  // the Delaunay edge p -> q (the left face's vertex first)
+    bool from_infinity = false, to_infinity = false;
+    std::vector<BisectorPoint> points;    // equidistant from p and q, in order
+};
+
+struct VoronoiVertexPoint {
+    std::array<SiteId, 3> face{};         // counter-clockwise, as in the triangulation
+    bool certified = false;
+    double x = 0, y = 0, radius = 0;
+};
+
+struct TracedDiagram {
+    DrawingBox box;
+    double tolerance = 0;
+    std::vector<VoronoiVertexPoint> vertices;  // one per finite face
+    std::vector<VoronoiEdgeArc> arcs;          // one per Voronoi edge drawn
+    std::size_t failed_edges = 0;       // an endpoint's Voronoi circle could not be certified
+    std::size_t misordered_edges = 0;   // angles out of the expected order (never expected)
+};
+
+// The drawing box: the sites' bounding box plus `margin_fraction` of its larger side.
+DrawingBox drawing_box(const std::vector<Ellipse>& sites, double margin_fraction);
+
+// Every Voronoi edge of the graph traced within `tolerance_fraction` of the
+// box's larger side (the box from drawing_box(sites, margin_fraction)).
+TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                                    double tolerance_fraction, double margin_fraction);
+
+}  // namespace ellvor

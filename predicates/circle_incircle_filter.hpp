@@ -1,0 +1,23 @@
+// The filter stage of InCircle when all four sites are circles: the
+// Apollonius circles of three circles in closed form (the equations
+// |V - C_i| = rho + r_i are linear in V after subtracting the first, then
+// quadratic in rho), evaluated in outward-rounded double intervals. A root
+// with rho > 0 is externally tangent to the three with an empty disk, i.e. a
+// Voronoi circle; its orientation is that of its tangency points. Decides
+// only what the intervals prove; anything else is left to the general
+// cascade.
+#pragma once
+
+#include "sites/ellipse.hpp"
+
+#include <optional>
+
+namespace ellvor {
+
+enum class CircleInCircle { conflict, no_conflict, no_circle };
+
+// nullopt: undecided (some interval straddles zero, or a site is not a circle).
+std::optional<CircleInCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                     const Ellipse& q);
+
+}  // namespace ellvor
