@@ -89,10 +89,25 @@ std::optional<AlgebraicReal> unique_root_in(const IntPolynomial& p, const Ball& 
     return AlgebraicReal::from_interval(sq, lo, hi);
 }
 
+
+
+// Two circles: the signed distances are |p - c| - r in closed form.
+int circle_filter(const Ellipse& e1, const Ellipse& e2, Interval px, Interval py) {
+    auto signed_distance = [&](const Ellipse& e) {
+        const auto& k = e.enclosure();
+        return ((px - k.xc).square() + (py - k.yc).square()).sqrt() - k.a;
+    };
+    const Interval d1 = signed_distance(e1), d2 = signed_distance(e2);
+    if (!d1.finite() || !d2.finite()) return 0;
+    return d1.hi < d2.lo ? 1 : d2.hi < d1.lo ? -1 : 0;
+}
+
 }  // namespace
 
 SignDecision side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
                               const SideOfBisectorOptions& options) {
+    if (options.use_filter && e1.is_circle() && e2.is_circle())
+        if (int s = circle_filter(e1, e2, enclose(p.x), enclose(p.y))) return {s, Stage::filter, 53};
     // Which side of each boundary p is on: inside one and outside the other
     // decides at once (signed distances).
     const Interval px = enclose(p.x), py = enclose(p.y);
