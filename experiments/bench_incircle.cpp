@@ -27,6 +27,7 @@
 // Each instance's ellvor calls are first run once in a forked child with a
 // 20 s limit: a crash or hang of the library becomes an "error" row.
 // Options: --reps N, --random N, --seed S, --bits B (random quadruples), --out DIR.
+#include "experiments/run_environment.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/ellipse.hpp"
@@ -57,6 +58,10 @@
 using namespace ellvor;
 
 namespace {
+
+using ellvor::experiments::cpu_model;
+using ellvor::experiments::loadavg;
+using ellvor::experiments::source_state;
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Traits = CGAL::Apollonius_graph_filtered_traits_2<K>;
@@ -313,40 +318,8 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
     return row;
 }
 
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line, model = "unknown";
-    int n = 0;
-    while (std::getline(in, line)) {
-        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
-        if (line.rfind("processor", 0) == 0) ++n;
-    }
-    return model + ", " + std::to_string(n) + " logical CPUs";
-}
 
-// The source state the numbers come from (other sessions edit the library).
-std::string source_state() {
-    std::string out;
-    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
-        char buf[128];
-        std::string head, dirty;
-        if (fgets(buf, sizeof buf, f)) head = buf;
-        if (fgets(buf, sizeof buf, f)) dirty = buf;
-        pclose(f);
-        auto trim = [](std::string& s) { while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back(); };
-        trim(head);
-        trim(dirty);
-        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
-    }
-    return out.empty() ? "unknown (not run from the repository)" : out;
-}
 
-std::string loadavg() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-}
 
 std::string fmt(const char* f, double x) {
     char buf[64];

@@ -24,6 +24,7 @@
 //
 // An invalid graph, a disagreement with CGAL or an exception is printed as an
 // ANOMALY and makes the program exit with status 1.
+#include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
@@ -54,6 +55,10 @@
 using namespace ellvor;
 
 namespace {
+
+using ellvor::experiments::cpu_model;
+using ellvor::experiments::loadavg;
+using ellvor::experiments::source_state;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using AGTraits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
@@ -249,39 +254,8 @@ Row run_ellvor(const std::string& set, const std::string& label, const std::vect
     return r;
 }
 
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line, model = "unknown";
-    int n = 0;
-    while (std::getline(in, line)) {
-        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
-        if (line.rfind("processor", 0) == 0) ++n;
-    }
-    return model + ", " + std::to_string(n) + " logical CPUs";
-}
 
-std::string source_state() {
-    std::string out;
-    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
-        char buf[128];
-        std::string head, dirty;
-        if (fgets(buf, sizeof buf, f)) head = buf;
-        if (fgets(buf, sizeof buf, f)) dirty = buf;
-        pclose(f);
-        auto trim = [](std::string& s) { while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back(); };
-        trim(head);
-        trim(dirty);
-        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
-    }
-    return out.empty() ? "unknown (not run from the repository)" : out;
-}
 
-std::string loadavg() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-}
 
 // Mean time of one kappa1 (side_of_bisector) call, on a fresh DelaunayTraits
 // of the sites, for pseudo-random triples of distinct sites (seconds).

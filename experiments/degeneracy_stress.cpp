@@ -27,6 +27,7 @@
 //       # more bit sizes and exponents (a few minutes); writes degeneracy_stress.csv,
 //       # .md, and .svg (via experiments/plot_svg.py) into the folder
 // Options: --reps N, --seed S, --out DIR, --full.
+#include "experiments/run_environment.hpp"
 #include "exact/incircle_resultant.hpp"
 #include "predicates/incircle.hpp"
 #include "sites/ellipse.hpp"
@@ -47,6 +48,10 @@
 using namespace ellvor;
 
 namespace {
+
+using ellvor::experiments::cpu_model;
+using ellvor::experiments::loadavg;
+using ellvor::experiments::source_state;
 
 struct Row {
     std::string part;    // "resultant" or "incircle"
@@ -248,18 +253,6 @@ void incircle_rows(int reps, bool full, std::vector<Row>& rows) {
 
 // ---- output -----------------------------------------------------------------
 
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line, model = "unknown";
-    int cores = 0;
-    while (std::getline(in, line)) {
-        if (line.rfind("model name", 0) == 0) {
-            ++cores;
-            if (model == "unknown") model = line.substr(line.find(':') + 2);
-        }
-    }
-    return model + " (" + std::to_string(cores) + " logical CPUs)";
-}
 
 void write_csv(const std::string& path, const std::vector<Row>& rows) {
     std::ofstream out(path);

@@ -16,6 +16,7 @@
 // Every enclosure is checked against the most accurate one of its triple
 // (all six components must overlap); a failed certificate or a mismatch is
 // printed as an ANOMALY and makes the program exit with status 1.
+#include "experiments/run_environment.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
@@ -36,6 +37,10 @@
 using namespace ellvor;
 
 namespace {
+
+using ellvor::experiments::cpu_model;
+using ellvor::experiments::loadavg;
+using ellvor::experiments::source_state;
 
 struct Triple {
     std::string name, description;
@@ -182,40 +187,8 @@ bool overlaps(const VoronoiCircleEnclosure& a, const VoronoiCircleEnclosure& b) 
            arb_overlaps(a.center_y.get(), b.center_y.get());
 }
 
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line, model = "unknown";
-    int n = 0;
-    while (std::getline(in, line)) {
-        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
-        if (line.rfind("processor", 0) == 0) ++n;
-    }
-    return model + ", " + std::to_string(n) + " logical CPUs";
-}
 
-// The source state the numbers come from (other sessions edit the library).
-std::string source_state() {
-    std::string out;
-    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
-        char buf[128];
-        std::string head, dirty;
-        if (fgets(buf, sizeof buf, f)) head = buf;
-        if (fgets(buf, sizeof buf, f)) dirty = buf;
-        pclose(f);
-        auto trim = [](std::string& s) { while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back(); };
-        trim(head);
-        trim(dirty);
-        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
-    }
-    return out.empty() ? "unknown (not run from the repository)" : out;
-}
 
-std::string loadavg() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-}
 
 std::string fmt(const char* f, double x) {
     char buf[64];

@@ -1,0 +1,50 @@
+// Where a benchmark ran: the machine, its load and the source state, for the
+// headers of the result files in experiments/results/.
+#pragma once
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace ellvor::experiments {
+
+// "model name, N logical CPUs" from /proc/cpuinfo.
+inline std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown";
+    int n = 0;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0 && model == "unknown") model = line.substr(line.find(':') + 2);
+        if (line.rfind("processor", 0) == 0) ++n;
+    }
+    return model + ", " + std::to_string(n) + " logical CPUs";
+}
+
+// The git commit and how many tracked files differ from it.
+inline std::string source_state() {
+    std::string out;
+    if (FILE* f = popen("git rev-parse --short HEAD 2>/dev/null && git status --porcelain -uno 2>/dev/null | wc -l", "r")) {
+        char buf[128];
+        std::string head, dirty;
+        if (fgets(buf, sizeof buf, f)) head = buf;
+        if (fgets(buf, sizeof buf, f)) dirty = buf;
+        pclose(f);
+        auto trim = [](std::string& s) {
+            while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+        };
+        trim(head);
+        trim(dirty);
+        if (!head.empty()) out = "git HEAD " + head + ", " + dirty + " tracked files modified in the work tree";
+    }
+    return out.empty() ? "unknown (not run from the repository)" : out;
+}
+
+// The 1, 5 and 15 minute load averages.
+inline std::string loadavg() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+}
+
+}  // namespace ellvor::experiments
