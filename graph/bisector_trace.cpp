@@ -227,7 +227,11 @@ public:
     // Appends the points strictly after `a` up to and including `b`.
     void subdivide(double ua, const BisectorPoint& a, double ub, const BisectorPoint& b, int depth,
                    std::vector<BisectorPoint>& out) const {
-        if (depth < 60 && std::hypot(a.x - b.x, a.y - b.y) > o_.tolerance) {
+        const double chord = std::hypot(a.x - b.x, a.y - b.y);
+        // Pieces far outside the box (both ends farther from it than they are
+        // from each other) are not refined: they are clipped away.
+        const bool outside = box_distance(a) > chord && box_distance(b) > chord;
+        if (depth < 60 && chord > o_.tolerance && !outside) {
             const double um = 0.5 * (ua + ub);
             if (const auto m = at(um)) {
                 subdivide(ua, a, um, *m, depth + 1, out);
@@ -257,6 +261,11 @@ public:
 
 private:
     double dist_center(const BisectorPoint& b) const { return std::hypot(b.x - cx_, b.y - cy_); }
+    double box_distance(const BisectorPoint& b) const {
+        const double dx = std::max({0.0, o_.box.xmin - b.x, b.x - o_.box.xmax});
+        const double dy = std::max({0.0, o_.box.ymin - b.y, b.y - o_.box.ymax});
+        return std::hypot(dx, dy);
+    }
 
     const EllipseShape &p_, &q_;
     const TraceOptions& o_;

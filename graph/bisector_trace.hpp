@@ -70,7 +70,9 @@ struct BisectorPoint {
 
 struct TraceOptions {
     DrawingBox box;
-    // Consecutive points of a traced arc are closer than this.
+    // Consecutive points of a traced arc are closer than this, except on
+    // pieces far outside the box (both ends farther from the box than from
+    // each other), which are left coarse since the drawing clips them.
     double tolerance = 0.01;
     // An unbounded end is traced until its points are at least this far from
     // the box's center (0: twice the box's diagonal).

@@ -54,7 +54,7 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     const double pad = 20, top = 48, legend_width = 250;
     const double draw_w = s * box.width(), draw_h = s * box.height();
     const double legend_x = pad + draw_w + pad;
-    const double legend_h = 200;
+    const double legend_h = 22 + 5 * 24 + 14 + (d.failed_edges > 0 ? 18 : 0);
     const double width = legend_x + legend_width;
     const double height = std::max(top + draw_h + pad, top + legend_h + pad);
     const double tx = pad - s * box.xmin, ty = top + s * box.ymax;
@@ -137,11 +137,13 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     out << "</g>\n</g>\n";  // clip, world
 
     if (o.show_ids) {
-        out << "<g id=\"site-ids\" font-size=\"11\" text-anchor=\"middle\" dominant-baseline=\"central\">\n";
+        // Hidden sites' ids a line below their center (their host's id is often at the same place).
+        out << "<g id=\"site-ids\" font-size=\"11\" text-anchor=\"middle\" dominant-baseline=\"central\" "
+               "stroke=\"white\" stroke-width=\"3\" stroke-opacity=\"0.8\" paint-order=\"stroke\">\n";
         for (SiteId i = 0; i < sites.size(); ++i) {
             const EllipseShape e = EllipseShape::of(sites[i]);
             const bool h = hidden_ids.count(i) != 0;
-            out << "<text x=\"" << num(screen_x(e.xc)) << "\" y=\"" << num(screen_y(e.yc)) << "\" fill=\""
+            out << "<text x=\"" << num(screen_x(e.xc)) << "\" y=\"" << num(screen_y(e.yc) + (h ? 12 : 0)) << "\" fill=\""
                 << (h ? "#777777" : "#0d2a47") << "\"" << (h ? " font-style=\"italic\"" : "") << ">" << i << "</text>\n";
         }
         out << "</g>\n";

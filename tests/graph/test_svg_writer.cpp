@@ -1,0 +1,316 @@
+// The SVG drawing of the diagram: structure of the document (balanced tags,
+// one root, one <ellipse> per site, one <path> per Voronoi edge, legend
+// counts), and the geometry of the traced bisector arcs, checked against a
+// brute-force nearest point (dense samples on each ellipse, then a local
+// golden-section refinement): every point is equidistant from its two sites
+// within the stated tolerance and no third site is closer by more than it.
+#include "graph/bisector_trace.hpp"
+#include "graph/delaunay_graph.hpp"
+#include "graph/svg_writer.hpp"
+#include "sites/site_generators.hpp"
+#include "sites/site_io.hpp"
+#include "tests/support/command_runner.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Checks that the tags are balanced and that there is exactly one root
+// element, <svg>; returns "" or a description of the problem.
+std::string check_xml(const std::string& s) {
+    std::vector<std::string> stack;
+    int roots = 0;
+    std::string root;
+    std::size_t i = 0;
+    while ((i = s.find('<', i)) != std::string::npos) {
+        if (s.compare(i, 4, "<!--") == 0) {
+            const std::size_t e = s.find("-->", i);
+            if (e == std::string::npos) return "unterminated comment";
+            i = e + 3;
+            continue;
+        }
+        if (s.compare(i, 2, "<?") == 0) {
+            if (!stack.empty() || roots) return "processing instruction inside the document";
+            const std::size_t e = s.find("?>", i);
+            if (e == std::string::npos) return "unterminated <?";
+            i = e + 2;
+            continue;
+        }
+        const std::size_t e = s.find('>', i);
+        if (e == std::string::npos) return "unterminated tag";
+        std::string tag = s.substr(i + 1, e - i - 1);
+        i = e + 1;
+        if (tag.find('<') != std::string::npos) return "'<' inside a tag: " + tag;
+        if (!tag.empty() && tag[0] == '/') {
+            const std::string name = tag.substr(1);
+            if (stack.empty() || stack.back() != name) return "unbalanced </" + name + ">";
+            stack.pop_back();
+            continue;
+        }
+        const bool self_closing = !tag.empty() && tag.back() == '/';
+        const std::string name = tag.substr(0, tag.find_first_of(" \t\n/"));
+        if (name.empty()) return "empty tag";
+        if (stack.empty()) {
+            ++roots;
+            root = name;
+        }
+        if (!self_closing) stack.push_back(name);
+    }
+    if (!stack.empty()) return "unclosed <" + stack.back() + ">";
+    if (roots != 1 || root != "svg") return "expected one <svg> root, found " + std::to_string(roots) + " roots";
+    // Nothing but white space outside the root (after the comments and the declaration).
+    return "";
+}
+
+std::size_t count(const std::string& s, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t i = s.find(what); i != std::string::npos; i = s.find(what, i + 1)) ++n;
+    return n;
+}
+
+long attribute(const std::string& s, const std::string& name) {
+    std::smatch m;
+    if (!std::regex_search(s, m, std::regex(name + "=\"([0-9]+)\""))) return -1;
+    return std::stol(m[1]);
+}
+
+// Brute-force distance from (x, y) to an ellipse: the best of dense samples,
+// refined by golden-section search between its neighbours (the squared
+// distance is unimodal there once the samples are dense enough). Negative
+// inside.
+struct BruteForce {
+    EllipseShape e;
+    std::vector<double> xs, ys;
+    static constexpr int kSamples = 1024;
+
+    explicit BruteForce(const Ellipse& site) : e(EllipseShape::of(site)) {
+        for (int k = 0; k < kSamples; ++k) {
+            double x, y;
+            e.point(2 * kPi * k / kSamples, x, y);
+            xs.push_back(x);
+            ys.push_back(y);
+        }
+    }
+    double distance(double x, double y) const {
+        int best = 0;
+        double best_d = INFINITY;
+        for (int k = 0; k < kSamples; ++k) {
+            const double d = (xs[k] - x) * (xs[k] - x) + (ys[k] - y) * (ys[k] - y);
+            if (d < best_d) best_d = d, best = k;
+        }
+        auto d2 = [&](double t) {
+            double px, py;
+            e.point(t, px, py);
+            return (px - x) * (px - x) + (py - y) * (py - y);
+        };
+        double lo = 2 * kPi * (best - 1) / kSamples, hi = 2 * kPi * (best + 1) / kSamples;
+        const double r = 0.5 * (std::sqrt(5.0) - 1);
+        double m1 = hi - r * (hi - lo), m2 = lo + r * (hi - lo), f1 = d2(m1), f2 = d2(m2);
+        for (int it = 0; it < 60; ++it) {
+            if (f1 < f2) hi = m2, m2 = m1, f2 = f1, m1 = hi - r * (hi - lo), f1 = d2(m1);
+            else lo = m1, m1 = m2, f1 = f2, m2 = lo + r * (hi - lo), f2 = d2(m2);
+        }
+        const double d = std::sqrt(std::min({best_d, f1, f2}));
+        return e.inside(x, y) ? -d : d;
+    }
+};
+
+struct Built {
+    std::vector<Ellipse> sites;
+    DelaunayGraph graph;
+    TracedDiagram diagram;
+    std::string svg;
+    explicit Built(std::vector<Ellipse> s, bool ids = true) : sites(s), graph(std::move(s)) {
+        graph.insert_all();
+        SvgOptions o;
+        o.show_ids = ids;
+        std::ostringstream out;
+        diagram = write_svg(out, graph, sites, o);
+        svg = out.str();
+    }
+};
+
+void check_document(const Built& b) {
+    const std::string& svg = b.svg;
+    INFO(svg.substr(0, 2000));
+    CHECK(check_xml(svg) == "");
+    const auto edges = b.graph.edges();
+    const auto faces = b.graph.faces();
+    const auto hidden = b.graph.hidden();
+    // One ellipse element per site, the hidden ones dashed.
+    CHECK(count(svg, "<ellipse ") == b.sites.size());
+    std::size_t dashed = 0;
+    for (std::size_t i = svg.find("<ellipse "); i != std::string::npos; i = svg.find("<ellipse ", i + 1))
+        if (svg.substr(i, svg.find('>', i) - i).find("stroke-dasharray") != std::string::npos) ++dashed;
+    CHECK(dashed == hidden.size());
+    // One path per Voronoi edge drawn; every Voronoi edge is drawn (one per
+    // Delaunay edge of the graph, counted with multiplicity).
+    CHECK(count(svg, "<path ") == b.diagram.arcs.size());
+    CHECK(b.diagram.failed_edges == 0);
+    CHECK(b.diagram.misordered_edges == 0);
+    CHECK(b.diagram.arcs.size() == edges.size());
+    CHECK(b.diagram.vertices.size() == faces.size());
+    // The legend's counts.
+    const std::string legend = svg.substr(svg.find("<g id=\"legend\""));
+    CHECK(attribute(legend, "data-sites") == long(b.sites.size()));
+    CHECK(attribute(legend, "data-hidden") == long(hidden.size()));
+    CHECK(attribute(legend, "data-delaunay-edges") == long(edges.size()));
+    CHECK(attribute(legend, "data-voronoi-vertices") == long(faces.size()));
+    CHECK(legend.find(">sites: " + std::to_string(b.sites.size()) + "<") != std::string::npos);
+    CHECK(legend.find(">hidden: " + std::to_string(hidden.size()) + "<") != std::string::npos);
+    CHECK(legend.find(">Delaunay edges: " + std::to_string(edges.size()) + "<") != std::string::npos);
+    CHECK(legend.find(">Voronoi vertices: " + std::to_string(faces.size()) + "<") != std::string::npos);
+    // A title, and the tolerance stated in a comment.
+    CHECK(count(svg, "<title>") == 1);
+    CHECK(svg.find("tolerance") < svg.find("<svg"));
+    CHECK(svg.find("(0.5% of the drawing box") != std::string::npos);
+}
+
+// Every point of every arc: equidistant from its two sites, no third site
+// closer (both within the tolerance); consecutive points inside the box closer
+// than the tolerance; finite ends at their Voronoi vertices.
+void check_geometry(const Built& b) {
+    const double tol = b.diagram.tolerance;
+    REQUIRE(tol > 0);
+    std::vector<BruteForce> brute;
+    for (const Ellipse& e : b.sites) brute.emplace_back(e);
+    std::size_t points = 0;
+    double worst_equidistance = 0, worst_side = 0;
+    for (const VoronoiEdgeArc& arc : b.diagram.arcs) {
+        REQUIRE(arc.points.size() >= 2);
+        for (std::size_t k = 0; k < arc.points.size(); ++k) {
+            const BisectorPoint& pt = arc.points[k];
+            const double dp = brute[arc.p].distance(pt.x, pt.y), dq = brute[arc.q].distance(pt.x, pt.y);
+            worst_equidistance = std::max(worst_equidistance, std::fabs(dp - dq));
+            INFO("arc " << arc.p << " " << arc.q << " point " << k << " (" << pt.x << ", " << pt.y << ")");
+            CHECK(std::fabs(dp - dq) <= tol);
+            CHECK(std::fabs(dp - pt.rho) <= tol);
+            for (SiteId s = 0; s < b.sites.size(); ++s) {
+                if (s == arc.p || s == arc.q) continue;
+                const double ds = brute[s].distance(pt.x, pt.y);
+                worst_side = std::max(worst_side, dp - ds);
+                CHECK(ds >= dp - tol);
+            }
+            if (k > 0) {
+                const BisectorPoint& prev = arc.points[k - 1];
+                if (b.diagram.box.contains(pt.x, pt.y) && b.diagram.box.contains(prev.x, prev.y))
+                    CHECK(std::hypot(pt.x - prev.x, pt.y - prev.y) <= tol);
+            }
+            ++points;
+        }
+        // Finite ends are at a certified Voronoi vertex.
+        auto at_vertex = [&](const BisectorPoint& pt) {
+            for (const VoronoiVertexPoint& v : b.diagram.vertices)
+                if (v.certified && std::hypot(v.x - pt.x, v.y - pt.y) <= tol) return true;
+            return false;
+        };
+        if (!arc.from_infinity) CHECK(at_vertex(arc.points.front()));
+        if (!arc.to_infinity) CHECK(at_vertex(arc.points.back()));
+        // Unbounded ends leave the drawing box.
+        if (arc.from_infinity) CHECK(!b.diagram.box.contains(arc.points.front().x, arc.points.front().y));
+        if (arc.to_infinity) CHECK(!b.diagram.box.contains(arc.points.back().x, arc.points.back().y));
+    }
+    CHECK(points > 0);
+    // Far below the tolerance in practice (the root solve is ~1e-12 relative).
+    CHECK(worst_equidistance <= 1e-3 * tol);
+    CHECK(worst_side <= 1e-3 * tol);
+}
+
+}  // namespace
+
+TEST_CASE("svg: the bundled example is drawn completely", "[graph][svg]") {
+    Built b(read_sites(std::string(ELLVOR_SOURCE_DIR) + "/data/example.ell"));
+    check_document(b);
+    CHECK(count(b.svg, "<text") >= b.sites.size());  // the ids
+    check_geometry(b);
+}
+
+TEST_CASE("svg: traced arcs of random ellipses lie on their bisectors, on the right side", "[graph][svg]") {
+    for (std::uint64_t seed : {3u, 11u}) {
+        GeneratorOptions g;
+        g.count = 12;
+        g.seed = seed;
+        g.nested_fraction = Rational(1, 6);
+        Built b(generate_sites(g), false);
+        INFO("seed " << seed);
+        check_document(b);
+        check_geometry(b);
+    }
+    GeneratorOptions g;
+    g.kind = SiteKind::circles;
+    g.count = 10;
+    g.seed = 5;
+    Built b(generate_sites(g), false);
+    check_document(b);
+    check_geometry(b);
+}
+
+TEST_CASE("svg: two visible sites give one bisector unbounded both ways", "[graph][svg]") {
+    // Two ellipses and one hidden in the first.
+    std::vector<Ellipse> sites = {Ellipse(Rational(4), Rational(1), Rational(1, 3), Rational(0), Rational(0)),
+                                  Ellipse(Rational(2), Rational(3, 2), Rational(0), Rational(9), Rational(2)),
+                                  Ellipse::circle(Rational(1, 2), Rational(0), Rational(1, 2))};
+    Built b(sites);
+    check_document(b);
+    REQUIRE(b.diagram.arcs.size() == 1);
+    CHECK(b.diagram.arcs[0].from_infinity);
+    CHECK(b.diagram.arcs[0].to_infinity);
+    check_geometry(b);
+}
+
+TEST_CASE("svg: a single site and no site draw no Voronoi edge", "[graph][svg]") {
+    Built one({Ellipse::circle(Rational(0), Rational(0), Rational(1))});
+    check_document(one);
+    CHECK(one.diagram.arcs.empty());
+    Built none(std::vector<Ellipse>{});
+    CHECK(check_xml(none.svg) == "");
+    CHECK(count(none.svg, "<ellipse ") == 0);
+}
+
+TEST_CASE("svg: the tracer's parametrization runs along the arc of tangency angles", "[graph][svg]") {
+    // Two unit circles at (0, 0) and (4, 0): the bisector is the line x = 2,
+    // and the tangency angle on the first decreases from top to bottom.
+    const EllipseShape p = EllipseShape::of(Ellipse::circle(Rational(0), Rational(0), Rational(1)));
+    const EllipseShape q = EllipseShape::of(Ellipse::circle(Rational(4), Rational(0), Rational(1)));
+    TraceOptions o;
+    o.box = {-2, -4, 6, 4};
+    o.tolerance = 0.04;
+    const auto pts = trace_bisector(p, q, std::nullopt, std::nullopt, o);
+    REQUIRE(pts.size() > 10);
+    CHECK(pts.front().y > 4);
+    CHECK(pts.back().y < -4);
+    for (const BisectorPoint& pt : pts) CHECK(pt.x == Approx(2).margin(1e-9));
+    for (std::size_t k = 1; k < pts.size(); ++k) CHECK(pts[k].y < pts[k - 1].y);
+    // Between two given angles (+45 and -45 degrees on p): from (2, 2) down to (2, -2).
+    const auto part = trace_bisector(p, q, kPi / 4, -kPi / 4, o);
+    REQUIRE(part.size() >= 2);
+    CHECK(part.front().y == Approx(2).margin(1e-9));
+    CHECK(part.back().y == Approx(-2).margin(1e-9));
+}
+
+TEST_CASE("svg: ellvor build --svg writes the drawing; --svg-ids needs --svg", "[graph][svg][cli]") {
+    ellvor::test::ScratchDirectory dir;
+    const std::string example = std::string(ELLVOR_SOURCE_DIR) + "/data/example.ell";
+    const auto r = dir.ellvor("build '" + example + "' --svg '" + dir.path() + "/d.svg' --svg-ids");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    const std::string svg = ellvor::test::read_file(dir.path() + "/d.svg");
+    CHECK(check_xml(svg) == "");
+    CHECK(count(svg, "<ellipse ") == 20);
+    CHECK(attribute(svg, "data-hidden") == 4);
+    const auto bad = dir.ellvor("build '" + example + "' --svg-ids");
+    CHECK(bad.status == 2);
+    const auto help = dir.ellvor("build --help");
+    CHECK(ellvor::test::contains(help.out, "0.5% of the drawing box"));
+}
