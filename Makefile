@@ -1,6 +1,6 @@
 # ellvor — build, test, run, benchmark. See README.md.
 #   make run       install missing Debian packages, build, check the bundled example (300
-#                  ellipses, 30 nested) and build its Delaunay graph (build/example-graph.json)
+#                  ellipses, 30 nested) and build its Delaunay graph (build/example-graph.json, .svg)
 #   make test      install missing packages, build and run the whole test suite
 #   make sanitize  the test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #   make bench     build and run the benchmark programs under experiments/
@@ -62,8 +62,8 @@ $(BUILD)/experiments/%: experiments/%.cpp $(LIBRARY)
 run: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR)
 	$(ELLVOR) check data/example-300.ell --describe
-	$(ELLVOR) build data/example-300.ell --validate --stats --json $(BUILD)/example-graph.json
-	@echo "Delaunay graph written to $(BUILD)/example-graph.json"
+	$(ELLVOR) build data/example-300.ell --validate --stats --json $(BUILD)/example-graph.json --svg $(BUILD)/example-graph.svg
+	@echo "Delaunay graph written to $(BUILD)/example-graph.json, drawing to $(BUILD)/example-graph.svg"
 
 test: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS)
