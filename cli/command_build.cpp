@@ -93,9 +93,16 @@ int run(const std::vector<std::string>& args) {
     const bool progress = ::isatty(2) && sites.size() > 1000;
     const auto start = std::chrono::steady_clock::now();
     DelaunayGraph graph(sites);
-    graph.insert_all([&](std::size_t done, std::size_t total) {
-        if (progress && (done % 200 == 0 || done == total)) std::fprintf(stderr, "\rinserted %zu of %zu", done, total);
-    });
+    try {
+        graph.insert_all([&](std::size_t done, std::size_t total) {
+            if (progress && (done % 200 == 0 || done == total)) std::fprintf(stderr, "\rinserted %zu of %zu", done, total);
+        });
+    } catch (const IntersectingSites& e) {
+        if (progress) std::fprintf(stderr, "\n");
+        throw InputError(file.name, file.lines[e.second()], 1,
+                         "site " + std::to_string(e.second()) + " intersects site " + std::to_string(e.first()) +
+                             " (line " + std::to_string(file.lines[e.first()]) + "); sites must be disjoint or nested");
+    }
     if (progress) std::fprintf(stderr, "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -1,5 +1,7 @@
 #include "graph/delaunay_traits.hpp"
 
+#include <algorithm>
+
 #include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
@@ -38,7 +40,7 @@ bool DelaunayTraits::is_hidden(SiteId p, SiteId q) {
     const RelativePositionResult r = relative_position_decided(site(p), site(q));
     stats_.is_hidden.stages.record(r.stage);
     if (r.position == RelativePosition::intersecting)
-        throw Error("invalid input: sites " + ids({p, q}) + " intersect (sites must be disjoint or nested)");
+        throw IntersectingSites(std::min(p, q), std::max(p, q));
     bool q_in_p = false, p_in_q = false;
     switch (r.position) {
         case RelativePosition::second_inside:

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <cstddef>
 #include <string>
 
 namespace ellvor {
@@ -18,6 +19,23 @@ public:
     InputError(const std::string& file, long line, long column, const std::string& what)
         : Error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what) {}
     explicit InputError(const std::string& message) : Error(message) {}
+};
+
+// Two input sites whose boundaries cross (not a valid pair of sites): thrown
+// by the algorithms that discover it, with the ids, so that a caller that
+// knows the file can point at the lines.
+class IntersectingSites : public InputError {
+public:
+    IntersectingSites(std::size_t first, std::size_t second)
+        : InputError("invalid input: sites " + std::to_string(first) + " and " + std::to_string(second) +
+                     " intersect (sites must be disjoint or nested)"),
+          first_(first),
+          second_(second) {}
+    std::size_t first() const { return first_; }
+    std::size_t second() const { return second_; }
+
+private:
+    std::size_t first_, second_;
 };
 
 }  // namespace ellvor
