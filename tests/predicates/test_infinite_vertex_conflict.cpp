@@ -79,6 +79,26 @@ TEST_CASE("kappa2 on 1000 random disjoint circle triples agrees with the closed 
                       << " exact " << counters.decided[2]);
     CHECK(conflicts > 200);
     CHECK(conflicts < 800);
+    CHECK(counters.decided[0] > 950);  // random triples: the filter decides almost all
+}
+
+TEST_CASE("kappa2's exact stage alone agrees with the closed form", "[predicates][infinite_vertex_conflict]") {
+    Rng rng(4242);
+    InfiniteVertexConflictOptions exact_only;
+    exact_only.use_filter = false;
+    int n = 0;
+    while (n < 200) {
+        oracle::Circle c1{rnd(rng, -10, 10, 97), rnd(rng, -10, 10, 89), rnd_pos(rng, 2, 53)};
+        oracle::Circle c2{rnd(rng, -10, 10, 83), rnd(rng, -10, 10, 79), rnd_pos(rng, 2, 47)};
+        oracle::Circle q{rnd(rng, -10, 10, 71), rnd(rng, -10, 10, 67), rnd_pos(rng, 2, 43)};
+        if (!circles_apart(c1, c2) || !circles_apart(c1, q) || !circles_apart(c2, q)) continue;
+        ++n;
+        const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), eq = q.ellipse();
+        INFO(oracle::ell({&e1, &e2, &eq}));
+        const SignDecision got = infinite_vertex_conflict(e1, e2, eq, exact_only);
+        CHECK(got.stage == Stage::exact);
+        CHECK(got.sign == oracle::infinite_vertex_conflict(c1, c2, q).sign);
+    }
 }
 
 TEST_CASE("kappa2 constructed tangencies on the bitangents y = 1 and y = -1, i-points included", "[predicates][infinite_vertex_conflict]") {
