@@ -352,3 +352,31 @@ TEST_CASE("incircle decides well-separated quadruples with a large Voronoi circl
         CHECK(solver.certify());
     }
 }
+
+TEST_CASE("incircle: the four-circle filter agrees with the general cascade", "[predicates][incircle]") {
+    // Rational (non-dyadic) circles, so the filter's double enclosures are wide
+    // enough to matter; every answer it gives must be the cascade's.
+    std::mt19937_64 rng(909);
+    InCircleOptions no_filter;
+    no_filter.use_filter = false;
+    int n = 0, by_filter = 0;
+    while (n < 400) {
+        std::array<apollonius::Circle, 4> c;
+        for (auto& k : c) {
+            k = {Rational(std::uniform_int_distribution<long>(-1000, 1000)(rng), 7UL),
+                 Rational(std::uniform_int_distribution<long>(-1000, 1000)(rng), 3UL),
+                 Rational(std::uniform_int_distribution<long>(1, 400)(rng), 11UL)};
+        }
+        bool ok = true;
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) ok = ok && apart(c[i], c[j]);
+        if (!ok) continue;
+        ++n;
+        const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse(), q = c[3].ellipse();
+        INFO(apollonius::ell({&e1, &e2, &e3, &q}));
+        const InCircleDecision fast = incircle(e1, e2, e3, q), slow = incircle(e1, e2, e3, q, no_filter);
+        CHECK(fast.result == slow.result);
+        by_filter += fast.stage == Stage::filter;
+    }
+    CHECK(by_filter > 350);
+}
