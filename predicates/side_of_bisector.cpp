@@ -102,12 +102,38 @@ int circle_filter(const Ellipse& e1, const Ellipse& e2, Interval px, Interval py
     return d1.hi < d2.lo ? 1 : d2.hi < d1.lo ? -1 : 0;
 }
 
+// sign(sqrt(A) - sqrt(B) - delta) for rationals A, B >= 0, exactly: the sign
+// of sqrt(A) - sqrt(B) is that of A - B; when it and delta have the same sign,
+// compare the squares (A + B - delta^2)^2 and 4AB.
+int sign_of_root_difference(const Rational& A, const Rational& B, const Rational& delta) {
+    const int u = (A - B).sign(), d = delta.sign();
+    if (d == 0) return u;
+    if (u != d) return u != 0 ? u : -d;
+    const Rational M = A + B - delta * delta;
+    // |sqrt(A) - sqrt(B)|^2 - delta^2 = M - 2 sqrt(AB)
+    const int magnitude = M.sign() <= 0 ? (M.is_zero() && (A * B).is_zero() ? 0 : -1)
+                                        : (M * M - Rational(4) * A * B).sign();
+    return u * magnitude;
+}
+
+// Two circles, exactly: d_i = |p - c_i| - r_i, and the sign of d2 - d1.
+int circle_exact(const Ellipse& e1, const Ellipse& e2, const Point& p) {
+    auto squared = [&](const Ellipse& e) {
+        const Rational dx = p.x - e.xc(), dy = p.y - e.yc();
+        return dx * dx + dy * dy;
+    };
+    return sign_of_root_difference(squared(e2), squared(e1), e2.a() - e1.a());
+}
+
 }  // namespace
 
 SignDecision side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
                               const SideOfBisectorOptions& options) {
-    if (options.use_filter && e1.is_circle() && e2.is_circle())
-        if (int s = circle_filter(e1, e2, enclose(p.x), enclose(p.y))) return {s, Stage::filter, 53};
+    if (e1.is_circle() && e2.is_circle()) {
+        if (options.use_filter)
+            if (int s = circle_filter(e1, e2, enclose(p.x), enclose(p.y))) return {s, Stage::filter, 53};
+        return {circle_exact(e1, e2, p), Stage::exact, 0};
+    }
     // Which side of each boundary p is on: inside one and outside the other
     // decides at once (signed distances).
     const Interval px = enclose(p.x), py = enclose(p.y);

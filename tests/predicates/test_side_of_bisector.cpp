@@ -70,6 +70,26 @@ TEST_CASE("kappa1 on 1000 random circle cases agrees with the closed form", "[pr
     CHECK(counters.decided[0] > 0);
 }
 
+TEST_CASE("kappa1's exact circle path alone agrees with the closed form", "[predicates][side_of_bisector]") {
+    // Without the filter two circles go straight to the exact comparison of
+    // |p - c1| - r1 and |p - c2| - r2 (square roots compared by squaring).
+    Rng rng(12);
+    SideOfBisectorOptions exact_only;
+    exact_only.use_filter = false;
+    for (int i = 0; i < 1000; ++i) {
+        oracle::Circle c1{rnd(rng, -10, 10, 97), rnd(rng, -10, 10, 89), rnd_pos(rng, 2, 53)};
+        oracle::Circle c2{rnd(rng, -10, 10, 83), rnd(rng, -10, 10, 79), rnd_pos(rng, 2, 47)};
+        Point p{rnd(rng, -12, 12, 101), rnd(rng, -12, 12, 103)};
+        if (i % 3 == 1) p = {c1.x + c1.r * rnd(rng, -1, 1, 7) / Rational(2), c1.y};  // inside c1
+        if (i % 5 == 2) c2.r = c1.r;                                                 // equal radii
+        const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse();
+        INFO(replay(e1, e2, p));
+        const SignDecision got = side_of_bisector(e1, e2, p, exact_only);
+        CHECK(got.stage == Stage::exact);
+        CHECK(got.sign == oracle::side_of_bisector(c1, c2, p));
+    }
+}
+
 TEST_CASE("kappa1 on the seed's circle datasets (1), (2a-c), (3)", "[predicates][side_of_bisector]") {
     // Circles (-2,0) and (2,0) of radius 1. Dataset (1), read as the path from
     // (0,-100) up the bisector x = 0 to the origin, then along the center line to
