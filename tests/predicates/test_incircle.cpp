@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <tuple>
 
 using namespace ellvor;
 
@@ -379,4 +380,24 @@ TEST_CASE("incircle: the four-circle filter agrees with the general cascade", "[
         by_filter += fast.stage == Stage::filter;
     }
     CHECK(by_filter > 350);
+}
+
+TEST_CASE("incircle: a Voronoi center exactly on Q's boundary is a conflict", "[predicates][incircle]") {
+    // The seed's InCircle set (1) at y = 1: the Voronoi circle of the three
+    // circles is the unit circle at the origin, and Q = circle (0, 1) r 1 passes
+    // through its center: no precision can place the center inside or outside
+    // Q, but d(V, Q) = 0 < rho. (The four-circle filter is off so that the
+    // general path is the one tested.)
+    const Ellipse e1 = Ellipse::circle(-3, 0, 2), e2 = Ellipse::circle(0, -2, 1), e3 = Ellipse::circle(Rational(3, 2), 0, Rational(1, 2));
+    const Ellipse q = Ellipse::circle(0, 1, 1);
+    InCircleOptions general;
+    general.use_filter = false;
+    for (const auto& [a, b, c] : {std::tuple{&e1, &e2, &e3}, {&e1, &e3, &e2}}) {
+        const InCircleDecision d = incircle(*a, *b, *c, q, general);
+        INFO(apollonius::ell({a, b, c, &q}) << show(d));
+        if (d.result == InCircle::no_circle) continue;  // the clockwise order
+        CHECK(d.result == InCircle::conflict);
+        CHECK(d.stage == Stage::subdivision);
+        CHECK(d.precision == 64);
+    }
 }
