@@ -299,22 +299,16 @@ std::string stage_triple(const PredicateCount& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool full = false;
-    std::string out_dir;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--full"))
-            full = true;
-        else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
-            out_dir = argv[++i];
-        else {
-            std::cerr << "usage: build_scaling [--full] [--out DIR]\n"
+    ellvor::experiments::BenchArguments args;
+    if (!ellvor::experiments::parse_bench_arguments(argc, argv, "build_scaling",
+                                                    "usage: build_scaling [--full] [--out DIR]\n"
                          "  --full     also n = 10^4 (about a minute)\n"
-                         "  --out DIR  write DIR/build_scaling.csv, .md and .svg\n";
-            return 2;
-        }
-    }
-    std::string command = "build/experiments/build_scaling";
-    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+                         "  --out DIR  write DIR/build_scaling.csv, .md and .svg\n",
+                                                    args))
+        return 2;
+    const bool full = args.full;
+    const std::string& out_dir = args.out_dir;
+    const std::string& command = args.command;
 
     std::vector<long> ns = {5, 10, 15, 20, 25, 100, 1000};
     if (full) ns.push_back(10000);

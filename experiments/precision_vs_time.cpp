@@ -199,22 +199,16 @@ std::string fmt(const char* f, double x) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool full = false;
-    std::string out_dir;
-    for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--full"))
-            full = true;
-        else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
-            out_dir = argv[++i];
-        else {
-            std::cerr << "usage: precision_vs_time [--full] [--out DIR]\n"
+    ellvor::experiments::BenchArguments args;
+    if (!ellvor::experiments::parse_bench_arguments(argc, argv, "precision_vs_time",
+                                                    "usage: precision_vs_time [--full] [--out DIR]\n"
                          "  --full     also certify 10^6 bits (once per triple; minutes in total)\n"
-                         "  --out DIR  write DIR/precision_vs_time.csv and DIR/precision_vs_time.md\n";
-            return 2;
-        }
-    }
-    std::string command = "build/experiments/precision_vs_time";
-    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+                         "  --out DIR  write DIR/precision_vs_time.csv and DIR/precision_vs_time.md\n",
+                                                    args))
+        return 2;
+    const bool full = args.full;
+    const std::string& out_dir = args.out_dir;
+    const std::string& command = args.command;
 
     std::vector<long> bit_list = {53, 900, 2000, 12000, 24000, 100000};
     if (full) bit_list.push_back(1000000);

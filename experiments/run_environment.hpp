@@ -47,4 +47,31 @@ inline std::string loadavg() {
     return a + " " + b + " " + c;
 }
 
+// The common command line of the experiments: [--full] [--out DIR].
+struct BenchArguments {
+    bool full = false;
+    std::string out_dir;  // empty: print only
+    std::string command;  // as typed, for the results file
+};
+
+// Parses the common command line; on anything else prints `usage` and
+// returns false.
+inline bool parse_bench_arguments(int argc, char** argv, const std::string& name, const char* usage,
+                                  BenchArguments& args) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--full") {
+            args.full = true;
+        } else if (a == "--out" && i + 1 < argc) {
+            args.out_dir = argv[++i];
+        } else {
+            std::fputs(usage, stderr);
+            return false;
+        }
+    }
+    args.command = "build/experiments/" + name;
+    for (int i = 1; i < argc; ++i) args.command += std::string(" ") + argv[i];
+    return true;
+}
+
 }  // namespace ellvor::experiments
