@@ -163,26 +163,35 @@ double cgal_time(const std::function<int(int)>& call, int n) {
     return (now_us() - t0) / (double(reps) * n);
 }
 
-Row bench_kappa1(const std::string& set) {
-    Row row;
-    row.predicate = "κ1 side_of_bisector";
-    row.set = set;
-    const std::vector<K1> data = kappa1_set(set);
+// Times kPasses passes of `call` over n instances (per-call wall time), records
+// the deciding stages and errors of the first pass into `row`, and returns its signs.
+template <class Call>
+std::vector<int> measure(Row& row, size_t n, Call call) {
     std::vector<double> times;
-    std::vector<int> signs(data.size());
+    std::vector<int> signs(n);
     for (int pass = 0; pass < kPasses; ++pass)
-        for (size_t i = 0; i < data.size(); ++i) {
+        for (size_t i = 0; i < n; ++i) {
             const double t0 = now_us();
             try {
-                const SignDecision d = side_of_bisector(data[i].e1, data[i].e2, data[i].p);
+                const SignDecision d = call(i);
                 times.push_back(now_us() - t0);
-                if (pass == 0) { row.stages.record(d.stage); signs[i] = d.sign; }
+                if (pass == 0) row.stages.record(d.stage), signs[i] = d.sign;
             } catch (const std::exception&) {
                 times.push_back(now_us() - t0);
                 if (pass == 0) ++row.errors;
             }
         }
     summarize(times, row);
+    return signs;
+}
+
+Row bench_kappa1(const std::string& set) {
+    Row row;
+    row.predicate = "κ1 side_of_bisector";
+    row.set = set;
+    const std::vector<K1> data = kappa1_set(set);
+    const std::vector<int> signs =
+        measure(row, data.size(), [&](size_t i) { return side_of_bisector(data[i].e1, data[i].e2, data[i].p); });
     if (data[0].circles) {
         Traits traits;
         auto pred = traits.oriented_side_of_bisector_2_object();
@@ -205,21 +214,8 @@ Row bench_kappa2(const std::string& set) {
     row.predicate = "κ2 infinite_vertex_conflict";
     row.set = set;
     const std::vector<K2> data = kappa2_set(set);
-    std::vector<double> times;
-    std::vector<int> signs(data.size());
-    for (int pass = 0; pass < kPasses; ++pass)
-        for (size_t i = 0; i < data.size(); ++i) {
-            const double t0 = now_us();
-            try {
-                const SignDecision d = infinite_vertex_conflict(data[i].e1, data[i].e2, data[i].q);
-                times.push_back(now_us() - t0);
-                if (pass == 0) { row.stages.record(d.stage); signs[i] = d.sign; }
-            } catch (const std::exception&) {
-                times.push_back(now_us() - t0);
-                if (pass == 0) ++row.errors;
-            }
-        }
-    summarize(times, row);
+    const std::vector<int> signs =
+        measure(row, data.size(), [&](size_t i) { return infinite_vertex_conflict(data[i].e1, data[i].e2, data[i].q); });
     if (data[0].circles) {
         Traits traits;
         auto pred = traits.vertex_conflict_2_object();
