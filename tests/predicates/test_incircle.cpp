@@ -13,6 +13,8 @@
 
 #include <CGAL/Apollonius_graph_filtered_traits_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "tests/support/random_sites.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -138,19 +140,9 @@ TEST_CASE("incircle on random ellipse quadruples: which stage decided", "[predic
     // A random non-degenerate case is decided by the subdivision stage at the
     // start precision; no_circle cases report the stage of the kappa2 calls.
     Rng rng(2718);
-    auto rnd = [&](long lo, long hi, long den) {
-        std::uniform_int_distribution<long> n(lo * den, hi * den);
-        return Rational(n(rng), static_cast<unsigned long>(den));
-    };
-    auto rnd_pos = [&](long lo_num, long hi_num, long den) {
-        std::uniform_int_distribution<long> n(lo_num, hi_num);
-        return Rational(n(rng), static_cast<unsigned long>(den));
-    };
-    auto bounding_apart = [](const Ellipse& a, const Ellipse& b) {
-        const Rational r = std::max(a.a(), a.b()) + std::max(b.a(), b.b());
-        const Rational dx = a.xc() - b.xc(), dy = a.yc() - b.yc();
-        return dx * dx + dy * dy > r * r;
-    };
+    auto rnd = [&](long lo, long hi, long den) { return ellvor::test::random_fraction(rng, lo * den, hi * den, den); };
+    auto rnd_pos = [&](long lo_num, long hi_num, long den) { return ellvor::test::random_fraction(rng, lo_num, hi_num, den); };
+    const auto bounding_apart = ellvor::test::bounding_circles_apart;
     int total = 0, decided_at_start = 0, decided_higher = 0, undecided = 0, no_circle = 0;
     StageCounters stages, no_circle_stages;
     while (total < 200) {

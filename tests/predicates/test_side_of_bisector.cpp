@@ -5,6 +5,8 @@
 #include "predicates/side_of_bisector.hpp"
 #include "tests/predicates/circle_oracles.hpp"
 
+#include "tests/support/random_sites.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -24,12 +26,7 @@ Rational ten_to_minus(int k) {
     return r;
 }
 
-// Bounding circles (radius max(a, b)) apart: a sufficient test for disjointness.
-bool bounding_apart(const Ellipse& e1, const Ellipse& e2) {
-    const Rational r = std::max(e1.a(), e1.b()) + std::max(e2.a(), e2.b());
-    const Rational dx = e1.xc() - e2.xc(), dy = e1.yc() - e2.yc();
-    return dx * dx + dy * dy > r * r;
-}
+using ellvor::test::bounding_circles_apart;
 
 std::string replay(const Ellipse& e1, const Ellipse& e2, const Point& p) {
     return oracle::ell({&e1, &e2}) + oracle::ell_point(p);
@@ -207,7 +204,7 @@ TEST_CASE("kappa1 ellipse ties by symmetry are ZERO, decided exactly", "[predica
         for (const Ellipse* e2 : {&half, &mirror}) {
             tie(e1, *e2, p);
             if (side < 0) ++inside;
-            else if (bounding_apart(e1, *e2)) ++outside_disjoint;
+            else if (bounding_circles_apart(e1, *e2)) ++outside_disjoint;
             else ++outside_overlap;
         }
     }

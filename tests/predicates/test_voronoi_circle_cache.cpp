@@ -5,6 +5,8 @@
 #include "predicates/voronoi_circle_cache.hpp"
 #include "util/error.hpp"
 
+#include "tests/support/random_sites.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -147,20 +149,9 @@ TEST_CASE("cache: incircle refines the cached solver once and reuses it", "[pred
 
 TEST_CASE("cache: incircle with and without the cache agree on random quadruples", "[predicates][cache]") {
     std::mt19937_64 rng(8080);
-    auto rnd = [&](long lo, long hi, long den) {
-        std::uniform_int_distribution<long> n(lo * den, hi * den);
-        return Rational(n(rng), static_cast<unsigned long>(den));
-    };
-    auto rnd_pos = [&](long lo_num, long hi_num, long den) {
-        std::uniform_int_distribution<long> n(lo_num, hi_num);
-        return Rational(n(rng), static_cast<unsigned long>(den));
-    };
-    // Disjoint bounding circles make the ellipses disjoint.
-    auto apart = [](const Ellipse& a, const Ellipse& b) {
-        const Rational r = std::max(a.a(), a.b()) + std::max(b.a(), b.b());
-        const Rational dx = a.xc() - b.xc(), dy = a.yc() - b.yc();
-        return dx * dx + dy * dy > r * r;
-    };
+    auto rnd = [&](long lo, long hi, long den) { return ellvor::test::random_fraction(rng, lo * den, hi * den, den); };
+    auto rnd_pos = [&](long lo_num, long hi_num, long den) { return ellvor::test::random_fraction(rng, lo_num, hi_num, den); };
+    const auto apart = ellvor::test::bounding_circles_apart;
     // A pool of 9 sites, ellipses and circles; quadruples of pool ids.
     std::vector<Ellipse> pool;
     while (pool.size() < 9) {

@@ -8,6 +8,8 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/predicates/apollonius_oracle.hpp"
 
+#include "tests/support/random_sites.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -34,12 +36,7 @@ Rational rnd_pos(Rng& rng, long lo_num, long hi_num, long den) {
 
 bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
-// Bounding circles (radius max(a, b)) strictly apart.
-bool bounding_apart(const Ellipse& e1, const Ellipse& e2) {
-    const Rational r = std::max(e1.a(), e1.b()) + std::max(e2.a(), e2.b());
-    const Rational dx = e1.xc() - e2.xc(), dy = e1.yc() - e2.yc();
-    return dx * dx + dy * dy > r * r;
-}
+using ellvor::test::bounding_circles_apart;
 
 bool contains(const Ball& big, const Ball& small) { return arb_contains(big.get(), small.get()) != 0; }
 
@@ -76,7 +73,7 @@ TEST_CASE("Voronoi circle enclosure contains the closed-form circle of 300+ rand
         apollonius::Circle c[3];
         for (auto& ci : c) ci = {rnd(rng, -12, 12, 37), rnd(rng, -12, 12, 41), rnd_pos(rng, 10, 160, 43)};
         const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse();
-        if (!bounding_apart(e1, e2) || !bounding_apart(e1, e3) || !bounding_apart(e2, e3)) continue;
+        if (!bounding_circles_apart(e1, e2) || !bounding_circles_apart(e1, e3) || !bounding_circles_apart(e2, e3)) continue;
         INFO(apollonius::ell({&e1, &e2, &e3}));
         const apollonius::Result o = apollonius::voronoi_circles(c[0], c[1], c[2], 4096);
         if (!o.certain) {
@@ -177,7 +174,7 @@ TEST_CASE("Voronoi circle of a four-fold symmetric ellipse triple is known exact
                           {Rational(1, 10UL), Rational(1, 20UL), Rational(1, 3UL)}, {7, 2, 11}};
     for (const Case& c : cases) {
         const Ellipse e1(c.a, c.b, 0, c.d, 0), e2(c.a, c.b, 1, 0, c.d), e3(c.a, c.b, 0, -c.d, 0);
-        REQUIRE(bounding_apart(e1, e2));
+        REQUIRE(bounding_circles_apart(e1, e2));
         INFO(apollonius::ell({&e1, &e2, &e3}));
         VoronoiCircleSolver s(e1, e2, e3);
         REQUIRE(s.certify());
@@ -220,7 +217,7 @@ TEST_CASE("Voronoi circle of a mirror-symmetric ellipse triple is centered on th
         const Rational w3 = (iter % 2) ? Rational(1) : Rational(0);
         const Rational y3 = y0 - rnd_pos(rng, 10, 80, 10);
         const Ellipse e1(a, b, w, x0, y0), e2(a, b, -w, -x0, y0), e3(a3, b3, w3, 0, y3);
-        if (!bounding_apart(e1, e2) || !bounding_apart(e1, e3) || !bounding_apart(e2, e3)) continue;
+        if (!bounding_circles_apart(e1, e2) || !bounding_circles_apart(e1, e3) || !bounding_circles_apart(e2, e3)) continue;
         const VoronoiCircles count = voronoi_circle_count(e1, e2, e3);
         INFO(apollonius::ell({&e1, &e2, &e3}) << "count " << voronoi_circles_name(count));
         VoronoiCircleSolver s(e1, e2, e3);
@@ -259,7 +256,7 @@ TEST_CASE("Voronoi circle enclosures of random ellipse triples are nested and ta
         for (auto& ei : e)
             ei = Ellipse(rnd_pos(rng, 2, 40, 10), rnd_pos(rng, 2, 40, 10), rnd(rng, -3, 3, 13), rnd(rng, -12, 12, 11),
                          rnd(rng, -12, 12, 7));
-        if (!bounding_apart(e[0], e[1]) || !bounding_apart(e[0], e[2]) || !bounding_apart(e[1], e[2])) continue;
+        if (!bounding_circles_apart(e[0], e[1]) || !bounding_circles_apart(e[0], e[2]) || !bounding_circles_apart(e[1], e[2])) continue;
         INFO(apollonius::ell({&e[0], &e[1], &e[2]}));
         const VoronoiCircles count = voronoi_circle_count(e[0], e[1], e[2]);
         INFO("count " << voronoi_circles_name(count));
