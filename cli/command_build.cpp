@@ -129,6 +129,7 @@ int run(const std::vector<std::string>& args) {
     }
     if (parsed.has("--json")) {
         nlohmann::json j;
+        j["sites"] = nlohmann::json::array();
         for (const Ellipse& e : sites) j["sites"].push_back(e.str());
         j["hidden"] = nlohmann::json::array();
         for (const auto& [h, by] : hidden) j["hidden"].push_back({h, by});
