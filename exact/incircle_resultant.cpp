@@ -44,19 +44,6 @@ private:
     nmod_poly_t p_;
 };
 
-// RAII over fmpz_poly_factor_t.
-class IntFactorization {
-public:
-    IntFactorization() { fmpz_poly_factor_init(f_); }
-    IntFactorization(const IntFactorization&) = delete;
-    IntFactorization& operator=(const IntFactorization&) = delete;
-    ~IntFactorization() { fmpz_poly_factor_clear(f_); }
-    fmpz_poly_factor_struct* get() { return f_; }
-
-private:
-    fmpz_poly_factor_t f_;
-};
-
 mp_limb_t pow_mod(mp_limb_t a, long e, nmod_t mod) { return n_powmod2_ui_preinv(a, static_cast<ulong>(e), mod.n, mod.ninv); }
 
 // The resultant of f and g (coefficients low first, the last one nonzero:

@@ -11,15 +11,6 @@ namespace ellvor {
 
 namespace {
 
-// Owns an fmpz_poly_factor_t.
-struct FactorList {
-    fmpz_poly_factor_t f;
-    FactorList() { fmpz_poly_factor_init(f); }
-    ~FactorList() { fmpz_poly_factor_clear(f); }
-    FactorList(const FactorList&) = delete;
-    FactorList& operator=(const FactorList&) = delete;
-};
-
 // Primitive part with positive leading coefficient.
 IntPolynomial normalized(const IntPolynomial& p) {
     IntPolynomial r;
@@ -300,12 +291,12 @@ std::vector<std::pair<IntPolynomial, int>> squarefree_factors(const IntPolynomia
     if (p.is_zero()) throw Error("squarefree_factors: zero polynomial");
     std::vector<std::pair<IntPolynomial, int>> result;
     if (p.degree() == 0) return result;
-    FactorList fac;
-    fmpz_poly_factor_squarefree(fac.f, p.get());
-    for (long i = 0; i < fac.f->num; ++i) {
-        IntPolynomial f(fac.f->p + i);
+    IntFactorization fac;
+    fmpz_poly_factor_squarefree(fac.get(), p.get());
+    for (long i = 0; i < fac.get()->num; ++i) {
+        IntPolynomial f(fac.get()->p + i);
         if (f.degree() < 1) continue;
-        result.emplace_back(normalized(f), static_cast<int>(fac.f->exp[i]));
+        result.emplace_back(normalized(f), static_cast<int>(fac.get()->exp[i]));
     }
     return result;
 }

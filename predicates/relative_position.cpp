@@ -1,8 +1,8 @@
 #include "predicates/relative_position.hpp"
 
+#include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
 
-#include <flint/fmpz_poly_factor.h>
 
 #include <algorithm>
 
@@ -40,15 +40,9 @@ ContactPoints contact_points(const IntPolynomial& quartic) {
     ContactPoints c;
     const long at_infinity = kIntersectionFormalDegree - quartic.degree();
     if (at_infinity > 0) (at_infinity % 2 ? c.crossing : c.touching) = true;
-    fmpz_poly_factor_t f;
-    fmpz_poly_factor_init(f);
-    fmpz_poly_factor_squarefree(f, quartic.get());
-    for (slong i = 0; i < f->num; ++i) {
-        if (fmpz_poly_degree(f->p + i) < 1) continue;
-        // Exact root count of a squarefree factor of degree <= 4 (cheap here).
-        if (fmpz_poly_num_real_roots(f->p + i) > 0) (f->exp[i] % 2 ? c.crossing : c.touching) = true;
-    }
-    fmpz_poly_factor_clear(f);
+    for (const auto& [factor, exponent] : squarefree_factors(quartic))
+        if (factor.degree() >= 1 && !isolate_real_roots(factor).empty())
+            (exponent % 2 ? c.crossing : c.touching) = true;
     return c;
 }
 

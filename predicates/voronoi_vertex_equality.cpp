@@ -98,11 +98,9 @@ std::optional<bool> ContactComparison::same_contact_point() {
         Ball wa = ta, wb = tb;
         for (Ball* w : {&wa, &wb}) {
             arb_set_round(w->get(), w->get(), k + 16);  // short ends, so exact counting stays cheap
-            mag_t r;
-            mag_init(r);
-            mag_set_ui_2exp_si(r, 1, -k);
-            if (mag_cmp(r, arb_radref(w->get())) > 0) mag_set(arb_radref(w->get()), r);
-            mag_clear(r);
+            Mag r;
+            mag_set_ui_2exp_si(r.get(), 1, -k);
+            if (mag_cmp(r.get(), arb_radref(w->get())) > 0) mag_set(arb_radref(w->get()), r.get());
         }
         Rational alo, ahi, blo, bhi;
         ball_endpoints(wa, alo, ahi);

@@ -118,15 +118,13 @@ IntPolynomial line_at(const LinePolynomials& l, const std::array<Integer, 3>& q)
 IntPolynomial sylvester_resultant(const std::vector<IntPolynomial>& f, const std::vector<IntPolynomial>& g) {
     const long m = static_cast<long>(f.size()) - 1, n = static_cast<long>(g.size()) - 1;
     const long size = m + n;
-    fmpz_poly_mat_t s;
-    fmpz_poly_mat_init(s, size, size);
+    IntPolynomialMatrix s(size, size);
     for (long i = 0; i < n; ++i)  // n shifted rows of f
-        for (long k = 0; k <= m; ++k) fmpz_poly_set(fmpz_poly_mat_entry(s, i, i + k), f[m - k].get());
+        for (long k = 0; k <= m; ++k) fmpz_poly_set(s.at(i, i + k), f[m - k].get());
     for (long i = 0; i < m; ++i)  // m shifted rows of g
-        for (long k = 0; k <= n; ++k) fmpz_poly_set(fmpz_poly_mat_entry(s, n + i, i + k), g[n - k].get());
+        for (long k = 0; k <= n; ++k) fmpz_poly_set(s.at(n + i, i + k), g[n - k].get());
     IntPolynomial det;
-    fmpz_poly_mat_det(det.get(), s);
-    fmpz_poly_mat_clear(s);
+    fmpz_poly_mat_det(det.get(), s.get());
     return det;
 }
 

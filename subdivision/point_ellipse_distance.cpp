@@ -74,12 +74,10 @@ bool certified_outside_distance(const Ellipse& q, const Ball& x, const Ball& y, 
     // well above both the rounding level and V's own radius.
     Ball T = t, r;
     mag_set_ui_2exp_si(arb_radref(r.get()), 1, -prec + 24);
-    mag_t spread;
-    mag_init(spread);
-    mag_add(spread, arb_radref(x.get()), arb_radref(y.get()));
-    mag_mul_2exp_si(spread, spread, 6);
-    mag_add(arb_radref(r.get()), arb_radref(r.get()), spread);
-    mag_clear(spread);
+    Mag spread;
+    mag_add(spread.get(), arb_radref(x.get()), arb_radref(y.get()));
+    mag_mul_2exp_si(spread.get(), spread.get(), 6);
+    mag_add(arb_radref(r.get()), arb_radref(r.get()), spread.get());
     arb_add_error(T.get(), r.get());
     normal_condition(chart.evaluate(t, prec, false), x, y, h, nullptr, prec);
     normal_condition(chart.evaluate(T, prec), x, y, step, &dh, prec);

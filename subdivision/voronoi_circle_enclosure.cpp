@@ -19,12 +19,7 @@ constexpr long kCertifyPrecisionLimit = 1024;
 long ball_bits(const arb_t x) {
     if (arb_is_exact(x)) return LONG_MAX;
     if (!arb_is_finite(x)) return LONG_MIN;
-    arf_t absmid;
-    arf_init(absmid);
-    arf_abs(absmid, arb_midref(x));
-    const bool big = arf_cmp_si(absmid, 1) >= 0;
-    arf_clear(absmid);
-    if (big) return arb_rel_accuracy_bits(x);
+    if (arf_cmpabs_2exp_si(arb_midref(x), 0) >= 0) return arb_rel_accuracy_bits(x);  // |mid| >= 1
     // rad = m 2^e with m < 1: at least -e correct bits.
     return -fmpz_get_si(MAG_EXPREF(arb_radref(x)));
 }
@@ -140,18 +135,14 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
 
     BallMatrix X = midpoint_;
     for (int j = 0; j < kUnknowns; ++j) {
-        mag_t r, floor;
-        mag_init(r);
-        mag_init(floor);
-        arb_get_mag(r, YF.at(j, 0));
-        mag_mul_2exp_si(r, r, 2);
+        Mag r, floor;
+        arb_get_mag(r.get(), YF.at(j, 0));
+        mag_mul_2exp_si(r.get(), r.get(), 2);
         const long size = arf_is_zero(arb_midref(midpoint_.at(j, 0)))
                               ? 0
                               : std::max(0L, static_cast<long>(arf_abs_bound_lt_2exp_si(arb_midref(midpoint_.at(j, 0)))));
-        mag_set_ui_2exp_si(floor, 1, size - prec + kGuardBits / 4);
-        mag_add(arb_radref(X.at(j, 0)), r, floor);
-        mag_clear(r);
-        mag_clear(floor);
+        mag_set_ui_2exp_si(floor.get(), 1, size - prec + kGuardBits / 4);
+        mag_add(arb_radref(X.at(j, 0)), r.get(), floor.get());
     }
     BallMatrix F(kUnknowns, 1), J(kUnknowns, kUnknowns), YJ(kUnknowns, kUnknowns), M(kUnknowns, kUnknowns),
         D(kUnknowns, 1), K(kUnknowns, 1);

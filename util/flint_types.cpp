@@ -28,13 +28,10 @@ long Rational::bits() const {
 }
 
 double Rational::to_double() const {
-    arf_t x;
-    arf_init(x);
-    arf_set_fmpz(x, fmpq_numref(v_));
-    arf_div_fmpz(x, x, fmpq_denref(v_), 64, ARF_RND_NEAR);
-    double d = arf_get_d(x, ARF_RND_NEAR);
-    arf_clear(x);
-    return d;
+    Arf x;
+    arf_set_fmpz(x.get(), fmpq_numref(v_));
+    arf_div_fmpz(x.get(), x.get(), fmpq_denref(v_), 64, ARF_RND_NEAR);
+    return arf_get_d(x.get(), ARF_RND_NEAR);
 }
 
 std::string Rational::str() const {
@@ -75,12 +72,10 @@ std::string Ball::str(long digits) const {
 
 namespace ellvor {
 void ball_endpoints(const Ball& b, Rational& lo, Rational& hi) {
-    arf_t x;
-    arf_init(x);
-    arb_get_lbound_arf(x, b.get(), ARF_PREC_EXACT);
-    arf_get_fmpq(lo.get(), x);
-    arb_get_ubound_arf(x, b.get(), ARF_PREC_EXACT);
-    arf_get_fmpq(hi.get(), x);
-    arf_clear(x);
+    Arf x;
+    arb_get_lbound_arf(x.get(), b.get(), ARF_PREC_EXACT);
+    arf_get_fmpq(lo.get(), x.get());
+    arb_get_ubound_arf(x.get(), b.get(), ARF_PREC_EXACT);
+    arf_get_fmpq(hi.get(), x.get());
 }
 }  // namespace ellvor

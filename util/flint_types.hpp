@@ -184,3 +184,62 @@ private:
 };
 
 }  // namespace ellvor
+
+#include <flint/fmpz_poly_factor.h>
+#include <flint/fmpz_poly_mat.h>
+
+namespace ellvor {
+
+// Owners of the FLINT/Arb objects that ellvor only uses as scratch: an integer
+// polynomial factorization, an integer polynomial matrix, an Arb magnitude
+// and an Arb float. Not copyable.
+class IntFactorization {
+public:
+    IntFactorization() { fmpz_poly_factor_init(v_); }
+    IntFactorization(const IntFactorization&) = delete;
+    IntFactorization& operator=(const IntFactorization&) = delete;
+    ~IntFactorization() { fmpz_poly_factor_clear(v_); }
+    fmpz_poly_factor_struct* get() { return v_; }
+
+private:
+    fmpz_poly_factor_t v_;
+};
+
+class IntPolynomialMatrix {
+public:
+    IntPolynomialMatrix(long rows, long cols) { fmpz_poly_mat_init(v_, rows, cols); }
+    IntPolynomialMatrix(const IntPolynomialMatrix&) = delete;
+    IntPolynomialMatrix& operator=(const IntPolynomialMatrix&) = delete;
+    ~IntPolynomialMatrix() { fmpz_poly_mat_clear(v_); }
+    fmpz_poly_mat_struct* get() { return v_; }
+    fmpz_poly_struct* at(long i, long j) { return fmpz_poly_mat_entry(v_, i, j); }
+
+private:
+    fmpz_poly_mat_t v_;
+};
+
+class Mag {
+public:
+    Mag() { mag_init(v_); }
+    Mag(const Mag&) = delete;
+    Mag& operator=(const Mag&) = delete;
+    ~Mag() { mag_clear(v_); }
+    mag_struct* get() { return v_; }
+
+private:
+    mag_t v_;
+};
+
+class Arf {
+public:
+    Arf() { arf_init(v_); }
+    Arf(const Arf&) = delete;
+    Arf& operator=(const Arf&) = delete;
+    ~Arf() { arf_clear(v_); }
+    arf_struct* get() { return v_; }
+
+private:
+    arf_t v_;
+};
+
+}  // namespace ellvor

@@ -70,13 +70,11 @@ struct Interval {
 
 // An enclosure of a ball (its endpoints rounded outward).
 inline Interval enclose(const Ball& b) {
-    arf_t x;
-    arf_init(x);
-    arb_get_lbound_arf(x, b.get(), 64);
-    const double lo = arf_get_d(x, ARF_RND_FLOOR);
-    arb_get_ubound_arf(x, b.get(), 64);
-    const double hi = arf_get_d(x, ARF_RND_CEIL);
-    arf_clear(x);
+    Arf x;
+    arb_get_lbound_arf(x.get(), b.get(), 64);
+    const double lo = arf_get_d(x.get(), ARF_RND_FLOOR);
+    arb_get_ubound_arf(x.get(), b.get(), 64);
+    const double hi = arf_get_d(x.get(), ARF_RND_CEIL);
     return {lo, hi};
 }
 
