@@ -21,14 +21,15 @@ const char* const kHelp =
     "divided out and the squarefree part is kept: degree 184 for three ellipses in general\n"
     "position, lower with circles. Prints its integer coefficients one a line, constant\n"
     "term first; the polynomial is primitive (content 1) with a positive leading\n"
-    "coefficient. The coefficients come from a multi-modular computation that stops when\n"
-    "fresh primes reproduce the candidate (probabilistic, no coefficient bound).\n"
+    "coefficient. The coefficients are proven: a multi-modular computation whose primes'\n"
+    "product exceeds twice a Hadamard bound on the full resultant's coefficients, then\n"
+    "exact division over the integers.\n"
     "\n"
     "options:\n"
     "  --cin     read CGAL's circle format 'x y r' instead of .ell\n"
     "  --stats   print to stderr: degree, expected degree, the removed factors with their\n"
-    "            exponents, whether the seed's exponents held, primes used, coefficient\n"
-    "            bits and the time\n"
+    "            exponents, whether the seed's exponents held, the proven coefficient\n"
+    "            bound, primes used, coefficient bits and the time\n"
     "\n"
     "exit status: 0 done; 2 bad input (FILE must hold exactly three sites); 1 the resultant\n"
     "vanishes identically (a common component, e.g. some placements of three circles).\n";
@@ -57,6 +58,7 @@ int run(const std::vector<std::string>& args) {
         for (const auto& f : r.removed_factors) e << "  " << f.first << "  exponent " << f.second << "\n";
         e
           << "seed exponents held: " << (r.generic_exponents ? "yes" : "no") << "\n"
+          << "coefficient bound: 2^" << r.bound_bits << " (full R2)\n"
           << "primes used: " << r.primes_used << "\n"
           << "coefficient bits: " << r.coefficient_bits << "\n"
           << "seconds: " << r.seconds << "\n";

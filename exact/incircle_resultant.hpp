@@ -17,20 +17,24 @@
 // Before eliminating, every factor (1 + u^2) of Q is removed (a circle's
 // normal carries one); the bisectors have none.
 //
-// Method: multi-modular. For each word-size prime p, the wanted factor mod p
-// is interpolated from its values at t0 in Z/p; each value is
-//     res_r( R1(t0, r), B12(t0, r) ) / (known factors)(t0),
-// R1(t0, r) itself being interpolated in r from res_s(Q(t0, r0, s), B31(s, t0)).
-// Points where a leading coefficient vanishes are skipped, so every value is
-// the image of the resultant with the formal (= actual integer) degrees.
-// The factor structure (exponents, degree) is found on the first prime from
-// the full R2 mod p. The integer coefficients come from CRT (symmetric
-// residues); we stop once the candidate reproduces the images modulo
-// `verification_primes` + 1 successive fresh primes (stabilisation, then
-// re-verification), which makes a wrong answer vanishingly unlikely but is not
-// a proof (no coefficient bound is used). The small resultants use a
-// division-free (pseudo-remainder) Euclidean algorithm and the r-interpolation
-// a precomputed Lagrange basis, so a prime costs about 3-4 ms.
+// Method: multi-modular with a proven stopping rule. Modulo each word-size
+// prime p the formal double resultant
+//     R2f(t) = res_r^{(D, deg_r B12)}(R1f, B12),   R1f = res_s^{(deg_s Q, deg_s B31)}(Q, B31),
+// (every resultant a Sylvester determinant with the formal degrees,
+// D = deg_r Q * deg_s B31) is interpolated from its values at deg R2f + 1
+// points t0, each value res_r(R1f(t0, r), B12(t0, r)) with R1f(t0, r)
+// interpolated in r from res_s(Q(t0, r0, s), B31(s, t0)); a leading zero of
+// R1f(t0, .) or Q(t0, r0, .) is accounted for by the formal-degree identity
+// (only roots of lc(B31) or lc(B12) are skipped), so every value is the image
+// of one fixed integer polynomial, with no "unlucky" prime or point. A
+// Hadamard bound on the Sylvester rows over the unit torus bounds every
+// coefficient of R2f (see coefficient_bound_bits); primes are taken until
+// their product exceeds twice the bound, and CRT (symmetric residues) gives R2f
+// over Z: a proof. R2 = R2f / lc_r(B12)^(D - deg_r R1) (the actual degree,
+// proven from the same images), the known factors are divided out exactly
+// over Z (their exponents are found, not assumed), and the rest is made
+// squarefree and primitive. Images are computed by `threads` workers; a prime
+// costs about 8 ms for three ellipses (433 points).
 //
 // Caveats: a tangency at the i-point (t = infinity) shows only as a degree
 // drop, not as a root. Dividing the known factors out "while they divide"
@@ -51,8 +55,8 @@ namespace ellvor {
 struct IncircleResultantOptions {
     // The primes are the successive primes above this value (< 2^63).
     unsigned long first_prime = (1UL << 62);
-    // Fresh primes that must reproduce the candidate after it stabilised.
-    int verification_primes = 3;
+    // Workers computing modular images (0: one per hardware thread).
+    int threads = 0;
 };
 
 struct IncircleResultant {
@@ -62,24 +66,26 @@ struct IncircleResultant {
     long degree = -1;  // polynomial.degree()
     // Every factor divided out, with its exponent, as human-readable labels:
     //   "Q:(1+t^2)" etc.      factors removed from Q before eliminating,
-    //   "R1:<factor>"         exponent of the factor in R1 = res_s(Q, B31),
-    //   "R2:<factor>"         exponent in the seed's R2 = res_r(R1', B12),
-    //                         R1' = R1 without its known factors,
+    //   "R2:<factor>"         exponent of the factor in R2 = res_r(R1, B12)
+    //                         (exact, by division over Z),
     //   "square-part"         degree removed when taking the squarefree part.
     // <factor> is "1+t^2" or "parnorm12" / "parnorm13" (the parallel-normals
     // polynomial of (E1, E2) / (E1, E3)), or "parnorm12[deg d]" for an
     // irreducible factor of degree d when that polynomial is reducible.
     std::vector<std::pair<std::string, int>> removed_factors;
-    // True iff the exponents are exactly the seed's (R1: (1+t^2)^4 parnorm13;
-    // R2: (1+t^2)^28 parnorm12^6), the wanted factor is squarefree and has
-    // degree 184.
+    // True iff the exponents are exactly the seed's (Lemma 3.1: R1 carries
+    // (1+t^2)^4 parnorm13 and res_r(R1', B12) (1+t^2)^28 parnorm12^6, so R2 holds
+    // (1+t^2)^52 parnorm13^6 parnorm12^6), the wanted factor is squarefree and
+    // has degree 184.
     bool generic_exponents = false;
     // Degree of the wanted factor expected from the triple's type: 184 (no
     // circle), 72 (one circle), 24 (two), 8 (three). Informational: same-shape
     // ellipse pairs and special placements give lower degrees.
     long expected_degree = 0;
+    long r1_degree = -1;  // deg_r R1 (below the formal deg_r Q * deg_s B31 for some circles)
     long r2_degree = -1;  // degree of the full R2 = res_r(R1, B12)
-    long primes_used = 0;
+    long bound_bits = 0;   // proven bound on the bits of R2f's coefficients
+    long primes_used = 0;  // primes whose product exceeds 2^(bound_bits + 1)
     long coefficient_bits = 0;  // max bits of the coefficients of `polynomial`
     double seconds = 0;
 };

@@ -3,10 +3,12 @@
 // independently certified Voronoi circles of subdivision/voronoi_circle_enclosure.
 #include "exact/incircle_resultant.hpp"
 
+#include "sites/ellipse_polynomials.hpp"
 #include "sites/site_generators.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <arb_fmpz_poly.h>
+#include <flint/fmpz_mpoly.h>
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -98,6 +100,78 @@ bool squarefree(const IntPolynomial& p) {
     return g.degree() == 0;
 }
 
+
+// R2 = res_r(res_s(Q, B31), B12) by FLINT's generic multivariate resultant:
+// an oracle independent of our modular evaluation/interpolation, CRT and bound.
+class MultivariateOracle {
+public:
+    MultivariateOracle() { fmpz_mpoly_ctx_init(ctx_, 3, ORD_LEX); }  // variables t, r, s
+    ~MultivariateOracle() { fmpz_mpoly_ctx_clear(ctx_); }
+    MultivariateOracle(const MultivariateOracle&) = delete;
+    MultivariateOracle& operator=(const MultivariateOracle&) = delete;
+
+    IntPolynomial r2(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+        DensePolynomial Q = normals_concurrency_polynomial(e1, e2, e3);
+        for (int var = 0; var < 3; ++var) Q.remove_one_plus_square_factors(var);
+        const DensePolynomial B12 = bisector_polynomial(e1, e2), B31 = bisector_polynomial(e3, e1);
+        fmpz_mpoly_t q, b12, b31, r1, r2;
+        for (auto* p : {q, b12, b31, r1, r2}) fmpz_mpoly_init(p, ctx_);
+        set(q, Q, {0, 1, 2});
+        set(b12, B12, {0, 1, 2});
+        set(b31, B31, {2, 0, 1});  // B31's variables are (s, t)
+        REQUIRE(fmpz_mpoly_resultant(r1, q, b31, 2, ctx_));
+        REQUIRE(fmpz_mpoly_resultant(r2, r1, b12, 1, ctx_));
+        IntPolynomial out;
+        std::vector<ulong> e(3);
+        for (slong i = 0; i < fmpz_mpoly_length(r2, ctx_); ++i) {
+            fmpz_mpoly_get_term_exp_ui(e.data(), r2, i, ctx_);
+            REQUIRE(e[1] == 0);
+            REQUIRE(e[2] == 0);
+            fmpz_poly_set_coeff_fmpz(out.get(), static_cast<slong>(e[0]), fmpz_mpoly_term_coeff_ref(r2, i, ctx_));
+        }
+        for (auto* p : {q, b12, b31, r1, r2}) fmpz_mpoly_clear(p, ctx_);
+        return out;
+    }
+
+private:
+    // P's variable v becomes the oracle's variable slot[v].
+    void set(fmpz_mpoly_t out, const DensePolynomial& P, std::array<int, 3> slot) {
+        fmpz_mpoly_zero(out, ctx_);
+        for (int i = 0; i <= std::max(P.degree(0), 0); ++i)
+            for (int j = 0; j <= std::max(P.degree(1), 0); ++j)
+                for (int k = 0; k <= std::max(P.degree(2), 0); ++k) {
+                    const Integer c = P.coeff(i, j, k);
+                    std::vector<ulong> e(3, 0);
+                    e[slot[0]] += i, e[slot[1]] += j, e[slot[2]] += k;
+                    fmpz_mpoly_set_coeff_fmpz_ui(out, c.get(), e.data(), ctx_);
+                }
+    }
+    fmpz_mpoly_ctx_t ctx_;
+};
+
+// The wanted factor from a full R2 by the same definition as incircle_resultant:
+// (1+t^2) and the parallel-normals factors divided out while they divide,
+// squarefree, primitive, positive leading coefficient.
+IntPolynomial wanted_factor(IntPolynomial r2, const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    IntFactorization all;
+    for (const IntPolynomial& p : {IntPolynomial{1, 0, 1}, parallel_normals_polynomial(e1, e3),
+                                   parallel_normals_polynomial(e1, e2)}) {
+        IntFactorization f;
+        fmpz_poly_factor(f.get(), p.get());
+        for (slong i = 0; i < f.get()->num; ++i) {
+            IntPolynomial quotient;
+            while (fmpz_poly_degree(f.get()->p + i) > 0 && fmpz_poly_divides(quotient.get(), r2.get(), f.get()->p + i))
+                r2 = quotient;
+        }
+    }
+    IntPolynomial d, g;
+    fmpz_poly_derivative(d.get(), r2.get());
+    fmpz_poly_gcd(g.get(), r2.get(), d.get());
+    if (g.degree() > 0) fmpz_poly_div(r2.get(), r2.get(), g.get());
+    fmpz_poly_primitive_part(r2.get(), r2.get());
+    if (fmpz_sgn(fmpz_poly_lead(r2.get())) < 0) fmpz_poly_neg(r2.get(), r2.get());
+    return r2;
+}
 }  // namespace
 
 TEST_CASE("InCircle resultant of generic ellipse triples has degree 184 and vanishes at the Voronoi circles",
@@ -162,4 +236,39 @@ TEST_CASE("InCircle resultant with circles", "[exact][resultant]") {
         for (const Ball& t : voronoi_tangency_parameters(e[0], e[1], e[2], prec))
             CHECK(vanishes_at(r.polynomial, t, prec + 4 * r.coefficient_bits));
     }
+}
+
+TEST_CASE("InCircle resultant agrees with FLINT's multivariate resultant, within the proven bound",
+          "[exact][resultant]") {
+    std::mt19937_64 rng(91);
+    MultivariateOracle oracle;
+    // Generic ellipses (the seed's exponents), then circles: the r-degree of R1
+    // drops below the formal one there, so R2f carries lc_r(B12) powers.
+    const int masks[] = {0, 0, 1, 7};
+    bool formal_degree_dropped = false;
+    for (int mask : masks) {
+        auto e = random_triple(rng, 3, mask);
+        INFO("mask " << mask << ": " << e[0].str() << " | " << e[1].str() << " | " << e[2].str());
+        const IncircleResultant r = incircle_resultant(e[0], e[1], e[2]);
+        INFO(describe(r));
+        const IntPolynomial r2 = oracle.r2(e[0], e[1], e[2]);
+        CHECK(r2.degree() == r.r2_degree);
+        CHECK(std::labs(fmpz_poly_max_bits(r2.get())) <= r.bound_bits);  // the bound holds
+        CHECK(r.primes_used * 63 >= r.bound_bits + 2);                    // and the primes cover it
+        CHECK(wanted_factor(r2, e[0], e[1], e[2]) == r.polynomial);
+        const long formal = normals_concurrency_polynomial(e[0], e[1], e[2]).degree(1) * 6;
+        formal_degree_dropped = formal_degree_dropped || r.r1_degree < formal;
+    }
+    CHECK(formal_degree_dropped);
+}
+
+TEST_CASE("InCircle resultant does not depend on the number of workers", "[exact][resultant]") {
+    std::mt19937_64 rng(5150);
+    auto e = random_triple(rng, 6);
+    IncircleResultantOptions one, two;
+    one.threads = 1, two.threads = 2;
+    const IncircleResultant a = incircle_resultant(e[0], e[1], e[2], one), b = incircle_resultant(e[0], e[1], e[2], two);
+    CHECK(a.degree == 184);
+    CHECK(a.polynomial == b.polynomial);
+    CHECK(a.primes_used == b.primes_used);
 }
