@@ -86,10 +86,16 @@ void resultant_fraction(const SmallPolynomial& a, const SmallPolynomial& b, nmod
         // f <- prem(f, g)
         const mp_limb_t lg = g->c[n];
         for (long d = m; d >= n; --d) {
-            const mp_limb_t c = f->c[d];
-            for (long i = 0; i < d; ++i) f->c[i] = nmod_mul(f->c[i], lg, mod);
-            if (c != 0)
-                for (long i = 0; i < n; ++i) f->c[d - n + i] = nmod_sub(f->c[d - n + i], nmod_mul(c, g->c[i], mod), mod);
+            // f <- lg f - c x^(d-n) g; the two products of a coefficient are
+            // summed in 128 bits and reduced once: 2 (p - 1)^2 < 2^64 p for
+            // p < 2^63, so the high word is already below p.
+            const mp_limb_t minus_c = nmod_neg(f->c[d], mod);
+            for (long i = 0; i < d - n; ++i) f->c[i] = nmod_mul(f->c[i], lg, mod);
+            for (long i = 0; i < n; ++i) {
+                const unsigned __int128 v = static_cast<unsigned __int128>(f->c[d - n + i]) * lg +
+                                            static_cast<unsigned __int128>(minus_c) * g->c[i];
+                NMOD_RED2(f->c[d - n + i], static_cast<mp_limb_t>(v >> 64), static_cast<mp_limb_t>(v), mod);
+            }
             f->c[d] = 0;
         }
         long k = n - 1;
@@ -427,6 +433,36 @@ std::vector<PrimeImage> prime_images(mp_limb_t first_prime, long bound_bits, int
     return images;
 }
 
+// Divides the nonzero r by the largest power of f that divides it over Z and
+// returns the exponent. The exponent modulo a prime p that keeps f's degree
+// is an upper bound; one exact division by that power usually proves it
+// (a 50000-bit R2 makes each division costly, so no division one at a time).
+int divide_out(IntPolynomial& r, const IntPolynomial& f, mp_limb_t p) {
+    int e = 0;
+    NmodPoly rp(p), fp(p), q(p), rem(p);
+    fmpz_poly_get_nmod_poly(rp.get(), r.get());
+    fmpz_poly_get_nmod_poly(fp.get(), f.get());
+    if (fp.degree() == f.degree() && rp.degree() >= 0) {
+        for (;;) {
+            nmod_poly_divrem(q.get(), rem.get(), rp.get(), fp.get());
+            if (rem.degree() >= 0) break;
+            nmod_poly_swap(rp.get(), q.get());
+            ++e;
+        }
+    } else {
+        e = static_cast<int>(r.degree() / std::max(1L, f.degree()));  // the degree bound
+    }
+    IntPolynomial power, quotient;
+    for (; e > 0; --e) {
+        fmpz_poly_pow(power.get(), f.get(), static_cast<ulong>(e));
+        if (fmpz_poly_divides(quotient.get(), r.get(), power.get())) {
+            r = std::move(quotient);
+            return e;
+        }
+    }
+    return 0;
+}
+
 // Irreducible factors of 1 + t^2, parnorm(E1, E3), parnorm(E1, E2), deduplicated.
 std::vector<KnownFactor> known_factors(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     std::vector<KnownFactor> out;
@@ -527,11 +563,10 @@ IncircleResultant incircle_resultant(const Ellipse& e1, const Ellipse& e2, const
 
     // Exponents of the known factors in R2, by exact division over Z.
     std::vector<KnownFactor> known = known_factors(e1, e2, e3);
-    IntPolynomial w = r2, quotient;
+    IntPolynomial w = r2;
     std::vector<int> exponents;
     for (const KnownFactor& f : known) {
-        int e = 0;
-        while (fmpz_poly_divides(quotient.get(), w.get(), f.poly.get())) w = quotient, ++e;
+        const int e = divide_out(w, f.poly, primes.front());
         exponents.push_back(e);
         if (e > 0) result.removed_factors.emplace_back("R2:" + f.label, e);
     }
