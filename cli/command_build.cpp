@@ -51,10 +51,7 @@ constexpr std::size_t kBruteForceLimit = 300;
 nlohmann::json voronoi_vertex(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& f) {
     VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]]);
     nlohmann::json v = {{"face", f}};
-    if (!solver.refine(53)) {
-        v["center"] = nullptr;  // not certified (never seen on graph faces; reported, not guessed)
-        return v;
-    }
+    solver.refine_existing(53);  // a face of the graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& c = solver.enclosure();
     double error = 0;
     for (const Ball* b : {&c.center_x, &c.center_y, &c.radius}) error = std::max(error, b->radius_double());

@@ -22,7 +22,6 @@ const char* const kHelp =
     "  no-conflict   it does not (POSITIVE)\n"
     "  tangent       Q is externally tangent to the circle (ZERO, proven by the exact stage)\n"
     "  no-circle     the triple has no counter-clockwise Voronoi circle (NEGATIVE, CGAL's rule)\n"
-    "  undecided     the Voronoi circle could not be certified (never a guess)\n"
     "The subdivision stage (Arb) works up to --max-precision bits; beyond, the exact stage\n"
     "(degree-184 resultants) decides whether Q is tangent, and if it is not, the subdivision\n"
     "resumes until it separates.\n"
@@ -32,9 +31,10 @@ const char* const kHelp =
     "  --json                print {result, sign, stage, precision, newton_steps, time_us}\n"
     "  --max-precision BITS  precision at which the exact stage takes over (default 4096)\n"
     "\n"
-    "exit status: 0 decided; 3 undecided; 2 bad input (FILE must hold exactly four sites).\n";
-
-constexpr int kExitUndecided = 3;
+    "The Voronoi circle is always certified (from a floating-point guess, or else by an\n"
+    "exhaustive search), so every answer is decided.\n"
+    "\n"
+    "exit status: 0 decided; 2 bad input (FILE must hold exactly four sites); 1 internal error.\n";
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", false}, {"--max-precision", true}});
@@ -52,15 +52,15 @@ int run(const std::vector<std::string>& args) {
     const auto start = std::chrono::steady_clock::now();
     const InCircleDecision d = incircle(s[0], s[1], s[2], s[3], options);
     const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+    const int sign = incircle_sign(d.result);  // throws for undecided, which the exact stage rules out
     if (parsed.has("--json")) {
-        nlohmann::json j = {{"result", incircle_name(d.result)}, {"stage", stage_name(d.stage)},
+        nlohmann::json j = {{"result", incircle_name(d.result)}, {"sign", sign}, {"stage", stage_name(d.stage)},
                             {"precision", d.precision}, {"newton_steps", d.newton_steps}, {"time_us", us}};
-        j["sign"] = d.result == InCircle::undecided ? nlohmann::json(nullptr) : nlohmann::json(incircle_sign(d.result));
         std::cout << j.dump() << "\n";
     } else {
         std::cout << incircle_name(d.result) << "\n";
     }
-    return d.result == InCircle::undecided ? kExitUndecided : kExitOk;
+    return kExitOk;
 }
 
 }  // namespace

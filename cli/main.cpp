@@ -33,8 +33,7 @@ void print_program_help(std::ostream& out) {
         std::string name = c->name;
         out << "  " << name << std::string(name.size() < 18 ? 18 - name.size() : 1, ' ') << c->summary << '\n';
     }
-    out << "\nExit status: 0 success, 2 bad usage or bad input, 3 undecided (incircle, voronoi-circle),\n"
-    "1 other failure.\n";
+    out << "\nExit status: 0 success, 2 bad usage or bad input, 1 other failure.\n";
 }
 
 const Command* find_command(const std::string& name) {

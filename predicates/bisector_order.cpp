@@ -43,12 +43,11 @@ Ball BisectorFrame::position(const Ball& parameter, bool flipped, long prec) {
     return p;
 }
 
-bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec, Ball& position) {
+Ball vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec) {
     constexpr long kGuard = 16;
-    if (!solver.refine(std::max(prec - kGuard, 1L))) return false;
+    solver.refine_existing(std::max(prec - kGuard, 1L));
     const auto& c = solver.enclosure();
-    position = frame.position(c.parameter[index], c.flipped[index], prec);
-    return true;
+    return frame.position(c.parameter[index], c.flipped[index], prec);
 }
 
 std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
@@ -64,7 +63,8 @@ std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& 
             ContactComparison exact({a.sites(), &a, index_a}, {b.sites(), &b, index_b});
             std::optional<bool> same;
             for (long p = std::max(precision, kStartPrecision); !same && p <= kNonDegenerateLimit; p *= 2) {
-                if (!a.refine(p) || !b.refine(p)) return std::nullopt;
+                a.refine_existing(p);
+                b.refine_existing(p);
                 same = exact.same_contact_point();
             }
             if (!same) return std::nullopt;
@@ -72,9 +72,8 @@ std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& 
             proven_distinct = true;
         }
         precision = prec;
-        Ball pa, pb, difference;
-        if (!vertex_position(frame, a, index_a, prec, pa) || !vertex_position(frame, b, index_b, prec, pb))
-            return std::nullopt;
+        const Ball pa = vertex_position(frame, a, index_a, prec), pb = vertex_position(frame, b, index_b, prec);
+        Ball difference;
         arb_sub(difference.get(), pa.get(), pb.get(), prec);
         if (int s = difference.certain_sign()) return s;
     }

@@ -27,18 +27,21 @@ private:
     BoundaryParameter departure_;
 };
 
-// Position along the bisector frame of the Voronoi vertex certified by
-// `solver`, whose triple has the frame's E1 at `index`: refines the solver to
-// about prec bits first. False when the solver cannot certify (undecided).
-bool vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec, Ball& position);
+// Position along the bisector frame of the Voronoi vertex of `solver`'s
+// triple (which must have a counter-clockwise circle), whose triple has the
+// frame's E1 at `index`: refines the solver to about prec bits first.
+Ball vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec);
 
 // Order of two Voronoi vertices along the bisector of (E1, E2) (both circles
 // touch E1 and E2; `index` is E1's place in each triple): -1 if `a` comes
 // first from the departure end, +1 if after, 0 if they are the same vertex.
 // Subdivision up to max_precision; then the exact stage decides whether they
 // touch E1 at the same point (voronoi_vertex_equality.hpp), and if not, the
-// subdivision resumes until it separates them. nullopt only when a circle
-// cannot be certified. `precision` receives the last precision used.
+// subdivision resumes until it separates them. Both triples must have a
+// counter-clockwise circle (certification is complete: a triple without one
+// throws Error). nullopt only when the exact stage cannot isolate the
+// resultant roots within its precision limit. `precision` receives the last
+// precision used.
 std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
                                      VoronoiCircleSolver& b, int index_b, long max_precision, long& precision);
 

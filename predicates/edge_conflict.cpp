@@ -55,8 +55,8 @@ class EdgeGeometry {
 public:
     EdgeGeometry(const Ellipse& e1, const Ellipse& e2, const EdgeConflictOptions& options, long& precision)
         : frame_(e1, e2), options_(options), precision_(precision) {}
-    // -1, 0, +1 (0: the same point, proven by the exact stage); nullopt when a
-    // circle cannot be certified.
+    // -1, 0, +1 (0: the same point, proven by the exact stage); nullopt when
+    // the exact stage cannot isolate its resultant roots (order_on_bisector).
     std::optional<int> compare(const BisectorPoint& a, const BisectorPoint& b) {
         if (a.end || b.end) return a.end == b.end ? 0 : (a.end ? a.end : -b.end);
         return order_on_bisector(frame_, *a.vertex, 0, *b.vertex, 0, options_.max_precision, precision_);

@@ -99,10 +99,11 @@ int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, lon
 
 // The exact stage (seed section 3.1): Q is externally tangent to the circle
 // of (E1, E2, E3) iff that circle is also a Voronoi circle of (E1, E2, Q) or
-// (E1, Q, E2), i.e. iff one of those touches E1 at the same point. nullopt
-// when the enclosures could not be made to isolate their resultant roots.
-std::optional<bool> tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
-                                    VoronoiCircleSolver& solver, long prec) {
+// (E1, Q, E2), i.e. iff one of those touches E1 at the same point. Throws
+// Error when the enclosures cannot isolate their resultant roots within
+// kExactIsolationLimit (an internal limit).
+bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
+                     VoronoiCircleSolver& solver, long prec) {
     const VoronoiCircles with_q = voronoi_circle_count(e1, e2, q);
     std::vector<std::array<const Ellipse*, 3>> candidates;
     if (with_q == VoronoiCircles::ccw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &e2, &q});
@@ -112,10 +113,13 @@ std::optional<bool> tangent_exactly(const Ellipse& e1, const Ellipse& e2, const 
         ContactComparison comparison({{&e1, &e2, &e3}, &solver, 0}, {triple, &other, 0});
         std::optional<bool> same;
         for (long p = std::max(prec, kStartPrecision); !same && p <= kExactIsolationLimit; p *= 2) {
-            if (!solver.refine(p) || !other.refine(p)) return std::nullopt;
+            solver.refine_existing(p);
+            other.refine_existing(p);  // its existence is what voronoi_circle_count said
             same = comparison.same_contact_point();
         }
-        if (!same) return std::nullopt;
+        if (!same)
+            throw Error("incircle: the exact stage could not isolate the resultant roots within " +
+                        std::to_string(kExactIsolationLimit) + " bits (internal limit)");
         if (*same) return true;
     }
     return false;
@@ -154,19 +158,19 @@ InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e
         if (prec > options.max_precision && !proven_nonzero) {
             if (!options.exact_stage) return d;  // undecided at the cap
             d.stage = Stage::exact;
-            const auto tangent = tangent_exactly(e1, e2, e3, q, *solver, d.precision);
+            const bool tangent = tangent_exactly(e1, e2, e3, q, *solver, d.precision);
             d.newton_steps = solver->enclosure().newton_steps;
-            if (!tangent) return d;
-            if (*tangent) {
+            if (tangent) {
                 d.result = InCircle::tangent;
                 return d;
             }
             proven_nonzero = true;
         }
         d.precision = prec;
-        const bool ok = solver->refine(std::max(prec - kEnclosureGuard, 1L));
+        // The count said the circle exists: certification is complete, so
+        // "no circle" here would be an internal contradiction (thrown).
+        solver->refine_existing(std::max(prec - kEnclosureGuard, 1L));
         d.newton_steps = solver->enclosure().newton_steps;
-        if (!ok) return d;  // no certificate: undecided
         if (int s = distance_minus_radius(solver->enclosure(), q, prec)) {
             d.result = s < 0 ? InCircle::conflict : InCircle::no_conflict;
             return d;

@@ -15,8 +15,8 @@ enum class InCircle {
     no_conflict,  // POSITIVE
     tangent,      // ZERO: Q externally tangent to the circle (proven by the exact stage)
     no_circle,    // NEGATIVE by CGAL's rule: the triple has no counter-clockwise Voronoi circle
-    undecided,    // the Voronoi circle could not be certified, or (exact_stage = false)
-                  // the subdivision stage reached its precision cap
+    undecided,    // only with exact_stage = false: the subdivision stage reached its
+                  // precision cap (the certification of the circle itself is complete)
 };
 
 const char* incircle_name(InCircle r);

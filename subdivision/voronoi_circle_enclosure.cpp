@@ -1,6 +1,7 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include "subdivision/voronoi_circle_guess.hpp"
+#include "util/error.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -13,7 +14,16 @@ namespace {
 constexpr int kUnknowns = 6;  // t1, t2, t3, rho, x, y
 constexpr long kStartPrecision = 64;
 constexpr long kGuardBits = 32;
-constexpr long kCertifyPrecisionLimit = 1024;
+// Guesses are tried at 5 precisions (64 .. 1024 bits for sites of moderate
+// magnitude), 4 Newton steps each.
+constexpr int kGuessLevels = 5;
+constexpr int kGuessSteps = 4;
+// Search attempts: 3 precisions from the box's, Newton converging within 6
+// steps at each.
+constexpr int kSearchLevels = 3;
+constexpr int kSearchSteps = 6;
+// Refinement of a certified circle: precision doublings before giving up.
+constexpr int kRefineLevels = 4;
 
 // Bits of accuracy of a ball: relative for |mid| >= 1, absolute below.
 long ball_bits(const arb_t x) {
@@ -52,17 +62,24 @@ long VoronoiCircleEnclosure::correct_bits() const {
 VoronoiCircleSolver::VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3)
     : sites_{&e1, &e2, &e3} {}
 
+std::array<const BoundaryChart*, 3> VoronoiCircleSolver::charts() const {
+    std::array<const BoundaryChart*, 3> out{};
+    for (int i = 0; i < 3; ++i) out[i] = &site_charts_[2 * i + (enclosure_.flipped[i] ? 1 : 0)];
+    return out;
+}
+
 namespace {
 
+using Charts = std::array<const BoundaryChart*, 3>;
+
 // F(X) and, when J is given, its Jacobian over the box X.
-void tritangent_system(const std::vector<BoundaryChart>& charts, const BallMatrix& X, BallMatrix& F, BallMatrix* J,
-                       long prec) {
+void tritangent_system(const Charts& charts, const BallMatrix& X, BallMatrix& F, BallMatrix* J, long prec) {
     const arb_struct* rho = X.at(3, 0);
     Ball tmp;
     for (int i = 0; i < 3; ++i) {
         Ball t;
         arb_set(t.get(), X.at(i, 0));
-        const BoundaryChart::Local q = charts[i].evaluate(t, prec, J != nullptr);
+        const BoundaryChart::Local q = charts[i]->evaluate(t, prec, J != nullptr);
         // F = P + rho nu - V
         arb_mul(tmp.get(), rho, q.nx.get(), prec);
         arb_add(F.at(2 * i, 0), q.px.get(), tmp.get(), prec);
@@ -82,6 +99,25 @@ void tritangent_system(const std::vector<BoundaryChart>& charts, const BallMatri
     }
 }
 
+// det(P2 - P1, P3 - P1) at the chart parameters X(0..2): positive iff the
+// tangency points are counter-clockwise.
+Ball orientation(const Charts& charts, const BallMatrix& X, long prec) {
+    std::array<BoundaryChart::Local, 3> p{};
+    for (int i = 0; i < 3; ++i) {
+        Ball t;
+        arb_set(t.get(), X.at(i, 0));
+        p[i] = charts[i]->evaluate(t, prec, false);
+    }
+    Ball ux, uy, vx, vy, orient;
+    arb_sub(ux.get(), p[1].px.get(), p[0].px.get(), prec);
+    arb_sub(uy.get(), p[1].py.get(), p[0].py.get(), prec);
+    arb_sub(vx.get(), p[2].px.get(), p[0].px.get(), prec);
+    arb_sub(vy.get(), p[2].py.get(), p[0].py.get(), prec);
+    arb_mul(orient.get(), ux.get(), vy.get(), prec);
+    arb_submul(orient.get(), uy.get(), vx.get(), prec);
+    return orient;
+}
+
 }  // namespace
 
 // Precision of the Jacobian for a Newton step at precision prec: half is
@@ -92,10 +128,10 @@ long VoronoiCircleSolver::newton_step(long prec) {
     const long jprec = jacobian_precision(prec);
     BallMatrix F(kUnknowns, 1), Fj(kUnknowns, 1), J(kUnknowns, kUnknowns), step(kUnknowns, 1);
     if (jprec >= prec) {
-        tritangent_system(charts_, midpoint_, F, &J, prec);
+        tritangent_system(charts(), midpoint_, F, &J, prec);
     } else {
-        tritangent_system(charts_, midpoint_, F, nullptr, prec);
-        tritangent_system(charts_, midpoint_, Fj, &J, jprec);
+        tritangent_system(charts(), midpoint_, F, nullptr, prec);
+        tritangent_system(charts(), midpoint_, Fj, &J, jprec);
     }
     if (!arb_mat_approx_solve(step.get(), J.get(), F.get(), jprec)) return -1;
     for (int j = 0; j < kUnknowns; ++j) {
@@ -124,10 +160,10 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     const long low = std::min(prec, kLowPrecision);
     BallMatrix Fm(kUnknowns, 1), Flow(kUnknowns, 1), Jm(kUnknowns, kUnknowns), Y(kUnknowns, kUnknowns);
     if (low >= prec) {
-        tritangent_system(charts_, midpoint_, Fm, &Jm, prec);
+        tritangent_system(charts(), midpoint_, Fm, &Jm, prec);
     } else {
-        tritangent_system(charts_, midpoint_, Fm, nullptr, prec);
-        tritangent_system(charts_, midpoint_, Flow, &Jm, low);
+        tritangent_system(charts(), midpoint_, Fm, nullptr, prec);
+        tritangent_system(charts(), midpoint_, Flow, &Jm, low);
     }
     if (!arb_mat_approx_inv(Y.get(), Jm.get(), kLowPrecision)) return false;
     BallMatrix YF(kUnknowns, 1);
@@ -146,7 +182,7 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     }
     BallMatrix F(kUnknowns, 1), J(kUnknowns, kUnknowns), YJ(kUnknowns, kUnknowns), M(kUnknowns, kUnknowns),
         D(kUnknowns, 1), K(kUnknowns, 1);
-    tritangent_system(charts_, X, F, &J, low);
+    tritangent_system(charts(), X, F, &J, low);
     arb_mat_mul(YJ.get(), Y.get(), J.get(), kLowPrecision);
     arb_mat_one(M.get());
     arb_mat_sub(M.get(), M.get(), YJ.get(), kLowPrecision);
@@ -158,21 +194,10 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
         if (!arb_contains_interior(X.at(j, 0), K.at(j, 0))) return false;
     // The root in K: a counter-clockwise circle of positive radius?
     if (!arb_is_positive(K.at(3, 0))) return false;
-    std::array<BoundaryChart::Local, 3> p{};
-    for (int i = 0; i < 3; ++i) {
-        Ball t;
-        arb_set(t.get(), K.at(i, 0));
-        p[i] = charts_[i].evaluate(t, kLowPrecision, false);
-    }
-    Ball ux, uy, vx, vy, orient, tmp;
-    arb_sub(ux.get(), p[1].px.get(), p[0].px.get(), kLowPrecision);
-    arb_sub(uy.get(), p[1].py.get(), p[0].py.get(), kLowPrecision);
-    arb_sub(vx.get(), p[2].px.get(), p[0].px.get(), kLowPrecision);
-    arb_sub(vy.get(), p[2].py.get(), p[0].py.get(), kLowPrecision);
-    arb_mul(orient.get(), ux.get(), vy.get(), kLowPrecision);
-    arb_mul(tmp.get(), uy.get(), vx.get(), kLowPrecision);
-    arb_sub(orient.get(), orient.get(), tmp.get(), kLowPrecision);
-    if (!arb_is_positive(orient.get())) return false;
+    // The tangency points' coordinates cancel in the orientation: it needs
+    // their magnitude's bits on top of the low precision.
+    const long orientation_prec = std::min(prec, kLowPrecision + magnitude_bits(midpoint_));
+    if (!arb_is_positive(orientation(charts(), K, orientation_prec).get())) return false;
 
     for (int i = 0; i < 3; ++i) arb_set(enclosure_.parameter[i].get(), K.at(i, 0));
     arb_set(enclosure_.radius.get(), K.at(3, 0));
@@ -183,38 +208,102 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     return true;
 }
 
+long VoronoiCircleSolver::start_precision() {
+    if (magnitude_bits_ < 0) magnitude_bits_ = site_magnitude_bits(*sites_[0], *sites_[1], *sites_[2]);
+    return kStartPrecision + std::max(0L, magnitude_bits_ - kGuardBits);
+}
+
 bool VoronoiCircleSolver::certify() {
     if (certified_) return true;
     for_each_voronoi_circle_guess(*sites_[0], *sites_[1], *sites_[2], [&](const VoronoiCircleGuess& guess) {
         return certified_ = certify_from(guess);
     });
+    return certified_ || certify_by_search();
+}
+
+bool VoronoiCircleSolver::certify_by_search(const VoronoiCircleSearchOptions& options) {
+    const VoronoiCircleSearchResult result = search_voronoi_circle(
+        *sites_[0], *sites_[1], *sites_[2], [&](const VoronoiCircleStart& start) { return certify_from(start); },
+        options);
+    certified_ = result.found;
+    if (!certified_) enclosure_ = VoronoiCircleEnclosure{};
+    enclosure_.search_boxes = result.boxes;
     return certified_;
+}
+
+void VoronoiCircleSolver::start_at(const std::array<bool, 3>& flipped, const std::array<Ball, 3>& parameter,
+                                   const Ball& radius, const Ball& center_x, const Ball& center_y) {
+    // Built on first use: most solvers of a graph's cache are never certified.
+    if (site_charts_.empty()) {
+        site_charts_.reserve(6);
+        for (const Ellipse* e : sites_)
+            for (bool f : {false, true}) site_charts_.emplace_back(*e, f);
+    }
+    enclosure_ = VoronoiCircleEnclosure{};
+    enclosure_.flipped = flipped;
+    for (int i = 0; i < 3; ++i) arb_set(midpoint_.at(i, 0), parameter[i].get());
+    arb_set(midpoint_.at(3, 0), radius.get());
+    arb_set(midpoint_.at(4, 0), center_x.get());
+    arb_set(midpoint_.at(5, 0), center_y.get());
+}
+
+bool VoronoiCircleSolver::certify_here(long first, int levels, int steps) {
+    long prec = first;
+    for (int level = 0; level < levels; ++level, prec *= 2)
+        for (int it = 0; it < steps; ++it) {
+            if (newton_step(prec) < 0) break;  // singular here: try a higher precision
+            if (krawczyk(prec)) return true;
+        }
+    return false;
 }
 
 bool VoronoiCircleSolver::certify_from(const VoronoiCircleGuess& guess) {
     // Chart: t = tan(theta/2) for |theta| <= pi/2, else u = -1/t = -cot(theta/2).
-    charts_.clear();
-    enclosure_ = VoronoiCircleEnclosure{};
+    std::array<bool, 3> flipped{};
+    std::array<Ball, 3> parameter;
     for (int i = 0; i < 3; ++i) {
         const double theta = guess.theta[i];
-        const bool flipped = std::fabs(theta) > M_PI / 2;
-        charts_.emplace_back(*sites_[i], flipped);
-        enclosure_.flipped[i] = flipped;
-        arb_set_d(midpoint_.at(i, 0), flipped ? -1 / std::tan(theta / 2) : std::tan(theta / 2));
+        flipped[i] = std::fabs(theta) > M_PI / 2;
+        arb_set_d(parameter[i].get(), flipped[i] ? -1 / std::tan(theta / 2) : std::tan(theta / 2));
     }
-    arb_set_d(midpoint_.at(3, 0), guess.radius);
-    arb_set_d(midpoint_.at(4, 0), guess.x);
-    arb_set_d(midpoint_.at(5, 0), guess.y);
+    // The guess's center is relative to E1's center: add it back exactly
+    // (then round to the start precision, which covers the sites' magnitude).
+    const long first = start_precision();
+    Ball radius, center_x(sites_[0]->xc(), first), center_y(sites_[0]->yc(), first), offset;
+    arb_set_d(radius.get(), guess.radius);
+    arb_set_d(offset.get(), guess.x);
+    arb_add(center_x.get(), center_x.get(), offset.get(), first);
+    arb_get_mid_arb(center_x.get(), center_x.get());
+    arb_set_d(offset.get(), guess.y);
+    arb_add(center_y.get(), center_y.get(), offset.get(), first);
+    arb_get_mid_arb(center_y.get(), center_y.get());
+    start_at(flipped, parameter, radius, center_x, center_y);
     // Ill-conditioned triples (huge circles of nearly collinear sites) need
-    // more than the start precision before the Krawczyk test can pass.
-    for (long prec = kStartPrecision; prec <= kCertifyPrecisionLimit; prec *= 2) {
-        // The floating-point guess is good to about 50 bits: one step reaches
-        // the start precision; more only when the certificate fails.
-        bool singular = false;
-        for (int it = 0; it < 4 && !singular; ++it) {
-            singular = newton_step(prec) < 0;
-            if (!singular && krawczyk(prec)) return true;
+    // more than the start precision before the Krawczyk test can pass. The
+    // floating-point guess is good to about 50 bits: one step reaches the
+    // start precision; more only when the certificate fails.
+    return certify_here(first, kGuessLevels, kGuessSteps);
+}
+
+bool VoronoiCircleSolver::certify_from(const VoronoiCircleStart& start) {
+    start_at(start.flipped, start.parameter, start.radius, start.center_x, start.center_y);
+    long prec = std::max(start.precision, start_precision());
+    for (int level = 0; level < kSearchLevels; ++level, prec *= 2) {
+        // Near a regular root every Newton step gains bits until rounding
+        // stops it (an ill-conditioned root: below prec - kGuardBits); far
+        // from one Newton wanders: give up rather than spend a certificate.
+        long step = 0;
+        for (int it = 0; it < kSearchSteps && step < prec - kGuardBits; ++it) {
+            const long previous = step;
+            if ((step = newton_step(prec)) < 0) return false;
+            if (it > 0 && step <= previous) break;
         }
+        if (step < prec / 2) return false;
+        // A root of the wrong kind (rho <= 0, clockwise) would fail Krawczyk's
+        // final test: skip it cheaply.
+        if (arf_sgn(arb_midref(midpoint_.at(3, 0))) <= 0) return false;
+        if (arf_sgn(arb_midref(orientation(charts(), midpoint_, prec).get())) <= 0) return false;
+        if (krawczyk(prec)) return true;
     }
     return false;
 }
@@ -223,15 +312,28 @@ bool VoronoiCircleSolver::refine(long bits) {
     if (!certify()) return false;
     if (enclosure_.correct_bits() >= bits) return true;
     // Newton converges quadratically: one uncertified step per doubling of
-    // the precision, then a certificate at the target precision.
-    const long target = bits + 2 * kGuardBits + magnitude_bits(midpoint_);
-    for (long prec = 2 * enclosure_.precision; prec < target; prec *= 2)
-        if (newton_step(prec) < 0) return certified_ = false;
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        if (newton_step(target) < 0) return certified_ = false;
-        if (krawczyk(target) && enclosure_.correct_bits() >= bits) return true;
+    // the precision, then a certificate at the target precision; should that
+    // fail, again from the certified midpoint at twice the target.
+    const BallMatrix certified_midpoint = midpoint_;
+    long target = bits + 2 * kGuardBits + magnitude_bits(midpoint_);
+    for (int level = 0; level < kRefineLevels; ++level, target *= 2) {
+        midpoint_ = certified_midpoint;
+        bool singular = false;
+        for (long prec = 2 * enclosure_.precision; prec < target && !singular; prec *= 2)
+            singular = newton_step(prec) < 0;
+        for (int attempt = 0; attempt < 3 && !singular; ++attempt) {
+            singular = newton_step(target) < 0;
+            if (!singular && krawczyk(target) && enclosure_.correct_bits() >= bits) return true;
+        }
     }
-    return certified_ = false;
+    throw Error("VoronoiCircleSolver: a certified Voronoi circle could not be refined to " + std::to_string(bits) +
+                " bits (internal error)");
+}
+
+void VoronoiCircleSolver::refine_existing(long bits) {
+    if (!refine(bits))
+        throw Error("VoronoiCircleSolver: the search proved that a triple known to have a counter-clockwise Voronoi "
+                    "circle has none (internal error)");
 }
 
 }  // namespace ellvor

@@ -12,11 +12,17 @@
 // the outward normal ray of P_i), so the circle touches every E_i from outside
 // and its open disk misses all three; with the tangency points
 // counter-clockwise this is the unique counter-clockwise Voronoi circle.
+//
+// Where the certificate starts: first from floating-point guesses
+// (voronoi_circle_guess.hpp); when none certifies, from the exhaustive search
+// (voronoi_circle_search.hpp), which either certifies the circle or proves
+// that there is none.
 #pragma once
 
 #include "sites/ellipse.hpp"
 #include "subdivision/boundary_chart.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
+#include "subdivision/voronoi_circle_search.hpp"
 
 #include <array>
 #include <vector>
@@ -31,6 +37,10 @@ struct VoronoiCircleEnclosure {
     Ball radius, center_x, center_y;
     long precision = 0;     // working precision of the last certificate
     long newton_steps = 0;  // Arb Newton steps so far (all precisions)
+    // How the circle was found: 0 = a floating-point guess certified; > 0 =
+    // the boxes the exhaustive search examined (also when it proved that
+    // there is no circle).
+    long search_boxes = 0;
 
     // Tangency parameter t_i on E_i (an unbounded ball when the box holds the i-point).
     Ball tangency_parameter(int i, long prec) const;
@@ -44,13 +54,22 @@ public:
     VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
     // Finds and certifies the counter-clockwise Voronoi circle at about 64
-    // bits. False when no certificate could be made (no floating-point
-    // solution, or Krawczyk failed): the caller must treat that as undecided.
+    // bits (more for sites far from the origin relative to their size): from
+    // the floating-point guesses, then by the exhaustive search. False means
+    // proved: the triple has no counter-clockwise Voronoi circle. Throws
+    // Error only for a degenerate triple on which the search hits its cap.
     bool certify();
-    // Refines a certified enclosure until every component has at least `bits`
-    // correct bits, doubling the working precision; reuses the current
-    // enclosure. False if a certificate fails on the way (undecided).
+    // The exhaustive search alone (tests and experiments force this path);
+    // the same contract as certify().
+    bool certify_by_search(const VoronoiCircleSearchOptions& options = {});
+    // Refines the enclosure until every component has at least `bits`
+    // correct bits, doubling the working precision; certifies first if
+    // needed. False only when certify() is (no counter-clockwise circle);
+    // throws Error if a certified circle cannot be refined (internal error).
     bool refine(long bits);
+    // refine(bits) for callers that established that the circle exists (e.g.
+    // by voronoi_circle_count): "no circle" contradicts them and throws Error.
+    void refine_existing(long bits);
 
     bool certified() const { return certified_; }
     const std::array<const Ellipse*, 3>& sites() const { return sites_; }
@@ -58,13 +77,29 @@ public:
 
 private:
     bool certify_from(const VoronoiCircleGuess& guess);
+    // A cheap attempt from the midpoint of a search box: Newton at the box's
+    // precision must converge to a counter-clockwise root of positive radius
+    // before Krawczyk is tried, at a few doublings of that precision.
+    bool certify_from(const VoronoiCircleStart& start);
+    // Sets the charts and the exact midpoint (chart parameters, rho, V).
+    void start_at(const std::array<bool, 3>& flipped, const std::array<Ball, 3>& parameter, const Ball& radius,
+                  const Ball& center_x, const Ball& center_y);
+    // Newton steps and the Krawczyk test at `levels` doublings of the
+    // precision from `first`, `steps` tries at each.
+    bool certify_here(long first, int levels, int steps);
+    // Start precision of a certificate: 64 bits, plus the bits by which the
+    // sites' magnitude exceeds their size beyond the guard bits.
+    long start_precision();
     bool krawczyk(long prec);
     // One Newton step on the midpoint; returns the step's size in bits below
     // the values (larger = smaller step), or -1 if the Jacobian is singular.
     long newton_step(long prec);
+    // The charts of the current midpoint (enclosure_.flipped).
+    std::array<const BoundaryChart*, 3> charts() const;
 
     std::array<const Ellipse*, 3> sites_;
-    std::vector<BoundaryChart> charts_;  // chosen from the floating-point guess
+    std::vector<BoundaryChart> site_charts_;  // site i, flipped f at 2 i + f (built by start_at)
+    long magnitude_bits_ = -1;  // site_magnitude_bits, computed on first use
     BallMatrix midpoint_{6, 1};  // exact midpoint of the current box
     VoronoiCircleEnclosure enclosure_;
     bool certified_ = false;

@@ -16,14 +16,18 @@ namespace {
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
-// An ellipse in doubles: semi-axes, rotation (cos, sin), center.
+// An ellipse in doubles: semi-axes, rotation (cos, sin), center relative to
+// the frame's origin.
 struct Shape {
     double a, b, c, s, x, y;
 };
 
-Shape shape_of(const Ellipse& e) {
+// The center is subtracted exactly before rounding, so the shapes keep the
+// triple's relative geometry however far from (0, 0) it lies.
+Shape shape_of(const Ellipse& e, const Point& origin) {
     const auto& k = e.enclosure();
-    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), k.xc.mid(), k.yc.mid()};
+    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - origin.x).to_double(),
+            (e.yc() - origin.y).to_double()};
 }
 
 // Residual F(X) and Jacobian J(X) of P_i + rho nu_i - V = 0, X = (theta1..3, rho, x, y).
@@ -260,7 +264,8 @@ bool equidistant_point_search(const std::array<Shape, 3>& e, const std::function
 
 bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
                                    const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
-    const std::array<Shape, 3> e = {shape_of(e1), shape_of(e2), shape_of(e3)};
+    const Point origin = e1.center();
+    const std::array<Shape, 3> e = {shape_of(e1, origin), shape_of(e2, origin), shape_of(e3, origin)};
     std::vector<Vector6> tried;
     // Offers a solution unless an equal one was offered already.
     auto offer = [&](const Vector6& X) {

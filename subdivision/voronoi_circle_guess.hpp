@@ -15,6 +15,9 @@ namespace ellvor {
 // another form): the angles theta_i of the tangency points
 // P_i = C_i + R_i (a_i cos theta_i, b_i sin theta_i), the radius rho and the
 // center V, with P_i + rho nu_i(theta_i) = V (nu_i the outward unit normal).
+// The center (x, y) is relative to E1's center: V = C_1 + (x, y). The guesses
+// are computed in that frame (each site's center minus C_1, exactly, then
+// rounded), so they do not depend on where the triple lies in the plane.
 struct VoronoiCircleGuess {
     std::array<double, 3> theta;
     double radius, x, y;

@@ -167,7 +167,7 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
     CHECK(has(r.out, "voronoi circles: cw\n"));
 }
 
-TEST_CASE("incircle: conflict, no-conflict, no-circle and an undecided degenerate case", "[cli]") {
+TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent case", "[cli]") {
     Scratch s;
     // Unit circles at (6,0), (0,6), (-6,0), counter-clockwise: Voronoi circle
     // centered at the origin, radius 5.
@@ -210,9 +210,9 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and an undecided degenerat
     // Exactly degenerate: the ellipse (a=2, b=1, w=0) at (5, 0) and its
     // rotations by 90, 180, 270 degrees about the origin all touch the circle
     // of radius 3 at the origin: Q is tangent to the Voronoi circle. The
-    // subdivision stage cannot decide that: capped at 256 bits it either says
-    // "undecided" with exit status 3 or, when the exact stage is built in
-    // (InCircleOptions::exact_stage), hands over and proves "tangent".
+    // subdivision stage cannot decide that: capped at 256 bits it hands over
+    // to the exact stage, which proves "tangent" (the command never says
+    // undecided).
     const std::string degenerate = s.file("degenerate.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5\n");
     for (const char* json_flag : {"", " --json"}) {
         r = s.ellvor("incircle " + degenerate + " --max-precision 256" + json_flag);
@@ -222,15 +222,11 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and an undecided degenerat
             const json j = parse(r);
             word = j.at("result").get<std::string>() + "\n";
             CHECK(j.at("precision") >= 256);
-            if (word == "tangent\n") {
-                CHECK(j.at("sign") == 0);
-                CHECK(j.at("stage") == "exact");
-            } else {
-                CHECK(j.at("sign").is_null());
-            }
+            CHECK(j.at("sign") == 0);
+            CHECK(j.at("stage") == "exact");
         }
-        CHECK((word == "undecided\n" || word == "tangent\n"));
-        CHECK(r.status == (word == "undecided\n" ? 3 : 0));
+        CHECK(word == "tangent\n");
+        CHECK(r.status == 0);
         CHECK(r.err.empty());
     }
 }
@@ -291,6 +287,33 @@ TEST_CASE("voronoi-circle: certified JSON, clockwise triples, --bits", "[cli]") 
     r = s.ellvor("voronoi-circle " + ccw + " --bits many");
     CHECK(r.status == 2);
     CHECK(r.out.empty());
+}
+
+TEST_CASE("voronoi-circle: a triple 10^30 away from the origin is certified", "[cli][voronoi-circle-search]") {
+    // Once undecided (exit 3): the floating-point guesses lost the sites'
+    // relative geometry. The same triple at the origin has radius 3.0308...
+    Scratch s;
+    const std::string far = s.file("far.ell",
+                                   "4 2 0 1000000000000000000000000000000 0\n"
+                                   "3 1.5 1/3 1000000000000000000000000000010 0\n"
+                                   "2.5 2.5 0 1000000000000000000000000000005 8\n");
+    const Run r = s.ellvor("voronoi-circle " + far + " --bits 60");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+    const json j = parse(r);
+    CHECK(j.at("exists") == true);
+    CHECK(j.at("correct_bits").get<long>() >= 60);
+    CHECK(j.at("radius").get<std::string>().rfind("[3.030805524129", 0) == 0);
+    CHECK(j.at("center")[1].get<std::string>().rfind("[2.584108153271", 0) == 0);
+    CHECK(j.at("found_by") == "guess");
+    CHECK(j.at("search_boxes") == 0);
+    // No exit status 3 (undecided) is left to document.
+    const Run help = s.ellvor("voronoi-circle --help");
+    const std::size_t exit_status = help.out.find("exit status:");
+    REQUIRE(exit_status != std::string::npos);
+    CHECK(help.out.find('3', exit_status) == std::string::npos);
+    CHECK(has(help.out, "search_boxes"));
 }
 
 TEST_CASE("predicate commands: wrong site counts exit 2", "[cli]") {

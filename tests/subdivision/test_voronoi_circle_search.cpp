@@ -1,0 +1,275 @@
+// The exhaustive certified search of the Voronoi circle
+// (subdivision/voronoi_circle_search.hpp), forced through
+// VoronoiCircleSolver::certify_by_search(). Oracles: the guess path's
+// certified enclosure (two independent certificates of the unique circle
+// must overlap), the closed-form Apollonius circle for circle triples, the
+// kappa2-based count for triples without a counter-clockwise circle, and
+// translation invariance for triples far from the origin.
+#include "predicates/voronoi_circle_count.hpp"
+#include "sites/rational_parse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/random_sites.hpp"
+#include "util/error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+using Rng = std::mt19937_64;
+using ellvor::test::bounding_circles_apart;
+using ellvor::test::random_fraction;
+
+bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
+
+bool overlaps(const Ball& a, const Ball& b) { return arb_overlaps(a.get(), b.get()) != 0; }
+
+Rational exact(const std::string& token) {
+    Rational q;
+    std::string error;
+    REQUIRE(parse_rational(token, q, error));
+    return q;
+}
+
+bool has_ccw_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    const VoronoiCircles c = voronoi_circle_count(e1, e2, e3);
+    return c == VoronoiCircles::ccw_only || c == VoronoiCircles::both;
+}
+
+// A random disjoint ellipse triple (semi-axes 0.2 .. 4, centers in [-12, 12]^2).
+std::array<Ellipse, 3> random_ellipse_triple(Rng& rng) {
+    for (;;) {
+        auto draw = [&] {
+            return Ellipse(random_fraction(rng, 2, 40, 10), random_fraction(rng, 2, 40, 10),
+                           random_fraction(rng, -39, 39, 13), random_fraction(rng, -132, 132, 11),
+                           random_fraction(rng, -84, 84, 7));
+        };
+        std::array<Ellipse, 3> e = {draw(), draw(), draw()};
+        if (bounding_circles_apart(e[0], e[1]) && bounding_circles_apart(e[0], e[2]) &&
+            bounding_circles_apart(e[1], e[2]))
+            return e;
+    }
+}
+
+std::string show(const VoronoiCircleEnclosure& e) {
+    return "center (" + e.center_x.str(20) + ", " + e.center_y.str(20) + ") radius " + e.radius.str(20) +
+           " search boxes " + std::to_string(e.search_boxes) + "\n";
+}
+
+// b is a's circle translated by (dx, dy): every component overlaps.
+void check_same_circle(const VoronoiCircleEnclosure& a, const VoronoiCircleEnclosure& b, const Rational& dx = 0,
+                       const Rational& dy = 0) {
+    INFO("a: " << show(a) << "b: " << show(b));
+    constexpr long prec = 512;
+    Ball ax, ay;
+    arb_add(ax.get(), a.center_x.get(), Ball(dx, prec).get(), prec);
+    arb_add(ay.get(), a.center_y.get(), Ball(dy, prec).get(), prec);
+    CHECK(overlaps(ax, b.center_x));
+    CHECK(overlaps(ay, b.center_y));
+    CHECK(overlaps(a.radius, b.radius));
+    for (int i = 0; i < 3; ++i) {
+        // The charts overlap near |t| = 1: compare in t when they differ.
+        if (a.flipped[i] == b.flipped[i])
+            CHECK(overlaps(a.parameter[i], b.parameter[i]));
+        else
+            CHECK(overlaps(a.tangency_parameter(i, prec), b.tangency_parameter(i, prec)));
+    }
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0 : v[v.size() / 2];
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+TEST_CASE("search certifies the circle of random ellipse triples, as the guesses do",
+          "[subdivision][voronoi-circle-search]") {
+    Rng rng(314159);
+    std::vector<double> times, boxes;
+    int done = 0;
+    while (done < 24) {
+        const auto e = random_ellipse_triple(rng);
+        if (!has_ccw_circle(e[0], e[1], e[2])) continue;
+        ++done;
+        INFO(apollonius::ell({&e[0], &e[1], &e[2]}));
+        VoronoiCircleSolver guessed(e[0], e[1], e[2]);
+        REQUIRE(guessed.certify());
+        VoronoiCircleSolver searched(e[0], e[1], e[2]);
+        const auto start = std::chrono::steady_clock::now();
+        REQUIRE(searched.certify_by_search());
+        times.push_back(milliseconds_since(start));
+        CHECK(searched.certified());
+        CHECK(searched.enclosure().search_boxes > 0);
+        CHECK(searched.enclosure().radius.certain_sign() == 1);
+        boxes.push_back(static_cast<double>(searched.enclosure().search_boxes));
+        check_same_circle(guessed.enclosure(), searched.enclosure());
+        // The found circle refines like a guessed one.
+        REQUIRE(searched.refine(300));
+        CHECK(searched.enclosure().correct_bits() >= 300);
+        CHECK(searched.enclosure().search_boxes > 0);
+    }
+    if (verbose())
+        std::printf("[search/ellipses] %d triples: median %.2f ms, %.0f boxes; max %.2f ms, %.0f boxes\n", done,
+                    median(times), median(boxes), *std::max_element(times.begin(), times.end()),
+                    *std::max_element(boxes.begin(), boxes.end()));
+}
+
+TEST_CASE("search certifies the closed-form circle of random circle triples", "[subdivision][voronoi-circle-search]") {
+    Rng rng(2718);
+    std::vector<double> times, boxes;
+    int done = 0;
+    while (done < 12) {
+        apollonius::Circle c[3];
+        for (auto& k : c)
+            k = {random_fraction(rng, -444, 444, 37), random_fraction(rng, -492, 492, 41),
+                 random_fraction(rng, 10, 160, 43)};
+        const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse();
+        if (!bounding_circles_apart(e1, e2) || !bounding_circles_apart(e1, e3) || !bounding_circles_apart(e2, e3))
+            continue;
+        const apollonius::Result oracle = apollonius::voronoi_circles(c[0], c[1], c[2], 1024);
+        if (!oracle.certain || !oracle.ccw()) continue;
+        ++done;
+        INFO(apollonius::ell({&e1, &e2, &e3}));
+        VoronoiCircleSolver searched(e1, e2, e3);
+        const auto start = std::chrono::steady_clock::now();
+        REQUIRE(searched.certify_by_search());
+        times.push_back(milliseconds_since(start));
+        boxes.push_back(static_cast<double>(searched.enclosure().search_boxes));
+        const VoronoiCircleEnclosure& found = searched.enclosure();
+        CHECK(found.search_boxes > 0);
+        INFO(show(found));
+        CHECK(overlaps(found.center_x, oracle.ccw()->x));
+        CHECK(overlaps(found.center_y, oracle.ccw()->y));
+        CHECK(overlaps(found.radius, oracle.ccw()->radius));
+        VoronoiCircleSolver guessed(e1, e2, e3);
+        REQUIRE(guessed.certify());
+        check_same_circle(guessed.enclosure(), found);
+    }
+    if (verbose())
+        std::printf("[search/circles] %d triples: median %.2f ms, %.0f boxes\n", done, median(times), median(boxes));
+}
+
+TEST_CASE("search certifies huge circles (radius far beyond the sites' extent: the 1/rho branch)",
+          "[subdivision][voronoi-circle-search]") {
+    // Integer circle triples whose counter-clockwise circle has radius ~1604
+    // and ~15249 (tests/predicates/test_incircle.cpp), while the sites span
+    // less than 64: the radius lies in branch (B), s = L / rho.
+    struct Case { long v[3][3]; double radius; };
+    const Case cases[] = {{{{17, -12, 7}, {-3, -9, 4}, {-20, -4, 4}}, 1603.67},
+                          {{{1, 15, 1}, {-5, 20, 5}, {20, 14, 3}}, 15249.05}};
+    for (const Case& k : cases) {
+        const Ellipse e1 = Ellipse::circle(k.v[0][0], k.v[0][1], k.v[0][2]);
+        const Ellipse e2 = Ellipse::circle(k.v[1][0], k.v[1][1], k.v[1][2]);
+        const Ellipse e3 = Ellipse::circle(k.v[2][0], k.v[2][1], k.v[2][2]);
+        INFO(apollonius::ell({&e1, &e2, &e3}));
+        VoronoiCircleSolver searched(e1, e2, e3);
+        REQUIRE(searched.certify_by_search());
+        CHECK(searched.enclosure().search_boxes > 0);
+        CHECK(std::fabs(searched.enclosure().radius.mid_double() - k.radius) < 0.01);
+        VoronoiCircleSolver guessed(e1, e2, e3);
+        REQUIRE(guessed.certify());
+        check_same_circle(guessed.enclosure(), searched.enclosure());
+    }
+}
+
+TEST_CASE("triples far from the origin: the guesses and the search certify the translated circle",
+          "[subdivision][voronoi-circle-search]") {
+    // The triple of the file
+    //   4 2 0 X 0 / 3 1.5 1/3 X+10 0 / 2.5 2.5 0 X+5 8
+    // at X = 0, 10^14 and 10^30 (at 10^14 the guesses once lost the sites'
+    // relative geometry in doubles and the command said undecided).
+    auto triple = [](const std::string& offset) {
+        const Rational x = exact(offset);
+        return std::array<Ellipse, 3>{Ellipse(4, 2, 0, x, 0), Ellipse(3, exact("1.5"), Rational(1, 3UL), x + 10, 0),
+                                      Ellipse(exact("2.5"), exact("2.5"), 0, x + 5, 8)};
+    };
+    const auto home = triple("0");
+    VoronoiCircleSolver reference(home[0], home[1], home[2]);
+    REQUIRE(reference.certify());
+    for (const std::string offset : {"100000000000000", "1000000000000000000000000000000"}) {
+        INFO("offset " << offset);
+        const auto far = triple(offset);
+        VoronoiCircleSolver guessed(far[0], far[1], far[2]);
+        REQUIRE(guessed.certify());
+        CHECK(guessed.enclosure().search_boxes == 0);  // decided by a guess
+        check_same_circle(reference.enclosure(), guessed.enclosure(), exact(offset));
+        VoronoiCircleSolver searched(far[0], far[1], far[2]);
+        const auto start = std::chrono::steady_clock::now();
+        REQUIRE(searched.certify_by_search());
+        const double ms = milliseconds_since(start);
+        CHECK(searched.enclosure().search_boxes > 0);
+        check_same_circle(reference.enclosure(), searched.enclosure(), exact(offset));
+        REQUIRE(searched.refine(200));
+        check_same_circle(reference.enclosure(), searched.enclosure(), exact(offset));
+        if (verbose())
+            std::printf("[search/offset %s] %.2f ms, %ld boxes\n", offset.c_str(), ms,
+                        searched.enclosure().search_boxes);
+    }
+}
+
+TEST_CASE("search proves that a triple has no counter-clockwise circle", "[subdivision][voronoi-circle-search]") {
+    // Unit circles at (-6, 0), (0, 6), (6, 0): their one tangent circle (the
+    // origin, radius 5) is clockwise in this order.
+    const Ellipse c1 = Ellipse::circle(-6, 0, 1), c2 = Ellipse::circle(0, 6, 1), c3 = Ellipse::circle(6, 0, 1);
+    REQUIRE(voronoi_circle_count(c1, c2, c3) == VoronoiCircles::cw_only);
+    VoronoiCircleSolver reversed(c1, c2, c3);
+    CHECK_FALSE(reversed.certify_by_search());
+    CHECK_FALSE(reversed.certified());
+    CHECK(reversed.enclosure().search_boxes > 0);
+
+    // Random ellipse triples that the count says have none (clockwise only or
+    // neither): the search excludes every box; certify() agrees.
+    Rng rng(1618);
+    std::vector<double> times, boxes;
+    int cw_only = 0, none = 0;
+    while (cw_only < 4 || none < 2) {
+        const auto e = random_ellipse_triple(rng);
+        const VoronoiCircles count = voronoi_circle_count(e[0], e[1], e[2]);
+        if (count == VoronoiCircles::cw_only && cw_only < 4)
+            ++cw_only;
+        else if (count == VoronoiCircles::none && none < 2)
+            ++none;
+        else
+            continue;
+        INFO(apollonius::ell({&e[0], &e[1], &e[2]}) << "count " << voronoi_circles_name(count));
+        VoronoiCircleSolver searched(e[0], e[1], e[2]);
+        const auto start = std::chrono::steady_clock::now();
+        CHECK_FALSE(searched.certify_by_search());
+        times.push_back(milliseconds_since(start));
+        boxes.push_back(static_cast<double>(searched.enclosure().search_boxes));
+        CHECK(searched.enclosure().search_boxes > 0);
+        VoronoiCircleSolver full(e[0], e[1], e[2]);
+        CHECK_FALSE(full.certify());
+    }
+    if (verbose())
+        std::printf("[search/none] %zu triples: median %.2f ms, %.0f boxes\n", times.size(), median(times),
+                    median(boxes));
+}
+
+TEST_CASE("search on a degenerate triple (a line tangent to all three) stops at its cap",
+          "[subdivision][voronoi-circle-search]") {
+    // Equal collinear circles: y = 1 touches all three with the same outward
+    // normal, a solution of (B) at s = 0 that no box around it can exclude.
+    const Ellipse c1 = Ellipse::circle(0, 0, 1), c2 = Ellipse::circle(3, 0, 1), c3 = Ellipse::circle(6, 0, 1);
+    VoronoiCircleSolver solver(c1, c2, c3);
+    VoronoiCircleSearchOptions options;
+    options.max_boxes = 4000;
+    CHECK_THROWS_AS(solver.certify_by_search(options), Error);
+    CHECK_FALSE(solver.certified());
+}
