@@ -16,7 +16,8 @@ std::string str(SiteId i) { return std::to_string(i); }
 }  // namespace
 
 DelaunayGraph::DelaunayGraph(std::vector<Ellipse> sites)
-    : traits_(std::move(sites)), hidden_in_(traits_.size()), inserted_(traits_.size(), 0) {}
+    : traits_(std::move(sites)), hidden_in_(traits_.size()), inserted_(traits_.size(), 0),
+      vertex_of_site_(traits_.size(), -1) {}
 
 void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress) {
     std::vector<SiteId> order(traits_.size());
@@ -24,6 +25,8 @@ void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::s
     std::vector<Rational> area(order.size());
     for (SiteId i : order) area[i] = traits_.site(i).a() * traits_.site(i).b();
     std::stable_sort(order.begin(), order.end(), [&](SiteId x, SiteId y) { return area[y] < area[x]; });
+    // Area order jumps across the plane; the grid keeps the walk short.
+    grid_ = std::make_unique<SiteGrid>(traits_);
     std::size_t done = 0;
     for (SiteId i : order) {
         insert(i);
@@ -148,8 +151,24 @@ void DelaunayGraph::rebuild_small(std::vector<SiteId> visible) {
 
 // ---------------------------------------------------------------- general insertion
 
+void DelaunayGraph::record_vertex(SiteId p, int v) {
+    last_vertex_ = v;
+    vertex_of_site_[p] = v;
+    if (grid_) grid_->add(p);
+}
+
+int DelaunayGraph::walk_start(SiteId p) const {
+    if (grid_)
+        for (SiteId s : grid_->near(p)) {
+            const int v = vertex_of_site_[s];
+            if (v > 0 && v < static_cast<int>(tds_.vertex_capacity()) && tds_.vertex(v).alive && site_of(v) == s)
+                return v;
+        }
+    return last_vertex_;
+}
+
 int DelaunayGraph::nearest_vertex(SiteId p) {
-    int v = last_vertex_;
+    int v = walk_start(p);
     if (v < 0 || v >= static_cast<int>(tds_.vertex_capacity()) || !tds_.vertex(v).alive || is_infinite(v)) {
         v = -1;
         for (std::size_t x = 1; x < tds_.vertex_capacity() && v < 0; ++x)
@@ -197,7 +216,7 @@ void DelaunayGraph::insert_general(SiteId p) {
         for (int f : around) {
             const int i = cw(tds_.index(f, nearest));
             if (edge_interior(f, i, p, false)) {
-                last_vertex_ = tds_.insert_degree_2(f, i, static_cast<long>(p));
+                record_vertex(p, tds_.insert_degree_2(f, i, static_cast<long>(p)));
                 ++stats_.degree_2_insertions;
                 return;
             }
@@ -308,7 +327,7 @@ void DelaunayGraph::insert_general(SiteId p) {
     for (int h : hidden_vertices) hide(site_of(h), p);
     const int v = tds_.star_hole(static_cast<long>(p), boundary, region_list);
     for (int b : bogus) tds_.remove_degree_2(b);
-    last_vertex_ = v;
+    record_vertex(p, v);
 }
 
 // ---------------------------------------------------------------- predicate wrappers

@@ -12,10 +12,12 @@
 #pragma once
 
 #include "graph/delaunay_traits.hpp"
+#include "graph/site_grid.hpp"
 #include "graph/triangulation.hpp"
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,6 +88,9 @@ private:
     void rebuild_small(std::vector<SiteId> visible);
 
     int nearest_vertex(SiteId p);
+    // A start for the walk: the vertex of a nearby site (grid_), else the last vertex.
+    int walk_start(SiteId p) const;
+    void record_vertex(SiteId p, int v);
     // CGAL's graph-level wrappers.
     int incircle(int f, SiteId q);
     bool edge_interior(int f, int i, SiteId q, bool b);
@@ -100,6 +105,8 @@ private:
     std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
     std::vector<char> inserted_;
     int last_vertex_ = -1;
+    std::unique_ptr<SiteGrid> grid_;   // insert_all only: sites with a vertex, by center
+    std::vector<int> vertex_of_site_;  // the vertex a site got (checked before use: vertices die)
     GraphStats stats_;
 };
 

@@ -1,0 +1,58 @@
+#include "graph/site_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ellvor {
+
+SiteGrid::SiteGrid(const DelaunayTraits& traits) {
+    for (SiteId i = 0; i < traits.size(); ++i)
+        x_.push_back(traits.site(i).enclosure().xc.mid()), y_.push_back(traits.site(i).enclosure().yc.mid());
+    if (x_.empty()) return;
+    const auto [xmin, xmax] = std::minmax_element(x_.begin(), x_.end());
+    const auto [ymin, ymax] = std::minmax_element(y_.begin(), y_.end());
+    x0_ = *xmin, y0_ = *ymin;
+    const double width = std::max(*xmax - *xmin, 0.0), height = std::max(*ymax - *ymin, 0.0);
+    const double area = std::max(width * height, 1e-300);
+    cell_ = std::sqrt(area / static_cast<double>(x_.size()));
+    if (!(cell_ > 0) || !std::isfinite(cell_)) cell_ = std::max({width, height, 1.0});
+    // At most about 4 n cells, however thin the box.
+    columns_ = std::clamp(static_cast<long>(width / cell_) + 1, 1L, 4 * static_cast<long>(x_.size()));
+    rows_ = std::clamp(static_cast<long>(height / cell_) + 1, 1L, 4 * static_cast<long>(x_.size()) / columns_ + 1);
+    cell_ = std::max({cell_, width / static_cast<double>(columns_), height / static_cast<double>(rows_)}) * (1 + 1e-9);
+    cells_.resize(static_cast<std::size_t>(columns_ * rows_));
+}
+
+long SiteGrid::cell_of(double x, double y) const {
+    const long c = std::clamp(static_cast<long>((x - x0_) / cell_), 0L, columns_ - 1);
+    const long r = std::clamp(static_cast<long>((y - y0_) / cell_), 0L, rows_ - 1);
+    return r * columns_ + c;
+}
+
+void SiteGrid::add(SiteId s) {
+    cells_[static_cast<std::size_t>(cell_of(x_[s], y_[s]))].push_back(s);
+    ++added_;
+}
+
+std::vector<SiteId> SiteGrid::near(SiteId s) const {
+    std::vector<SiteId> out;
+    if (added_ == 0) return out;
+    const long home = cell_of(x_[s], y_[s]), c0 = home % columns_, r0 = home / columns_;
+    long found_ring = -1;
+    for (long ring = 0; ring <= std::max(columns_, rows_); ++ring) {
+        if (found_ring >= 0 && ring > found_ring + 1) break;
+        for (long r = r0 - ring; r <= r0 + ring; ++r)
+            for (long c = c0 - ring; c <= c0 + ring; ++c) {
+                if (r < 0 || c < 0 || r >= rows_ || c >= columns_) continue;
+                if (std::max(std::labs(r - r0), std::labs(c - c0)) != ring) continue;  // the ring only
+                const auto& cell = cells_[static_cast<std::size_t>(r * columns_ + c)];
+                out.insert(out.end(), cell.begin(), cell.end());
+            }
+        if (found_ring < 0 && !out.empty()) found_ring = ring;
+    }
+    auto distance = [&](SiteId t) { return std::hypot(x_[t] - x_[s], y_[t] - y_[s]); };
+    std::sort(out.begin(), out.end(), [&](SiteId a, SiteId b) { return distance(a) < distance(b); });
+    return out;
+}
+
+}  // namespace ellvor
