@@ -37,20 +37,21 @@ void SiteGrid::add(SiteId s) {
 std::vector<SiteId> SiteGrid::near(SiteId s) const {
     std::vector<SiteId> out;
     if (added_ == 0) return out;
+    auto distance = [&](SiteId t) { return std::hypot(x_[t] - x_[s], y_[t] - y_[s]); };
     const long home = cell_of(x_[s], y_[s]), c0 = home % columns_, r0 = home / columns_;
-    long found_ring = -1;
-    for (long ring = 0; ring <= std::max(columns_, rows_); ++ring) {
-        if (found_ring >= 0 && ring > found_ring + 1) break;
+    double best = HUGE_VAL;
+    // A center in ring k is at least (k - 1) cells away from any point of the
+    // home cell: once that exceeds the best distance found, no ring can beat it.
+    for (long ring = 0; ring <= std::max(columns_, rows_) && (ring - 1) * cell_ <= best; ++ring)
         for (long r = r0 - ring; r <= r0 + ring; ++r)
             for (long c = c0 - ring; c <= c0 + ring; ++c) {
                 if (r < 0 || c < 0 || r >= rows_ || c >= columns_) continue;
                 if (std::max(std::labs(r - r0), std::labs(c - c0)) != ring) continue;  // the ring only
-                const auto& cell = cells_[static_cast<std::size_t>(r * columns_ + c)];
-                out.insert(out.end(), cell.begin(), cell.end());
+                for (SiteId t : cells_[static_cast<std::size_t>(r * columns_ + c)]) {
+                    out.push_back(t);
+                    best = std::min(best, distance(t));
+                }
             }
-        if (found_ring < 0 && !out.empty()) found_ring = ring;
-    }
-    auto distance = [&](SiteId t) { return std::hypot(x_[t] - x_[s], y_[t] - y_[s]); };
     std::sort(out.begin(), out.end(), [&](SiteId a, SiteId b) { return distance(a) < distance(b); });
     return out;
 }

@@ -15,9 +15,8 @@ public:
     // About one cell per site over the bounding box of all the centers.
     explicit SiteGrid(const DelaunayTraits& traits);
     void add(SiteId s);
-    // The sites added so far with centers in the first nonempty ring of cells
-    // around s's cell and in the ring after it (a nearest center lies there),
-    // closest center first; empty when nothing was added.
+    // Sites added so far around s's center, closest center first; the first
+    // is a nearest added center (in doubles). Empty when nothing was added.
     std::vector<SiteId> near(SiteId s) const;
 
 private:
