@@ -22,6 +22,7 @@ constexpr int kGuessSteps = 4;
 // steps at each.
 constexpr int kSearchLevels = 3;
 constexpr int kSearchSteps = 6;
+constexpr long kStalledNewtonBits = 16;
 // Refinement of a certified circle: precision doublings before giving up.
 constexpr int kRefineLevels = 4;
 
@@ -298,7 +299,13 @@ bool VoronoiCircleSolver::certify_from(const VoronoiCircleStart& start) {
             if ((step = newton_step(prec)) < 0) return false;
             if (it > 0 && step <= previous) break;
         }
-        if (step < prec / 2) return false;
+        // Converged to some bits and then stalled: rounding, not distance, stopped
+        // Newton (an ill-conditioned root: a huge circle of nearly collinear
+        // sites); the next level's precision resolves it.
+        if (step < prec / 2) {
+            if (step >= kStalledNewtonBits) continue;
+            return false;
+        }
         // A root of the wrong kind (rho <= 0, clockwise) would fail Krawczyk's
         // final test: skip it cheaply.
         if (arf_sgn(arb_midref(midpoint_.at(3, 0))) <= 0) return false;
