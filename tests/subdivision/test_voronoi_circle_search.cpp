@@ -188,6 +188,33 @@ TEST_CASE("search certifies huge circles (radius far beyond the sites' extent: t
     }
 }
 
+TEST_CASE("search certifies a near-degenerate huge circle (ill-conditioned Newton starts)",
+          "[subdivision][voronoi-circle-search]") {
+    // Unit circles at (0, 0), (6, 0), (3, 10^-17): one tangent circle, below,
+    // radius ~4.5 10^17. Doubles cannot see the lift, so no guess certifies;
+    // the search's starts converge and then stall at their first precision
+    // (the Jacobian's condition grows like the radius) and must be carried
+    // to the next precision rather than dropped.
+    const Rational lift = exact("0.00000000000000001");
+    const apollonius::Circle c[3] = {{Rational(0), Rational(0), Rational(1)},
+                                     {Rational(6), Rational(0), Rational(1)},
+                                     {Rational(3), lift, Rational(1)}};
+    const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse();
+    REQUIRE(has_ccw_circle(e1, e2, e3));
+    const apollonius::Result oracle = apollonius::voronoi_circles(c[0], c[1], c[2], 1024);
+    REQUIRE(oracle.certain);
+    REQUIRE(oracle.ccw());
+    VoronoiCircleSolver solver(e1, e2, e3);
+    REQUIRE(solver.certify());
+    const VoronoiCircleEnclosure& found = solver.enclosure();
+    INFO(show(found));
+    CHECK(found.search_boxes > 0);  // the guesses failed
+    CHECK(overlaps(found.center_x, oracle.ccw()->x));
+    CHECK(overlaps(found.center_y, oracle.ccw()->y));
+    CHECK(overlaps(found.radius, oracle.ccw()->radius));
+    CHECK(found.radius.mid_double() > 1e17);
+}
+
 TEST_CASE("triples far from the origin: the guesses and the search certify the translated circle",
           "[subdivision][voronoi-circle-search]") {
     // The triple of the file
