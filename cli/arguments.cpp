@@ -18,10 +18,6 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::vector<Opt
             options_done = true;
             continue;
         }
-        if (arg == "--help" || arg == "-h") {
-            help_ = true;
-            continue;
-        }
         std::string name = arg, value;
         bool inline_value = false;
         std::size_t eq = arg.find('=');

@@ -3,8 +3,8 @@
 // Options are declared with their spelling ("--count", "-o") and whether they
 // take a value; values are given as "--count 5" or "--count=5". "--" ends the
 // options; "-" alone is a positional argument (standard input). "--help" and
-// "-h" are always accepted. Anything else starting with '-' is an unknown
-// option (a UsageError). Conversions of values also throw UsageError with a
+// "-h" never get here: cli/main.cpp answers them before a command runs.
+// Anything else starting with '-' is an unknown option (a UsageError). Conversions of values also throw UsageError with a
 // message naming the option and what was expected.
 #pragma once
 
@@ -34,7 +34,6 @@ class Arguments {
 public:
     Arguments(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs);
 
-    bool help() const { return help_; }
     const std::vector<std::string>& positional() const { return positional_; }
     // Throws UsageError unless the number of positional arguments is in [min, max].
     void expect_positional(std::size_t min, std::size_t max, const std::string& what) const;
@@ -54,7 +53,6 @@ private:
     std::vector<OptionSpec> specs_;
     std::vector<std::string> positional_;
     std::map<std::string, std::string> values_;  // canonical name -> value ("" for flags)
-    bool help_ = false;
 };
 
 }  // namespace ellvor::cli

@@ -52,15 +52,11 @@ nlohmann::json describe_contact(const Ellipse& e, BoundaryParameter t) {
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", false}});
-    if (parsed.help()) {
-        std::cout << kHelp;
-        return kExitOk;
-    }
     parsed.expect_positional(1, 1, "FILE");
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     const auto& s = file.sites;
     require_site_count(file, 2, 3, "E1 E2 [Q]");
-    const RelativePosition position = relative_position(s[0], s[1]);
+    const RelativePosition position = *relative_position(s[0], s[1]);
     if (position != RelativePosition::separated && position != RelativePosition::externally_tangent)
         throw InputError(file.name + ": sites 0 and 1 are " + relative_position_name(position) +
                          "; an external bitangent needs separated sites");
@@ -70,11 +66,11 @@ int run(const std::vector<std::string>& args) {
     out["second"] = describe_contact(s[1], external_bitangent_on(s[1], s[0], HullSide::departure));
     if (s.size() == 3) {
         const auto start = std::chrono::steady_clock::now();
-        const SignDecision d = infinite_vertex_conflict(s[0], s[1], s[2]);
+        const Decision<Sign> d = infinite_vertex_conflict(s[0], s[1], s[2]);
         const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-        out["kappa2"] = {{"result", d.sign < 0 ? "conflict" : "no-conflict"}, {"sign", d.sign},
+        out["kappa2"] = {{"result", *d == Sign::negative ? "conflict" : "no-conflict"}, {"sign", to_int(*d)},
                          {"stage", stage_name(d.stage)}, {"time_us", us}};
-        out["voronoi_circles"] = voronoi_circles_name(voronoi_circle_count(s[0], s[1], s[2]));
+        out["voronoi_circles"] = voronoi_circles_name(*voronoi_circle_count(s[0], s[1], s[2]));
     }
     if (parsed.has("--json")) {
         std::cout << out.dump() << "\n";

@@ -68,20 +68,16 @@ nlohmann::json stats_json(const DelaunayGraph& g, double seconds) {
         {"is_hidden", &t.is_hidden},         {"side_of_bisector", &t.side_of_bisector},
         {"vertex_conflict_3", &t.vertex_conflict3}, {"incircle", &t.vertex_conflict4},
         {"finite_edge", &t.finite_edge},     {"infinite_edge", &t.infinite_edge}};
-    for (const auto& [name, count] : rows)
-        s["predicates"][name] = {{"calls", count->calls},
-                                 {"filter", count->stages.decided[0]},
-                                 {"subdivision", count->stages.decided[1]},
-                                 {"exact", count->stages.decided[2]}};
+    for (const auto& [name, count] : rows) {
+        nlohmann::json& row = s["predicates"][name];
+        row["calls"] = count->calls;
+        for (Stage stage : kStages) row[stage_name(stage)] = count->stages[stage];
+    }
     return s;
 }
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", true}, {"--svg", true}, {"--svg-ids", false}, {"--validate", false}, {"--stats", false}});
-    if (parsed.help()) {
-        std::cout << kHelp;
-        return kExitOk;
-    }
     parsed.expect_positional(1, 1, "FILE");
     if (parsed.has("--svg-ids") && !parsed.has("--svg")) throw UsageError("option --svg-ids needs --svg OUT");
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);

@@ -122,7 +122,7 @@ int run_check(const std::vector<std::string>& args) {
             const Ellipse& ej = sites[j];
             Rational dx = ei.xc() - ej.xc(), dy = ei.yc() - ej.yc(), rr = max_axis(ei) + max_axis(ej);
             if (dx * dx + dy * dy > rr * rr) continue;
-            RelativePosition pos = relative_position(ei, ej);
+            RelativePosition pos = *relative_position(ei, ej);
             if (pos != RelativePosition::separated) reports.push_back({i, j, pos});
         }
     }

@@ -3,6 +3,7 @@
 
 #include "cli/site_arguments.hpp"
 #include "predicates/incircle.hpp"
+#include "util/precision.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -38,27 +39,25 @@ const char* const kHelp =
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", false}, {"--max-precision", true}});
-    if (parsed.help()) {
-        std::cout << kHelp;
-        return kExitOk;
-    }
     parsed.expect_positional(1, 1, "FILE");
     InCircleOptions options;
-    options.max_precision = parsed.integer("--max-precision", options.max_precision, 64, 1L << 24);
+    options.refinement.cap =
+        parsed.integer("--max-precision", options.refinement.cap, precision::kStart, precision::kMaxCap);
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 4, 4, "E1 E2 E3 Q");
     const auto& s = file.sites;
 
     const auto start = std::chrono::steady_clock::now();
-    const InCircleDecision d = incircle(s[0], s[1], s[2], s[3], options);
+    VoronoiCircleSolver solver(s[0], s[1], s[2]);
+    const Decision<InCircle> d = incircle(s[0], s[1], s[2], s[3], options, &solver);
     const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-    const int sign = incircle_sign(d.result);  // throws for undecided, which the exact stage rules out
     if (parsed.has("--json")) {
-        nlohmann::json j = {{"result", incircle_name(d.result)}, {"sign", sign}, {"stage", stage_name(d.stage)},
-                            {"precision", d.precision}, {"newton_steps", d.newton_steps}, {"time_us", us}};
+        nlohmann::json j = {{"result", incircle_name(*d)}, {"sign", to_int(incircle_sign(*d))},
+                            {"stage", stage_name(d.stage)}, {"precision", d.precision},
+                            {"newton_steps", solver.enclosure().newton_steps}, {"time_us", us}};
         std::cout << j.dump() << "\n";
     } else {
-        std::cout << incircle_name(d.result) << "\n";
+        std::cout << incircle_name(*d) << "\n";
     }
     return kExitOk;
 }

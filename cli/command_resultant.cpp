@@ -36,10 +36,6 @@ const char* const kHelp =
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--stats", false}});
-    if (parsed.help()) {
-        std::cout << kHelp;
-        return kExitOk;
-    }
     parsed.expect_positional(1, 1, "FILE");
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 3, 3, "E1 E2 E3");

@@ -38,10 +38,6 @@ Rational coordinate(const std::string& token, const char* name) {
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", false}});
-    if (parsed.help()) {
-        std::cout << kHelp;
-        return kExitOk;
-    }
     parsed.expect_positional(3, 3, "FILE X Y");
     const auto& pos = parsed.positional();
     const SiteFile file = read_site_argument(parsed, pos[0]);
@@ -49,11 +45,11 @@ int run(const std::vector<std::string>& args) {
     const Point p{coordinate(pos[1], "X"), coordinate(pos[2], "Y")};
 
     const auto start = std::chrono::steady_clock::now();
-    const SignDecision d = side_of_bisector(file.sites[0], file.sites[1], p);
+    const Decision<Sign> d = side_of_bisector(file.sites[0], file.sites[1], p);
     const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-    const char* word = d.sign > 0 ? "first" : d.sign < 0 ? "second" : "equidistant";
+    const char* word = *d == Sign::positive ? "first" : *d == Sign::negative ? "second" : "equidistant";
     if (parsed.has("--json")) {
-        nlohmann::json j = {{"result", word}, {"sign", d.sign}, {"stage", stage_name(d.stage)},
+        nlohmann::json j = {{"result", word}, {"sign", to_int(*d)}, {"stage", stage_name(d.stage)},
                             {"precision", d.precision}, {"time_us", us}};
         std::cout << j.dump() << "\n";
     } else {

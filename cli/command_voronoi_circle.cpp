@@ -46,10 +46,6 @@ std::string ball_text(const Ball& b, long bits) {
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--bits", true}});
-    if (parsed.help()) {
-        std::cout << kHelp;
-        return kExitOk;
-    }
     parsed.expect_positional(1, 1, "FILE");
     parsed.require("--bits");
     const long bits = parsed.integer("--bits", 53, 1, 10'000'000);
@@ -58,7 +54,7 @@ int run(const std::vector<std::string>& args) {
     const auto& s = file.sites;
 
     nlohmann::json j;
-    const VoronoiCircles circles = voronoi_circle_count(s[0], s[1], s[2]);
+    const VoronoiCircles circles = *voronoi_circle_count(s[0], s[1], s[2]);
     if (circles == VoronoiCircles::none || circles == VoronoiCircles::cw_only) {
         j = {{"exists", false}, {"circles", voronoi_circles_name(circles)}};
         std::cout << j.dump() << "\n";

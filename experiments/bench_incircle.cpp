@@ -136,7 +136,7 @@ Dataset random_quadruples(long count, std::uint64_t seed, long bits, long& dropp
         std::vector<Ellipse> e = generate_sites(o);
         Ellipse q = e.back();
         e.pop_back();
-        const VoronoiCircles c = voronoi_circle_count(e[0], e[1], e[2]);
+        const VoronoiCircles c = *voronoi_circle_count(e[0], e[1], e[2]);
         if (c == VoronoiCircles::cw_only) std::swap(e[1], e[2]);
         if (c == VoronoiCircles::none) {
             ++dropped;
@@ -153,7 +153,7 @@ Dataset paper_set(const std::string& set, std::uint64_t seed, long& swapped) {
     for (PaperInstance& in : p.instances) {
         // The order the generator gives may have only the clockwise circle
         // (set (1)'s base triple does); swap E2 and E3 then, for both libraries.
-        if (voronoi_circle_count(in.sites[0], in.sites[1], in.sites[2]) == VoronoiCircles::cw_only) {
+        if (*voronoi_circle_count(in.sites[0], in.sites[1], in.sites[2]) == VoronoiCircles::cw_only) {
             std::swap(in.sites[1], in.sites[2]);
             ++swapped;
         }
@@ -189,7 +189,7 @@ std::string screen(const Instance& in, unsigned seconds) {
         try {
             const Ellipse &e1 = in.sites[0], &e2 = in.sites[1], &e3 = in.sites[2], &q = *in.q;
             incircle(e1, e2, e3, q);
-            const VoronoiCircles c = voronoi_circle_count(e1, e2, e3);
+            const VoronoiCircles c = *voronoi_circle_count(e1, e2, e3);
             if (c == VoronoiCircles::ccw_only || c == VoronoiCircles::both) {
                 VoronoiCircleSolver solver(e1, e2, e3);
                 incircle(e1, e2, e3, q, {}, &solver);
@@ -215,13 +215,13 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
     row.index = index;
     row.replay = sites_text(in);
     const Ellipse &e1 = in.sites[0], &e2 = in.sites[1], &e3 = in.sites[2], &q = *in.q;
-    const VoronoiCircles count = voronoi_circle_count(e1, e2, e3);
+    const VoronoiCircles count = *voronoi_circle_count(e1, e2, e3);
     row.circles = voronoi_circles_name(count);
     const bool has_ccw = count == VoronoiCircles::ccw_only || count == VoronoiCircles::both;
 
     // ellvor, cold (a fresh solver inside every call)
     std::vector<double> t;
-    InCircleDecision d;
+    Decision<InCircle> d;
     const std::string failure = screen(in, 20);
     if (!failure.empty()) {
         std::cerr << "ANOMALY: " << dataset << " #" << index << ": " << failure << " — " << row.replay << "\n";
@@ -235,12 +235,14 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
             const double t0 = now();
             d = incircle(e1, e2, e3, q);
             t.push_back(now() - t0);
-            sink += static_cast<int>(d.result);
+            sink += static_cast<int>((*d));
         }
-        row.result = incircle_name(d.result);
+        row.result = (d.is_decided() ? incircle_name(*d) : "undecided");
         row.stage = stage_name(d.stage);
         row.precision = d.precision;
-        row.newton_steps = d.newton_steps;
+        VoronoiCircleSolver counted(e1, e2, e3);  // one more call, to count its Newton steps
+        incircle(e1, e2, e3, q, {}, &counted);
+        row.newton_steps = counted.enclosure().newton_steps;
         row.ellvor_us = median(t) * 1e6;
     } catch (const std::exception& ex) {
         row.result = "error";
@@ -254,15 +256,15 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
             VoronoiCircleSolver solver(e1, e2, e3);
             incircle(e1, e2, e3, q, {}, &solver);
             std::vector<double> w;
-            InCircleDecision d2;
+            Decision<InCircle> d2;
             for (int r = 0; r < reps; ++r) {
                 const double t0 = now();
                 d2 = incircle(e1, e2, e3, q2, {}, &solver);
                 w.push_back(now() - t0);
-                sink += static_cast<int>(d2.result);
+                sink += static_cast<int>((*d2));
             }
             row.warm_us = median(w) * 1e6;
-            row.warm_result = incircle_name(d2.result);
+            row.warm_result = (d2.is_decided() ? incircle_name(*d2) : "undecided");
         } catch (const std::exception& ex) {
             row.warm_result = std::string("error: ") + ex.what();
         }
@@ -273,7 +275,7 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
         std::vector<double> a, b;
         for (int r = 0; r < reps; ++r) {
             double t0 = now();
-            sink += static_cast<int>(voronoi_circle_count(e1, e2, e3));
+            sink += static_cast<int>(*voronoi_circle_count(e1, e2, e3));
             a.push_back(now() - t0);
             if (!has_ccw) continue;
             t0 = now();
@@ -311,7 +313,7 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
         else if (row.result == "undecided" || row.result == "error")
             row.agree = "undecided";
         else
-            row.agree = ellvor_sign(d.result) == row.cgal_sign ? "yes" : "no";
+            row.agree = ellvor_sign((*d)) == row.cgal_sign ? "yes" : "no";
     } else {
         row.agree = "-";
     }

@@ -173,9 +173,9 @@ std::vector<int> measure(Row& row, size_t n, Call call) {
         for (size_t i = 0; i < n; ++i) {
             const double t0 = now_us();
             try {
-                const SignDecision d = call(i);
+                const Decision<Sign> d = call(i);
                 times.push_back(now_us() - t0);
-                if (pass == 0) row.stages.record(d.stage), signs[i] = d.sign;
+                if (pass == 0) row.stages.record(d.stage), signs[i] = to_int(*d);
             } catch (const std::exception&) {
                 times.push_back(now_us() - t0);
                 if (pass == 0) ++row.errors;
@@ -257,7 +257,7 @@ int main(int argc, char** argv) {
         const size_t k = i % sets.size();
         const bool k1 = i < sets.size();
         t << "| " << r.predicate << " | " << r.set << " | " << fmt(r.median_us) << " | " << fmt(r.p99_us) << " | "
-          << r.stages.decided[0] << "/" << r.stages.decided[1] << "/" << r.stages.decided[2] << " | " << r.errors << " | "
+          << r.stages[Stage::filter] << "/" << r.stages[Stage::subdivision] << "/" << r.stages[Stage::exact] << " | " << r.errors << " | "
           << (r.cgal_us >= 0 ? fmt(r.cgal_us, "%.3f") : "—") << " | "
           << (r.cgal_us > 0 ? fmt(r.median_us / r.cgal_us, "%.0f") + "×" : "—") << " | "
           << (r.cgal_us >= 0 ? std::to_string(r.cgal_disagree) : "—") << " | "

@@ -271,7 +271,7 @@ double kappa1_seconds(const std::vector<Ellipse>& sites) {
     }
     long sum = 0;
     const double c0 = now_cpu();
-    for (const auto& q : triples) sum += t.side_of_bisector(q[0], q[1], q[2]);
+    for (const auto& q : triples) sum += to_int(t.side_of_bisector(q[0], q[1], q[2]));
     const double c1 = now_cpu();
     (void)sum;
     return (c1 - c0) / calls;
@@ -292,8 +292,8 @@ const Pred kPreds[] = {
 
 std::string stage_triple(const PredicateCount& p) {
     if (p.calls == 0) return "0";
-    return std::to_string(p.calls) + " (" + std::to_string(p.stages.decided[0]) + "/" +
-           std::to_string(p.stages.decided[1]) + "/" + std::to_string(p.stages.decided[2]) + ")";
+    return std::to_string(p.calls) + " (" + std::to_string(p.stages[Stage::filter]) + "/" +
+           std::to_string(p.stages[Stage::subdivision]) + "/" + std::to_string(p.stages[Stage::exact]) + ")";
 }
 
 }  // namespace
@@ -383,7 +383,7 @@ int main(int argc, char** argv) {
             if (r.set == "cgal-circles")
                 csv << ",,,,";
             else
-                csv << "," << c.calls << "," << c.stages.decided[0] << "," << c.stages.decided[1] << "," << c.stages.decided[2];
+                csv << "," << c.calls << "," << c.stages[Stage::filter] << "," << c.stages[Stage::subdivision] << "," << c.stages[Stage::exact];
         }
         if (r.set == "cgal-circles")
             csv << ",,,," << "-,-," << r.cgal << ",\n";

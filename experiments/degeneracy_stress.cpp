@@ -218,9 +218,9 @@ void incircle_rows(int reps, bool full, std::vector<Row>& rows) {
         for (const Job& job : jobs) {
             const Ellipse q = job.e ? moved(c, ten_to_minus(job.e), job.dir) : c.s[3];
             InCircleOptions options;
-            options.max_precision = job.cap;
+            options.refinement.cap = job.cap;
             std::vector<double> times;
-            InCircleDecision d;
+            Decision<InCircle> d;
             // Calls that run the exact stage on a perturbed Q (10^-e below 2^-cap)
             // take seconds: one timed call each.
             const int n = (job.e && job.e * 3.33 > job.cap) ? 1 : reps;
@@ -237,7 +237,7 @@ void incircle_rows(int reps, bool full, std::vector<Row>& rows) {
             row.e = job.e;
             row.direction = job.e ? (job.dir > 0 ? "away" : "toward") : "exact";
             row.cap = job.cap;
-            row.result = incircle_name(d.result);
+            row.result = (d.is_decided() ? incircle_name(*d) : "undecided");
             row.stage = stage_name(d.stage);
             row.precision = d.precision;
             row.seconds = median(times);

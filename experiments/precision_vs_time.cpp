@@ -50,7 +50,7 @@ struct Triple {
 // Puts the triple in an order with a counter-clockwise Voronoi circle (swaps
 // E2 and E3 if only the clockwise one exists). False if neither exists.
 bool orient(std::vector<Ellipse>& s) {
-    const VoronoiCircles c = voronoi_circle_count(s[0], s[1], s[2]);
+    const VoronoiCircles c = *voronoi_circle_count(s[0], s[1], s[2]);
     if (c == VoronoiCircles::ccw_only || c == VoronoiCircles::both) return true;
     if (c == VoronoiCircles::cw_only) {
         std::swap(s[1], s[2]);

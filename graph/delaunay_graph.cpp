@@ -179,7 +179,7 @@ int DelaunayGraph::nearest_vertex(SiteId p) {
         for (int f : tds_.incident_faces(v)) {
             const int w = tds_.face(f).v[ccw(tds_.index(f, v))];
             if (is_infinite(w) || w == v) continue;
-            if (traits_.side_of_bisector(site_of(v), site_of(w), p) < 0) {
+            if (traits_.side_of_bisector(site_of(v), site_of(w), p) == Sign::negative) {
                 v = w;
                 moved = true;
                 ++stats_.walk_steps;
@@ -197,11 +197,11 @@ void DelaunayGraph::insert_general(SiteId p) {
         ++stats_.hidden_on_insert;
         return;
     }
-    std::map<int, int> sign_of_face;
+    std::map<int, Sign> sign_of_face;
     auto in_conflict = [&](int f) {
         auto found = sign_of_face.find(f);
         if (found == sign_of_face.end()) found = sign_of_face.emplace(f, incircle(f, p)).first;
-        return found->second < 0;
+        return found->second == Sign::negative;
     };
     // First conflict: a Voronoi vertex around the nearest site, else the
     // interior of one of its Voronoi edges (p then gets a degree-2 vertex).
@@ -332,7 +332,7 @@ void DelaunayGraph::insert_general(SiteId p) {
 
 // ---------------------------------------------------------------- predicate wrappers
 
-int DelaunayGraph::incircle(int f, SiteId q) {
+Sign DelaunayGraph::incircle(int f, SiteId q) {
     const auto& F = tds_.face(f);
     const int k = tds_.index(f, Triangulation::kInfinite);
     if (k < 0) return traits_.vertex_conflict(site_of(F.v[0]), site_of(F.v[1]), site_of(F.v[2]), q);
@@ -377,10 +377,11 @@ bool DelaunayGraph::infinite_edge_interior(int f, int i, SiteId q, bool b) {
 }
 
 DelaunayGraph::ConflictType DelaunayGraph::finite_edge_conflict_type_degenerated(SiteId p1, SiteId p2, SiteId q) {
-    const int i1 = traits_.vertex_conflict(p1, p2, q), i2 = traits_.vertex_conflict(p2, p1, q);
-    if (i1 < 0 && i2 > 0) return ConflictType::left_vertex;
-    if (i1 > 0 && i2 < 0) return ConflictType::right_vertex;
-    const bool both = i1 < 0;  // (-, -) or (+, +)
+    const bool c1 = traits_.vertex_conflict(p1, p2, q) == Sign::negative;
+    const bool c2 = traits_.vertex_conflict(p2, p1, q) == Sign::negative;
+    if (c1 && !c2) return ConflictType::left_vertex;
+    if (!c1 && c2) return ConflictType::right_vertex;
+    const bool both = c1;  // (-, -) or (+, +)
     bool b = traits_.is_hidden(q, p1) || traits_.is_hidden(q, p2) || traits_.finite_edge_interior(p1, p2, q, both);
     if (both) return b ? ConflictType::entire_edge : ConflictType::both_vertices;
     return b ? ConflictType::interior : ConflictType::no_conflict;
@@ -473,7 +474,7 @@ std::string DelaunayGraph::validate() {
         for (int i = 0; i < 3; ++i) {
             const int w = tds_.mirror_vertex(static_cast<int>(f), i);
             if (is_infinite(w) || w == tds_.face(f).v[i]) continue;
-            if (incircle(static_cast<int>(f), site_of(w)) < 0) {
+            if (incircle(static_cast<int>(f), site_of(w)) == Sign::negative) {
                 std::string face;
                 for (int x : tds_.face(f).v) face += (face.empty() ? "" : " ") + (is_infinite(x) ? "inf" : str(site_of(x)));
                 return "site " + str(site_of(w)) + " is in conflict with the Voronoi vertex of face (" + face + ")";
@@ -499,12 +500,12 @@ std::string DelaunayGraph::brute_force_check() {
             if (own) continue;
             if (k < 0) {
                 const SiteId a = site_of(F.v[0]), b = site_of(F.v[1]), c = site_of(F.v[2]);
-                if (traits_.vertex_conflict(a, b, c, q) < 0)
+                if (traits_.vertex_conflict(a, b, c, q) == Sign::negative)
                     return "site " + str(q) + " is in conflict with the Voronoi circle of (" + str(a) + " " + str(b) +
                            " " + str(c) + ")";
             } else {
                 const SiteId a = site_of(F.v[ccw(k)]), b = site_of(F.v[cw(k)]);
-                if (traits_.vertex_conflict(a, b, q) < 0)
+                if (traits_.vertex_conflict(a, b, q) == Sign::negative)
                     return "site " + str(q) + " is in conflict with the hull edge (" + str(a) + " " + str(b) + ")";
             }
         }

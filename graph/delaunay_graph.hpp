@@ -92,7 +92,7 @@ private:
     int walk_start(SiteId p) const;
     void record_vertex(SiteId p, int v);
     // CGAL's graph-level wrappers.
-    int incircle(int f, SiteId q);
+    Sign incircle(int f, SiteId q);
     bool edge_interior(int f, int i, SiteId q, bool b);
     bool finite_edge_interior_degenerated(int f, int i, SiteId q, bool b);
     bool infinite_edge_interior(int f, int i, SiteId q, bool b);

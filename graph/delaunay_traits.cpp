@@ -20,11 +20,16 @@ std::string ids(std::initializer_list<SiteId> list) {
     return s;
 }
 
-bool decided_or_throw(const EdgeConflictDecision& d, const char* what, const std::string& sites) {
-    if (!d.conflict)
+// Records the stage that decided and returns the answer (every predicate
+// decides under the default options; an undecided one is an internal error
+// that value() reports, naming the sites here).
+template <class T>
+T counted(PredicateCount& count, const Decision<T>& d, const char* what, const std::string& sites) {
+    count.stages.record(d.stage);
+    if (!d.is_decided())
         throw Error(std::string("undecided predicate: ") + what + " of sites (" + sites +
-                    ") could not be certified (precision " + std::to_string(d.precision) + ")");
-    return *d.conflict;
+                    ") could not be certified (precision " + std::to_string(d.precision) + ", internal error)");
+    return *d;
 }
 
 }  // namespace
@@ -37,12 +42,11 @@ bool DelaunayTraits::is_hidden(SiteId p, SiteId q) {
     auto found = hidden_memo_.find(key);
     if (found != hidden_memo_.end()) return found->second;
     ++stats_.is_hidden.calls;
-    const RelativePositionResult r = relative_position_decided(site(p), site(q));
-    stats_.is_hidden.stages.record(r.stage);
-    if (r.position == RelativePosition::intersecting)
-        throw IntersectingSites(std::min(p, q), std::max(p, q));
+    const RelativePosition r = counted(stats_.is_hidden, relative_position(site(p), site(q)), "relative position",
+                                       ids({p, q}));
+    if (r == RelativePosition::intersecting) throw IntersectingSites(std::min(p, q), std::max(p, q));
     bool q_in_p = false, p_in_q = false;
-    switch (r.position) {
+    switch (r) {
         case RelativePosition::second_inside:
         case RelativePosition::second_inside_tangent: q_in_p = true; break;
         case RelativePosition::first_inside:
@@ -55,60 +59,51 @@ bool DelaunayTraits::is_hidden(SiteId p, SiteId q) {
     return q_in_p;
 }
 
-int DelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
+Sign DelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
     ++stats_.side_of_bisector.calls;
-    const SignDecision d = ellvor::side_of_bisector(site(i), site(j), site(k).center());
-    stats_.side_of_bisector.stages.record(d.stage);
-    return d.sign;
+    return counted(stats_.side_of_bisector, ellvor::side_of_bisector(site(i), site(j), site(k).center()),
+                   "side of bisector", ids({i, j, k}));
 }
 
-int DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
+Sign DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
     ++stats_.vertex_conflict3.calls;
-    const SignDecision d = infinite_vertex_conflict(site(i), site(j), site(q));
-    stats_.vertex_conflict3.stages.record(d.stage);
-    if (d.sign == 0) throw Error("internal error: infinite vertex conflict returned 0 for sites (" + ids({i, j, q}) + ")");
-    return d.sign;
+    const Sign s = counted(stats_.vertex_conflict3, infinite_vertex_conflict(site(i), site(j), site(q)),
+                           "infinite vertex conflict", ids({i, j, q}));
+    if (s == Sign::zero) throw Error("internal error: infinite vertex conflict returned 0 for sites (" + ids({i, j, q}) + ")");
+    return s;
 }
 
-int DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
+Sign DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
     ++stats_.vertex_conflict4.calls;
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
-    const InCircleDecision d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
-                                        entry.solver.get());
-    stats_.vertex_conflict4.stages.record(d.stage);
-    if (d.result == InCircle::undecided)
-        throw Error("undecided predicate: incircle of sites (" + ids({i, j, k, q}) +
-                    "): the Voronoi circle could not be certified");
-    return incircle_sign(d.result);
+    const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
+                                          entry.solver.get());
+    return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", ids({i, j, k, q})));
 }
 
 bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
-    const auto d = finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b);
-    stats_.finite_edge.stages.record(d.stage);
-    return decided_or_throw(d, "finite edge interior conflict", ids({p1, p2, p3, p4, q}));
+    return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b),
+                   "finite edge interior conflict", ids({p1, p2, p3, p4, q}));
 }
 
 bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
-    const auto d = finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b);
-    stats_.finite_edge.stages.record(d.stage);
-    return decided_or_throw(d, "finite edge interior conflict", ids({p1, p2, p3, q}));
+    return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b),
+                   "finite edge interior conflict", ids({p1, p2, p3, q}));
 }
 
 bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
-    const auto d = finite_edge_interior_conflict(site(p1), site(p2), site(q), b);
-    stats_.finite_edge.stages.record(d.stage);
-    return decided_or_throw(d, "finite edge interior conflict", ids({p1, p2, q}));
+    return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(q), b),
+                   "finite edge interior conflict", ids({p1, p2, q}));
 }
 
 bool DelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
     ++stats_.infinite_edge.calls;
-    const auto d = infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b);
-    stats_.infinite_edge.stages.record(d.stage);
-    return decided_or_throw(d, "infinite edge interior conflict", ids({p2, p3, p4, q}));
+    return counted(stats_.infinite_edge, infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b),
+                   "infinite edge interior conflict", ids({p2, p3, p4, q}));
 }
 
 }  // namespace ellvor

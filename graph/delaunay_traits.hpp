@@ -44,13 +44,13 @@ public:
     // CGAL Is_hidden(p, q): site q lies inside site p (tangency and identical
     // included). Memoized. Throws Error when the two sites intersect (invalid input).
     bool is_hidden(SiteId p, SiteId q);
-    // kappa1 at the center of site k: +1 closer to i, -1 closer to j, 0 tie.
-    int side_of_bisector(SiteId i, SiteId j, SiteId k);
-    // kappa2: infinite Voronoi vertex of (i, j) against q: -1 conflict, +1 not.
-    int vertex_conflict(SiteId i, SiteId j, SiteId q);
-    // kappa3: Voronoi circle of the ccw triple (i, j, k) against q: -1 conflict
-    // (or no such circle), 0 tangent, +1 no conflict.
-    int vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q);
+    // kappa1 at the center of site k: POSITIVE closer to i, NEGATIVE closer to j, ZERO tie.
+    Sign side_of_bisector(SiteId i, SiteId j, SiteId k);
+    // kappa2: infinite Voronoi vertex of (i, j) against q: NEGATIVE conflict, POSITIVE not.
+    Sign vertex_conflict(SiteId i, SiteId j, SiteId q);
+    // kappa3: Voronoi circle of the ccw triple (i, j, k) against q: NEGATIVE
+    // conflict (or no such circle), ZERO tangent, POSITIVE no conflict.
+    Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q);
     // kappa4 (raw, without CGAL's "q hides an endpoint" shortcut).
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b);
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b);

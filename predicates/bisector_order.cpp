@@ -1,7 +1,7 @@
 #include "predicates/bisector_order.hpp"
 
 #include "predicates/voronoi_vertex_equality.hpp"
-#include "util/error.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 
@@ -44,40 +44,24 @@ Ball BisectorFrame::position(const Ball& parameter, bool flipped, long prec) {
 }
 
 Ball vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec) {
-    constexpr long kGuard = 16;
-    solver.refine_existing(std::max(prec - kGuard, 1L));
+    solver.refine_existing(std::max(prec - precision::kEnclosureGuard, 1L));
     const auto& c = solver.enclosure();
     return frame.position(c.parameter[index], c.flipped[index], prec);
 }
 
-std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
-                                     VoronoiCircleSolver& b, int index_b, long max_precision, long& precision) {
-    constexpr long kStartPrecision = 64;
-    // A guard against internal errors only: distinct algebraic numbers
-    // separate (and GMP's temporaries for much larger numbers would not fit
-    // the stack).
-    constexpr long kNonDegenerateLimit = 1L << 17;
-    bool proven_distinct = false;
-    for (long prec = kStartPrecision; prec <= kNonDegenerateLimit; prec *= 2) {
-        if (prec > max_precision && !proven_distinct) {
-            ContactComparison exact({a.sites(), &a, index_a}, {b.sites(), &b, index_b});
-            std::optional<bool> same;
-            for (long p = std::max(precision, kStartPrecision); !same && p <= kNonDegenerateLimit; p *= 2) {
-                a.refine_existing(p);
-                b.refine_existing(p);
-                same = exact.same_contact_point();
-            }
-            if (!same) return std::nullopt;
-            if (*same) return 0;
-            proven_distinct = true;
-        }
-        precision = prec;
-        const Ball pa = vertex_position(frame, a, index_a, prec), pb = vertex_position(frame, b, index_b, prec);
-        Ball difference;
-        arb_sub(difference.get(), pa.get(), pb.get(), prec);
-        if (int s = difference.certain_sign()) return s;
-    }
-    throw Error("order_on_bisector: vertices proven distinct were not separated (internal error)");
+Decision<Sign> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a, VoronoiCircleSolver& b,
+                                 int index_b, const RefinementOptions& options) {
+    return refine_then_exact(
+        "order_on_bisector", options,
+        [&](long prec) {
+            const Ball pa = vertex_position(frame, a, index_a, prec), pb = vertex_position(frame, b, index_b, prec);
+            Ball difference;
+            arb_sub(difference.get(), pa.get(), pb.get(), prec);
+            return difference.certain_sign();
+        },
+        [&](long prec) {
+            return ContactComparison({a.sites(), &a, index_a}, {b.sites(), &b, index_b}).same_contact_point(prec);
+        });
 }
 
 }  // namespace ellvor

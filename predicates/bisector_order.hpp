@@ -7,10 +7,9 @@
 #pragma once
 
 #include "predicates/external_bitangent.hpp"
+#include "predicates/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-
-#include <optional>
 
 namespace ellvor {
 
@@ -33,17 +32,16 @@ private:
 Ball vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int index, long prec);
 
 // Order of two Voronoi vertices along the bisector of (E1, E2) (both circles
-// touch E1 and E2; `index` is E1's place in each triple): -1 if `a` comes
-// first from the departure end, +1 if after, 0 if they are the same vertex.
-// Subdivision up to max_precision; then the exact stage decides whether they
-// touch E1 at the same point (voronoi_vertex_equality.hpp), and if not, the
-// subdivision resumes until it separates them. Both triples must have a
-// counter-clockwise circle (certification is complete: a triple without one
-// throws Error). nullopt only when the exact stage cannot isolate the
-// resultant roots within its precision limit. `precision` receives the last
-// precision used.
-std::optional<int> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a,
-                                     VoronoiCircleSolver& b, int index_b, long max_precision, long& precision);
+// touch E1 and E2; `index` is E1's place in each triple): NEGATIVE if `a`
+// comes first from the departure end, POSITIVE if after, ZERO if they are the
+// same vertex. The staged refinement of staged_refinement.hpp: the positions
+// in Arb up to the cap; then the exact stage decides whether they touch E1 at
+// the same point (voronoi_vertex_equality.hpp), and if not, the subdivision
+// resumes until it separates them. Both triples must have a counter-clockwise
+// circle (certification is complete: a triple without one throws Error).
+// Undecided only with options.exact_stage = false.
+Decision<Sign> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a, VoronoiCircleSolver& b,
+                                 int index_b, const RefinementOptions& options);
 
 // Angle theta of E's parametrization (t = tan(theta/2)) for a chart
 // parameter: 2 atan(t), or 2 atan2(1, -u) in the flipped chart (continuous

@@ -21,9 +21,10 @@ Disk disk(const Ellipse& e) {
 
 }  // namespace
 
-std::optional<CircleInCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                                     const Ellipse& q) {
-    if (!e1.is_circle() || !e2.is_circle() || !e3.is_circle() || !q.is_circle()) return std::nullopt;
+Decision<InCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q) {
+    const Decision<InCircle> undecided = Decision<InCircle>::undecided(Stage::filter, 0);
+    auto decided = [](InCircle r) { return Decision<InCircle>::decided(r, Stage::filter); };
+    if (!e1.is_circle() || !e2.is_circle() || !e3.is_circle() || !q.is_circle()) return undecided;
     const std::array<Disk, 3> c = {disk(e1), disk(e2), disk(e3)};
     const Disk dq = disk(q);
     // 2 (C_i - C_1) . V = |C_i|^2 - |C_1|^2 - r_i^2 + r_1^2 - 2 (r_i - r_1) rho, i = 2, 3.
@@ -37,7 +38,7 @@ std::optional<CircleInCircle> circle_incircle_filter(const Ellipse& e1, const El
         g[i - 1] = Interval(-2.0) * (c[i].r - c[0].r);
     }
     const Interval det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
-    if (det.contains_zero() || !det.finite()) return std::nullopt;
+    if (det.contains_zero() || !det.finite()) return undecided;
     // V = V0 + rho V1
     const Interval v0x = (a[1][1] * b[0] - a[0][1] * b[1]) / det, v0y = (a[0][0] * b[1] - a[1][0] * b[0]) / det;
     const Interval v1x = (a[1][1] * g[0] - a[0][1] * g[1]) / det, v1y = (a[0][0] * g[1] - a[1][0] * g[0]) / det;
@@ -46,17 +47,17 @@ std::optional<CircleInCircle> circle_incircle_filter(const Ellipse& e1, const El
     const Interval qa = v1x.square() + v1y.square() - Interval(1.0);
     const Interval qb = two * (dx * v1x + dy * v1y - c[0].r);
     const Interval qc = dx.square() + dy.square() - c[0].r.square();
-    if (qa.contains_zero()) return std::nullopt;
+    if (qa.contains_zero()) return undecided;
     const Interval disc = qb.square() - Interval(4.0) * qa * qc;
-    if (disc.negative()) return CircleInCircle::no_circle;
-    if (disc.contains_zero()) return std::nullopt;
+    if (disc.negative()) return decided(InCircle::no_circle);
+    if (disc.contains_zero()) return undecided;
     const Interval root = disc.sqrt();
     int counterclockwise = 0;
     Interval best_rho, best_x, best_y;
     for (const Interval& rho : {(-qb + root) / (two * qa), (-qb - root) / (two * qa)}) {
         const int s = sign_of(rho);
         if (s < 0) continue;
-        if (s == 0) return std::nullopt;
+        if (s == 0) return undecided;
         const Interval vx = v0x + rho * v1x, vy = v0y + rho * v1y;
         // Tangency points P_i = C_i + r_i (V - C_i)/|V - C_i| = C_i + r_i (V - C_i)/(rho + r_i).
         Interval px[3], py[3];
@@ -66,15 +67,15 @@ std::optional<CircleInCircle> circle_incircle_filter(const Ellipse& e1, const El
             py[i] = c[i].y + f * (vy - c[i].y);
         }
         const int o = sign_of((px[1] - px[0]) * (py[2] - py[0]) - (py[1] - py[0]) * (px[2] - px[0]));
-        if (o == 0) return std::nullopt;
+        if (o == 0) return undecided;
         if (o > 0) ++counterclockwise, best_rho = rho, best_x = vx, best_y = vy;
     }
-    if (counterclockwise == 0) return CircleInCircle::no_circle;
-    if (counterclockwise > 1) return std::nullopt;  // at most one exists: the intervals are too wide
+    if (counterclockwise == 0) return decided(InCircle::no_circle);
+    if (counterclockwise > 1) return undecided;  // at most one exists: the intervals are too wide
     const Interval gap = ((best_x - dq.x).square() + (best_y - dq.y).square()).sqrt() - best_rho - dq.r;
     const int s = sign_of(gap);
-    if (s == 0 || !gap.finite()) return std::nullopt;
-    return s < 0 ? CircleInCircle::conflict : CircleInCircle::no_conflict;
+    if (s == 0 || !gap.finite()) return undecided;
+    return decided(s < 0 ? InCircle::conflict : InCircle::no_conflict);
 }
 
 }  // namespace ellvor

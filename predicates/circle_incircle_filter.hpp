@@ -8,16 +8,13 @@
 // cascade.
 #pragma once
 
+#include "predicates/incircle.hpp"
 #include "sites/ellipse.hpp"
-
-#include <optional>
 
 namespace ellvor {
 
-enum class CircleInCircle { conflict, no_conflict, no_circle };
-
-// nullopt: undecided (some interval straddles zero, or a site is not a circle).
-std::optional<CircleInCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                                     const Ellipse& q);
+// Decided by the filter stage (never tangent), or undecided: some interval
+// straddles zero, or a site is not a circle.
+Decision<InCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q);
 
 }  // namespace ellvor

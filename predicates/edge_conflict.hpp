@@ -18,31 +18,21 @@
 #pragma once
 
 #include "predicates/stage.hpp"
+#include "predicates/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
-
-#include <optional>
 
 namespace ellvor {
 
-struct EdgeConflictOptions {
-    long max_precision = 4096;  // beyond this the vertex order is undecided
-};
-
-struct EdgeConflictDecision {
-    std::optional<bool> conflict;  // nullopt: undecided (vertices not separated at the cap)
-    Stage stage = Stage::filter;
-    long precision = 0;
-};
-
-EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                                   const Ellipse& e4, const Ellipse& q, bool endpoints_in_conflict,
-                                                   const EdgeConflictOptions& options = {});
-EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                                   const Ellipse& q, bool endpoints_in_conflict,
-                                                   const EdgeConflictOptions& options = {});
-EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
-                                                   bool endpoints_in_conflict,
-                                                   const EdgeConflictOptions& options = {});
+// Decided, with the latest stage and the highest precision any vertex order
+// needed; undecided only with options.exact_stage = false.
+Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                             const Ellipse& e4, const Ellipse& q, bool endpoints_in_conflict,
+                                             const RefinementOptions& options = {});
+Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                             const Ellipse& q, bool endpoints_in_conflict,
+                                             const RefinementOptions& options = {});
+Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
+                                             bool endpoints_in_conflict, const RefinementOptions& options = {});
 
 // kappa4 for the Voronoi edge dual to the Delaunay edge (infinity, E2), whose
 // neighbours on the convex hull are E3 (before) and E4 (after) (CGAL
@@ -51,7 +41,7 @@ EdgeConflictDecision finite_edge_interior_conflict(const Ellipse& e1, const Elli
 // (E2, E3, inf) to that of (E4, E2, inf); Q's conflict region on it is bounded
 // by the tangent lines of the infinite vertices (Q, E2, inf) and (E2, Q, inf). Everything is an exact comparison of degree-4
 // tangency parameters on E2, so the answer is always decided.
-EdgeConflictDecision infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
-                                                     const Ellipse& q, bool endpoints_in_conflict);
+Decision<bool> infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+                                               const Ellipse& q, bool endpoints_in_conflict);
 
 }  // namespace ellvor

@@ -8,12 +8,12 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/point_ellipse_distance.hpp"
 #include "util/error.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace ellvor {
@@ -24,32 +24,21 @@ const char* incircle_name(InCircle r) {
         case InCircle::no_conflict: return "no-conflict";
         case InCircle::tangent: return "tangent";
         case InCircle::no_circle: return "no-circle";
-        case InCircle::undecided: return "undecided";
     }
     return "?";
 }
 
-int incircle_sign(InCircle r) {
+Sign incircle_sign(InCircle r) {
     switch (r) {
         case InCircle::conflict:
-        case InCircle::no_circle: return -1;
-        case InCircle::no_conflict: return 1;
-        case InCircle::tangent: return 0;
-        case InCircle::undecided: break;
+        case InCircle::no_circle: return Sign::negative;
+        case InCircle::no_conflict: return Sign::positive;
+        case InCircle::tangent: break;
     }
-    throw Error("incircle_sign: the predicate is undecided");
+    return Sign::zero;
 }
 
 namespace {
-
-constexpr long kStartPrecision = 64;
-// Precision limits of the exact stage's root isolation and of the separation
-// of a query proven non-tangent (both far above anything seen in practice).
-// (GMP's temporaries for much larger numbers would not fit the stack.)
-constexpr long kExactIsolationLimit = 1L << 16;
-constexpr long kNonDegenerateLimit = 1L << 17;
-// The enclosure is refined to this many bits below the working precision.
-constexpr long kEnclosureGuard = 16;
 
 // d(V, Q) - rho with double intervals (the filter): -1, +1, or 0.
 int filtered_distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q) {
@@ -99,84 +88,51 @@ int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, lon
 
 // The exact stage (seed section 3.1): Q is externally tangent to the circle
 // of (E1, E2, E3) iff that circle is also a Voronoi circle of (E1, E2, Q) or
-// (E1, Q, E2), i.e. iff one of those touches E1 at the same point. Throws
-// Error when the enclosures cannot isolate their resultant roots within
-// kExactIsolationLimit (an internal limit).
+// (E1, Q, E2), i.e. iff one of those touches E1 at the same point. `prec` is
+// the precision the subdivision reached.
 bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
                      VoronoiCircleSolver& solver, long prec) {
-    const VoronoiCircles with_q = voronoi_circle_count(e1, e2, q);
+    const VoronoiCircles with_q = *voronoi_circle_count(e1, e2, q);
     std::vector<std::array<const Ellipse*, 3>> candidates;
     if (with_q == VoronoiCircles::ccw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &e2, &q});
     if (with_q == VoronoiCircles::cw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &q, &e2});
     for (const auto& triple : candidates) {
-        VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2]);
-        ContactComparison comparison({{&e1, &e2, &e3}, &solver, 0}, {triple, &other, 0});
-        std::optional<bool> same;
-        for (long p = std::max(prec, kStartPrecision); !same && p <= kExactIsolationLimit; p *= 2) {
-            solver.refine_existing(p);
-            other.refine_existing(p);  // its existence is what voronoi_circle_count said
-            same = comparison.same_contact_point();
-        }
-        if (!same)
-            throw Error("incircle: the exact stage could not isolate the resultant roots within " +
-                        std::to_string(kExactIsolationLimit) + " bits (internal limit)");
-        if (*same) return true;
+        VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2]);  // exists: voronoi_circle_count said so
+        if (ContactComparison({{&e1, &e2, &e3}, &solver, 0}, {triple, &other, 0}).same_contact_point(prec))
+            return true;
     }
     return false;
 }
 
 }  // namespace
 
-InCircleDecision incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
-                          const InCircleOptions& options, VoronoiCircleSolver* solver) {
-    InCircleDecision d;
-    if (options.use_filter)
-        if (const auto circles = circle_incircle_filter(e1, e2, e3, q)) {
-            d.stage = Stage::filter;
-            d.result = *circles == CircleInCircle::conflict      ? InCircle::conflict
-                       : *circles == CircleInCircle::no_conflict ? InCircle::no_conflict
-                                                                 : InCircle::no_circle;
-            return d;
-        }
-    const VoronoiCircleCount count = voronoi_circle_count_decided(e1, e2, e3);
-    if (count.circles == VoronoiCircles::none || count.circles == VoronoiCircles::cw_only) {
-        d.result = InCircle::no_circle;
-        d.stage = count.stage;
-        return d;
+Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
+                            const InCircleOptions& options, VoronoiCircleSolver* solver) {
+    if (options.use_filter) {
+        const Decision<InCircle> filtered = circle_incircle_filter(e1, e2, e3, q);
+        if (filtered.is_decided()) return filtered;
     }
+    const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
+    if (*count == VoronoiCircles::none || *count == VoronoiCircles::cw_only) return count.with(InCircle::no_circle);
     std::unique_ptr<VoronoiCircleSolver> own;
     if (!solver) {
         own = std::make_unique<VoronoiCircleSolver>(e1, e2, e3);
         solver = own.get();
     }
-    // Subdivision up to the cap; past it, only after the exact stage proved
-    // that Q is not tangent (then some precision separates, and the loop
-    // ends: kNonDegenerateLimit is only a guard against internal errors).
-    d.stage = Stage::subdivision;
-    bool proven_nonzero = false;
-    for (long prec = kStartPrecision; prec <= kNonDegenerateLimit; prec *= 2) {
-        if (prec > options.max_precision && !proven_nonzero) {
-            if (!options.exact_stage) return d;  // undecided at the cap
-            d.stage = Stage::exact;
-            const bool tangent = tangent_exactly(e1, e2, e3, q, *solver, d.precision);
-            d.newton_steps = solver->enclosure().newton_steps;
-            if (tangent) {
-                d.result = InCircle::tangent;
-                return d;
-            }
-            proven_nonzero = true;
-        }
-        d.precision = prec;
-        // The count said the circle exists: certification is complete, so
-        // "no circle" here would be an internal contradiction (thrown).
-        solver->refine_existing(std::max(prec - kEnclosureGuard, 1L));
-        d.newton_steps = solver->enclosure().newton_steps;
-        if (int s = distance_minus_radius(solver->enclosure(), q, prec)) {
-            d.result = s < 0 ? InCircle::conflict : InCircle::no_conflict;
-            return d;
-        }
-    }
-    throw Error("incircle: a proven non-tangent query was not separated (internal error)");
+    const Decision<Sign> gap = refine_then_exact(
+        "incircle", options.refinement,
+        [&](long prec) {
+            // The count said the circle exists: certification is complete,
+            // so "no circle" here would be an internal contradiction (thrown).
+            solver->refine_existing(std::max(prec - precision::kEnclosureGuard, 1L));
+            return distance_minus_radius(solver->enclosure(), q, prec);
+        },
+        [&](long prec) { return tangent_exactly(e1, e2, e3, q, *solver, prec); });
+    if (!gap.is_decided()) return Decision<InCircle>::undecided(gap.stage, gap.precision);
+    const InCircle result = *gap == Sign::negative ? InCircle::conflict
+                            : *gap == Sign::positive ? InCircle::no_conflict
+                                                     : InCircle::tangent;
+    return gap.with(result);
 }
 
 }  // namespace ellvor

@@ -3,8 +3,8 @@
 #include "predicates/external_bitangent.hpp"
 #include "sites/ellipse_polynomials.hpp"
 #include "util/error.hpp"
-
 #include "util/interval.hpp"
+#include "util/precision.hpp"
 
 #include <arb_fmpz_poly.h>
 
@@ -17,7 +17,6 @@ namespace {
 
 constexpr long kBitangentFormalDegree = 4;
 constexpr long kIntersectionFormalDegree = 4;
-constexpr long kStartPrecision = 64;
 
 // ---------------------------------------------------------------- filter --
 //
@@ -205,13 +204,14 @@ Ball support_position(const Ellipse& e, const BallPoint& n, const BallPoint& d, 
 // CGAL's tie-break: Q touches L from the sites' side; NEGATIVE iff its contact
 // point is strictly between those of E1 and E2 along L. The contact points
 // coincide only when Q passes through a site's contact point, which is
-// checked exactly; otherwise Arb separates them at some precision.
-SignDecision break_tangency_tie(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, BoundaryParameter& t1) {
+// checked exactly; otherwise Arb separates them at some precision (distinct
+// algebraic numbers of degree 4: reaching the limit is an internal error).
+Decision<Sign> break_tangency_tie(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, BoundaryParameter& t1) {
     BoundaryParameter t2 = external_bitangent_on(e2, e1, HullSide::departure);
     const bool at_first = sign_at(intersection_quartic(e1, q), kIntersectionFormalDegree, t1) == 0;
     const bool at_second = sign_at(intersection_quartic(e2, q), kIntersectionFormalDegree, t2) == 0;
-    if (at_first || at_second) return {1, Stage::exact, 0};
-    for (long prec = kStartPrecision;; prec *= 2) {
+    if (at_first || at_second) return Decision<Sign>::decided(Sign::positive, Stage::exact);
+    for (long prec = precision::kStart; prec <= precision::kResumeLimit; prec *= 2) {
         const BallPoint n = outward_normal(e1, t1, prec);
         BallPoint d;  // the direction of L from E1's contact to E2's: n turned clockwise
         d.x = n.y;
@@ -222,27 +222,30 @@ SignDecision break_tangency_tie(const Ellipse& e1, const Ellipse& e2, const Elli
         arb_sub(after_first.get(), sq.get(), s1.get(), prec);
         arb_sub(before_second.get(), s2.get(), sq.get(), prec);
         const int a = after_first.certain_sign(), b = before_second.certain_sign();
-        if (a < 0 || b < 0) return {1, Stage::exact, prec};
-        if (a > 0 && b > 0) return {-1, Stage::exact, prec};
+        if (a < 0 || b < 0) return Decision<Sign>::decided(Sign::positive, Stage::exact, prec);
+        if (a > 0 && b > 0) return Decision<Sign>::decided(Sign::negative, Stage::exact, prec);
     }
+    throw Error("infinite_vertex_conflict: contact points on the bitangent not separated within " +
+                std::to_string(precision::kResumeLimit) + " bits (internal error)");
 }
 
 }  // namespace
 
-SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
-                                      const InfiniteVertexConflictOptions& options) {
+Decision<Sign> infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
+                                        const InfiniteVertexConflictOptions& options) {
+    auto exactly = [](Sign s) { return Decision<Sign>::decided(s, Stage::exact); };
     // L is tangent to E1 where the counter-clockwise hull of E1 and E2 arrives
     // on E1: directed from E1's contact to E2's, both sites lie on its right.
     if (options.use_filter)
-        if (int s = filter_stage(e1, e2, q)) return {s, Stage::filter, 53};
+        if (int s = filter_stage(e1, e2, q)) return Decision<Sign>::decided(sign_of(s), Stage::filter);
     BoundaryParameter t1 = external_bitangent_on(e1, e2, HullSide::arrival);
     // Does L (the tangent of E1 at t1) cross Q, touch it, or miss it?
     const int meets = sign_at(bitangent_quartic(e1, q), kBitangentFormalDegree, t1);
-    if (meets < 0) return {-1, Stage::exact, 0};
+    if (meets < 0) return exactly(Sign::negative);
     // Q on the sites' side of L (negative) or beyond it, judged by its center.
     const int side = sign_at(tangent_side_quadratic(e1, q.center()), 2, t1);
-    if (side > 0) return {-1, Stage::exact, 0};
-    if (meets > 0) return {1, Stage::exact, 0};
+    if (side > 0) return exactly(Sign::negative);
+    if (meets > 0) return exactly(Sign::positive);
     return break_tangency_tie(e1, e2, q, t1);
 }
 

@@ -24,7 +24,8 @@ namespace ellvor {
 struct InfiniteVertexConflictOptions {
     bool use_filter = true;  // false: skip the filter (for tests and experiments)
 };
-SignDecision infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
-                                      const InfiniteVertexConflictOptions& options = {});
+// Always decided.
+Decision<Sign> infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
+                                        const InfiniteVertexConflictOptions& options = {});
 
 }  // namespace ellvor

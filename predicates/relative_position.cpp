@@ -66,23 +66,24 @@ bool bounding_circles_apart(const Ellipse& e1, const Ellipse& e2) {
 
 }  // namespace
 
-RelativePositionResult relative_position_decided(const Ellipse& e1, const Ellipse& e2) {
-    if (bounding_circles_apart(e1, e2)) return {RelativePosition::separated, Stage::filter};
+Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2) {
+    auto exactly = [](RelativePosition p) { return Decision<RelativePosition>::decided(p, Stage::exact); };
+    if (bounding_circles_apart(e1, e2)) return Decision<RelativePosition>::decided(RelativePosition::separated, Stage::filter);
     const IntPolynomial i12 = intersection_quartic(e1, e2);
-    if (i12.is_zero()) return {RelativePosition::identical, Stage::exact};
+    if (i12.is_zero()) return exactly(RelativePosition::identical);
     const ContactPoints contact = contact_points(i12);
-    if (contact.crossing) return {RelativePosition::intersecting, Stage::exact};
+    if (contact.crossing) return exactly(RelativePosition::intersecting);
     // No crossing: E1 is inside E2 or not, judged away from the contacts.
     const bool tangent = contact.touching;
     if (side_of_boundary(i12) < 0)
-        return {tangent ? RelativePosition::first_inside_tangent : RelativePosition::first_inside, Stage::exact};
+        return exactly(tangent ? RelativePosition::first_inside_tangent : RelativePosition::first_inside);
     if (side_of_boundary(intersection_quartic(e2, e1)) < 0)
-        return {tangent ? RelativePosition::second_inside_tangent : RelativePosition::second_inside, Stage::exact};
-    return {tangent ? RelativePosition::externally_tangent : RelativePosition::separated, Stage::exact};
+        return exactly(tangent ? RelativePosition::second_inside_tangent : RelativePosition::second_inside);
+    return exactly(tangent ? RelativePosition::externally_tangent : RelativePosition::separated);
 }
 
 bool is_hidden(const Ellipse& p, const Ellipse& q) {
-    switch (relative_position(p, q)) {
+    switch (*relative_position(p, q)) {
         case RelativePosition::second_inside:
         case RelativePosition::second_inside_tangent:
         case RelativePosition::identical: return true;

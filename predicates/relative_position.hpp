@@ -21,15 +21,9 @@ enum class RelativePosition {
 
 const char* relative_position_name(RelativePosition p);
 
-struct RelativePositionResult {
-    RelativePosition position;
-    Stage stage;  // filter: bounding circles apart; exact: intersection quartic
-};
-
-RelativePositionResult relative_position_decided(const Ellipse& e1, const Ellipse& e2);
-inline RelativePosition relative_position(const Ellipse& e1, const Ellipse& e2) {
-    return relative_position_decided(e1, e2).position;
-}
+// Always decided: by the filter (bounding circles apart) or exactly (the
+// intersection quartic).
+Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2);
 
 // CGAL's Is_hidden(p, q): q lies inside p, internal tangency and identical
 // sites included.

@@ -71,10 +71,6 @@ Ball squared_distance(const Ellipse& e, const Point& p, FootPoints& feet, long p
     return best;
 }
 
-// Balls of the squared distances shrink to points, so isolation succeeds long
-// before this; reaching it means an inconsistency, reported rather than looped.
-constexpr long kExactPrecisionLimit = 1L << 16;
-
 // The root of p inside the ball, if the ball isolates exactly one.
 std::optional<AlgebraicReal> unique_root_in(const IntPolynomial& p, const Ball& b) {
     Rational lo, hi;
@@ -127,12 +123,13 @@ int circle_exact(const Ellipse& e1, const Ellipse& e2, const Point& p) {
 
 }  // namespace
 
-SignDecision side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
-                              const SideOfBisectorOptions& options) {
+Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
+                                const SideOfBisectorOptions& options) {
+    auto decided = [](int s, Stage stage, long prec = 0) { return Decision<Sign>::decided(sign_of(s), stage, prec); };
     if (e1.is_circle() && e2.is_circle()) {
         if (options.use_filter)
-            if (int s = circle_filter(e1, e2, enclose(p.x), enclose(p.y))) return {s, Stage::filter, 53};
-        return {circle_exact(e1, e2, p), Stage::exact, 0};
+            if (int s = circle_filter(e1, e2, enclose(p.x), enclose(p.y))) return decided(s, Stage::filter);
+        return decided(circle_exact(e1, e2, p), Stage::exact);
     }
     // Which side of each boundary p is on: inside one and outside the other
     // decides at once (signed distances).
@@ -145,30 +142,32 @@ SignDecision side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point&
         side1 = e1.side_of_point(p.x, p.y);
         side2 = e2.side_of_point(p.x, p.y);
     }
-    if (side1 != side2) return {side1 < side2 ? 1 : -1, side_stage, 0};
-    if (side1 == 0) return {0, Stage::exact, 0};  // on both boundaries
+    if (side1 != side2) return decided(side1 < side2 ? 1 : -1, side_stage);
+    if (side1 == 0) return decided(0, Stage::exact);  // on both boundaries
 
     if (options.use_filter)
-        if (int s = filter_stage(q1, q2, side1, side2)) return {s, Stage::filter, 53};
+        if (int s = filter_stage(q1, q2, side1, side2)) return decided(s, Stage::filter);
 
     // Both outside: nearer means smaller squared distance; both inside: the
     // signed distance is -d, so nearer means larger d.
     const int orientation = side1 > 0 ? 1 : -1;
     FootPoints feet1 = foot_points(e1, p), feet2 = foot_points(e2, p);
-    long prec = options.start_precision;
+    long prec = precision::kStart;
     for (; prec <= options.max_precision; prec *= 2) {
         Ball diff;
         arb_sub(diff.get(), squared_distance(e2, p, feet2, prec).get(),
                 squared_distance(e1, p, feet1, prec).get(), prec);
-        if (int s = diff.certain_sign()) return {orientation * s, Stage::subdivision, prec};
+        if (int s = diff.certain_sign()) return decided(orientation * s, Stage::subdivision, prec);
     }
     // Exact: each squared distance is the root of its squared-distance quartic
-    // isolated by its ball; compare the two algebraic numbers.
+    // isolated by its ball (the balls shrink to points, so isolation succeeds;
+    // the limit reports an inconsistency rather than looping); compare the
+    // two algebraic numbers.
     const IntPolynomial delta1 = squared_distance_quartic(e1, p), delta2 = squared_distance_quartic(e2, p);
-    for (; prec <= kExactPrecisionLimit; prec *= 2) {
+    for (; prec <= precision::kExactIsolationLimit; prec *= 2) {
         auto d1 = unique_root_in(delta1, squared_distance(e1, p, feet1, prec));
         auto d2 = unique_root_in(delta2, squared_distance(e2, p, feet2, prec));
-        if (d1 && d2) return {orientation * compare(*d2, *d1), Stage::exact, prec};
+        if (d1 && d2) return decided(orientation * compare(*d2, *d1), Stage::exact, prec);
     }
     throw Error("side_of_bisector: no squared-distance root isolated (internal error)");
 }

@@ -19,14 +19,7 @@ enum class VoronoiCircles {
 const char* voronoi_circles_name(VoronoiCircles v);
 
 // Sites must be pairwise separated or externally tangent; a hidden pair gives
-// none. `stage` is the latest stage any of the kappa2 calls needed.
-struct VoronoiCircleCount {
-    VoronoiCircles circles;
-    Stage stage;
-};
-VoronoiCircleCount voronoi_circle_count_decided(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
-inline VoronoiCircles voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-    return voronoi_circle_count_decided(e1, e2, e3).circles;
-}
+// none. Always decided; the stage is the latest any of the kappa2 calls needed.
+Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 }  // namespace ellvor

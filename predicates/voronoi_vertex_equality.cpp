@@ -3,6 +3,8 @@
 #include "exact/incircle_resultant.hpp"
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
+#include "util/error.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 
@@ -67,7 +69,21 @@ IntPolynomial ContactComparison::polynomial(const CertifiedVoronoiCircle& c) con
     return squarefree_part(product);
 }
 
-std::optional<bool> ContactComparison::same_contact_point() {
+bool ContactComparison::same_contact_point(long reached_precision) {
+    const long limit = std::max(precision::kExactIsolationLimit, 4 * reached_precision);
+    // From the start precision: a solver refined further already has these
+    // bits, and the other one (often fresh) needs only what isolation needs.
+    for (long p = precision::kStart; p <= limit; p *= 2) {
+        // Both circles exist (the caller's premise), so refining cannot fail.
+        a_.solver->refine_existing(p);
+        b_.solver->refine_existing(p);
+        if (const std::optional<bool> same = same_contact_point_at_current_precision()) return *same;
+    }
+    throw Error("the exact stage could not isolate the resultant roots of two Voronoi vertices within " +
+                std::to_string(limit) + " bits (internal error)");
+}
+
+std::optional<bool> ContactComparison::same_contact_point_at_current_precision() {
     if (!chart_) {
         // A contact with |t| > 1 (flipped chart) may be at the i-point: use the
         // twin whose quarter turn brings it to |t''| <= 1.

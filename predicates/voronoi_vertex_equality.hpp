@@ -31,12 +31,19 @@ struct CertifiedVoronoiCircle {
 class ContactComparison {
 public:
     ContactComparison(const CertifiedVoronoiCircle& a, const CertifiedVoronoiCircle& b) : a_(a), b_(b) {}
-    // true / false, proven; nullopt when an enclosure does not yet isolate a
-    // single root of its resultant (refine the solvers and ask again). The
-    // resultants are computed on first need and kept.
-    std::optional<bool> same_contact_point();
+    // Whether the two circles touch the shared site at the same point, proven
+    // exactly. Refines both solvers, doubling the precision, until each
+    // enclosure isolates a single root of its resultant (the resultants are
+    // computed on first need and kept). Throws Error past
+    // max(precision::kExactIsolationLimit, 4 reached_precision) bits, where
+    // reached_precision is what the subdivision stage already spent: simple
+    // roots are isolated long before (an internal error).
+    bool same_contact_point(long reached_precision);
 
 private:
+    // The same at the solvers' current precision; nullopt when an enclosure
+    // does not yet isolate a single root.
+    std::optional<bool> same_contact_point_at_current_precision();
     enum class Chart { t, twin_minus, twin_plus };  // parameter of E, or of its twin turned by -+ pi/2
     Ball contact(const CertifiedVoronoiCircle& c) const;
     IntPolynomial polynomial(const CertifiedVoronoiCircle& c) const;

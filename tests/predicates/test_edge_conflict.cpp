@@ -98,9 +98,9 @@ std::string replay(std::initializer_list<const Ellipse*> sites, bool b) {
     return s.str();
 }
 
-std::string show(const EdgeConflictDecision& d) {
+std::string show(const Decision<bool>& d) {
     std::ostringstream s;
-    s << "conflict " << (d.conflict ? (*d.conflict ? "true" : "false") : "undecided") << " stage "
+    s << "conflict " << (d.is_decided() ? (*d ? "true" : "false") : "undecided") << " stage "
       << stage_name(d.stage) << " precision " << d.precision;
     return s.str();
 }
@@ -108,17 +108,17 @@ std::string show(const EdgeConflictDecision& d) {
 // Conflict status of Q at a finite vertex (the CCW Voronoi circle of the
 // triple must exist): nullopt when InCircle is tangent or undecided.
 std::optional<bool> finite_vertex_status(const Ellipse& a, const Ellipse& b, const Ellipse& c, const Ellipse& q) {
-    const InCircleDecision d = incircle(a, b, c, q);
-    if (d.result == InCircle::conflict) return true;
-    if (d.result == InCircle::no_conflict) return false;
+    const Decision<InCircle> d = incircle(a, b, c, q);
+    if ((*d) == InCircle::conflict) return true;
+    if ((*d) == InCircle::no_conflict) return false;
     return std::nullopt;
 }
 // Conflict status at the infinite vertex (a, b, inf) (kappa2, never zero).
 bool infinite_vertex_status(const Ellipse& a, const Ellipse& b, const Ellipse& q) {
-    return infinite_vertex_conflict(a, b, q).sign < 0;
+    return *infinite_vertex_conflict(a, b, q) == Sign::negative;
 }
 bool has_ccw_circle(const Ellipse& a, const Ellipse& b, const Ellipse& c) {
-    const VoronoiCircles v = voronoi_circle_count(a, b, c);
+    const VoronoiCircles v = *voronoi_circle_count(a, b, c);
     return v == VoronoiCircles::ccw_only || v == VoronoiCircles::both;
 }
 
@@ -130,7 +130,7 @@ struct Tally {
     std::string failures, collinear_cases;
 
     // c[0], c[1] are E1, E2 and c.back() is Q.
-    void record(const std::vector<Circle>& c, bool b, const EdgeConflictDecision& got, bool cgal) {
+    void record(const std::vector<Circle>& c, bool b, const Decision<bool>& got, bool cgal) {
         ++cases;
         ++b_values[b];
         stages.record(got.stage);
@@ -140,18 +140,18 @@ struct Tally {
         const Circle &p1 = c[0], &p2 = c[1], &q = c.back();
         const bool on_line = (p2.x - p1.x) * (q.y - p1.y) == (p2.y - p1.y) * (q.x - p1.x);
         collinear += on_line;
-        if (!got.conflict && on_line) {
+        if (!got.is_decided() && on_line) {
             ++collinear_undecided;
             collinear_cases += replay(c, b);
             return;
         }
-        if (!got.conflict) {
+        if (!got.is_decided()) {
             ++undecided;
             failures += "undecided (" + show(got) + "):" + replay(c, b);
             return;
         }
-        ++answers[*got.conflict];
-        if (*got.conflict != cgal) {
+        ++answers[*got];
+        if (*got != cgal) {
             ++disagreements;
             failures += std::string("disagreement: CGAL ") + (cgal ? "true" : "false") + ", ellvor " + show(got) +
                         ":" + replay(c, b);
@@ -163,8 +163,8 @@ struct Tally {
                         "disagreements %d; stages filter %lu subdivision %lu exact %lu; collinear E1 E2 Q centers "
                         "%d (undecided %d)\n",
                         name, cases, b_values[0], b_values[1], answers[0], answers[1], undecided, disagreements,
-                        (unsigned long)stages.decided[0], (unsigned long)stages.decided[1],
-                        (unsigned long)stages.decided[2], collinear, collinear_undecided);
+                        (unsigned long)stages[Stage::filter], (unsigned long)stages[Stage::subdivision],
+                        (unsigned long)stages[Stage::exact], collinear, collinear_undecided);
         if (verbose() && !collinear_cases.empty())
             std::printf("[kappa4/%s] undecided with collinear centers:%s", name, collinear_cases.c_str());
         INFO(failures);
@@ -240,13 +240,13 @@ TEST_CASE("kappa4 six sites: random disjoint circles agree with CGAL", "[predica
             continue;
         }
         const bool b = *s123;
-        const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, p3, p4, q, b);
+        const Decision<bool> got = finite_edge_interior_conflict(p1, p2, p3, p4, q, b);
         const bool want = cgal(c[0].cgal(), c[1].cgal(), c[2].cgal(), c[3].cgal(), c[4].cgal(), b);
         tally.record(c, b, got, want);
     }
     if (verbose()) std::printf("[kappa4/6 sites] skipped: no vertex %d, end statuses differ %d\n", skipped_no_vertex, skipped_status);
     tally.report("6 sites");
-    CHECK(tally.stages.decided[static_cast<int>(Stage::subdivision)] >= 30);
+    CHECK(tally.stages[Stage::subdivision] >= 30);
 }
 
 TEST_CASE("kappa4 five sites: random disjoint circles agree with CGAL", "[predicates][kappa4]") {
@@ -269,13 +269,13 @@ TEST_CASE("kappa4 five sites: random disjoint circles agree with CGAL", "[predic
             continue;
         }
         const bool b = *s123;
-        const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, p3, q, b);
+        const Decision<bool> got = finite_edge_interior_conflict(p1, p2, p3, q, b);
         const bool want = cgal(c[0].cgal(), c[1].cgal(), c[2].cgal(), c[3].cgal(), b);
         tally.record(c, b, got, want);
     }
     if (verbose()) std::printf("[kappa4/5 sites] skipped: no vertex %d, end statuses differ %d\n", skipped_no_vertex, skipped_status);
     tally.report("5 sites");
-    CHECK(tally.stages.decided[static_cast<int>(Stage::subdivision)] >= 30);
+    CHECK(tally.stages[Stage::subdivision] >= 30);
 }
 
 TEST_CASE("kappa4 four sites: random disjoint circles agree with CGAL", "[predicates][kappa4]") {
@@ -294,7 +294,7 @@ TEST_CASE("kappa4 four sites: random disjoint circles agree with CGAL", "[predic
             ++skipped_status;
             continue;
         }
-        const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, q, b);
+        const Decision<bool> got = finite_edge_interior_conflict(p1, p2, q, b);
         const bool want = cgal(c[0].cgal(), c[1].cgal(), c[2].cgal(), b);
         tally.record(c, b, got, want);
     }
@@ -315,7 +315,7 @@ TEST_CASE("kappa4 infinite edge: random disjoint circles agree with CGAL", "[pre
         ++quadruples;
         const Ellipse p2 = c[0].ellipse(), p3 = c[1].ellipse(), p4 = c[2].ellipse(), q = c[3].ellipse();
         for (bool b : {false, true}) {
-            const EdgeConflictDecision got = infinite_edge_interior_conflict(p2, p3, p4, q, b);
+            const Decision<bool> got = infinite_edge_interior_conflict(p2, p3, p4, q, b);
             const bool want = cgal(c[0].cgal(), c[1].cgal(), c[2].cgal(), c[3].cgal(), b);
             tally.record(c, b, got, want);
             INFO(replay(c, b));
@@ -379,7 +379,7 @@ TEST_CASE("kappa4 on CGAL's test vectors that are valid ellvor input", "[predica
             std::vector<Ellipse> e;
             for (const Circle& c : v.sites) e.push_back(c.ellipse());
             const auto& s = v.sites;
-            EdgeConflictDecision got;
+            Decision<bool> got;
             bool cgal = false;
             if (kind == 6) {
                 got = finite_edge_interior_conflict(e[0], e[1], e[2], e[3], e[4], v.b);
@@ -397,8 +397,8 @@ TEST_CASE("kappa4 on CGAL's test vectors that are valid ellvor input", "[predica
             }
             INFO(show(got));
             CHECK(cgal == v.want);  // CGAL still asserts this
-            REQUIRE(got.conflict.has_value());
-            CHECK(*got.conflict == v.want);
+            REQUIRE(got.is_decided());
+            CHECK(*got == v.want);
         }
     };
     run(six, 6);
@@ -439,10 +439,10 @@ TEST_CASE("kappa4 on CGAL's invalid vectors repaired into disjoint sites agrees 
         REQUIRE(s123.has_value());
         INFO(replay(s, *s123));
         REQUIRE(s123 == s142);
-        const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, p3, p4, eq, *s123);
+        const Decision<bool> got = finite_edge_interior_conflict(p1, p2, p3, p4, eq, *s123);
         INFO(show(got));
-        REQUIRE(got.conflict.has_value());
-        CHECK(*got.conflict == cgal(a1.cgal(), a2.cgal(), a3.cgal(), a4.cgal(), q.cgal(), *s123));
+        REQUIRE(got.is_decided());
+        CHECK(*got == cgal(a1.cgal(), a2.cgal(), a3.cgal(), a4.cgal(), q.cgal(), *s123));
         ++checked;
     }
     for (const Circle& q : {Circle{0, -48, 0.5}, Circle{-1, 0, 50}, Circle{-1, 300, 149}}) {
@@ -454,10 +454,10 @@ TEST_CASE("kappa4 on CGAL's invalid vectors repaired into disjoint sites agrees 
         REQUIRE(s123.has_value());
         INFO(replay(s, *s123));
         if (*s123 != infinite_vertex_status(p2, p1, eq)) continue;
-        const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, p3, eq, *s123);
+        const Decision<bool> got = finite_edge_interior_conflict(p1, p2, p3, eq, *s123);
         INFO(show(got));
-        REQUIRE(got.conflict.has_value());
-        CHECK(*got.conflict == cgal(f1.cgal(), f2.cgal(), f3.cgal(), q.cgal(), *s123));
+        REQUIRE(got.is_decided());
+        CHECK(*got == cgal(f1.cgal(), f2.cgal(), f3.cgal(), q.cgal(), *s123));
         ++checked;
     }
     for (const Circle& q : {Circle{20, 0, 0.5}, Circle{20, 0, 4.5}, Circle{4, 0, 0.5}, Circle{4, 0, 0.875}}) {
@@ -467,10 +467,10 @@ TEST_CASE("kappa4 on CGAL's invalid vectors repaired into disjoint sites agrees 
         const bool b = infinite_vertex_status(p1, p2, eq);
         INFO(replay(s, b));
         if (b != infinite_vertex_status(p2, p1, eq)) continue;
-        const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, eq, b);
+        const Decision<bool> got = finite_edge_interior_conflict(p1, p2, eq, b);
         INFO(show(got));
-        REQUIRE(got.conflict.has_value());
-        CHECK(*got.conflict == cgal(g1.cgal(), g2.cgal(), q.cgal(), b));
+        REQUIRE(got.is_decided());
+        CHECK(*got == cgal(g1.cgal(), g2.cgal(), q.cgal(), b));
         ++checked;
     }
     for (const Circle& q : {Circle{0, 150, 49.5}, Circle{0, -150, 49.5}, Circle{0, -250, 140}}) {
@@ -478,12 +478,12 @@ TEST_CASE("kappa4 on CGAL's invalid vectors repaired into disjoint sites agrees 
         REQUIRE(all_apart(s));
         for (bool b : {false, true}) {
             INFO(replay(s, b));
-            const EdgeConflictDecision got =
+            const Decision<bool> got =
                 infinite_edge_interior_conflict(i2.ellipse(), i3.ellipse(), i4.ellipse(), q.ellipse(), b);
             INFO(show(got));
             CHECK(got.stage == Stage::exact);
-            REQUIRE(got.conflict.has_value());
-            CHECK(*got.conflict == cgal_infinite(i2.cgal(), i3.cgal(), i4.cgal(), q.cgal(), b));
+            REQUIRE(got.is_decided());
+            CHECK(*got == cgal_infinite(i2.cgal(), i3.cgal(), i4.cgal(), q.cgal(), b));
             ++checked;
         }
     }
@@ -500,11 +500,11 @@ TEST_CASE("kappa4 on symmetric ellipse configurations with a known answer", "[pr
     // (bisector_order.hpp).
     const Ellipse e1(2, 1, 0, 0, -5), e2(2, 1, 0, 0, 5);
     enum class Order { needed, not_needed, any };
-    auto expect = [](const EdgeConflictDecision& got, bool want, Order order, const std::string& input) {
+    auto expect = [](const Decision<bool>& got, bool want, Order order, const std::string& input) {
         INFO(input << show(got));
         if (verbose()) std::printf("[kappa4/symmetric] %s\n", show(got).c_str());
-        REQUIRE(got.conflict.has_value());
-        CHECK(*got.conflict == want);
+        REQUIRE(got.is_decided());
+        CHECK(*got == want);
         if (order == Order::needed) {  // Voronoi circles ordered along the bisector
             CHECK(got.stage == Stage::subdivision);
             CHECK(got.precision >= 64);
@@ -528,7 +528,7 @@ TEST_CASE("kappa4 on symmetric ellipse configurations with a known answer", "[pr
         const Ellipse q(1, Rational(1, 2UL), 0, 0, 0);
         REQUIRE(!infinite_vertex_status(e1, e2, q));
         REQUIRE(!infinite_vertex_status(e2, e1, q));
-        REQUIRE(voronoi_circle_count(e1, e2, q) == VoronoiCircles::both);
+        REQUIRE(*voronoi_circle_count(e1, e2, q) == VoronoiCircles::both);
         expect(finite_edge_interior_conflict(e1, e2, q, false), true, Order::any, replay({&e1, &e2, &q}, false));
     }
 
@@ -626,10 +626,10 @@ TEST_CASE("kappa4 when Q's center is collinear with the centers of E1, E2", "[pr
         REQUIRE(finite_vertex_status(e1, l4, e2, k.q) == std::optional<bool>(k.b));
         VoronoiCircleSolver solver(e1, e2, k.q);
         CHECK(solver.certify());
-        const EdgeConflictDecision got = finite_edge_interior_conflict(e1, e2, l3, l4, k.q, k.b);
+        const Decision<bool> got = finite_edge_interior_conflict(e1, e2, l3, l4, k.q, k.b);
         INFO(show(got));
-        REQUIRE(got.conflict.has_value());
-        CHECK(*got.conflict == k.want);
+        REQUIRE(got.is_decided());
+        CHECK(*got == k.want);
     }
     // CGAL's 6-site vector p1 = (0,-100,50), p2 = (0,100,51), p3 = (-150,0,49),
     // p4 = (150,0,48) with q = (0,-49,0) repaired to radius 1/2.
@@ -644,10 +644,10 @@ TEST_CASE("kappa4 when Q's center is collinear with the centers of E1, E2", "[pr
     Traits traits;
     const bool want = traits.finite_edge_interior_conflict_2_object()(a1.cgal(), a2.cgal(), a3.cgal(), a4.cgal(),
                                                                       q.cgal(), *s123);
-    const EdgeConflictDecision got = finite_edge_interior_conflict(p1, p2, p3, p4, eq, *s123);
+    const Decision<bool> got = finite_edge_interior_conflict(p1, p2, p3, p4, eq, *s123);
     INFO(show(got));
-    REQUIRE(got.conflict.has_value());
-    CHECK(*got.conflict == want);
+    REQUIRE(got.is_decided());
+    CHECK(*got == want);
 }
 
 TEST_CASE("kappa4 infinite edge on a symmetric ellipse configuration", "[predicates][kappa4]") {
@@ -662,10 +662,10 @@ TEST_CASE("kappa4 infinite edge on a symmetric ellipse configuration", "[predica
         INFO(replay({&e2, &e3, &e4, &q}, b));
         REQUIRE(infinite_vertex_status(e2, e3, q) == b);
         REQUIRE(infinite_vertex_status(e4, e2, q) == b);
-        const EdgeConflictDecision got = infinite_edge_interior_conflict(e2, e3, e4, q, b);
+        const Decision<bool> got = infinite_edge_interior_conflict(e2, e3, e4, q, b);
         INFO(show(got));
-        REQUIRE(got.conflict.has_value());
-        CHECK(*got.conflict == want);
+        REQUIRE(got.is_decided());
+        CHECK(*got == want);
         CHECK(got.stage == Stage::exact);
     };
     // Far below: beyond every bottom tangent line -> the whole edge.

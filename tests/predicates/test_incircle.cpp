@@ -50,9 +50,9 @@ Rational ten_to_minus(int k) {
     return r;
 }
 
-std::string show(const InCircleDecision& d) {
-    return std::string("result ") + incircle_name(d.result) + " stage " + stage_name(d.stage) + " precision " +
-           std::to_string(d.precision) + " newton " + std::to_string(d.newton_steps);
+std::string show(const Decision<InCircle>& d) {
+    return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
+           stage_name(d.stage) + " precision " + std::to_string(d.precision);
 }
 
 bool has_ccw(VoronoiCircles v) { return v == VoronoiCircles::ccw_only || v == VoronoiCircles::both; }
@@ -83,18 +83,18 @@ TEST_CASE("incircle on 1200 random integer circle quadruples agrees with CGAL an
         ++total;
         const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse(), q = c[3].ellipse();
         INFO(apollonius::ell({&e1, &e2, &e3, &q}));
-        const VoronoiCircleCount count = voronoi_circle_count_decided(e1, e2, e3);
-        const InCircleDecision got = incircle(e1, e2, e3, q);
-        INFO(show(got) << " count " << voronoi_circles_name(count.circles));
+        const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
+        const Decision<InCircle> got = incircle(e1, e2, e3, q);
+        INFO(show(got) << " count " << voronoi_circles_name((*count)));
         stages.record(got.stage);
         const int cgal = cgal_sign(cgal_conflict(cgal_site(v[0][0], v[0][1], v[0][2]), cgal_site(v[1][0], v[1][1], v[1][2]),
                                                  cgal_site(v[2][0], v[2][1], v[2][2]), cgal_site(v[3][0], v[3][1], v[3][2])));
         INFO("CGAL " << cgal);
         const int want = apollonius::incircle(c[0], c[1], c[2], c[3]);
         INFO("oracle " << want);
-        if (!has_ccw(count.circles)) {
+        if (!has_ccw((*count))) {
             ++no_circle;
-            CHECK(got.result == InCircle::no_circle);
+            CHECK((*got) == InCircle::no_circle);
             CHECK(got.stage == count.stage);  // decided by the kappa2 calls
             if (want == 3)
                 ++oracle_skipped;
@@ -104,13 +104,13 @@ TEST_CASE("incircle on 1200 random integer circle quadruples agrees with CGAL an
             continue;
         }
         ++with_ccw;
-        CHECK(got.result != InCircle::no_circle);
-        if (got.result == InCircle::undecided) {
+        CHECK((*got) != InCircle::no_circle);
+        if (!got.is_decided()) {
             ++undecided;
             undecided_cases += apollonius::ell({&e1, &e2, &e3, &q});
             continue;
         }
-        const int sign = incircle_sign(got.result);
+        const int sign = to_int(incircle_sign(*got));
         ++sign_count[sign + 1];
         CHECK(sign == cgal);
         if (want == 3 || want == 2) {
@@ -123,8 +123,8 @@ TEST_CASE("incircle on 1200 random integer circle quadruples agrees with CGAL an
         std::printf("[incircle/circles] total %d, ccw %d (conflict %d, tangent %d, no_conflict %d), no_circle %d "
                     "(CGAL positive there %d), undecided %d, oracle skipped %d; stages filter %lu subdivision %lu exact %lu\n",
                     total, with_ccw, sign_count[0], sign_count[1], sign_count[2], no_circle, cgal_artifact_positive,
-                    undecided, oracle_skipped, (unsigned long)stages.decided[0], (unsigned long)stages.decided[1],
-                    (unsigned long)stages.decided[2]);
+                    undecided, oracle_skipped, (unsigned long)stages[Stage::filter], (unsigned long)stages[Stage::subdivision],
+                    (unsigned long)stages[Stage::exact]);
         if (!undecided_cases.empty()) std::printf("[incircle/circles] undecided:%s", undecided_cases.c_str());
     }
     INFO("undecided cases:" << undecided_cases);
@@ -155,43 +155,44 @@ TEST_CASE("incircle on random ellipse quadruples: which stage decided", "[predic
         if (!ok) continue;
         ++total;
         INFO(apollonius::ell({&e[0], &e[1], &e[2], &e[3]}));
-        const VoronoiCircleCount count = voronoi_circle_count_decided(e[0], e[1], e[2]);
-        const InCircleDecision got = incircle(e[0], e[1], e[2], e[3]);
-        INFO(show(got) << " count " << voronoi_circles_name(count.circles));
+        const Decision<VoronoiCircles> count = voronoi_circle_count(e[0], e[1], e[2]);
+        VoronoiCircleSolver solver(e[0], e[1], e[2]);
+        const Decision<InCircle> got = incircle(e[0], e[1], e[2], e[3], {}, &solver);
+        INFO(show(got) << " count " << voronoi_circles_name((*count)));
         stages.record(got.stage);
-        if (!has_ccw(count.circles)) {
+        if (!has_ccw((*count))) {
             ++no_circle;
             no_circle_stages.record(got.stage);
-            CHECK(got.result == InCircle::no_circle);
+            CHECK((*got) == InCircle::no_circle);
             CHECK(got.stage == count.stage);
             continue;
         }
-        if (got.result == InCircle::undecided) {
+        if (!got.is_decided()) {
             ++undecided;
             if (verbose()) std::printf("[incircle/ellipses] undecided (%s):%s", show(got).c_str(),
                                        apollonius::ell({&e[0], &e[1], &e[2], &e[3]}).c_str());
             continue;
         }
         CHECK(got.stage == Stage::subdivision);
-        CHECK((got.result == InCircle::conflict || got.result == InCircle::no_conflict));
-        CHECK(got.newton_steps > 0);
+        CHECK(((*got) == InCircle::conflict || (*got) == InCircle::no_conflict));
+        CHECK(solver.enclosure().newton_steps > 0);
         if (got.precision <= 64)
             ++decided_at_start;
         else
             ++decided_higher;
-        // The same answer with a cached solver, and a second call reuses it.
-        VoronoiCircleSolver solver(e[0], e[1], e[2]);
-        const InCircleDecision a = incircle(e[0], e[1], e[2], e[3], {}, &solver);
-        const InCircleDecision b = incircle(e[0], e[1], e[2], e[3], {}, &solver);
-        CHECK(a.result == got.result);
-        CHECK(b.result == got.result);
+        // The same answer without a given solver, and a second call with the
+        // refined one.
+        const Decision<InCircle> a = incircle(e[0], e[1], e[2], e[3]);
+        const Decision<InCircle> b = incircle(e[0], e[1], e[2], e[3], {}, &solver);
+        CHECK((*a) == (*got));
+        CHECK((*b) == (*got));
     }
     if (verbose())
         std::printf("[incircle/ellipses] total %d, at 64 bits %d, higher %d, undecided %d, no_circle %d (filter %lu "
                     "subdivision %lu exact %lu)\n",
                     total, decided_at_start, decided_higher, undecided, no_circle,
-                    (unsigned long)no_circle_stages.decided[0], (unsigned long)no_circle_stages.decided[1],
-                    (unsigned long)no_circle_stages.decided[2]);
+                    (unsigned long)no_circle_stages[Stage::filter], (unsigned long)no_circle_stages[Stage::subdivision],
+                    (unsigned long)no_circle_stages[Stage::exact]);
     CHECK(decided_at_start >= 9 * (total - no_circle) / 10);
     CHECK(undecided == 0);  // the certification of the circle is complete (exhaustive search)
     CHECK(no_circle >= 20);
@@ -205,15 +206,15 @@ TEST_CASE("incircle on an exactly tangent ellipse quadruple and its perturbation
     const Ellipse e1(2, 1, 0, 5, 0), e2(2, 1, 1, 0, 5), e3(2, 1, 0, -5, 0), e4(2, 1, 1, 0, -5);
     const Ellipse* s[4] = {&e1, &e2, &e3, &e4};
     InCircleOptions capped;
-    capped.max_precision = 512;
+    capped.refinement.cap = 512;
     for (int rot = 0; rot < 4; ++rot) {
         const Ellipse &a = *s[rot], &b = *s[(rot + 1) % 4], &c = *s[(rot + 2) % 4], &q = *s[(rot + 3) % 4];
         INFO(apollonius::ell({&a, &b, &c, &q}));
-        const InCircleDecision d = incircle(a, b, c, q, capped);
+        const Decision<InCircle> d = incircle(a, b, c, q, capped);
         if (verbose()) std::printf("[incircle/tangent ellipses] rotation %d: %s\n", rot, show(d).c_str());
         INFO(show(d));
         // Past the cap the exact stage proves it (undecided only without it).
-        CHECK(d.result == InCircle::tangent);
+        CHECK((*d) == InCircle::tangent);
         CHECK(d.stage == Stage::exact);
         CHECK(d.precision >= 512);
     }
@@ -226,9 +227,9 @@ TEST_CASE("incircle on an exactly tangent ellipse quadruple and its perturbation
         long used = 0;
         for (const Ellipse* q : {&away, &toward}) {
             INFO("k " << k << apollonius::ell({&e1, &e2, &e3, q}));
-            const InCircleDecision d = incircle(e1, e2, e3, *q);
+            const Decision<InCircle> d = incircle(e1, e2, e3, *q);
             INFO(show(d));
-            CHECK(d.result == (q == &away ? InCircle::no_conflict : InCircle::conflict));
+            CHECK((*d) == (q == &away ? InCircle::no_conflict : InCircle::conflict));
             CHECK(d.stage == Stage::subdivision);
             used = std::max(used, d.precision);
         }
@@ -247,10 +248,10 @@ TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and per
     const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), e3 = c3.ellipse(), q = cq.ellipse();
     INFO(apollonius::ell({&e1, &e2, &e3, &q}));
     InCircleOptions capped;
-    capped.max_precision = 512;
-    const InCircleDecision d = incircle(e1, e2, e3, q, capped);
+    capped.refinement.cap = 512;
+    const Decision<InCircle> d = incircle(e1, e2, e3, q, capped);
     INFO(show(d));
-    CHECK(d.result == InCircle::tangent);  // by the exact stage past the cap
+    CHECK((*d) == InCircle::tangent);  // by the exact stage past the cap
     CHECK(d.precision >= 512);
     // The closed form cannot certify a sign either.
     const int o = apollonius::incircle(c1, c2, c3, cq);
@@ -262,9 +263,9 @@ TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and per
     {
         const Ellipse q2 = Ellipse::circle(0, -6, 1);
         INFO(apollonius::ell({&e1, &e2, &e3, &q2}));
-        const InCircleDecision d2 = incircle(e1, e2, e3, q2, capped);
+        const Decision<InCircle> d2 = incircle(e1, e2, e3, q2, capped);
         INFO(show(d2));
-        CHECK(d2.result == InCircle::tangent);
+        CHECK((*d2) == InCircle::tangent);
     }
     // CGAL with a larger / smaller fourth radius.
     CHECK(cgal_conflict(cgal_site(6, 0, 1), cgal_site(0, 6, 1), cgal_site(-6, 0, 1), cgal_site(0, -6, 2)) == CGAL::NEGATIVE);
@@ -281,10 +282,10 @@ TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and per
             const apollonius::Circle cp{cq.x, cq.y, dir > 0 ? Rational(1) + eps : Rational(1) - eps};
             const Ellipse qp = cp.ellipse();
             INFO("k " << k << apollonius::ell({&e1, &e2, &e3, &qp}));
-            const InCircleDecision dp = incircle(e1, e2, e3, qp, subdivision_only);
+            const Decision<InCircle> dp = incircle(e1, e2, e3, qp, subdivision_only);
             INFO(show(dp));
-            CHECK(dp.result == (dir > 0 ? InCircle::conflict : InCircle::no_conflict));
-            CHECK(incircle(e1, e2, e3, qp).result == dp.result);  // with the filter
+            CHECK((*dp) == (dir > 0 ? InCircle::conflict : InCircle::no_conflict));
+            CHECK(*incircle(e1, e2, e3, qp) == (*dp));  // with the filter
             CHECK(apollonius::incircle(c1, c2, c3, cp) == (dir > 0 ? -1 : 1));
             used = std::max(used, dp.precision);
         }
@@ -302,13 +303,14 @@ TEST_CASE("incircle: triples without a counter-clockwise circle give no_circle",
     const Ellipse e1 = Ellipse::circle(6, 0, 1), e2 = Ellipse::circle(0, 6, 1), e3 = Ellipse::circle(-6, 0, 1);
     for (const Ellipse& q : {Ellipse::circle(0, 0, 1), Ellipse::circle(0, -6, 1), Ellipse::circle(100, 100, 1)}) {
         INFO(apollonius::ell({&e3, &e2, &e1, &q}));
-        const InCircleDecision d = incircle(e3, e2, e1, q);
+        const Decision<InCircle> d = incircle(e3, e2, e1, q);
         INFO(show(d));
-        CHECK(d.result == InCircle::no_circle);
-        CHECK(incircle_sign(d.result) == -1);
-        CHECK(d.newton_steps == 0);
+        CHECK((*d) == InCircle::no_circle);
+        CHECK(to_int(incircle_sign(*d)) == -1);
+        CHECK(d.is_decided());
     }
-    CHECK_THROWS(incircle_sign(InCircle::undecided));
+    // An undecided answer cannot be read as one.
+    CHECK_THROWS(*Decision<InCircle>::undecided(Stage::subdivision, 64));
 }
 
 // Regression (found by this suite before 978734a, which made the
@@ -336,10 +338,10 @@ TEST_CASE("incircle decides well-separated quadruples with a large Voronoi circl
         REQUIRE(cgal_sign(cgal_conflict(cgal_site(k.v[0][0], k.v[0][1], k.v[0][2]), cgal_site(k.v[1][0], k.v[1][1], k.v[1][2]),
                                         cgal_site(k.v[2][0], k.v[2][1], k.v[2][2]), cgal_site(k.v[3][0], k.v[3][1], k.v[3][2]))) ==
                 k.want);
-        const InCircleDecision d = incircle(e1, e2, e3, q);
+        const Decision<InCircle> d = incircle(e1, e2, e3, q);
         INFO(show(d));
-        CHECK(d.result != InCircle::undecided);
-        if (d.result != InCircle::undecided) CHECK(incircle_sign(d.result) == k.want);
+        CHECK(d.is_decided());
+        if (d.is_decided()) CHECK(to_int(incircle_sign(*d)) == k.want);
         VoronoiCircleSolver solver(e1, e2, e3);
         CHECK(solver.certify());
     }
@@ -366,8 +368,8 @@ TEST_CASE("incircle: the four-circle filter agrees with the general cascade", "[
         ++n;
         const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse(), q = c[3].ellipse();
         INFO(apollonius::ell({&e1, &e2, &e3, &q}));
-        const InCircleDecision fast = incircle(e1, e2, e3, q), slow = incircle(e1, e2, e3, q, no_filter);
-        CHECK(fast.result == slow.result);
+        const Decision<InCircle> fast = incircle(e1, e2, e3, q), slow = incircle(e1, e2, e3, q, no_filter);
+        CHECK((*fast) == (*slow));
         by_filter += fast.stage == Stage::filter;
     }
     CHECK(by_filter > 350);
@@ -384,10 +386,10 @@ TEST_CASE("incircle: a Voronoi center exactly on Q's boundary is a conflict", "[
     InCircleOptions general;
     general.use_filter = false;
     for (const auto& [a, b, c] : {std::tuple{&e1, &e2, &e3}, {&e1, &e3, &e2}}) {
-        const InCircleDecision d = incircle(*a, *b, *c, q, general);
+        const Decision<InCircle> d = incircle(*a, *b, *c, q, general);
         INFO(apollonius::ell({a, b, c, &q}) << show(d));
-        if (d.result == InCircle::no_circle) continue;  // the clockwise order
-        CHECK(d.result == InCircle::conflict);
+        if ((*d) == InCircle::no_circle) continue;  // the clockwise order
+        CHECK((*d) == InCircle::conflict);
         CHECK(d.stage == Stage::subdivision);
         CHECK(d.precision == 64);
     }

@@ -40,9 +40,9 @@ Rational ten_to_minus(int k) {
     return Rational(Integer(1), p);
 }
 
-std::string show(const InCircleDecision& d) {
-    return std::string("result ") + incircle_name(d.result) + " stage " + stage_name(d.stage) + " precision " +
-           std::to_string(d.precision) + " newton " + std::to_string(d.newton_steps);
+std::string show(const Decision<InCircle>& d) {
+    return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
+           stage_name(d.stage) + " precision " + std::to_string(d.precision);
 }
 
 std::string ell(const std::vector<const Ellipse*>& sites) {
@@ -148,27 +148,27 @@ TEST_CASE("incircle exact stage: degenerate quadruples are tangent", "[predicate
     for (const Degenerate& c : {case_a(), case_b(), case_c()}) {
         INFO(c.name << ell({&c.e1, &c.e2, &c.e3, &c.q}));
         const auto start = std::chrono::steady_clock::now();
-        const InCircleDecision d = incircle(c.e1, c.e2, c.e3, c.q);
+        const Decision<InCircle> d = incircle(c.e1, c.e2, c.e3, c.q);
         const double s = seconds_since(start);
         INFO(show(d) << " in " << s << " s");
         if (verbose()) std::printf("[incircle exact] %s: %s, %.3f s\n", c.name.c_str(), show(d).c_str(), s);
-        CHECK(d.result == InCircle::tangent);
+        CHECK((*d) == InCircle::tangent);
         CHECK(d.stage == Stage::exact);
         CHECK(d.precision <= 4096);
         // A lower cap reaches the exact stage sooner, same answer.
         InCircleOptions low;
-        low.max_precision = 256;
-        const InCircleDecision dl = incircle(c.e1, c.e2, c.e3, c.q, low);
+        low.refinement.cap = 256;
+        const Decision<InCircle> dl = incircle(c.e1, c.e2, c.e3, c.q, low);
         INFO("cap 256: " << show(dl));
-        CHECK(dl.result == InCircle::tangent);
+        CHECK((*dl) == InCircle::tangent);
         CHECK(dl.stage == Stage::exact);
         // Subdivision only: the honest answer is undecided at the cap.
         InCircleOptions no_exact;
-        no_exact.exact_stage = false;
-        no_exact.max_precision = 512;
-        const InCircleDecision du = incircle(c.e1, c.e2, c.e3, c.q, no_exact);
+        no_exact.refinement.exact_stage = false;
+        no_exact.refinement.cap = 512;
+        const Decision<InCircle> du = incircle(c.e1, c.e2, c.e3, c.q, no_exact);
         INFO("no exact stage: " << show(du));
-        CHECK(du.result == InCircle::undecided);
+        CHECK(!du.is_decided());
         CHECK(du.stage == Stage::subdivision);
         CHECK(du.precision >= 512);
     }
@@ -183,10 +183,10 @@ TEST_CASE("incircle exact stage: rotations of the degenerate quadruples stay tan
             const Ellipse &a = *s[rot], &b = *s[(rot + 1) % 4], &e = *s[(rot + 2) % 4], &q = *s[(rot + 3) % 4];
             INFO(c.name << " rotation " << rot << ell({&a, &b, &e, &q}));
             InCircleOptions low;
-            low.max_precision = 256;
-            const InCircleDecision d = incircle(a, b, e, q, low);
+            low.refinement.cap = 256;
+            const Decision<InCircle> d = incircle(a, b, e, q, low);
             INFO(show(d));
-            CHECK(d.result == InCircle::tangent);
+            CHECK((*d) == InCircle::tangent);
             CHECK(d.stage == Stage::exact);
         }
     }
@@ -205,12 +205,12 @@ TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[
                 // doubles; it is switched off to watch the subdivision.)
                 InCircleOptions no_filter;
                 no_filter.use_filter = false;
-                const InCircleDecision d = incircle(c.e1, c.e2, c.e3, q, no_filter);
+                const Decision<InCircle> d = incircle(c.e1, c.e2, c.e3, q, no_filter);
                 INFO("default: " << show(d));
-                CHECK(d.result == want);
+                CHECK((*d) == want);
                 CHECK(d.stage == Stage::subdivision);
                 CHECK(d.precision > 3.32 * k);
-                CHECK(incircle(c.e1, c.e2, c.e3, q).result == want);  // with the filter
+                CHECK(*incircle(c.e1, c.e2, c.e3, q) == want);  // with the filter
                 // Cap below the precision needed: the exact stage proves
                 // non-tangency, then the subdivision resumes and separates.
                 // 10^-100 under cap 256 for (b) and (c); for (a), whose i-point
@@ -219,21 +219,21 @@ TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[
                 const bool ipoints = c.name[1] == 'a';
                 if (k == (ipoints ? 30 : 100)) {
                     InCircleOptions low;
-                    low.max_precision = ipoints ? 64 : 256;
+                    low.refinement.cap = ipoints ? 64 : 256;
                     const auto start = std::chrono::steady_clock::now();
-                    const InCircleDecision dl = incircle(c.e1, c.e2, c.e3, q, low);
+                    const Decision<InCircle> dl = incircle(c.e1, c.e2, c.e3, q, low);
                     const double s = seconds_since(start);
-                    INFO("cap " << low.max_precision << ": " << show(dl));
+                    INFO("cap " << low.refinement.cap << ": " << show(dl));
                     if (verbose())
                         std::printf("[incircle exact] %s k %d %s cap %ld: %s, %.3f s\n", c.name.c_str(), k,
-                                    dir > 0 ? "away" : "toward", low.max_precision, show(dl).c_str(), s);
-                    CHECK(dl.result == want);
+                                    dir > 0 ? "away" : "toward", low.refinement.cap, show(dl).c_str(), s);
+                    CHECK((*dl) == want);
                     CHECK(dl.stage == Stage::exact);
-                    CHECK(dl.precision > low.max_precision);
+                    CHECK(dl.precision > low.refinement.cap);
                     // Without the exact stage the same cap leaves it undecided.
                     InCircleOptions no_exact = low;
-                    no_exact.exact_stage = false;
-                    CHECK(incircle(c.e1, c.e2, c.e3, q, no_exact).result == InCircle::undecided);
+                    no_exact.refinement.exact_stage = false;
+                    CHECK(!incircle(c.e1, c.e2, c.e3, q, no_exact).is_decided());
                 }
             }
         }

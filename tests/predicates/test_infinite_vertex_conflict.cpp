@@ -24,9 +24,9 @@ using oracle::Rng;
 
 void expect(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, int want, const char* why = "") {
     INFO(why << oracle::ell({&e1, &e2, &q}));
-    const SignDecision got = infinite_vertex_conflict(e1, e2, q);
+    const Decision<Sign> got = infinite_vertex_conflict(e1, e2, q);
     INFO("stage " << stage_name(got.stage) << " precision " << got.precision);
-    CHECK(got.sign == want);
+    CHECK(to_int(*got) == want);
 }
 
 }  // namespace
@@ -69,17 +69,17 @@ TEST_CASE("kappa2 on 1000 random disjoint circle triples agrees with the closed 
         INFO(oracle::ell({&e1, &e2, &eq}));
         const oracle::InfiniteConflict o = oracle::infinite_vertex_conflict(c1, c2, q);
         REQUIRE(o.sign != 2);
-        const SignDecision got = infinite_vertex_conflict(e1, e2, eq);
+        const Decision<Sign> got = infinite_vertex_conflict(e1, e2, eq);
         INFO("stage " << stage_name(got.stage));
-        CHECK(got.sign == o.sign);
+        CHECK(to_int(*got) == o.sign);
         counters.record(got.stage);
         conflicts += o.sign < 0;
     }
-    INFO("conflicts " << conflicts << "; filter " << counters.decided[0] << " subdivision " << counters.decided[1]
-                      << " exact " << counters.decided[2]);
+    INFO("conflicts " << conflicts << "; filter " << counters[Stage::filter] << " subdivision " << counters[Stage::subdivision]
+                      << " exact " << counters[Stage::exact]);
     CHECK(conflicts > 200);
     CHECK(conflicts < 800);
-    CHECK(counters.decided[0] > 950);  // random triples: the filter decides almost all
+    CHECK(counters[Stage::filter] > 950);  // random triples: the filter decides almost all
 }
 
 TEST_CASE("kappa2's exact stage alone agrees with the closed form", "[predicates][infinite_vertex_conflict]") {
@@ -95,9 +95,9 @@ TEST_CASE("kappa2's exact stage alone agrees with the closed form", "[predicates
         ++n;
         const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), eq = q.ellipse();
         INFO(oracle::ell({&e1, &e2, &eq}));
-        const SignDecision got = infinite_vertex_conflict(e1, e2, eq, exact_only);
+        const Decision<Sign> got = infinite_vertex_conflict(e1, e2, eq, exact_only);
         CHECK(got.stage == Stage::exact);
-        CHECK(got.sign == oracle::infinite_vertex_conflict(c1, c2, q).sign);
+        CHECK(to_int(*got) == oracle::infinite_vertex_conflict(c1, c2, q).sign);
     }
 }
 
@@ -135,8 +135,8 @@ TEST_CASE("kappa2 constructed tangencies on the bitangents y = 1 and y = -1, i-p
     };
     for (const auto& s : sites)
         for (const Q& q : queries) {
-            REQUIRE(relative_position(s.first, q.q) == RelativePosition::separated);
-            REQUIRE(relative_position(s.second, q.q) == RelativePosition::separated);
+            REQUIRE(*relative_position(s.first, q.q) == RelativePosition::separated);
+            REQUIRE(*relative_position(s.second, q.q) == RelativePosition::separated);
             expect(s.first, s.second, q.q, q.want12, q.why);
             expect(s.second, s.first, q.q, q.want21, q.why);
         }
@@ -180,8 +180,8 @@ TEST_CASE("kappa2 on 300+ random disjoint ellipse triples agrees with support-fu
             return Ellipse(rnd_pos(rng, 3, 17), rnd_pos(rng, 3, 13), rnd(rng, -4, 4, 19), rnd(rng, -10, 10, 7), rnd(rng, -10, 10, 9));
         };
         const Ellipse e1 = random_ellipse(), e2 = random_ellipse(), q = random_ellipse();
-        if (relative_position(e1, e2) != RelativePosition::separated || relative_position(e1, q) != RelativePosition::separated ||
-            relative_position(e2, q) != RelativePosition::separated)
+        if (*relative_position(e1, e2) != RelativePosition::separated || *relative_position(e1, q) != RelativePosition::separated ||
+            *relative_position(e2, q) != RelativePosition::separated)
             continue;
         const oracle::NumEllipse n1 = oracle::num(e1), n2 = oracle::num(e2), nq = oracle::num(q);
         oracle::LD phi = 0;
@@ -191,15 +191,15 @@ TEST_CASE("kappa2 on 300+ random disjoint ellipse triples agrees with support-fu
         if (std::fabs(static_cast<double>(margin)) < 1e-9) { ++skipped; continue; }
         const int want = margin > 0 ? -1 : 1;
         INFO("numeric margin h_Q - h_1 = " << static_cast<double>(margin) << " at normal angle " << static_cast<double>(phi));
-        const SignDecision got = infinite_vertex_conflict(e1, e2, q);
+        const Decision<Sign> got = infinite_vertex_conflict(e1, e2, q);
         INFO("stage " << stage_name(got.stage));
-        CHECK(got.sign == want);
+        CHECK(to_int(*got) == want);
         counters.record(got.stage);
         conflicts += want < 0;
         ++compared;
     }
-    INFO("compared " << compared << " skipped " << skipped << " conflicts " << conflicts << "; filter " << counters.decided[0]
-                     << " subdivision " << counters.decided[1] << " exact " << counters.decided[2]);
+    INFO("compared " << compared << " skipped " << skipped << " conflicts " << conflicts << "; filter " << counters[Stage::filter]
+                     << " subdivision " << counters[Stage::subdivision] << " exact " << counters[Stage::exact]);
     CHECK(compared >= 300);
     CHECK(conflicts > 50);
     CHECK(conflicts < compared - 50);

@@ -43,7 +43,7 @@ Rational exact(const std::string& token) {
 }
 
 bool has_ccw_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-    const VoronoiCircles c = voronoi_circle_count(e1, e2, e3);
+    const VoronoiCircles c = *voronoi_circle_count(e1, e2, e3);
     return c == VoronoiCircles::ccw_only || c == VoronoiCircles::both;
 }
 
@@ -254,7 +254,7 @@ TEST_CASE("search proves that a triple has no counter-clockwise circle", "[subdi
     // Unit circles at (-6, 0), (0, 6), (6, 0): their one tangent circle (the
     // origin, radius 5) is clockwise in this order.
     const Ellipse c1 = Ellipse::circle(-6, 0, 1), c2 = Ellipse::circle(0, 6, 1), c3 = Ellipse::circle(6, 0, 1);
-    REQUIRE(voronoi_circle_count(c1, c2, c3) == VoronoiCircles::cw_only);
+    REQUIRE(*voronoi_circle_count(c1, c2, c3) == VoronoiCircles::cw_only);
     VoronoiCircleSolver reversed(c1, c2, c3);
     CHECK_FALSE(reversed.certify_by_search());
     CHECK_FALSE(reversed.certified());
@@ -267,7 +267,7 @@ TEST_CASE("search proves that a triple has no counter-clockwise circle", "[subdi
     int cw_only = 0, none = 0;
     while (cw_only < 4 || none < 2) {
         const auto e = random_ellipse_triple(rng);
-        const VoronoiCircles count = voronoi_circle_count(e[0], e[1], e[2]);
+        const VoronoiCircles count = *voronoi_circle_count(e[0], e[1], e[2]);
         if (count == VoronoiCircles::cw_only && cw_only < 4)
             ++cw_only;
         else if (count == VoronoiCircles::none && none < 2)

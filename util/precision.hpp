@@ -1,0 +1,46 @@
+// The precision policy of the numerical stages, in one place: where the Arb
+// stages start, how far they may go, and the guard bits they keep, each with
+// the reason for its value. Every precision loop in ellvor is bounded by one
+// of these limits and ends with a clear Error, never with a guess.
+#pragma once
+
+#include <algorithm>
+
+namespace ellvor::precision {
+
+// First Arb precision of every stage: one 64-bit limb, the cheapest Arb
+// precision; random inputs are decided here (experiments/results/incircle.md).
+constexpr long kStart = 64;
+
+// Default cap of the subdivision stage: beyond it the exact stage decides
+// whether the compared values are equal. Refining a Voronoi circle to 4096
+// bits costs about a millisecond, a tenth of a degree-184 resultant, and
+// nearly degenerate inputs that need more are rare.
+constexpr long kDefaultCap = 4096;
+// Largest cap a user may ask for (the CLI's --max-precision): Arb works at
+// any precision, and 2^24 bits (16 Mbit numbers) still fit in memory.
+constexpr long kMaxCap = 1L << 24;
+
+// After the exact stage proved that two values differ, the Arb stage resumes
+// above the cap until it separates them. Distinct algebraic numbers of the
+// degrees involved separate long before this; reaching it is an internal
+// error. It grows with the cap so that every cap the CLI accepts leaves room
+// to resume.
+constexpr long kResumeLimit = 1L << 17;
+inline long resume_limit(long cap) { return std::max(kResumeLimit, 4 * cap); }
+
+// The exact stage isolates a resultant root inside a certified enclosure by
+// refining the enclosure; a simple root of a degree-184 polynomial with
+// 10^4-bit coefficients is isolated at a few thousand bits.
+constexpr long kExactIsolationLimit = 1L << 16;
+
+// kappa1 compares two distances that are algebraic of degree 4; its exact
+// stage is cheap (milliseconds), so its Arb stage hands over early.
+constexpr long kSideOfBisectorCap = 512;
+
+// A certified enclosure used to decide a sign at precision p is refined to
+// p - kEnclosureGuard correct bits: the few bits lost by the arithmetic that
+// follows (a distance, an angle) must not eat into what the comparison needs.
+constexpr long kEnclosureGuard = 16;
+
+}  // namespace ellvor::precision
