@@ -24,13 +24,14 @@ const char* const kHelp =
     "(tangency parameters t on E1, E2, E3; center; radius) has at least N correct bits\n"
     "(relative to the value when |value| >= 1, absolute below). Prints JSON:\n"
     "  {\"exists\": true, \"bits\": N, \"correct_bits\", \"precision\", \"newton_steps\", \"time_ms\",\n"
-    "   \"found_by\": \"guess\"|\"search\", \"search_boxes\",\n"
+    "   \"found_by\": \"guess\"|\"tangent-line\"|\"search\", \"search_boxes\",\n"
     "   \"tangency\": [{\"t\": BALL, \"chart\": \"t\"|\"-1/t\", \"chart_parameter\": BALL}, ...],\n"
     "   \"center\": [BALL, BALL], \"radius\": BALL}\n"
     "where BALL is Arb's \"[mid +/- rad]\" text (t is \"inf\" for a tangency at an i-point).\n"
-    "The certificate starts from a floating-point guess, or else from an exhaustive search\n"
-    "over boxes of the tangency parameters and the radius (\"search_boxes\" of them), which\n"
-    "finds the circle whenever it exists.\n"
+    "The certificate starts from a floating-point guess; for a circle far larger than the\n"
+    "sites (nearly collinear sites), from their nearly common tangent line in high precision;\n"
+    "or else from an exhaustive search over boxes of the tangency parameters and the radius\n"
+    "(\"search_boxes\" of them), which finds the circle whenever it exists.\n"
     "A triple without a counter-clockwise circle prints {\"exists\": false, \"circles\": ...}.\n"
     "\n"
     "options:\n"
@@ -73,7 +74,7 @@ int run(const std::vector<std::string>& args) {
          {"precision", c.precision},
          {"newton_steps", c.newton_steps},
          {"time_ms", ms},
-         {"found_by", c.search_boxes > 0 ? "search" : "guess"},
+         {"found_by", circle_start_name(c.found_by)},
          {"search_boxes", c.search_boxes}};
     for (int i = 0; i < 3; ++i) {
         nlohmann::json t = {{"chart", c.flipped[i] ? "-1/t" : "t"}, {"chart_parameter", ball_text(c.parameter[i], bits)}};

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ellvor {
@@ -119,13 +120,18 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         own = std::make_unique<VoronoiCircleSolver>(e1, e2, e3);
         solver = own.get();
     }
+    // Q in the solver's frame (similarity_frame.hpp), made once the solver
+    // has chosen it.
+    std::optional<Ellipse> framed_q;
     const Decision<Sign> gap = refine_then_exact(
         "incircle", options.refinement,
         [&](long prec) {
             // The count said the circle exists: certification is complete,
             // so "no circle" here would be an internal contradiction (thrown).
             solver->refine_existing(std::max(prec - precision::kEnclosureGuard, 1L));
-            return distance_minus_radius(solver->enclosure(), q, prec);
+            if (solver->frame().is_identity()) return distance_minus_radius(solver->enclosure(), q, prec);
+            if (!framed_q) framed_q = solver->frame().apply(q);
+            return distance_minus_radius(solver->frame_enclosure(), *framed_q, prec);
         },
         [&](long prec) { return tangent_exactly(e1, e2, e3, q, *solver, prec); });
     if (!gap.is_decided()) return Decision<InCircle>::undecided(gap.stage, gap.precision);

@@ -1,5 +1,6 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
+#include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/error.hpp"
 
@@ -23,6 +24,9 @@ constexpr int kGuessSteps = 4;
 constexpr int kSearchLevels = 3;
 constexpr int kSearchSteps = 6;
 constexpr long kStalledNewtonBits = 16;
+// Circles beyond 2^10 times the sites' size get starts from the tangent
+// line (huge_circle_start.hpp) when no double-precision guess certifies.
+constexpr long kHugeCircleBits = 10;
 // Refinement of a certified circle: precision doublings before giving up.
 constexpr int kRefineLevels = 4;
 
@@ -45,6 +49,15 @@ long magnitude_bits(const BallMatrix& v) {
 
 }  // namespace
 
+const char* circle_start_name(CircleStart s) {
+    switch (s) {
+        case CircleStart::guess: return "guess";
+        case CircleStart::tangent_line: return "tangent-line";
+        case CircleStart::search: return "search";
+    }
+    return "?";
+}
+
 Ball VoronoiCircleEnclosure::tangency_parameter(int i, long prec) const {
     if (!flipped[i]) return parameter[i];
     Ball t;
@@ -61,7 +74,29 @@ long VoronoiCircleEnclosure::correct_bits() const {
 }
 
 VoronoiCircleSolver::VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3)
-    : sites_{&e1, &e2, &e3} {}
+    : sites_{&e1, &e2, &e3}, work_sites_{&e1, &e2, &e3} {}
+
+void VoronoiCircleSolver::set_frame() {
+    if (framed_) return;
+    framed_ = true;
+    frame_ = SimilarityFrame::for_sites({sites_[0], sites_[1], sites_[2]});
+    if (frame_.is_identity()) return;
+    framed_sites_.reserve(3);
+    for (int i = 0; i < 3; ++i) {
+        framed_sites_.push_back(frame_.apply(*sites_[i]));
+        work_sites_[i] = &framed_sites_.back();
+    }
+}
+
+const VoronoiCircleEnclosure& VoronoiCircleSolver::enclosure() const {
+    if (frame_.is_identity()) return enclosure_;
+    original_ = enclosure_;
+    const long prec = std::max(enclosure_.precision, kStartPrecision);
+    original_.radius = frame_.length_to_original(enclosure_.radius, prec);
+    original_.center_x = frame_.x_to_original(enclosure_.center_x, prec);
+    original_.center_y = frame_.y_to_original(enclosure_.center_y, prec);
+    return original_;
+}
 
 std::array<const BoundaryChart*, 3> VoronoiCircleSolver::charts() const {
     std::array<const BoundaryChart*, 3> out{};
@@ -119,11 +154,11 @@ Ball orientation(const Charts& charts, const BallMatrix& X, long prec) {
     return orient;
 }
 
-}  // namespace
-
 // Precision of the Jacobian for a Newton step at precision prec: half is
 // enough, since the step only needs half of the bits (quadratic convergence).
 long jacobian_precision(long prec) { return std::max(kStartPrecision, prec / 2 + kGuardBits); }
+
+}  // namespace
 
 long VoronoiCircleSolver::newton_step(long prec) {
     const long jprec = jacobian_precision(prec);
@@ -151,14 +186,20 @@ long VoronoiCircleSolver::newton_step(long prec) {
 
 // Krawczyk: K = m - Y F(m) + (I - Y J(X)) (X - m) with Y ~ J(m)^-1. If K lies
 // in the interior of X, X holds exactly one root, and it lies in K. Only
-// m - Y F(m) needs the full precision: Y is any fixed matrix (here a 128-bit
-// approximate inverse), and the last term is of the order of the box radius
-// times |I - Y J|, so it is computed in 128-bit balls (rigorous, merely wider).
+// m - Y F(m) needs the full precision: Y is any fixed matrix (here an
+// approximate inverse at a low precision), and the last term is of the order
+// of the box radius times |I - Y J|, so it is computed in low-precision balls
+// (rigorous, merely wider).
 // The box radius is inflated from the Newton correction Y F(m) itself
 // (epsilon-inflation), so ill-conditioned systems get a box that fits them.
 bool VoronoiCircleSolver::krawczyk(long prec) {
-    constexpr long kLowPrecision = 128;
-    const long low = std::min(prec, kLowPrecision);
+    // The low precision must exceed the bits the system's condition eats:
+    // a few times the unknowns' magnitude beyond moderate sizes (a circle R
+    // times the sites' size has a Jacobian conditioned like R^2 or worse:
+    // Newton stalls ~2 log2 R bits short); two limbs are plenty below that.
+    constexpr long kLowPrecision = 128, kModerateBits = 16, kConditionFactor = 4;
+    const long low =
+        std::min(prec, kLowPrecision + kConditionFactor * std::max(0L, magnitude_bits(midpoint_) - kModerateBits));
     BallMatrix Fm(kUnknowns, 1), Flow(kUnknowns, 1), Jm(kUnknowns, kUnknowns), Y(kUnknowns, kUnknowns);
     if (low >= prec) {
         tritangent_system(charts(), midpoint_, Fm, &Jm, prec);
@@ -166,7 +207,7 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
         tritangent_system(charts(), midpoint_, Fm, nullptr, prec);
         tritangent_system(charts(), midpoint_, Flow, &Jm, low);
     }
-    if (!arb_mat_approx_inv(Y.get(), Jm.get(), kLowPrecision)) return false;
+    if (!arb_mat_approx_inv(Y.get(), Jm.get(), low)) return false;
     BallMatrix YF(kUnknowns, 1);
     arb_mat_mul(YF.get(), Y.get(), Fm.get(), prec);
 
@@ -184,11 +225,11 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     BallMatrix F(kUnknowns, 1), J(kUnknowns, kUnknowns), YJ(kUnknowns, kUnknowns), M(kUnknowns, kUnknowns),
         D(kUnknowns, 1), K(kUnknowns, 1);
     tritangent_system(charts(), X, F, &J, low);
-    arb_mat_mul(YJ.get(), Y.get(), J.get(), kLowPrecision);
+    arb_mat_mul(YJ.get(), Y.get(), J.get(), low);
     arb_mat_one(M.get());
-    arb_mat_sub(M.get(), M.get(), YJ.get(), kLowPrecision);
-    arb_mat_sub(D.get(), X.get(), midpoint_.get(), kLowPrecision);
-    arb_mat_mul(K.get(), M.get(), D.get(), kLowPrecision);
+    arb_mat_sub(M.get(), M.get(), YJ.get(), low);
+    arb_mat_sub(D.get(), X.get(), midpoint_.get(), low);
+    arb_mat_mul(K.get(), M.get(), D.get(), low);
     arb_mat_sub(K.get(), K.get(), YF.get(), prec);
     arb_mat_add(K.get(), K.get(), midpoint_.get(), prec);
     for (int j = 0; j < kUnknowns; ++j)
@@ -210,24 +251,34 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
 }
 
 long VoronoiCircleSolver::start_precision() {
-    if (magnitude_bits_ < 0) magnitude_bits_ = site_magnitude_bits(*sites_[0], *sites_[1], *sites_[2]);
+    if (magnitude_bits_ < 0) magnitude_bits_ = site_magnitude_bits(*work_sites_[0], *work_sites_[1], *work_sites_[2]);
     return kStartPrecision + std::max(0L, magnitude_bits_ - kGuardBits);
 }
 
 bool VoronoiCircleSolver::certify() {
     if (certified_) return true;
-    for_each_voronoi_circle_guess(*sites_[0], *sites_[1], *sites_[2], [&](const VoronoiCircleGuess& guess) {
+    set_frame();
+    for_each_voronoi_circle_guess(*work_sites_[0], *work_sites_[1], *work_sites_[2], [&](const VoronoiCircleGuess& guess) {
         return certified_ = certify_from(guess);
     });
-    return certified_ || certify_by_search();
+    if (certified_) return true;
+    for_each_huge_circle_start(*work_sites_[0], *work_sites_[1], *work_sites_[2], kHugeCircleBits,
+                               [&](const VoronoiCircleStart& start) { return certified_ = certify_from(start); });
+    if (certified_) {
+        enclosure_.found_by = CircleStart::tangent_line;
+        return true;
+    }
+    return certify_by_search();
 }
 
 bool VoronoiCircleSolver::certify_by_search(const VoronoiCircleSearchOptions& options) {
+    set_frame();
     const VoronoiCircleSearchResult result = search_voronoi_circle(
-        *sites_[0], *sites_[1], *sites_[2], [&](const VoronoiCircleStart& start) { return certify_from(start); },
+        *work_sites_[0], *work_sites_[1], *work_sites_[2], [&](const VoronoiCircleStart& start) { return certify_from(start); },
         options);
     certified_ = result.found;
     if (!certified_) enclosure_ = VoronoiCircleEnclosure{};
+    enclosure_.found_by = CircleStart::search;
     enclosure_.search_boxes = result.boxes;
     return certified_;
 }
@@ -237,7 +288,7 @@ void VoronoiCircleSolver::start_at(const std::array<bool, 3>& flipped, const std
     // Built on first use: most solvers of a graph's cache are never certified.
     if (site_charts_.empty()) {
         site_charts_.reserve(6);
-        for (const Ellipse* e : sites_)
+        for (const Ellipse* e : work_sites_)
             for (bool f : {false, true}) site_charts_.emplace_back(*e, f);
     }
     enclosure_ = VoronoiCircleEnclosure{};
@@ -270,7 +321,7 @@ bool VoronoiCircleSolver::certify_from(const VoronoiCircleGuess& guess) {
     // The guess's center is relative to E1's center: add it back exactly
     // (then round to the start precision, which covers the sites' magnitude).
     const long first = start_precision();
-    Ball radius, center_x(sites_[0]->xc(), first), center_y(sites_[0]->yc(), first), offset;
+    Ball radius, center_x(work_sites_[0]->xc(), first), center_y(work_sites_[0]->yc(), first), offset;
     arb_set_d(radius.get(), guess.radius);
     arb_set_d(offset.get(), guess.x);
     arb_add(center_x.get(), center_x.get(), offset.get(), first);

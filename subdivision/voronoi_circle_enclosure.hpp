@@ -20,6 +20,7 @@
 #pragma once
 
 #include "sites/ellipse.hpp"
+#include "sites/similarity_frame.hpp"
 #include "subdivision/boundary_chart.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "subdivision/voronoi_circle_search.hpp"
@@ -29,6 +30,12 @@
 
 namespace ellvor {
 
+// Where the certificate started: a floating-point guess
+// (voronoi_circle_guess.hpp), the tangent line of a huge circle
+// (huge_circle_start.hpp), or the exhaustive search.
+enum class CircleStart { guess, tangent_line, search };
+const char* circle_start_name(CircleStart s);
+
 struct VoronoiCircleEnclosure {
     // Chart parameter of each tangency point: t_i, or u_i = -1/t_i when
     // flipped (u_i = 0 is the i-point).
@@ -37,9 +44,9 @@ struct VoronoiCircleEnclosure {
     Ball radius, center_x, center_y;
     long precision = 0;     // working precision of the last certificate
     long newton_steps = 0;  // Arb Newton steps so far (all precisions)
-    // How the circle was found: 0 = a floating-point guess certified; > 0 =
-    // the boxes the exhaustive search examined (also when it proved that
-    // there is no circle).
+    CircleStart found_by = CircleStart::guess;
+    // Boxes the exhaustive search examined (also when it proved that there
+    // is no circle); 0 when it did not run.
     long search_boxes = 0;
 
     // Tangency parameter t_i on E_i (an unbounded ball when the box holds the i-point).
@@ -73,7 +80,14 @@ public:
 
     bool certified() const { return certified_; }
     const std::array<const Ellipse*, 3>& sites() const { return sites_; }
-    const VoronoiCircleEnclosure& enclosure() const { return enclosure_; }
+    // The enclosure in the sites' own coordinates.
+    const VoronoiCircleEnclosure& enclosure() const;
+    // The numerical work happens in a frame where the sites have size about
+    // one near the origin (similarity_frame.hpp; the identity for most
+    // triples); the enclosure there, to measure against other sites mapped by
+    // frame().apply. The tangency parameters are the same in both.
+    const SimilarityFrame& frame() const { return frame_; }
+    const VoronoiCircleEnclosure& frame_enclosure() const { return enclosure_; }
 
 private:
     bool certify_from(const VoronoiCircleGuess& guess);
@@ -97,11 +111,19 @@ private:
     // The charts of the current midpoint (enclosure_.flipped).
     std::array<const BoundaryChart*, 3> charts() const;
 
-    std::array<const Ellipse*, 3> sites_;
+    // Chooses the frame and the sites the numerics work on (once).
+    void set_frame();
+
+    std::array<const Ellipse*, 3> sites_;       // as given
+    SimilarityFrame frame_;
+    std::vector<Ellipse> framed_sites_;         // their images when the frame is not the identity
+    std::array<const Ellipse*, 3> work_sites_{};  // what the numerics use: sites_ or framed_sites_
+    bool framed_ = false;                       // set_frame() ran
     std::vector<BoundaryChart> site_charts_;  // site i, flipped f at 2 i + f (built by start_at)
     long magnitude_bits_ = -1;  // site_magnitude_bits, computed on first use
     BallMatrix midpoint_{6, 1};  // exact midpoint of the current box
-    VoronoiCircleEnclosure enclosure_;
+    VoronoiCircleEnclosure enclosure_;           // in the frame
+    mutable VoronoiCircleEnclosure original_;    // enclosure_ mapped back by enclosure()
     bool certified_ = false;
 };
 

@@ -1,0 +1,301 @@
+#include "subdivision/huge_circle_start.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace ellvor {
+
+namespace {
+
+// Precision of the first pass, and the largest one tried: a gap g that no
+// 4096-bit pass separates from 0 belongs to a circle beyond 2^1300 sizes, or
+// to an exactly tangent line (no circle: the search proves that).
+constexpr long kFirstPrecision = 128;
+constexpr long kLastPrecision = 4096;
+// Bits of g needed before the first-order circle is trusted, and the
+// precision a start needs per bit of R / size (the tritangent system's
+// condition grows like (R / size)^2) plus a margin.
+constexpr long kGapBits = 24;
+constexpr long kMarginBits = 64;
+
+// ---------------------------------------------------------------- doubles
+
+struct Shape {
+    double a, b, c, s, x, y;  // semi-axes, rotation, center relative to the first site's
+};
+
+// Support value h(n) = n.C + |(a n.u, b n.v)| and its derivative along the
+// unit circle, h'(phi) = S(n) . n'(phi) with S the support point.
+double support_value(const Shape& k, double phi, double* slope) {
+    const double nx = std::cos(phi), ny = std::sin(phi);
+    const double m1 = k.c * nx + k.s * ny, m2 = k.c * ny - k.s * nx;
+    const double norm = std::hypot(k.a * m1, k.b * m2);
+    const double lx = k.a * k.a * m1 / norm, ly = k.b * k.b * m2 / norm;
+    const double sx = k.x + k.c * lx - k.s * ly, sy = k.y + k.s * lx + k.c * ly;
+    *slope = -sx * ny + sy * nx;
+    return nx * k.x + ny * k.y + norm;
+}
+
+// Directions phi of the external bitangents of two shapes (roots of
+// h_i - h_j), in doubles: sampling, then Newton safeguarded by bisection.
+std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
+    auto f = [&](double phi, double* slope) {
+        double sp, sq;
+        const double v = support_value(p, phi, &sp) - support_value(q, phi, &sq);
+        *slope = sp - sq;
+        return v;
+    };
+    constexpr int kSamples = 64;
+    std::vector<double> roots;
+    double slope, lo = -M_PI, f_lo = f(lo, &slope);
+    for (int i = 1; i <= kSamples; ++i) {
+        double hi = -M_PI + 2 * M_PI * i / kSamples, f_hi = f(hi, &slope);
+        if ((f_lo < 0) != (f_hi < 0)) {
+            double a = lo, b = hi, fa = f_lo, x = 0.5 * (lo + hi);
+            for (int it = 0; it < 60; ++it) {
+                const double fx = f(x, &slope);
+                if ((fx < 0) == (fa < 0)) a = x, fa = fx;
+                else b = x;
+                double next = x - fx / slope;
+                if (!(next > a && next < b) && !(next > b && next < a)) next = 0.5 * (a + b);
+                if (std::fabs(next - x) < 1e-16) break;
+                x = next;
+            }
+            roots.push_back(x);
+        }
+        lo = hi, f_lo = f_hi;
+    }
+    return roots;
+}
+
+// ---------------------------------------------------------------- balls
+
+struct BallVector {
+    Ball x, y;
+};
+
+class ArbSite {
+public:
+    ArbSite(const Ellipse& e, long prec)
+        : a_(e.a(), prec), b_(e.b(), prec), c_(e.cos_rotation(), prec), s_(e.sin_rotation(), prec),
+          x_(e.xc(), prec), y_(e.yc(), prec) {}
+
+    // Support value in the unit direction n and the support point.
+    Ball support(const BallVector& n, BallVector* point, long prec) const {
+        Ball m1, m2, t, norm, lx, ly;
+        local(n, m1, m2, prec);
+        arb_mul(t.get(), a_.get(), m1.get(), prec);
+        arb_mul(norm.get(), b_.get(), m2.get(), prec);
+        arb_hypot(norm.get(), t.get(), norm.get(), prec);
+        arb_mul(lx.get(), a_.get(), t.get(), prec);  // a^2 m1 / norm
+        arb_div(lx.get(), lx.get(), norm.get(), prec);
+        arb_mul(ly.get(), b_.get(), b_.get(), prec);
+        arb_mul(ly.get(), ly.get(), m2.get(), prec);
+        arb_div(ly.get(), ly.get(), norm.get(), prec);
+        to_global(lx, ly, *point, prec);
+        Ball h;
+        arb_mul(h.get(), n.x.get(), x_.get(), prec);
+        arb_addmul(h.get(), n.y.get(), y_.get(), prec);
+        arb_add(h.get(), h.get(), norm.get(), prec);
+        return h;
+    }
+
+    // The chart and chart parameter of the boundary point whose outward
+    // normal is n: (cos theta, sin theta) ~ (a m1, b m2), t = tan(theta / 2).
+    bool chart_parameter(const BallVector& n, Ball& parameter, long prec) const {
+        Ball m1, m2, p, q, norm, denominator;
+        local(n, m1, m2, prec);
+        arb_mul(p.get(), a_.get(), m1.get(), prec);
+        arb_mul(q.get(), b_.get(), m2.get(), prec);
+        arb_hypot(norm.get(), p.get(), q.get(), prec);
+        const bool flipped = arf_sgn(arb_midref(p.get())) < 0;
+        if (flipped) {  // u = -1/t = -q / (|(p, q)| - p)
+            arb_sub(denominator.get(), norm.get(), p.get(), prec);
+            arb_div(parameter.get(), q.get(), denominator.get(), prec);
+            arb_neg(parameter.get(), parameter.get());
+        } else {  // t = q / (|(p, q)| + p)
+            arb_add(denominator.get(), norm.get(), p.get(), prec);
+            arb_div(parameter.get(), q.get(), denominator.get(), prec);
+        }
+        return flipped;
+    }
+
+    BallVector center() const { return {x_, y_}; }
+
+private:
+    void local(const BallVector& n, Ball& m1, Ball& m2, long prec) const {
+        arb_mul(m1.get(), c_.get(), n.x.get(), prec);
+        arb_addmul(m1.get(), s_.get(), n.y.get(), prec);
+        arb_mul(m2.get(), c_.get(), n.y.get(), prec);
+        arb_submul(m2.get(), s_.get(), n.x.get(), prec);
+    }
+    void to_global(const Ball& lx, const Ball& ly, BallVector& out, long prec) const {
+        arb_mul(out.x.get(), c_.get(), lx.get(), prec);
+        arb_submul(out.x.get(), s_.get(), ly.get(), prec);
+        arb_add(out.x.get(), out.x.get(), x_.get(), prec);
+        arb_mul(out.y.get(), s_.get(), lx.get(), prec);
+        arb_addmul(out.y.get(), c_.get(), ly.get(), prec);
+        arb_add(out.y.get(), out.y.get(), y_.get(), prec);
+    }
+
+    Ball a_, b_, c_, s_, x_, y_;
+};
+
+BallVector direction(const Ball& phi, long prec) {
+    BallVector n;
+    arb_sin_cos(n.y.get(), n.x.get(), phi.get(), prec);
+    return n;
+}
+
+// Newton on h_i(phi) - h_j(phi) = 0 in midpoint arithmetic, from a
+// double-precision root: quadratic convergence, a few steps.
+Ball refine_direction(const ArbSite& p, const ArbSite& q, double phi0, long prec) {
+    Ball phi;
+    arb_set_d(phi.get(), phi0);
+    for (long bits = 50; bits < 2 * prec; bits *= 2) {
+        const BallVector n = direction(phi, prec);
+        BallVector sp, sq;
+        Ball f, slope, tangent_x;
+        arb_sub(f.get(), p.support(n, &sp, prec).get(), q.support(n, &sq, prec).get(), prec);
+        // slope = (S_p - S_q) . (-sin, cos)
+        Ball dx, dy;
+        arb_sub(dx.get(), sp.x.get(), sq.x.get(), prec);
+        arb_sub(dy.get(), sp.y.get(), sq.y.get(), prec);
+        arb_mul(slope.get(), dy.get(), n.x.get(), prec);
+        arb_submul(slope.get(), dx.get(), n.y.get(), prec);
+        arb_div(f.get(), f.get(), slope.get(), prec);
+        arb_sub(phi.get(), phi.get(), f.get(), prec);
+        arb_get_mid_arb(phi.get(), phi.get());
+    }
+    return phi;
+}
+
+// Bits of |x| above 2^0 (x a ball away from 0), roughly.
+long magnitude(const Ball& x) { return arf_abs_bound_lt_2exp_si(arb_midref(x.get())); }
+
+struct FirstOrderCircle {
+    BallVector center;
+    Ball radius;
+    long ratio_bits;  // log2(R / size), roughly
+};
+
+// The circle of the bitangent direction phi of sites (i, j), with the third
+// site k, at precision prec; false when g does not have kGapBits correct bits
+// at this precision, or R <= 0 (no circle on the line's far side).
+bool first_order_circle(const std::array<ArbSite, 3>& s, int i, int j, int k, const Ball& phi, long size_bits,
+                        long prec, FirstOrderCircle& out, bool& resolved) {
+    const BallVector n = direction(phi, prec);
+    std::array<BallVector, 3> support;
+    std::array<Ball, 3> h;
+    for (int m : {i, j, k}) h[m] = s[m].support(n, &support[m], prec);
+    Ball g;
+    arb_sub(g.get(), h[k].get(), h[i].get(), prec);
+    resolved = !arb_contains_zero(g.get()) && arb_rel_accuracy_bits(g.get()) >= kGapBits;
+    if (!resolved) return false;
+    // d = n turned by +90 degrees; x_m = S_m . d.
+    std::array<Ball, 3> x;
+    for (int m : {i, j, k}) {
+        arb_mul(x[m].get(), support[m].y.get(), n.x.get(), prec);
+        arb_submul(x[m].get(), support[m].x.get(), n.y.get(), prec);
+    }
+    Ball ki, kj, product, radius, c, offset, height;
+    arb_sub(ki.get(), x[k].get(), x[i].get(), prec);
+    arb_sub(kj.get(), x[k].get(), x[j].get(), prec);
+    arb_mul(product.get(), ki.get(), kj.get(), prec);
+    arb_div(radius.get(), product.get(), g.get(), prec);
+    arb_mul_2exp_si(radius.get(), radius.get(), -1);
+    if (!arb_is_positive(radius.get())) return false;
+    arb_add(c.get(), x[i].get(), x[j].get(), prec);
+    arb_mul_2exp_si(c.get(), c.get(), -1);
+    // n.V = h_i + R - (x_i - c)^2 / (2 R)
+    arb_sub(offset.get(), x[i].get(), c.get(), prec);
+    arb_sqr(offset.get(), offset.get(), prec);
+    arb_div(offset.get(), offset.get(), radius.get(), prec);
+    arb_mul_2exp_si(offset.get(), offset.get(), -1);
+    arb_add(height.get(), h[i].get(), radius.get(), prec);
+    arb_sub(height.get(), height.get(), offset.get(), prec);
+    // V = c d + height n, d = (-n_y, n_x)
+    arb_mul(out.center.x.get(), height.get(), n.x.get(), prec);
+    arb_submul(out.center.x.get(), c.get(), n.y.get(), prec);
+    arb_mul(out.center.y.get(), height.get(), n.y.get(), prec);
+    arb_addmul(out.center.y.get(), c.get(), n.x.get(), prec);
+    out.radius = radius;
+    out.ratio_bits = std::max(0L, magnitude(radius) - size_bits);
+    return true;
+}
+
+// The start of a first-order circle: each tangency at the boundary point
+// whose outward normal points at V (two rounds: aimed from the site's center,
+// then from the point found; V is ~R away, so the second is within
+// (size / R)^2 radians).
+VoronoiCircleStart start_of(const std::array<ArbSite, 3>& s, const FirstOrderCircle& circle, long prec) {
+    VoronoiCircleStart start;
+    start.precision = prec;
+    for (int m = 0; m < 3; ++m) {
+        BallVector toward = s[m].center();
+        for (int round = 0; round < 2; ++round) {
+            BallVector n;
+            Ball length;
+            arb_sub(n.x.get(), circle.center.x.get(), toward.x.get(), prec);
+            arb_sub(n.y.get(), circle.center.y.get(), toward.y.get(), prec);
+            arb_hypot(length.get(), n.x.get(), n.y.get(), prec);
+            arb_div(n.x.get(), n.x.get(), length.get(), prec);
+            arb_div(n.y.get(), n.y.get(), length.get(), prec);
+            s[m].support(n, &toward, prec);
+            if (round == 1) {
+                start.flipped[m] = s[m].chart_parameter(n, start.parameter[m], prec);
+                arb_get_mid_arb(start.parameter[m].get(), start.parameter[m].get());
+            }
+        }
+    }
+    arb_get_mid_arb(start.radius.get(), circle.radius.get());
+    arb_get_mid_arb(start.center_x.get(), circle.center.x.get());
+    arb_get_mid_arb(start.center_y.get(), circle.center.y.get());
+    return start;
+}
+
+}  // namespace
+
+bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, long min_ratio_bits,
+                                const std::function<bool(const VoronoiCircleStart&)>& try_start) {
+    const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
+    std::array<Shape, 3> shapes;
+    Rational smallest;
+    for (int m = 0; m < 3; ++m) {
+        const Ellipse& e = *sites[m];
+        const auto& k = e.enclosure();
+        shapes[m] = {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - e1.xc()).to_double(),
+                     (e.yc() - e1.yc()).to_double()};
+        for (const Rational* axis : {&e.a(), &e.b()})
+            if (smallest.is_zero() || *axis < smallest) smallest = *axis;
+    }
+    const long size_bits = magnitude(Ball(smallest, 64));
+    constexpr int kPairs[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+    for (const auto& pair : kPairs) {
+        const int i = pair[0], j = pair[1], k = pair[2];
+        for (double phi0 : bitangent_directions(shapes[i], shapes[j])) {
+            // Raise the precision until g is resolved, then to what the
+            // circle's size needs.
+            for (long prec = kFirstPrecision; prec <= kLastPrecision; prec *= 2) {
+                const std::array<ArbSite, 3> s = {ArbSite(e1, prec), ArbSite(e2, prec), ArbSite(e3, prec)};
+                const Ball phi = refine_direction(s[i], s[j], phi0, prec);
+                FirstOrderCircle circle;
+                bool resolved = false;
+                if (!first_order_circle(s, i, j, k, phi, size_bits, prec, circle, resolved)) {
+                    if (resolved) break;  // no circle on this line's far side
+                    continue;
+                }
+                if (circle.ratio_bits < min_ratio_bits) break;
+                const long needed = kMarginBits + 3 * circle.ratio_bits;
+                if (prec < needed && 2 * prec <= kLastPrecision) continue;
+                if (try_start(start_of(s, circle, prec))) return true;
+                break;
+            }
+        }
+    }
+    return false;
+}
+
+}  // namespace ellvor

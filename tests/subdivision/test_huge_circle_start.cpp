@@ -1,0 +1,209 @@
+// Voronoi circles 10^12 .. 10^40 times larger than their sites (nearly
+// collinear sites), certified from the tangent-line start
+// (huge_circle_start.hpp), against independent computations:
+//  * circles: the closed-form Apollonius oracle at 4096 bits;
+//  * ellipses: a family built on the line y = 1 (two sites tangent to it, the
+//    third 10^-k below), solved by the test's own method -- a planar Newton
+//    iteration for the point equidistant from the three ellipses, each
+//    distance from its own nearest-point iteration, in Arb at 2048 bits,
+//    started from the first-order circle derived by hand below.
+// And InCircle against those circles, with queries 1 unit inside or outside
+// a circle of radius up to 5 10^40. (Their time per decision is measured by
+// experiments/near_degenerate.cpp.)
+#include "predicates/incircle.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "tests/predicates/apollonius_oracle.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace ellvor;
+
+namespace {
+
+constexpr long kOraclePrecision = 2048;
+
+Rational ten_to(int k) {
+    Integer p;
+    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k < 0 ? -k : k));
+    return k < 0 ? Rational(Integer(1), p) : Rational(p);
+}
+
+bool overlaps(const Ball& a, const Ball& b) { return arb_overlaps(a.get(), b.get()) != 0; }
+
+Ball widened(const Ball& b, long bits_below) {
+    Ball r = b;
+    Mag m;
+    arb_get_mag(m.get(), b.get());
+    mag_mul_2exp_si(m.get(), m.get(), -bits_below);
+    mag_add(arb_radref(r.get()), arb_radref(r.get()), m.get());
+    return r;
+}
+
+// ------------------------------------------------------------- the oracle --
+
+struct Arb {
+    long prec = kOraclePrecision;
+    Ball q(const Rational& v) const { return Ball(v, prec); }
+    Ball add(const Ball& a, const Ball& b) const { Ball r; arb_add(r.get(), a.get(), b.get(), prec); return r; }
+    Ball sub(const Ball& a, const Ball& b) const { Ball r; arb_sub(r.get(), a.get(), b.get(), prec); return r; }
+    Ball mul(const Ball& a, const Ball& b) const { Ball r; arb_mul(r.get(), a.get(), b.get(), prec); return r; }
+    Ball div(const Ball& a, const Ball& b) const { Ball r; arb_div(r.get(), a.get(), b.get(), prec); return r; }
+    Ball mid(const Ball& a) const { Ball r; arb_get_mid_arb(r.get(), a.get()); return r; }
+};
+
+// Distance from a far point V to E, and the unit vector from the nearest
+// point to V: Newton on the nearest point's angle theta in E's frame,
+// g(theta) = (a^2 - b^2) sin cos - a x sin + b y cos, from the support point
+// in the direction of V (V is far, so that is close).
+struct Foot {
+    Ball distance, ux, uy;
+};
+Foot foot(const Ellipse& e, const Ball& vx, const Ball& vy) {
+    const Arb A;
+    const Ball c = A.q(e.cos_rotation()), s = A.q(e.sin_rotation()), a = A.q(e.a()), b = A.q(e.b());
+    const Ball dx = A.sub(vx, A.q(e.xc())), dy = A.sub(vy, A.q(e.yc()));
+    const Ball x = A.add(A.mul(c, dx), A.mul(s, dy)), y = A.sub(A.mul(c, dy), A.mul(s, dx));
+    Ball theta;
+    arb_atan2(theta.get(), A.mul(b, y).get(), A.mul(a, x).get(), A.prec);
+    theta = A.mid(theta);
+    const Ball ab = A.sub(A.mul(a, a), A.mul(b, b));
+    for (int it = 0; it < 40; ++it) {
+        Ball sn, cs;
+        arb_sin_cos(sn.get(), cs.get(), theta.get(), A.prec);
+        const Ball g = A.add(A.sub(A.mul(A.mul(ab, sn), cs), A.mul(A.mul(a, x), sn)), A.mul(A.mul(b, y), cs));
+        // g' = (a^2 - b^2) cos(2 theta) - a x cos - b y sin
+        const Ball g1 = A.sub(A.sub(A.mul(ab, A.sub(A.mul(cs, cs), A.mul(sn, sn))), A.mul(A.mul(a, x), cs)),
+                              A.mul(A.mul(b, y), sn));
+        theta = A.mid(A.sub(theta, A.div(g, g1)));
+    }
+    Ball sn, cs;
+    arb_sin_cos(sn.get(), cs.get(), theta.get(), A.prec);
+    const Ball px = A.sub(x, A.mul(a, cs)), py = A.sub(y, A.mul(b, sn));  // V - P, local
+    Foot f;
+    arb_hypot(f.distance.get(), px.get(), py.get(), A.prec);
+    f.ux = A.div(A.sub(A.mul(c, px), A.mul(s, py)), f.distance);
+    f.uy = A.div(A.add(A.mul(s, px), A.mul(c, py)), f.distance);
+    return f;
+}
+
+// Newton for d1(V) = d2(V) = d3(V); returns V and the common distance, or
+// false when it did not converge.
+bool equidistant_point(const std::array<const Ellipse*, 3>& e, Ball& vx, Ball& vy, Ball& radius) {
+    const Arb A;
+    for (int it = 0; it < 60; ++it) {
+        const Foot f1 = foot(*e[0], vx, vy), f2 = foot(*e[1], vx, vy), f3 = foot(*e[2], vx, vy);
+        const Ball g1 = A.sub(f1.distance, f2.distance), g2 = A.sub(f1.distance, f3.distance);
+        const Ball a11 = A.sub(f1.ux, f2.ux), a12 = A.sub(f1.uy, f2.uy), a21 = A.sub(f1.ux, f3.ux),
+                   a22 = A.sub(f1.uy, f3.uy);
+        const Ball det = A.sub(A.mul(a11, a22), A.mul(a12, a21));
+        const Ball sx = A.div(A.sub(A.mul(a22, g1), A.mul(a12, g2)), det);
+        const Ball sy = A.div(A.sub(A.mul(a11, g2), A.mul(a21, g1)), det);
+        vx = A.mid(A.sub(vx, sx));
+        vy = A.mid(A.sub(vy, sy));
+        radius = f1.distance;
+        Mag step;
+        arb_get_mag(step.get(), sx.get());
+        Mag stepy;
+        arb_get_mag(stepy.get(), sy.get());
+        mag_max(step.get(), step.get(), stepy.get());
+        if (mag_cmp_2exp_si(step.get(), -A.prec / 2) < 0 && it > 2) return true;
+    }
+    return false;
+}
+
+// The ellipse family on the line y = 1: E1 = (3/4, 4/3, w = 1/2) at the
+// origin (cos = 3/5, sin = 4/5, so its top is at y = sqrt(16a^2 + 9b^2)/5 = 1,
+// x = -7/12), E2 = (2, 1, 0) at (6, 0) (top (6, 1)), and E3 = (1/2, 1, 0) at
+// (3, -10^-k) (top (3, 1 - 10^-k)). The counter-clockwise order along the
+// circle above the line is E1, E3, E2. First order (huge_circle_start.hpp
+// derives it): c = (x1 + x2)/2 = 65/24, R = (x3 - x1)(x3 - x2)/(2g) with g =
+// -10^-k: R = 43/8 10^k, V = (c, 1 + R - (x1 - c)^2 / (2R)).
+struct Family {
+    Ellipse e1, e3, e2;
+    Rational radius, cx, cy;
+};
+Family family(int k) {
+    const Rational g = ten_to(-k), x1(-7, 12UL), x2(6), c(65, 24UL);
+    const Rational R = Rational(43, 8UL) * ten_to(k);
+    return {Ellipse(Rational(3, 4UL), Rational(4, 3UL), Rational(1, 2UL), 0, 0),
+            Ellipse(Rational(1, 2UL), 1, 0, 3, -g), Ellipse(2, 1, 0, 6, 0), R, c,
+            Rational(1) + R - (x1 - c) * (x1 - c) / (Rational(2) * R)};
+}
+
+// A unit circle at distance R + 1 + delta above V (a rational point within
+// 2^-100 of it): it meets the open disk iff delta < 0.
+Ellipse query_above(const Ball& vx, const Ball& vy, const Ball& radius, long delta) {
+    const Arb A;
+    const Ball y = A.add(A.add(vy, radius), A.q(Rational(1 + delta)));
+    Rational qx, qy, hi;
+    Ball x = widened(vx, 0);
+    arb_set_round(x.get(), vx.get(), 300);
+    Ball yr;
+    arb_set_round(yr.get(), y.get(), 300);
+    ball_endpoints(x, qx, hi);
+    ball_endpoints(yr, qy, hi);
+    return Ellipse::circle(qx, qy, 1);
+}
+
+}  // namespace
+
+TEST_CASE("huge circles of nearly collinear circles are certified from the tangent line, k = 12 .. 40",
+          "[subdivision][huge-circle]") {
+    for (int k : {12, 16, 20, 30, 40}) {
+        const Rational lift = ten_to(-k);
+        // Unit circles on the x-axis with the middle one lifted (the circle is
+        // below), and the same on the tilted line through (0, 0) and (6, 8).
+        const apollonius::Circle rows[2][3] = {
+            {{Rational(0), Rational(0), Rational(1)}, {Rational(6), Rational(0), Rational(1)}, {Rational(3), lift, Rational(1)}},
+            {{Rational(0), Rational(0), Rational(1)}, {Rational(6), Rational(8), Rational(1)}, {Rational(3), Rational(4) + lift, Rational(1)}}};
+        for (const auto& c : rows) {
+            const Ellipse e1 = c[0].ellipse(), e2 = c[1].ellipse(), e3 = c[2].ellipse();
+            INFO("k " << k << apollonius::ell({&e1, &e2, &e3}));
+            const apollonius::Result oracle = apollonius::voronoi_circles(c[0], c[1], c[2], 4096);
+            REQUIRE(oracle.certain);
+            REQUIRE(oracle.ccw());
+            VoronoiCircleSolver solver(e1, e2, e3);
+            REQUIRE(solver.refine(128));
+            const VoronoiCircleEnclosure& found = solver.enclosure();
+            CHECK(found.found_by == CircleStart::tangent_line);
+            CHECK(overlaps(found.center_x, oracle.ccw()->x));
+            CHECK(overlaps(found.center_y, oracle.ccw()->y));
+            CHECK(overlaps(found.radius, oracle.ccw()->radius));
+            CHECK(found.radius.mid_double() > 1e11 * std::pow(10.0, k - 12));
+        }
+    }
+}
+
+TEST_CASE("huge circles of nearly collinear ellipses match an independent high-precision computation",
+          "[subdivision][huge-circle]") {
+    for (int k : {12, 16, 20, 30, 40}) {
+        const Family f = family(k);
+        INFO("k " << k << apollonius::ell({&f.e1, &f.e3, &f.e2}));
+        // The oracle, from the hand-derived first-order circle.
+        Ball vx = Ball(f.cx, kOraclePrecision), vy = Ball(f.cy, kOraclePrecision), radius;
+        REQUIRE(equidistant_point({&f.e1, &f.e3, &f.e2}, vx, vy, radius));
+        // ellvor.
+        VoronoiCircleSolver solver(f.e1, f.e3, f.e2);
+        REQUIRE(solver.refine(160));
+        const VoronoiCircleEnclosure& found = solver.enclosure();
+        CHECK(found.found_by == CircleStart::tangent_line);
+        // The oracle is good to far more than 160 bits: its midpoint must lie
+        // in ellvor's (widened by 2^-150 of the value, for the oracle's own
+        // rounding) balls.
+        CHECK(overlaps(widened(found.center_x, 150), vx));
+        CHECK(overlaps(widened(found.center_y, 150), vy));
+        CHECK(overlaps(widened(found.radius, 150), radius));
+
+        // InCircle: a unit circle 1 unit outside or inside the circle of
+        // radius ~5.4 10^k, above it.
+        for (long delta : {1L, -1L}) {
+            const Ellipse q = query_above(vx, vy, radius, delta);
+            const Decision<InCircle> d = incircle(f.e1, f.e3, f.e2, q);
+            INFO("delta " << delta << " stage " << stage_name(d.stage) << " precision " << d.precision);
+            CHECK(*d == (delta > 0 ? InCircle::no_conflict : InCircle::conflict));
+        }
+    }
+}
