@@ -120,6 +120,12 @@ TEST_CASE("quadratic number: sign of x + y sqrt(d1) + z sqrt(d2) agrees with Arb
     CHECK(QuadraticNumber(0, 1, 8) == QuadraticNumber(0, 2, 2));
     // Rational square roots: 3 + sqrt(4) - sqrt(25) = 0.
     CHECK(sign_of_two_roots(3, 1, 4, -1, 25) == 0);
+    // One radicand twice, a missing root, a rational u.
+    CHECK(sign_of_two_roots(1, 2, 5, -3, 5) == -1);
+    CHECK(sign_of_two_roots(0, 2, 5, -2, 5) == 0);
+    CHECK(sign_of_two_roots(1, -1, 2, 0, 3) == -1);
+    CHECK(sign_of_two_roots(2, 0, 7, -1, 4) == 0);
+    CHECK(sign_of_two_roots(2, 5, 0, -1, 50) == -1);
 
     Rng rng(77);
     int decided = 0;
