@@ -58,23 +58,29 @@ int proven_sign(const Interval& v) { return v.positive() ? 1 : v.negative() ? -1
 
 // ---------------------------------------------------------- exact --
 
+// The few FLINT operations the sign bodies need, for rationals and integers
+// alike (the integer versions never reduce a fraction).
+void mul(Rational& r, const Rational& x, const Rational& y) { fmpq_mul(r.get(), x.get(), y.get()); }
+void mul(Integer& r, const Integer& x, const Integer& y) { fmpz_mul(r.get(), x.get(), y.get()); }
+void add(Rational& r, const Rational& x, const Rational& y) { fmpq_add(r.get(), x.get(), y.get()); }
+void add(Integer& r, const Integer& x, const Integer& y) { fmpz_add(r.get(), x.get(), y.get()); }
+void sub(Rational& r, const Rational& x, const Rational& y) { fmpq_sub(r.get(), x.get(), y.get()); }
+void sub(Integer& r, const Integer& x, const Integer& y) { fmpz_sub(r.get(), x.get(), y.get()); }
+void twice(Rational& r) { fmpq_mul_2exp(r.get(), r.get(), 1); }
+void twice(Integer& r) { fmpz_mul_2exp(r.get(), r.get(), 1); }
+
 // sign(a^2 - b^2 d), exactly.
-int sign_of_square_difference(const Rational& a, const Rational& b, const Rational& d) {
-    Rational a2, b2d;
-    fmpq_mul(a2.get(), a.get(), a.get());
-    fmpq_mul(b2d.get(), b.get(), b.get());
-    fmpq_mul(b2d.get(), b2d.get(), d.get());
-    return fmpq_cmp(a2.get(), b2d.get());
-}
-int sign_of_square_difference(const Integer& a, const Integer& b, const Integer& d) {
-    Integer a2, b2d;
-    fmpz_mul(a2.get(), a.get(), a.get());
-    fmpz_mul(b2d.get(), b.get(), b.get());
-    fmpz_mul(b2d.get(), b2d.get(), d.get());
-    return fmpz_cmp(a2.get(), b2d.get());
+template <class Number>
+int sign_of_square_difference(const Number& a, const Number& b, const Number& d) {
+    Number a2, b2d;
+    mul(a2, a, a);
+    mul(b2d, b, b);
+    mul(b2d, b2d, d);
+    sub(a2, a2, b2d);
+    return a2.sign();
 }
 
-// The common body of sign_of_quadratic over rationals and integers.
+// The body of sign_of_quadratic (see the header for the proof).
 template <class Number>
 int quadratic_sign(const Number& a, const Number& b, const Number& d) {
     const int sa = a.sign();
@@ -89,6 +95,39 @@ int quadratic_sign(const Number& a, const Number& b, const Number& d) {
     return c > 0 ? sa : c < 0 ? sb : 0;
 }
 
+// The body of sign_of_two_roots (see the header for the proof).
+template <class Number>
+int two_roots_sign(const Number& x, const Number& y, const Number& d1, const Number& z, const Number& d2) {
+    const int sv = d2.is_zero() ? 0 : z.sign();
+    if (sv == 0) return quadratic_sign(x, y, d1);
+    if (d1.is_zero() || y.is_zero()) return quadratic_sign(x, z, d2);
+    if (d1 == d2) {  // one field after all: x + (y + z) sqrt(d)
+        Number yz;
+        add(yz, y, z);
+        return quadratic_sign(x, yz, d1);
+    }
+    // The whole sum in intervals first.
+    const Interval ix = rough_enclosure(x.get()), iy = rough_enclosure(y.get()), iz = rough_enclosure(z.get());
+    const Interval id1 = rough_enclosure(d1.get()), id2 = rough_enclosure(d2.get());
+    if (ix.finite() && iy.finite() && iz.finite() && id1.finite() && id2.finite())
+        if (const int s = proven_sign(ix + iy * id1.sqrt() + iz * id2.sqrt())) return s;
+    const int su = quadratic_sign(x, y, d1);
+    if (su == 0 || su == sv) return sv;
+    // u and v of opposite signs: sign(u) * sign(u^2 - v^2),
+    // u^2 - v^2 = (x^2 + y^2 d1 - z^2 d2) + 2 x y sqrt(d1).
+    Number rational, root, t;
+    mul(rational, x, x);
+    mul(t, y, y);
+    mul(t, t, d1);
+    add(rational, rational, t);
+    mul(t, z, z);
+    mul(t, t, d2);
+    sub(rational, rational, t);
+    mul(root, x, y);
+    twice(root);
+    return su * quadratic_sign(rational, root, d1);
+}
+
 }  // namespace
 
 int sign_of_quadratic(const Rational& a, const Rational& b, const Rational& d) { return quadratic_sign(a, b, d); }
@@ -96,34 +135,10 @@ int sign_of_quadratic(const Integer& a, const Integer& b, const Integer& d) { re
 
 int sign_of_two_roots(const Rational& x, const Rational& y, const Rational& d1, const Rational& z,
                       const Rational& d2) {
-    const int sv = d2.is_zero() ? 0 : z.sign();
-    if (sv == 0) return sign_of_quadratic(x, y, d1);
-    const bool u_rational = d1.is_zero() || y.is_zero();
-    if (u_rational) return sign_of_quadratic(x, z, d2);
-    if (d1 == d2) {  // one field after all: x + (y + z) sqrt(d)
-        Rational yz;
-        fmpq_add(yz.get(), y.get(), z.get());
-        return sign_of_quadratic(x, yz, d1);
-    }
-    // The whole sum in intervals first.
-    const Interval ix = rough_enclosure(x.get()), iy = rough_enclosure(y.get()), iz = rough_enclosure(z.get());
-    const Interval id1 = rough_enclosure(d1.get()), id2 = rough_enclosure(d2.get());
-    if (ix.finite() && iy.finite() && iz.finite() && id1.finite() && id2.finite())
-        if (const int s = proven_sign(ix + iy * id1.sqrt() + iz * id2.sqrt())) return s;
-    const int su = sign_of_quadratic(x, y, d1);
-    if (su == 0 || su == sv) return sv;
-    // u and v of opposite signs: sign(u) * sign(u^2 - v^2).
-    Rational rational, root, t;
-    fmpq_mul(rational.get(), x.get(), x.get());
-    fmpq_mul(t.get(), y.get(), y.get());
-    fmpq_mul(t.get(), t.get(), d1.get());
-    fmpq_add(rational.get(), rational.get(), t.get());
-    fmpq_mul(t.get(), z.get(), z.get());
-    fmpq_mul(t.get(), t.get(), d2.get());
-    fmpq_sub(rational.get(), rational.get(), t.get());
-    fmpq_mul(root.get(), x.get(), y.get());
-    fmpq_mul_2exp(root.get(), root.get(), 1);
-    return su * sign_of_quadratic(rational, root, d1);
+    return two_roots_sign(x, y, d1, z, d2);
+}
+int sign_of_two_roots(const Integer& x, const Integer& y, const Integer& d1, const Integer& z, const Integer& d2) {
+    return two_roots_sign(x, y, d1, z, d2);
 }
 
 // ------------------------------------------------------ QuadraticNumber --

@@ -32,6 +32,7 @@ int sign_of_quadratic(const Integer& a, const Integer& b, const Integer& d);
 // come out as 0.
 int sign_of_two_roots(const Rational& x, const Rational& y, const Rational& d1, const Rational& z,
                       const Rational& d2);
+int sign_of_two_roots(const Integer& x, const Integer& y, const Integer& d1, const Integer& z, const Integer& d2);
 
 class QuadraticNumber {
 public:

@@ -227,12 +227,6 @@ QuadraticNumber CircleVoronoiVertex::radius() const {
     return {Rational(m_[2], d) - sites_[0]->a(), Rational(n_[2], d), Rational(radicand_)};
 }
 
-void CircleVoronoiVertex::projected_offset(const Rational& jx, const Rational& jy, Rational& x, Rational& y) const {
-    const Rational d(scale_ * denominator_);
-    x = (jx * Rational(m_[0]) + jy * Rational(m_[1])) / d;
-    y = (jx * Rational(n_[0]) + jy * Rational(n_[1])) / d;
-}
-
 // ------------------------------------------------------------- predicates --
 
 int circle_vertex_conflict(const CircleVoronoiVertex& vertex, const Ellipse& q) {
@@ -339,15 +333,44 @@ int circle_order_on_bisector(const Ellipse& c1, const Ellipse& c2, const CircleV
         if (!holds(c1) || !holds(c2))
             throw Error("circle_order_on_bisector: a vertex's triple does not contain both sites of the bisector");
     }
-    // J . V_a - J . V_b with V = O + (offset x + y sqrt(radicand)), O the
-    // center of the triple's first site: x + y_a sqrt(rad_a) - y_b sqrt(rad_b).
-    const Rational jx = c1.yc() - c2.yc(), jy = c2.xc() - c1.xc();
-    const Ellipse &oa = *a.sites_[0], &ob = *b.sites_[0];
-    Rational xa, ya, xb, yb;
-    a.projected_offset(jx, jy, xa, ya);
-    b.projected_offset(jx, jy, xb, yb);
-    const Rational x = jx * (oa.xc() - ob.xc()) + jy * (oa.yc() - ob.yc()) + xa - xb;
-    return sign_of_two_roots(x, ya, Rational(a.radicand_), -yb, Rational(b.radicand_));
+    // sign(J . (V_a - V_b)) with V = origin / scale + (m + sqrt(radicand) n)_xy
+    // / (scale denominator) for each vertex. Only J's direction matters, so
+    // it is taken from the sites scaled to integers; multiplied by T =
+    // scale_a den_a scale_b den_b the difference is
+    //   X + Y sqrt(radicand_a) + Z sqrt(radicand_b)
+    // with integers X, Y, Z, and sign(T) = sign(den_a) sign(den_b).
+    Integer delta;
+    common_denominator(delta, {&c1, &c2});
+    Lifted p1, p2;
+    scale_circle(p1, c1, delta);
+    scale_circle(p2, c2, delta);
+    Integer jx, jy;
+    fmpz_sub(jx.get(), p1[1].get(), p2[1].get());
+    fmpz_sub(jy.get(), p2[0].get(), p1[0].get());
+    auto j_dot = [&](Integer& r, const Lifted& v) {
+        fmpz_mul(r.get(), jx.get(), v[0].get());
+        fmpz_addmul(r.get(), jy.get(), v[1].get());
+    };
+    Integer factor_a, factor_b, x, y, z, t;
+    fmpz_mul(factor_a.get(), b.scale_.get(), b.denominator_.get());
+    fmpz_mul(factor_b.get(), a.scale_.get(), a.denominator_.get());
+    // X: the origins' part, then the rational parts of the offsets.
+    j_dot(x, a.origin_);
+    fmpz_mul(x.get(), x.get(), b.scale_.get());
+    j_dot(t, b.origin_);
+    fmpz_submul(x.get(), t.get(), a.scale_.get());
+    fmpz_mul(x.get(), x.get(), a.denominator_.get());
+    fmpz_mul(x.get(), x.get(), b.denominator_.get());
+    j_dot(t, a.m_);
+    fmpz_addmul(x.get(), t.get(), factor_a.get());
+    j_dot(t, b.m_);
+    fmpz_submul(x.get(), t.get(), factor_b.get());
+    j_dot(t, a.n_);
+    fmpz_mul(y.get(), t.get(), factor_a.get());
+    j_dot(t, b.n_);
+    fmpz_mul(z.get(), t.get(), factor_b.get());
+    fmpz_neg(z.get(), z.get());
+    return sign_of_two_roots(x, y, a.radicand_, z, b.radicand_) * a.denominator_.sign() * b.denominator_.sign();
 }
 
 }  // namespace ellvor

@@ -72,8 +72,6 @@ private:
     friend int circle_order_on_bisector(const Ellipse& c1, const Ellipse& c2, const CircleVoronoiVertex& a,
                                         const CircleVoronoiVertex& b);
     void require_exists(const char* who) const;
-    // J . V - J . C1 for a vector J, as x + y sqrt(radicand).
-    void projected_offset(const Rational& jx, const Rational& jy, Rational& x, Rational& y) const;
 
     std::array<const Ellipse*, 3> sites_;
     bool exists_ = false;

@@ -113,19 +113,19 @@ TEST_CASE("quadratic number: sign of a + b sqrt(d) agrees with Arb on random ope
 TEST_CASE("quadratic number: sign of x + y sqrt(d1) + z sqrt(d2) agrees with Arb, exact zeros included",
           "[circle-predicates][quadratic_number]") {
     // sqrt 8 - 2 sqrt 2 = 0, and its neighbours.
-    CHECK(sign_of_two_roots(0, 1, 8, -2, 2) == 0);
-    CHECK(sign_of_two_roots(Rational(1, 1000000), 1, 8, -2, 2) == 1);
-    CHECK(sign_of_two_roots(0, 1, 8, Rational(-2000001, 1000000UL), 2) == -1);
+    CHECK(sign_of_two_roots(Rational(0), Rational(1), Rational(8), Rational(-2), Rational(2)) == 0);
+    CHECK(sign_of_two_roots(Rational(1, 1000000), Rational(1), Rational(8), Rational(-2), Rational(2)) == 1);
+    CHECK(sign_of_two_roots(Rational(0), Rational(1), Rational(8), Rational(-2000001, 1000000UL), Rational(2)) == -1);
     CHECK(compare(QuadraticNumber(0, 1, 8), QuadraticNumber(0, 2, 2)) == 0);
     CHECK(QuadraticNumber(0, 1, 8) == QuadraticNumber(0, 2, 2));
     // Rational square roots: 3 + sqrt(4) - sqrt(25) = 0.
-    CHECK(sign_of_two_roots(3, 1, 4, -1, 25) == 0);
+    CHECK(sign_of_two_roots(Rational(3), Rational(1), Rational(4), Rational(-1), Rational(25)) == 0);
     // One radicand twice, a missing root, a rational u.
-    CHECK(sign_of_two_roots(1, 2, 5, -3, 5) == -1);
-    CHECK(sign_of_two_roots(0, 2, 5, -2, 5) == 0);
-    CHECK(sign_of_two_roots(1, -1, 2, 0, 3) == -1);
-    CHECK(sign_of_two_roots(2, 0, 7, -1, 4) == 0);
-    CHECK(sign_of_two_roots(2, 5, 0, -1, 50) == -1);
+    CHECK(sign_of_two_roots(Rational(1), Rational(2), Rational(5), Rational(-3), Rational(5)) == -1);
+    CHECK(sign_of_two_roots(Rational(0), Rational(2), Rational(5), Rational(-2), Rational(5)) == 0);
+    CHECK(sign_of_two_roots(Rational(1), Rational(-1), Rational(2), Rational(0), Rational(3)) == -1);
+    CHECK(sign_of_two_roots(Rational(2), Rational(0), Rational(7), Rational(-1), Rational(4)) == 0);
+    CHECK(sign_of_two_roots(Rational(2), Rational(5), Rational(0), Rational(-1), Rational(50)) == -1);
 
     Rng rng(77);
     int decided = 0;
@@ -177,6 +177,11 @@ TEST_CASE("quadratic number: sign of x + y sqrt(d1) + z sqrt(d2) agrees with Arb
         }
         // compare() is the same sign.
         CHECK(compare(QuadraticNumber(x, y, d1), QuadraticNumber(Rational(0), -z, d2)) == got);
+        // The integer version on integer operands (numerators) agrees with the rational one.
+        const Integer ix = x.numerator(), iy = y.numerator(), iz = z.numerator(), i1 = d1.numerator(),
+                      i2 = d2.numerator();
+        CHECK(sign_of_two_roots(ix, iy, i1, iz, i2) ==
+              sign_of_two_roots(Rational(ix), Rational(iy), Rational(i1), Rational(iz), Rational(i2)));
     }
     CHECK(decided > 2000);
 }
