@@ -1,6 +1,7 @@
 #include "predicates/edge_conflict.hpp"
 
 #include "predicates/bisector_order.hpp"
+#include "predicates/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
@@ -38,25 +39,47 @@ struct EdgeShape {
     std::vector<std::array<const Ellipse*, 3>> vertices;
 };
 
-// Positions along the bisector of (E1, E2): a Voronoi vertex (a solver of a
-// triple with E1 first), or an end of the bisector (departure = -inf,
-// arrival = +inf).
+// A position along the bisector of (E1, E2): a Voronoi vertex of a triple
+// starting with E1 (an index into EdgeGeometry's vertices), or an end of the
+// bisector (departure = -inf, arrival = +inf).
 struct BisectorPoint {
-    VoronoiCircleSolver* vertex = nullptr;
+    int vertex = -1;
     int end = 0;  // -1, +1 for the ends; 0 for a vertex
 };
 
-// Compares positions along the bisector and keeps the provenance of every
-// comparison it made (the latest stage, the highest precision).
+// The Voronoi vertices of one edge question, and their order along the
+// bisector: by the closed form when both triples are circles
+// (circle_predicates.hpp), else by certified enclosures (bisector_order.hpp).
+// Keeps the provenance of every comparison it made (the latest stage, the
+// highest precision).
 class EdgeGeometry {
 public:
     EdgeGeometry(const Ellipse& e1, const Ellipse& e2, const RefinementOptions& options, Decision<bool>& provenance)
-        : frame_(e1, e2), options_(options), provenance_(provenance) {}
-    // NEGATIVE, ZERO (the same point, proven by the exact stage), POSITIVE;
-    // nullopt only when undecided (options.exact_stage = false).
+        : e1_(e1), e2_(e2), options_(options), provenance_(provenance) {}
+
+    BisectorPoint vertex(const Ellipse& a, const Ellipse& b, const Ellipse& c) {
+        Vertex v{{&a, &b, &c}, nullptr, nullptr};
+        if (a.is_circle() && b.is_circle() && c.is_circle())
+            v.circle = std::make_unique<CircleVoronoiVertex>(a, b, c);
+        else
+            v.solver = std::make_unique<VoronoiCircleSolver>(a, b, c);
+        vertices_.push_back(std::move(v));
+        return {static_cast<int>(vertices_.size()) - 1, 0};
+    }
+
+    // NEGATIVE, ZERO (the same point, proven exactly), POSITIVE; nullopt only
+    // when undecided (options.exact_stage = false).
     std::optional<Sign> compare(const BisectorPoint& a, const BisectorPoint& b) {
         if (a.end || b.end) return sign_of(a.end == b.end ? 0 : (a.end ? a.end : -b.end));
-        const Decision<Sign> order = order_on_bisector(frame_, *a.vertex, 0, *b.vertex, 0, options_);
+        Vertex &va = vertices_[a.vertex], &vb = vertices_[b.vertex];
+        if (va.circle && vb.circle) {
+            provenance_.depends_on(Decision<bool>::decided(true, Stage::exact));
+            return sign_of(circle_order_on_bisector(e1_, e2_, *va.circle, *vb.circle));
+        }
+        for (Vertex* v : {&va, &vb})
+            if (!v->solver) v->solver = std::make_unique<VoronoiCircleSolver>(*v->triple[0], *v->triple[1], *v->triple[2]);
+        if (!frame_) frame_.emplace(e1_, e2_);
+        const Decision<Sign> order = order_on_bisector(*frame_, *va.solver, 0, *vb.solver, 0, options_);
         provenance_.depends_on(order);
         if (!order.is_decided()) return std::nullopt;
         return *order;
@@ -68,9 +91,17 @@ public:
     }
 
 private:
-    BisectorFrame frame_;
+    struct Vertex {
+        std::array<const Ellipse*, 3> triple;
+        std::unique_ptr<CircleVoronoiVertex> circle;  // three circles
+        std::unique_ptr<VoronoiCircleSolver> solver;  // otherwise, or against a vertex that is not
+    };
+
+    const Ellipse &e1_, &e2_;
     const RefinementOptions& options_;
     Decision<bool>& provenance_;
+    std::optional<BisectorFrame> frame_;  // built when enclosures are compared
+    std::vector<Vertex> vertices_;
 };
 
 // The edge [lo, hi] and Q's shadow boundaries c1 = VC(E1, E2, Q), c2 =
@@ -81,26 +112,23 @@ private:
 // tests below decide, with c2 as well. nullopt: undecided.
 std::optional<bool> shadow_meets_edge(const Ellipse& e1, const Ellipse& e2, const Ellipse& q, const EdgeShape& edge,
                                       bool connected, EdgeGeometry& geometry) {
-    VoronoiCircleSolver c1_solver(e1, e2, q);
-    std::vector<std::unique_ptr<VoronoiCircleSolver>> vertices;
-    for (const auto& v : edge.vertices) vertices.push_back(std::make_unique<VoronoiCircleSolver>(*v[0], *v[1], *v[2]));
-    BisectorPoint lo{nullptr, -1}, hi{nullptr, +1};  // the whole bisector by default
-    if (vertices.size() == 1) hi = {vertices[0].get(), 0};  // the ray from the departure end
-    if (vertices.size() == 2) {
-        lo = {vertices[0].get(), 0}, hi = {vertices[1].get(), 0};
+    BisectorPoint lo{-1, -1}, hi{-1, +1};  // the whole bisector by default
+    if (edge.vertices.size() >= 1) hi = geometry.vertex(*edge.vertices[0][0], *edge.vertices[0][1], *edge.vertices[0][2]);
+    if (edge.vertices.size() == 2) {
+        lo = hi;
+        hi = geometry.vertex(*edge.vertices[1][0], *edge.vertices[1][1], *edge.vertices[1][2]);
         const auto o = geometry.compare(lo, hi);
         if (!o) return std::nullopt;
         if (*o == Sign::positive) std::swap(lo, hi);
     }
-    const BisectorPoint c1{&c1_solver, 0};
+    const BisectorPoint c1 = geometry.vertex(e1, e2, q);
     const auto after_lo = geometry.compare(c1, lo), before_hi = geometry.compare(hi, c1);
     if (!after_lo || !before_hi) return std::nullopt;
     if (*after_lo != Sign::zero && *before_hi != Sign::zero) {
         const bool inside = *after_lo == Sign::positive && *before_hi == Sign::positive;
         return connected ? inside : !inside;
     }
-    VoronoiCircleSolver c2_solver(e1, q, e2);
-    BisectorPoint s_lo = c1, s_hi{&c2_solver, 0};
+    BisectorPoint s_lo = c1, s_hi = geometry.vertex(e1, q, e2);
     const auto o = geometry.compare(s_lo, s_hi);
     if (!o) return std::nullopt;
     if (*o == Sign::positive) std::swap(s_lo, s_hi);

@@ -12,7 +12,8 @@
 // bounded by the Voronoi circles of (E1, E2, Q) and (E1, Q, E2) when both
 // exist; it is one interval, or two rays when it reaches both ends (kappa2).
 // The answer then only needs the position of one of them along the bisector
-// relative to the edge's vertices (bisector_order.hpp); with fewer than two
+// relative to the edge's vertices (bisector_order.hpp; for circles the closed
+// form of circle_predicates.hpp); with fewer than two
 // circles the shadow region cannot separate the edge's ends and the answer
 // is b.
 #pragma once

@@ -1,6 +1,7 @@
 #include "predicates/incircle.hpp"
 
 #include "predicates/circle_incircle_filter.hpp"
+#include "predicates/circle_predicates.hpp"
 #include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
 #include "subdivision/boundary_chart.hpp"
@@ -105,6 +106,17 @@ bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, co
     return false;
 }
 
+// Four circles: the closed form in Q(sqrt D) (circle_predicates.hpp).
+Decision<InCircle> circle_incircle_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q) {
+    const Decision<bool> separated = pairwise_separated(e1, e2, e3);
+    if (!*separated) return separated.with(InCircle::no_circle);
+    const CircleVoronoiVertex vertex(e1, e2, e3);
+    if (!vertex.exists()) return Decision<InCircle>::decided(InCircle::no_circle, Stage::exact);
+    const int s = circle_vertex_conflict(vertex, q);
+    return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : s > 0 ? InCircle::no_conflict : InCircle::tangent,
+                                       Stage::exact);
+}
+
 }  // namespace
 
 Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
@@ -113,6 +125,8 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         const Decision<InCircle> filtered = circle_incircle_filter(e1, e2, e3, q);
         if (filtered.is_decided()) return filtered;
     }
+    if (options.use_circle_closed_form && e1.is_circle() && e2.is_circle() && e3.is_circle() && q.is_circle())
+        return circle_incircle_exactly(e1, e2, e3, q);
     const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
     if (*count == VoronoiCircles::none || *count == VoronoiCircles::cw_only) return count.with(InCircle::no_circle);
     std::unique_ptr<VoronoiCircleSolver> own;

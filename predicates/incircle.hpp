@@ -25,10 +25,12 @@ Sign incircle_sign(InCircle r);
 struct InCircleOptions {
     RefinementOptions refinement;  // the subdivision stage's cap; exact_stage = false stops there undecided
     bool use_filter = true;        // false: skip the closed-form filter for four circles
+    bool use_circle_closed_form = true;  // false: four circles take the general path (tests compare the two)
 };
 
 // The cascade: for four circles, a closed-form filter in double intervals
-// (circle_incircle_filter.hpp); then the existence of the counter-clockwise
+// (circle_incircle_filter.hpp), then the closed form exactly in Q(sqrt D)
+// (circle_predicates.hpp). Otherwise: the existence of the counter-clockwise
 // circle from three kappa2 signs; then the certified enclosure of the circle
 // (center V, radius rho) and the distance d(V, Q) -- double intervals first,
 // then Arb -- compared with rho at doubling precision, past the cap the exact

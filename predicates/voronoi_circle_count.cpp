@@ -1,5 +1,6 @@
 #include "predicates/voronoi_circle_count.hpp"
 
+#include "predicates/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 
@@ -17,16 +18,26 @@ const char* voronoi_circles_name(VoronoiCircles v) {
     return "?";
 }
 
-Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-    Decision<VoronoiCircles> count = Decision<VoronoiCircles>::decided(VoronoiCircles::none, Stage::filter);
+Decision<bool> pairwise_separated(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    Decision<bool> separated = Decision<bool>::decided(true, Stage::filter);
     for (auto [p, q] : {std::pair{&e1, &e2}, {&e2, &e3}, {&e3, &e1}}) {
         const Decision<RelativePosition> r = relative_position(*p, *q);
-        count.depends_on(r);
-        if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent) return count;
+        separated.depends_on(r);
+        if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent)
+            return separated.with(false);
     }
+    return separated;
+}
+
+Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    const Decision<bool> separated = pairwise_separated(e1, e2, e3);
+    if (!*separated) return separated.with(VoronoiCircles::none);
+    if (e1.is_circle() && e2.is_circle() && e3.is_circle())
+        return Decision<VoronoiCircles>::decided(circle_voronoi_circle_count(e1, e2, e3), Stage::exact);
     // How many of the three sites conflict with the infinite vertex of the
-    // other two, taken in the cyclic order of the triple (digest 2.4): for
-    // three points in counter-clockwise order all three do.
+    // other two, taken in the cyclic order of the triple: for three points in
+    // counter-clockwise order all three do.
+    Decision<VoronoiCircles> count = separated.with(VoronoiCircles::none);
     int conflicts = 0;
     for (auto [p, q, r] : {std::tuple{&e1, &e2, &e3}, {&e2, &e3, &e1}, {&e3, &e1, &e2}}) {
         const Decision<Sign> d = infinite_vertex_conflict(*p, *q, *r);

@@ -19,7 +19,13 @@ enum class VoronoiCircles {
 const char* voronoi_circles_name(VoronoiCircles v);
 
 // Sites must be pairwise separated or externally tangent; a hidden pair gives
-// none. Always decided; the stage is the latest any of the kappa2 calls needed.
+// none. Always decided: for three circles by the closed form
+// (circle_predicates.hpp), otherwise from three kappa2 signs; the stage is the
+// latest any of them needed.
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+
+// Whether the three sites are pairwise separated or externally tangent (the
+// premise of a Voronoi circle; a nested pair has none).
+Decision<bool> pairwise_separated(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 }  // namespace ellvor

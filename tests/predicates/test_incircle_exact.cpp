@@ -157,6 +157,7 @@ TEST_CASE("incircle exact stage: degenerate quadruples are tangent", "[predicate
         CHECK(d.precision <= 4096);
         // A lower cap reaches the exact stage sooner, same answer.
         InCircleOptions low;
+        low.use_circle_closed_form = false;  // the general path on circles
         low.refinement.cap = 256;
         const Decision<InCircle> dl = incircle(c.e1, c.e2, c.e3, c.q, low);
         INFO("cap 256: " << show(dl));
@@ -164,6 +165,7 @@ TEST_CASE("incircle exact stage: degenerate quadruples are tangent", "[predicate
         CHECK(dl.stage == Stage::exact);
         // Subdivision only: the honest answer is undecided at the cap.
         InCircleOptions no_exact;
+        no_exact.use_circle_closed_form = false;  // the general path on circles
         no_exact.refinement.exact_stage = false;
         no_exact.refinement.cap = 512;
         const Decision<InCircle> du = incircle(c.e1, c.e2, c.e3, c.q, no_exact);
@@ -183,6 +185,7 @@ TEST_CASE("incircle exact stage: rotations of the degenerate quadruples stay tan
             const Ellipse &a = *s[rot], &b = *s[(rot + 1) % 4], &e = *s[(rot + 2) % 4], &q = *s[(rot + 3) % 4];
             INFO(c.name << " rotation " << rot << ell({&a, &b, &e, &q}));
             InCircleOptions low;
+            low.use_circle_closed_form = false;  // the general path on circles
             low.refinement.cap = 256;
             const Decision<InCircle> d = incircle(a, b, e, q, low);
             INFO(show(d));
@@ -204,6 +207,7 @@ TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[
                 // (For four circles the closed-form filter may decide first, in
                 // doubles; it is switched off to watch the subdivision.)
                 InCircleOptions no_filter;
+                no_filter.use_circle_closed_form = false;  // the general path on circles
                 no_filter.use_filter = false;
                 const Decision<InCircle> d = incircle(c.e1, c.e2, c.e3, q, no_filter);
                 INFO("default: " << show(d));
@@ -219,6 +223,7 @@ TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[
                 const bool ipoints = c.name[1] == 'a';
                 if (k == (ipoints ? 30 : 100)) {
                     InCircleOptions low;
+                    low.use_circle_closed_form = false;  // the general path on circles
                     low.refinement.cap = ipoints ? 64 : 256;
                     const auto start = std::chrono::steady_clock::now();
                     const Decision<InCircle> dl = incircle(c.e1, c.e2, c.e3, q, low);

@@ -69,9 +69,16 @@ TEST_CASE("kappa2 on 1000 random disjoint circle triples agrees with the closed 
         INFO(oracle::ell({&e1, &e2, &eq}));
         const oracle::InfiniteConflict o = oracle::infinite_vertex_conflict(c1, c2, q);
         REQUIRE(o.sign != 2);
-        const Decision<Sign> got = infinite_vertex_conflict(e1, e2, eq);
+        // The general cascade (filter, then exact), and the closed form that
+        // circles take by default.
+        InfiniteVertexConflictOptions general;
+        general.use_circle_closed_form = false;
+        const Decision<Sign> got = infinite_vertex_conflict(e1, e2, eq, general);
         INFO("stage " << stage_name(got.stage));
         CHECK(to_int(*got) == o.sign);
+        const Decision<Sign> closed = infinite_vertex_conflict(e1, e2, eq);
+        CHECK(to_int(*closed) == o.sign);
+        CHECK(closed.stage == Stage::exact);
         counters.record(got.stage);
         conflicts += o.sign < 0;
     }
@@ -162,6 +169,7 @@ TEST_CASE("kappa2's exact stage rejects intersecting E1, E2", "[predicates][infi
     // stage; the filter does not pay for it (see the header).
     InfiniteVertexConflictOptions exact_only;
     exact_only.use_filter = false;
+    exact_only.use_circle_closed_form = false;  // the closed form, like the filter, does not check it either
     CHECK_THROWS_AS(infinite_vertex_conflict(Ellipse::circle(0, 0, 1), Ellipse::circle(1, 0, 1),
                                              Ellipse::circle(10, 10, 1), exact_only),
                     Error);
