@@ -33,7 +33,8 @@ const char* const kHelp =
     "  --cin    read CGAL's circle format 'x y r' instead of .ell\n"
     "  --json   machine-readable output (adds the deciding stage and the time)\n"
     "\n"
-    "exit status: 0 done; 2 bad input (E1 and E2 must be separated or externally tangent).\n";
+    "exit status: 0 done; 2 bad input (E1 and E2 must be separated or externally tangent;\n"
+    "no two sites may cross).\n";
 
 nlohmann::json describe_contact(const Ellipse& e, BoundaryParameter t) {
     nlohmann::json j;
@@ -56,6 +57,7 @@ int run(const std::vector<std::string>& args) {
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     const auto& s = file.sites;
     require_site_count(file, 2, 3, "E1 E2 [Q]");
+    require_no_crossing(file);
     const RelativePosition position = *relative_position(s[0], s[1]);
     if (position != RelativePosition::separated && position != RelativePosition::externally_tangent)
         throw InputError(file.name + ": sites 0 and 1 are " + relative_position_name(position) +

@@ -35,7 +35,8 @@ const char* const kHelp =
     "The Voronoi circle is always certified (from a floating-point guess, or else by an\n"
     "exhaustive search), so every answer is decided.\n"
     "\n"
-    "exit status: 0 decided; 2 bad input (FILE must hold exactly four sites); 1 internal error.\n";
+    "exit status: 0 decided; 2 bad input (FILE must hold exactly four sites, no two of\n"
+    "them crossing); 1 internal error.\n";
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", false}, {"--max-precision", true}});
@@ -45,6 +46,7 @@ int run(const std::vector<std::string>& args) {
         parsed.integer("--max-precision", options.refinement.cap, precision::kStart, precision::kMaxCap);
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 4, 4, "E1 E2 E3 Q");
+    require_no_crossing(file);
     const auto& s = file.sites;
 
     const auto start = std::chrono::steady_clock::now();

@@ -31,14 +31,16 @@ const char* const kHelp =
     "            exponents, whether the seed's exponents held, the proven coefficient\n"
     "            bound, primes used, coefficient bits and the time\n"
     "\n"
-    "exit status: 0 done; 2 bad input (FILE must hold exactly three sites); 1 the resultant\n"
-    "vanishes identically (a common component, e.g. some placements of three circles).\n";
+    "exit status: 0 done; 2 bad input (FILE must hold exactly three sites, no two\n"
+    "crossing); 1 the resultant vanishes identically (a common component, e.g. some\n"
+    "placements of three circles).\n";
 
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--stats", false}});
     parsed.expect_positional(1, 1, "FILE");
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 3, 3, "E1 E2 E3");
+    require_no_crossing(file);
     const auto& s = file.sites;
 
     const IncircleResultant r = incircle_resultant(s[0], s[1], s[2]);

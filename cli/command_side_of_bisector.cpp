@@ -27,7 +27,7 @@ const char* const kHelp =
     "  --cin    read CGAL's circle format 'x y r' instead of .ell\n"
     "  --json   print {\"result\", \"sign\", \"stage\", \"precision\", \"time_us\"} instead\n"
     "\n"
-    "exit status: 0 decided; 2 bad input (FILE must hold exactly two sites).\n";
+    "exit status: 0 decided; 2 bad input (FILE must hold exactly two sites, not crossing).\n";
 
 Rational coordinate(const std::string& token, const char* name) {
     Rational value;
@@ -42,6 +42,7 @@ int run(const std::vector<std::string>& args) {
     const auto& pos = parsed.positional();
     const SiteFile file = read_site_argument(parsed, pos[0]);
     require_site_count(file, 2, 2, "E1 E2");
+    require_no_crossing(file);
     const Point p{coordinate(pos[1], "X"), coordinate(pos[2], "Y")};
 
     const auto start = std::chrono::steady_clock::now();

@@ -38,7 +38,8 @@ const char* const kHelp =
     "  --bits N   correct bits wanted (1 .. 10^7)\n"
     "  --cin      read CGAL's circle format 'x y r' instead of .ell\n"
     "\n"
-    "exit status: 0 done; 2 bad input (three sites needed); 1 internal error.\n";
+    "exit status: 0 done; 2 bad input (three sites needed, no two crossing); 1 internal\n"
+    "error.\n";
 
 std::string ball_text(const Ball& b, long bits) {
     const long digits = std::max(20L, static_cast<long>(std::ceil(bits * 0.30103)) + 5);
@@ -52,6 +53,7 @@ int run(const std::vector<std::string>& args) {
     const long bits = parsed.integer("--bits", 53, 1, 10'000'000);
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 3, 3, "E1 E2 E3");
+    require_no_crossing(file);
     const auto& s = file.sites;
 
     nlohmann::json j;

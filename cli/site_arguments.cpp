@@ -1,5 +1,7 @@
 #include "cli/site_arguments.hpp"
 
+#include "predicates/relative_position.hpp"
+
 namespace ellvor::cli {
 
 SiteFile read_site_argument(const Arguments& parsed, const std::string& path) {
@@ -14,6 +16,20 @@ void require_site_count(const SiteFile& file, std::size_t min, std::size_t max, 
     const std::string what = "expected " + expected + " sites (" + roles + "), found " + std::to_string(n);
     if (n > max) throw InputError(file.name, file.lines[max], 1, what);
     throw InputError(file.name + ": " + what);
+}
+
+InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second) {
+    if (first > second) std::swap(first, second);
+    return InputError(file.name, file.lines[second], 1,
+                      "site " + std::to_string(second) + " intersects site " + std::to_string(first) + " (line " +
+                          std::to_string(file.lines[first]) + "); sites must be disjoint or nested");
+}
+
+void require_no_crossing(const SiteFile& file) {
+    const auto& s = file.sites;
+    for (std::size_t j = 1; j < s.size(); ++j)
+        for (std::size_t i = 0; i < j; ++i)
+            if (*relative_position(s[i], s[j]) == RelativePosition::intersecting) throw crossing_sites_error(file, i, j);
 }
 
 }  // namespace ellvor::cli

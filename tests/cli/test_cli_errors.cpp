@@ -94,6 +94,31 @@ TEST_CASE("intersecting pairs are all listed by id", "[cli]") {
     CHECK(r.err.find(":3:1: site 2 intersects site 0 (line 1)") != std::string::npos);
 }
 
+TEST_CASE("every predicate command rejects crossing sites at the later site's line", "[cli]") {
+    // E2 crosses E1 (fuzzing found `incircle` answering "no-circle" here).
+    TempDir dir;
+    const std::string crossing = "1 1 0 0 0\n2 1 1/2 1 0\n1 1 0 9 9\n1 1 0 -9 9\n";
+    const struct {
+        const char* command;
+        int sites;
+        const char* extra;
+    } commands[] = {{"incircle", 4, ""},           {"voronoi-circle", 3, " --bits 20"}, {"resultant", 3, ""},
+                    {"bitangent", 3, ""},          {"side-of-bisector", 2, " 5 5"}};
+    for (const auto& c : commands) {
+        std::string content;
+        std::istringstream lines(crossing);
+        std::string line;
+        for (int i = 0; i < c.sites && std::getline(lines, line); ++i) content += line + "\n";
+        const std::string file = dir.write(std::string(c.command) + ".ell", content);
+        const Run r = run_ellvor(dir, std::string(c.command) + " " + file + c.extra);
+        INFO(c.command << "\nstdout: " << r.out << "\nstderr: " << r.err);
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err.find(c.command + std::string(".ell:2:1: site 1 intersects site 0 (line 1); sites must be disjoint or nested")) !=
+              std::string::npos);
+    }
+}
+
 TEST_CASE("unreadable files and bad command lines exit 2", "[cli]") {
     TempDir dir;
     Run r = run_ellvor(dir, "check " + dir.path() + "/missing.ell");
