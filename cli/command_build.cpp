@@ -4,6 +4,7 @@
 #include "cli/site_arguments.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "graph/svg_writer.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <unistd.h>
 
 namespace ellvor::cli {
@@ -85,7 +87,7 @@ int run(const std::vector<std::string>& args) {
 
     const bool progress = ::isatty(2) && sites.size() > 1000;
     const auto start = std::chrono::steady_clock::now();
-    DelaunayGraph graph(sites);
+    DelaunayGraph graph(std::make_unique<EllipseDelaunayTraits>(sites));
     try {
         graph.insert_all([&](std::size_t done, std::size_t total) {
             if (progress && (done % 200 == 0 || done == total)) std::fprintf(stderr, "\rinserted %zu of %zu", done, total);
