@@ -1,4 +1,4 @@
-#include "graph/bisector_trace.hpp"
+#include "output/bisector_trace.hpp"
 
 #include "subdivision/nearest_point.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"

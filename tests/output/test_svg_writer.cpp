@@ -4,9 +4,9 @@
 // brute-force nearest point (dense samples on each ellipse, then a local
 // golden-section refinement): every point is equidistant from its two sites
 // within the stated tolerance and no third site is closer by more than it.
-#include "graph/bisector_trace.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "graph/svg_writer.hpp"
+#include "output/bisector_trace.hpp"
+#include "output/svg_writer.hpp"
 #include "predicates/ellipse_delaunay_traits.hpp"
 #include "sites/site_generators.hpp"
 #include "sites/site_io.hpp"
