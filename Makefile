@@ -13,7 +13,7 @@ CXXFLAGS := -std=c++17 $(OPT) $(SANITIZE) -Wall -Wextra -Wno-unused-parameter -I
 LDLIBS   := -lflint-arb -lflint -lmpfr -lgmp
 JOBS     ?= 2
 
-LIB_SRC   := $(wildcard util/*.cpp sites/*.cpp subdivision/*.cpp exact/*.cpp predicates/*.cpp graph/*.cpp)
+LIB_SRC   := $(wildcard util/*.cpp sites/*.cpp subdivision/*.cpp exact/*.cpp predicates/*.cpp graph/*.cpp output/*.cpp)
 CLI_SRC   := $(wildcard cli/*.cpp)
 TEST_SRC  := $(wildcard tests/*.cpp tests/*/*.cpp)
 BENCH_SRC := $(wildcard experiments/*.cpp)

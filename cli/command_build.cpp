@@ -3,14 +3,17 @@
 
 #include "cli/site_arguments.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "graph/svg_writer.hpp"
-#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "output/graph_json.hpp"
+#include "output/svg_writer.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <unistd.h>
 
 namespace ellvor::cli {
@@ -48,34 +51,6 @@ const char* const kHelp =
 
 constexpr std::size_t kBruteForceLimit = 300;
 
-nlohmann::json voronoi_vertex(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& f) {
-    VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]]);
-    nlohmann::json v = {{"face", f}};
-    solver.refine_existing(53);  // a face of the graph has its counter-clockwise circle
-    const VoronoiCircleEnclosure& c = solver.enclosure();
-    double error = 0;
-    for (const Ball* b : {&c.center_x, &c.center_y, &c.radius}) error = std::max(error, b->radius_double());
-    v["center"] = {c.center_x.mid_double(), c.center_y.mid_double()};
-    v["radius"] = c.radius.mid_double();
-    v["error"] = error;
-    return v;
-}
-
-nlohmann::json stats_json(const DelaunayGraph& g, double seconds) {
-    nlohmann::json s = {{"seconds", seconds}, {"inserted", g.stats().inserted}};
-    const TraitsStats& t = g.predicate_stats();
-    const std::pair<const char*, const PredicateCount*> rows[] = {
-        {"is_hidden", &t.is_hidden},         {"side_of_bisector", &t.side_of_bisector},
-        {"vertex_conflict_3", &t.vertex_conflict3}, {"incircle", &t.vertex_conflict4},
-        {"finite_edge", &t.finite_edge},     {"infinite_edge", &t.infinite_edge}};
-    for (const auto& [name, count] : rows) {
-        nlohmann::json& row = s["predicates"][name];
-        row["calls"] = count->calls;
-        for (Stage stage : kStages) row[stage_name(stage)] = count->stages[stage];
-    }
-    return s;
-}
-
 int run(const std::vector<std::string>& args) {
     Arguments parsed(args, {{"--cin", false}, {"--json", true}, {"--svg", true}, {"--svg-ids", false}, {"--validate", false}, {"--stats", false}});
     parsed.expect_positional(1, 1, "FILE");
@@ -85,7 +60,7 @@ int run(const std::vector<std::string>& args) {
 
     const bool progress = ::isatty(2) && sites.size() > 1000;
     const auto start = std::chrono::steady_clock::now();
-    DelaunayGraph graph(sites);
+    DelaunayGraph graph(std::make_unique<EllipseDelaunayTraits>(sites));
     try {
         graph.insert_all([&](std::size_t done, std::size_t total) {
             if (progress && (done % 200 == 0 || done == total)) std::fprintf(stderr, "\rinserted %zu of %zu", done, total);
@@ -99,11 +74,8 @@ int run(const std::vector<std::string>& args) {
     if (progress) std::fprintf(stderr, "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const auto edges = graph.edges();
-    const auto faces = graph.faces();
-    const auto hidden = graph.hidden();
-    std::cout << sites.size() << " sites (" << hidden.size() << " hidden), " << edges.size() << " Delaunay edges, "
-              << faces.size() << " faces, built in " << seconds << " s\n";
+    std::cout << sites.size() << " sites (" << graph.hidden().size() << " hidden), " << graph.edges().size()
+              << " Delaunay edges, " << graph.faces().size() << " faces, built in " << seconds << " s\n";
 
     int status = kExitOk;
     if (parsed.has("--validate")) {
@@ -113,7 +85,7 @@ int run(const std::vector<std::string>& args) {
         if (!problem.empty()) status = kExitFailure;
     }
     if (parsed.has("--stats")) {
-        const nlohmann::json s = stats_json(graph, seconds);
+        const nlohmann::json s = build_stats_json(graph, seconds);
         std::cout << "time per insertion: " << 1e6 * seconds / std::max<std::size_t>(1, sites.size()) << " us\n";
         std::cout << "predicate calls (decided by filter / subdivision / exact):\n";
         for (const auto& [name, row] : s["predicates"].items())
@@ -121,17 +93,7 @@ int run(const std::vector<std::string>& args) {
                       << " / " << row["exact"] << ")\n";
     }
     if (parsed.has("--json")) {
-        nlohmann::json j;
-        j["sites"] = nlohmann::json::array();
-        for (const Ellipse& e : sites) j["sites"].push_back(e.str());
-        j["hidden"] = nlohmann::json::array();
-        for (const auto& [h, by] : hidden) j["hidden"].push_back({h, by});
-        j["edges"] = nlohmann::json::array();
-        for (const auto& [a, b] : edges) j["edges"].push_back({a, b});
-        j["faces"] = faces;
-        j["voronoi_vertices"] = nlohmann::json::array();
-        for (const auto& f : faces) j["voronoi_vertices"].push_back(voronoi_vertex(sites, f));
-        j["stats"] = stats_json(graph, seconds);
+        const nlohmann::json j = graph_json(graph, sites, seconds);
         const std::string out = parsed.value("--json");
         if (out == "-") {
             std::cout << j.dump() << "\n";

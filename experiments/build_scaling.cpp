@@ -26,6 +26,7 @@
 // ANOMALY and makes the program exit with status 1.
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
 #include "util/error.hpp"
@@ -216,7 +217,7 @@ Row run_ellvor(const std::string& set, const std::string& label, const std::vect
     try {
         std::unique_ptr<DelaunayGraph> g;
         timed([&] {
-            g.reset(new DelaunayGraph(sites));
+            g = std::make_unique<DelaunayGraph>(std::make_unique<EllipseDelaunayTraits>(sites));
             std::size_t step = std::max<std::size_t>(1, sites.size() / 10);
             g->insert_all([&](std::size_t done, std::size_t total) {
                 if (total >= 1000 && done % step == 0)
@@ -257,11 +258,11 @@ Row run_ellvor(const std::string& set, const std::string& label, const std::vect
 
 
 
-// Mean time of one kappa1 (side_of_bisector) call, on a fresh DelaunayTraits
+// Mean time of one kappa1 (side_of_bisector) call, on fresh EllipseDelaunayTraits
 // of the sites, for pseudo-random triples of distinct sites (seconds).
 double kappa1_seconds(const std::vector<Ellipse>& sites) {
     if (sites.size() < 3) return 0;
-    DelaunayTraits t(sites);
+    EllipseDelaunayTraits t(sites);
     std::mt19937_64 rng(3);
     const std::size_t calls = 20000, n = sites.size();
     std::vector<std::array<SiteId, 3>> triples;
@@ -454,7 +455,7 @@ int main(int argc, char** argv) {
     }
 
     md << "\n## Where the time goes: the nearest-neighbour walk (kappa1)\n\nkappa1 calls × the mean CPU time of "
-          "one kappa1 call (micro-benchmark: 20000 calls on random site triples with a fresh DelaunayTraits), "
+          "one kappa1 call (micro-benchmark: 20000 calls on random site triples with fresh EllipseDelaunayTraits), "
           "against the whole build's CPU time. An estimate: the walk's triples are neighbours, not random sites.\n\n"
           "| set | n | kappa1 calls | per insertion | µs / call | estimated kappa1 time (s) | share of build |\n"
           "|---|---:|---:|---:|---:|---:|---:|\n";

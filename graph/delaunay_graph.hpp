@@ -1,28 +1,36 @@
-// The Delaunay graph of ellipses (the dual of their Voronoi diagram), built
-// incrementally as CGAL's Apollonius_graph_2 does (research digest section 2):
-// nearest-neighbour walk (kappa1), hidden test, first conflict (kappa2/kappa3
+// The Delaunay graph of a set of sites (the dual of their Voronoi diagram),
+// built incrementally as CGAL's Apollonius_graph_2 does (Karavelas and
+// Yvinec's algorithm): 0, 1, 2 and 3 sites are handled apart;
+// from then on a new site p is inserted in named steps -- the nearest site
+// (a walk decided by kappa1), the hidden test, a first conflict (kappa2/kappa3
 // around the nearest vertex, else an edge-interior conflict and a degree-2
-// insertion), conflict region grown through edges whose whole Voronoi edge is
-// in conflict (kappa4) or whose endpoint the new site hides, retriangulation
-// by starring the hole. 0, 1, 2 and 3 sites are handled as in CGAL.
+// vertex), the conflict region grown through edges whose whole Voronoi edge
+// is in conflict (kappa4) or whose site p hides, bogus vertices where the
+// region touches itself, and the hole starred around p.
 //
-// Sites are disjoint or nested ellipses (DESIGN.md). A site inside another one
-// is hidden: it has no vertex, and `hidden()` names the visible site that
-// contains it. Sees only signs through DelaunayTraits.
+// Sites are disjoint or nested. A site inside another one is hidden: it has
+// no vertex, and `hidden()` names the visible site that contains it.
+//
+// The graph knows sites by id only and sees them through its DelaunayTraits,
+// which it owns: signs and booleans, never a number, never a site's shape.
 #pragma once
 
-#include "graph/delaunay_traits.hpp"
 #include "graph/site_grid.hpp"
 #include "graph/triangulation.hpp"
+#include "graph/triangulation_predicates.hpp"
+#include "predicates/delaunay_traits.hpp"
 
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace ellvor {
+
+class ConflictRegion;
 
 struct GraphStats {
     std::size_t inserted = 0, hidden_on_insert = 0, degree_2_insertions = 0, bogus_vertices = 0;
@@ -33,15 +41,18 @@ struct GraphStats {
 
 class DelaunayGraph {
 public:
-    explicit DelaunayGraph(std::vector<Ellipse> sites);
+    // The graph of traits->size() sites, none inserted yet. The graph owns its
+    // traits: their memos, caches and counters belong to this one graph.
+    explicit DelaunayGraph(std::unique_ptr<DelaunayTraits> traits);
 
-    // Inserts every site, largest area first (CGAL's bulk order; the graph
-    // does not depend on the order except in degenerate configurations).
+    // Inserts every site, largest first (CGAL's bulk order; the graph does
+    // not depend on the order except in degenerate configurations), each walk
+    // started at a site with a near location hint.
     void insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress = {});
     // Inserts one site (each id at most once).
     void insert(SiteId id);
 
-    std::size_t number_of_sites() const { return traits_.size(); }
+    std::size_t number_of_sites() const { return traits_->size(); }
     // Visible sites (those with a vertex), increasing ids.
     std::vector<SiteId> visible_sites() const;
     // [hidden, hiding] pairs, hiding visible, sorted by hidden id.
@@ -68,45 +79,44 @@ public:
     // hiding site; every site is visible or hidden. "" if valid. O(n * faces).
     std::string brute_force_check();
 
-    const TraitsStats& predicate_stats() const { return traits_.stats(); }
+    const TraitsStats& predicate_stats() const { return traits_->stats(); }
     const GraphStats& stats() const { return stats_; }
-    const DelaunayTraits& traits() const { return traits_; }
     const Triangulation& triangulation() const { return tds_; }
 
 private:
-    using Edge = Triangulation::Edge;
-    enum class ConflictType { no_conflict, interior, left_vertex, right_vertex, both_vertices, entire_edge };
+    using ConflictType = TriangulationPredicates::ConflictType;
 
-    SiteId site_of(int v) const { return static_cast<SiteId>(tds_.vertex(v).site); }
-    bool is_infinite(int v) const { return v == Triangulation::kInfinite; }
+    SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site; }
+    TriangulationPredicates predicates() { return {tds_, *traits_}; }
     void hide(SiteId hidden, SiteId by);  // moves `hidden`'s own hidden list to `by` too
 
-    void insert_small(SiteId p);  // fewer than 3 visible sites
+    // Fewer than 3 visible sites.
+    void insert_small(SiteId p);
     void insert_third(SiteId p);
     void build_three(SiteId a, SiteId m, SiteId b, bool middle_on_hull);
-    void insert_general(SiteId p);
+    Edge find_edge(VertexIndex a, VertexIndex b) const;
     void rebuild_small(std::vector<SiteId> visible);
 
-    int nearest_vertex(SiteId p);
-    // A start for the walk: the vertex of a nearby site (grid_), else the last vertex.
-    int walk_start(SiteId p) const;
-    void record_vertex(SiteId p, int v);
-    // CGAL's graph-level wrappers.
-    Sign incircle(int f, SiteId q);
-    bool edge_interior(int f, int i, SiteId q, bool b);
-    bool finite_edge_interior_degenerated(int f, int i, SiteId q, bool b);
-    bool infinite_edge_interior(int f, int i, SiteId q, bool b);
-    ConflictType finite_edge_conflict_type_degenerated(SiteId p1, SiteId p2, SiteId q);
-    Edge find_edge(int a, int b) const;
+    // 3 visible sites or more, in CGAL's steps.
+    void insert_general(SiteId p);
+    VertexIndex nearest_vertex(SiteId p);
+    VertexIndex walk_start(SiteId p) const;  // the vertex of a nearby site (grid_), else the last vertex
+    bool hide_in_nearest(SiteId p, VertexIndex nearest);
+    std::optional<FaceIndex> find_first_conflict(ConflictRegion& region, VertexIndex nearest);
+    bool insert_in_voronoi_edge(SiteId p, VertexIndex nearest);
+    bool rebuild_if_at_most_one_survives(const ConflictRegion& region);
+    std::vector<VertexIndex> add_bogus_vertices(const ConflictRegion& region);
+    void retriangulate_conflict_region(ConflictRegion& region, const std::vector<VertexIndex>& bogus);
+    void record_vertex(SiteId p, VertexIndex v);
 
-    DelaunayTraits traits_;
+    std::unique_ptr<DelaunayTraits> traits_;
     Triangulation tds_;
     std::vector<SiteId> small_;                  // the visible sites while tds_ is empty (< 3)
     std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
     std::vector<char> inserted_;
-    int last_vertex_ = -1;
-    std::unique_ptr<SiteGrid> grid_;   // insert_all only: sites with a vertex, by center
-    std::vector<int> vertex_of_site_;  // the vertex a site got (checked before use: vertices die)
+    VertexIndex last_vertex_;
+    std::unique_ptr<SiteGrid> grid_;   // insert_all only: sites with a vertex, by location hint
+    std::vector<VertexIndex> vertex_of_site_;  // the vertex a site got (checked before use: vertices die)
     GraphStats stats_;
 };
 

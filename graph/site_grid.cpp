@@ -5,9 +5,8 @@
 
 namespace ellvor {
 
-SiteGrid::SiteGrid(const DelaunayTraits& traits) {
-    for (SiteId i = 0; i < traits.size(); ++i)
-        x_.push_back(traits.site(i).enclosure().xc.mid()), y_.push_back(traits.site(i).enclosure().yc.mid());
+SiteGrid::SiteGrid(const std::vector<LocationHint>& points) {
+    for (const LocationHint& p : points) x_.push_back(p.x), y_.push_back(p.y);
     if (x_.empty()) return;
     const auto [xmin, xmax] = std::minmax_element(x_.begin(), x_.end());
     const auto [ymin, ymax] = std::minmax_element(y_.begin(), y_.end());

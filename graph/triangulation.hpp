@@ -1,104 +1,123 @@
 // A compact triangulation data structure of the sphere (CGAL TDS style, our
-// own): vertex 0 is the infinite vertex; every face holds 3 vertex indices
-// and 3 neighbour indices, counter-clockwise, neighbour i opposite vertex i.
-// Edge (f, i) is the edge of f opposite its vertex i, from f.v[ccw(i)] to
+// own): one infinite vertex; every face holds 3 vertex indices and 3
+// neighbour indices, counter-clockwise, neighbour i opposite vertex i. Edge
+// (f, i) is the edge of f opposite its vertex i, from f.v[ccw(i)] to
 // f.v[cw(i)] (f on its left).
 //
-// Degenerate faces are legal (research digest section 4.1): a vertex may have
-// degree 2, and two faces may share all three vertices (or two edges). So the
-// neighbour across an edge is found through vertex identities (mirror_index),
-// never by searching for a face pointer.
+// Degenerate faces are legal: a vertex may have degree 2 (a site whose cell
+// lies inside one Voronoi edge), and two faces may share all three vertices
+// (or two edges). So the neighbour across an edge is found through vertex
+// identities (mirror_index), never by searching for a face index.
 //
 // Only dimension 2 is stored (>= 3 finite vertices); the graph keeps the
-// smaller cases (0, 1, 2 sites) itself.
+// smaller cases (0, 1, 2 sites) itself. No geometry: a vertex carries a site
+// id as a label, nothing is asked about it.
 #pragma once
+
+#include "graph/triangulation_index.hpp"
+#include "predicates/site_id.hpp"
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace ellvor {
 
-inline int ccw(int i) { return (i + 1) % 3; }
-inline int cw(int i) { return (i + 2) % 3; }
-
 class Triangulation {
 public:
-    static constexpr long kInfiniteSite = -1;
-    static constexpr int kInfinite = 0;  // index of the infinite vertex
+    // The labels of the vertices that stand for no site: the infinite vertex,
+    // and the temporary degree-2 vertices that split an edge along which a
+    // conflict region touches itself (CGAL's bogus vertices).
+    static constexpr SiteId kInfiniteSite = std::numeric_limits<SiteId>::max();
+    static constexpr SiteId kBogusSite = kInfiniteSite - 1;
+    static constexpr VertexIndex kInfiniteVertex{0};
 
     struct Vertex {
-        long site = kInfiniteSite;  // site id; kInfiniteSite for the infinite vertex
-        int face = -1;              // one incident face
+        SiteId site = kInfiniteSite;
+        FaceIndex face;  // one incident face
         bool alive = false;
     };
     struct Face {
-        std::array<int, 3> v{{-1, -1, -1}};
-        std::array<int, 3> n{{-1, -1, -1}};
+        std::array<VertexIndex, 3> v;
+        std::array<FaceIndex, 3> n;
         bool alive = false;
     };
-    using Edge = std::pair<int, int>;  // (face, index)
 
     Triangulation() { clear(); }
     // Back to the infinite vertex alone, no faces.
     void clear();
 
     bool empty() const { return number_of_faces_ == 0; }
-    int add_vertex(long site);
+    // A vertex without faces (the caller links it).
+    VertexIndex add_vertex(SiteId site);
     // The tetrahedron on the infinite vertex and three new vertices, with the
     // finite face (a, b, c) counter-clockwise. Requires empty().
-    std::array<int, 3> make_tetrahedron(long a, long b, long c);
+    std::array<VertexIndex, 3> make_tetrahedron(SiteId a, SiteId b, SiteId c);
 
-    // Flip the edge (f, i): the two faces (v_i, a, b), (w, b, a) become
-    // (v_i, a, w), (w, b, v_i). The caller checks that f.v[i] != mirror vertex.
-    void flip(int f, int i);
-    // Split edge (f, i) with a new vertex of degree 2 (two new faces with the
+    // Flips edge e = (f, i): the faces (v_i, a, b) and (w, b, a) become
+    // (v_i, a, w) and (w, b, v_i). Throws when v_i is the mirror vertex w.
+    void flip(Edge e);
+    // Splits edge e with a new vertex of degree 2 (two new faces with the
     // edge's endpoints and the new vertex). Returns the new vertex.
-    int insert_degree_2(int f, int i, long site);
+    VertexIndex insert_degree_2(Edge e, SiteId site);
     // Inverse of insert_degree_2.
-    void remove_degree_2(int v);
-    // Replace the faces `hole` (a topological disk) by a fan around a new
+    void remove_degree_2(VertexIndex v);
+    // Replaces the faces `hole` (a topological disk) by a fan around a new
     // vertex: `boundary` lists the hole's boundary edges (f, i), f in the hole,
     // counter-clockwise (each edge's end is the next edge's start). Vertices
     // strictly inside the hole are deleted. Returns the new vertex.
-    int star_hole(long site, const std::vector<Edge>& boundary, const std::vector<int>& hole);
-    void delete_vertex(int v);
+    VertexIndex star_hole(SiteId site, const std::vector<Edge>& boundary, const std::vector<FaceIndex>& hole);
+    // Frees a vertex; the caller has removed it from every face.
+    void delete_vertex(VertexIndex v);
 
-    const Vertex& vertex(int v) const { return vertices_[v]; }
-    const Face& face(int f) const { return faces_[f]; }
-    std::size_t vertex_capacity() const { return vertices_.size(); }
-    std::size_t face_capacity() const { return faces_.size(); }
+    const Vertex& vertex(VertexIndex v) const { return vertices_[static_cast<std::size_t>(v.value())]; }
+    const Face& face(FaceIndex f) const { return faces_[static_cast<std::size_t>(f.value())]; }
+    bool is_vertex(VertexIndex v) const {
+        return v.value() >= 0 && static_cast<std::size_t>(v.value()) < vertices_.size() && vertex(v).alive;
+    }
+    // Every live face, by increasing index.
+    std::vector<FaceIndex> faces() const;
+    // Every live vertex but the infinite one, by increasing index.
+    std::vector<VertexIndex> finite_vertices() const;
     std::size_t number_of_faces() const { return number_of_faces_; }
     std::size_t number_of_vertices() const { return number_of_vertices_; }  // the infinite one included
 
-    bool is_infinite_face(int f) const;
-    bool is_infinite_edge(int f, int i) const {
-        return faces_[f].v[ccw(i)] == kInfinite || faces_[f].v[cw(i)] == kInfinite;
+    bool is_infinite_face(FaceIndex f) const;
+    bool is_infinite_edge(Edge e) const {
+        const Face& F = face(e.face);
+        return F.v[ccw(e.index)] == kInfiniteVertex || F.v[cw(e.index)] == kInfiniteVertex;
     }
     // Index of vertex v in face f, or -1.
-    int index(int f, int v) const;
-    int mirror_index(int f, int i) const;
-    int mirror_vertex(int f, int i) const { return faces_[faces_[f].n[i]].v[mirror_index(f, i)]; }
+    int index(FaceIndex f, VertexIndex v) const;
+    FaceIndex neighbor(Edge e) const { return face(e.face).n[e.index]; }
+    int mirror_index(Edge e) const;
+    // The same edge seen from the neighbouring face.
+    Edge mirror_edge(Edge e) const { return {neighbor(e), mirror_index(e)}; }
+    VertexIndex mirror_vertex(Edge e) const { return face(neighbor(e)).v[mirror_index(e)]; }
     // Faces around v, counter-clockwise, starting at v's face.
-    std::vector<int> incident_faces(int v) const;
+    std::vector<FaceIndex> incident_faces(VertexIndex v) const;
 
     // Combinatorial consistency (neighbours mutual, vertex faces, Euler,
-    // 2E = 3F, circulators close). Returns "" if valid, else a description.
+    // 2E = 3F, circulators close); the infinite vertex alone is valid.
+    // Returns "" if valid, else a description.
     std::string check() const;
 
 private:
-    int new_face(int a, int b, int c);
-    void kill_face(int f);
-    void link(int f, int i, int g, int j) {
-        faces_[f].n[i] = g;
-        faces_[g].n[j] = f;
+    Vertex& vertex_at(VertexIndex v) { return vertices_[static_cast<std::size_t>(v.value())]; }
+    Face& face_at(FaceIndex f) { return faces_[static_cast<std::size_t>(f.value())]; }
+    FaceIndex new_face(VertexIndex a, VertexIndex b, VertexIndex c);
+    void kill_face(FaceIndex f);
+    void link(FaceIndex f, int i, FaceIndex g, int j) {
+        face_at(f).n[i] = g;
+        face_at(g).n[j] = f;
     }
 
     std::vector<Vertex> vertices_;
     std::vector<Face> faces_;
-    std::vector<int> free_faces_, free_vertices_;
+    std::vector<FaceIndex> free_faces_;
+    std::vector<VertexIndex> free_vertices_;
     std::size_t number_of_faces_ = 0, number_of_vertices_ = 0;
 };
 

@@ -1,8 +1,9 @@
 // The Delaunay graph of ellipses: structure, validity, and agreement with
 // CGAL's Apollonius_graph_2 on circles (the circle special case is our
-// strongest oracle, DESIGN.md).
+// strongest oracle).
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
+#include "tests/support/ellipse_graph.hpp"
 #include "util/error.hpp"
 
 #include <CGAL/Apollonius_graph_2.h>
@@ -76,7 +77,7 @@ Summary cgal_graph(const std::vector<IntCircle>& circles, const std::vector<Site
 Summary ellvor_graph(const std::vector<IntCircle>& circles, const std::vector<SiteId>& order, bool brute_force) {
     std::vector<Ellipse> sites;
     for (const IntCircle& c : circles) sites.push_back(Ellipse::circle(c.x, c.y, c.r));
-    DelaunayGraph g(sites);
+    DelaunayGraph g = test::ellipse_graph(sites);
     for (SiteId i : order) g.insert(i);
     const std::string problem = brute_force ? g.brute_force_check() : g.validate();
     std::string data;
@@ -173,7 +174,7 @@ TEST_CASE("graph: three-site structures (degree 2, repeated faces)", "[graph]") 
     auto build = [](std::vector<IntCircle> c) {
         std::vector<Ellipse> s;
         for (auto& x : c) s.push_back(Ellipse::circle(x.x, x.y, x.r));
-        DelaunayGraph g(s);
+        DelaunayGraph g = test::ellipse_graph(s);
         g.insert_all();
         REQUIRE(g.validate().empty());
         return g;
@@ -268,7 +269,7 @@ TEST_CASE("graph: random ellipses are valid (local and brute force)", "[graph]")
             sites.push_back(Ellipse(a, b, Rational(rot(rng), 4), x, y));
             disks.push_back({x, y, R});
         }
-        DelaunayGraph g(sites);
+        DelaunayGraph g = test::ellipse_graph(sites);
         std::string problem;
         try {
             g.insert_all();

@@ -9,6 +9,7 @@
 // which can be pasted into `replay_case` below.
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
+#include "tests/support/ellipse_graph.hpp"
 #include "util/error.hpp"
 
 #include <CGAL/Apollonius_graph_2.h>
@@ -107,7 +108,7 @@ bool check_against_cgal(const std::vector<Circle>& circles, const std::vector<Si
     Graph got;
     std::string problem;
     try {
-        DelaunayGraph g(sites);
+        DelaunayGraph g = test::ellipse_graph(sites);
         for (SiteId i : order) g.insert(i);
         problem = g.validate();
         if (problem.empty() && brute_force) problem = g.brute_force_check();

@@ -2,7 +2,7 @@
 // eye only): the sites (hidden ones dashed and grey), optionally their ids,
 // the Delaunay edges (thin, light, between the centers), the Voronoi vertices
 // (dots at the certified centers of the Voronoi circles) and every Voronoi
-// edge as a traced bisector arc (graph/bisector_trace.hpp), one <path> each;
+// edge as a traced bisector arc (output/bisector_trace.hpp), one <path> each;
 // unbounded edges are clipped to the drawing box. A title and a legend with
 // the counts. World y points up (flipped by the group's transform).
 //
@@ -13,7 +13,7 @@
 // comment and in the legend.
 #pragma once
 
-#include "graph/bisector_trace.hpp"
+#include "output/bisector_trace.hpp"
 #include "graph/delaunay_graph.hpp"
 
 #include <ostream>

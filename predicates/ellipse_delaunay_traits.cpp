@@ -1,6 +1,4 @@
-#include "graph/delaunay_traits.hpp"
-
-#include <algorithm>
+#include "predicates/ellipse_delaunay_traits.hpp"
 
 #include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
@@ -9,6 +7,9 @@
 #include "predicates/side_of_bisector.hpp"
 #include "util/error.hpp"
 
+#include <algorithm>
+#include <initializer_list>
+#include <string>
 #include <utility>
 
 namespace ellvor {
@@ -34,9 +35,22 @@ T counted(PredicateCount& count, const Decision<T>& d, const char* what, const s
 
 }  // namespace
 
-DelaunayTraits::DelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {}
+EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {
+    area_.reserve(sites_.size());
+    for (const Ellipse& e : sites_) area_.push_back(e.a() * e.b());
+}
 
-bool DelaunayTraits::is_hidden(SiteId p, SiteId q) {
+Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
+    const Rational &x = area_.at(a), &y = area_.at(b);
+    return y < x ? Sign::positive : x < y ? Sign::negative : Sign::zero;
+}
+
+LocationHint EllipseDelaunayTraits::location_hint(SiteId i) const {
+    const Ellipse::Enclosure& e = site(i).enclosure();
+    return {e.xc.mid(), e.yc.mid()};
+}
+
+bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     if (p == q) return true;
     const std::uint64_t key = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint64_t>(q);
     auto found = hidden_memo_.find(key);
@@ -59,13 +73,13 @@ bool DelaunayTraits::is_hidden(SiteId p, SiteId q) {
     return q_in_p;
 }
 
-Sign DelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
+Sign EllipseDelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
     ++stats_.side_of_bisector.calls;
     return counted(stats_.side_of_bisector, ellvor::side_of_bisector(site(i), site(j), site(k).center()),
                    "side of bisector", ids({i, j, k}));
 }
 
-Sign DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
+Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
     ++stats_.vertex_conflict3.calls;
     const Sign s = counted(stats_.vertex_conflict3, infinite_vertex_conflict(site(i), site(j), site(q)),
                            "infinite vertex conflict", ids({i, j, q}));
@@ -73,7 +87,7 @@ Sign DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
     return s;
 }
 
-Sign DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
+Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
     ++stats_.vertex_conflict4.calls;
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
@@ -82,25 +96,25 @@ Sign DelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
     return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", ids({i, j, k, q})));
 }
 
-bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
+bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
     return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b),
                    "finite edge interior conflict", ids({p1, p2, p3, p4, q}));
 }
 
-bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
+bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
     return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b),
                    "finite edge interior conflict", ids({p1, p2, p3, q}));
 }
 
-bool DelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) {
+bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
     return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(q), b),
                    "finite edge interior conflict", ids({p1, p2, q}));
 }
 
-bool DelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
+bool EllipseDelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
     ++stats_.infinite_edge.calls;
     return counted(stats_.infinite_edge, infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b),
                    "infinite edge interior conflict", ids({p2, p3, p4, q}));

@@ -1,4 +1,4 @@
-#include "graph/bisector_trace.hpp"
+#include "output/bisector_trace.hpp"
 
 #include "subdivision/nearest_point.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
@@ -371,12 +371,12 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
     }
 
     // The Voronoi vertex of every finite face (index into d.vertices).
-    std::map<int, std::size_t> vertex_of_face;
-    for (std::size_t f = 0; f < tds.face_capacity(); ++f) {
-        const Triangulation::Face& F = tds.face(static_cast<int>(f));
-        if (!F.alive || tds.is_infinite_face(static_cast<int>(f))) continue;
+    std::map<FaceIndex, std::size_t> vertex_of_face;
+    for (FaceIndex f : tds.faces()) {
+        if (tds.is_infinite_face(f)) continue;
+        const Triangulation::Face& F = tds.face(f);
         VoronoiVertexPoint v;
-        for (int k = 0; k < 3; ++k) v.face[k] = static_cast<SiteId>(tds.vertex(F.v[k]).site);
+        for (int k = 0; k < 3; ++k) v.face[k] = tds.vertex(F.v[k]).site;
         VoronoiCircleSolver solver(sites[v.face[0]], sites[v.face[1]], sites[v.face[2]]);
         if (solver.refine(53)) {
             const VoronoiCircleEnclosure& c = solver.enclosure();
@@ -385,25 +385,23 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
             v.y = c.center_y.mid_double();
             v.radius = c.radius.mid_double();
         }
-        vertex_of_face[static_cast<int>(f)] = d.vertices.size();
+        vertex_of_face[f] = d.vertices.size();
         d.vertices.push_back(v);
     }
 
-    for (std::size_t fi = 0; fi < tds.face_capacity(); ++fi) {
-        const int f = static_cast<int>(fi);
+    for (FaceIndex f : tds.faces()) {
         const Triangulation::Face& F = tds.face(f);
-        if (!F.alive) continue;
         for (int i = 0; i < 3; ++i) {
-            const int g = F.n[i];
-            if (g < f || tds.is_infinite_edge(f, i)) continue;  // each finite edge once
+            const FaceIndex g = F.n[i];
+            if (g < f || tds.is_infinite_edge({f, i})) continue;  // each finite edge once
             VoronoiEdgeArc arc;
-            arc.p = static_cast<SiteId>(tds.vertex(F.v[ccw(i)]).site);
-            arc.q = static_cast<SiteId>(tds.vertex(F.v[cw(i)]).site);
+            arc.p = tds.vertex(F.v[ccw(i)]).site;
+            arc.q = tds.vertex(F.v[cw(i)]).site;
             const EllipseShape& P = shapes[arc.p];
             // The left face (f) gives the start, the right face (g) the end.
             std::optional<double> from, to;
             bool failed = false;
-            auto angle = [&](int face, std::optional<double>& out, bool& infinite) {
+            auto angle = [&](FaceIndex face, std::optional<double>& out, bool& infinite) {
                 const auto it = vertex_of_face.find(face);
                 if (it == vertex_of_face.end()) {
                     infinite = true;

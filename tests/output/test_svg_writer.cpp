@@ -4,9 +4,10 @@
 // brute-force nearest point (dense samples on each ellipse, then a local
 // golden-section refinement): every point is equidistant from its two sites
 // within the stated tolerance and no third site is closer by more than it.
-#include "graph/bisector_trace.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "graph/svg_writer.hpp"
+#include "output/bisector_trace.hpp"
+#include "output/svg_writer.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
 #include "sites/site_generators.hpp"
 #include "sites/site_io.hpp"
 #include "tests/support/command_runner.hpp"
@@ -131,7 +132,8 @@ struct Built {
     DelaunayGraph graph;
     TracedDiagram diagram;
     std::string svg;
-    explicit Built(std::vector<Ellipse> s, bool ids = true) : sites(s), graph(std::move(s)) {
+    explicit Built(std::vector<Ellipse> s, bool ids = true)
+        : sites(s), graph(std::make_unique<EllipseDelaunayTraits>(std::move(s))) {
         graph.insert_all();
         SvgOptions o;
         o.show_ids = ids;

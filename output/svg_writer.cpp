@@ -1,4 +1,4 @@
-#include "graph/svg_writer.hpp"
+#include "output/svg_writer.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,0 +1,22 @@
+// The JSON document of `ellvor build --json`: the sites, the [hidden, hiding]
+// pairs, the finite edges and faces by site id, the Voronoi vertex of every
+// face (center and radius of its certified Voronoi circle, in doubles, each
+// within `error`) and the build statistics.
+#pragma once
+
+#include "graph/delaunay_graph.hpp"
+#include "sites/ellipse.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+namespace ellvor {
+
+// {"seconds", "inserted", "predicates": {name: {"calls", one count per stage}}}.
+nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds);
+
+// The whole document; `sites` are the graph's sites, `seconds` its build time.
+nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double seconds);
+
+}  // namespace ellvor

@@ -1,0 +1,49 @@
+// The Delaunay traits of ellipse sites: the model of DelaunayTraits that the
+// graph is built with. It owns the sites, the certified Voronoi circles of the
+// triples asked about (one solver per triple, reused by every kappa3 call on
+// it), the memo of relative positions and the stage counters.
+#pragma once
+
+#include "predicates/delaunay_traits.hpp"
+#include "predicates/voronoi_circle_cache.hpp"
+#include "sites/ellipse.hpp"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace ellvor {
+
+class EllipseDelaunayTraits final : public DelaunayTraits {
+public:
+    explicit EllipseDelaunayTraits(std::vector<Ellipse> sites);
+
+    const Ellipse& site(SiteId i) const { return sites_.at(i); }
+
+    std::size_t size() const override { return sites_.size(); }
+    // The weight is the area (up to the factor pi): a b.
+    Sign compare_weight(SiteId a, SiteId b) const override;
+    // The center.
+    LocationHint location_hint(SiteId i) const override;
+
+    // Memoized, both ways at once (one relative position answers both).
+    bool is_hidden(SiteId p, SiteId q) override;
+    Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override;
+    Sign vertex_conflict(SiteId i, SiteId j, SiteId q) override;
+    Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) override;
+    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
+    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override;
+    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override;
+    bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
+
+    const TraitsStats& stats() const override { return stats_; }
+
+private:
+    std::vector<Ellipse> sites_;
+    std::vector<Rational> area_;  // a b per site
+    VoronoiCircleCache cache_;
+    std::unordered_map<std::uint64_t, bool> hidden_memo_;
+    TraitsStats stats_;
+};
+
+}  // namespace ellvor

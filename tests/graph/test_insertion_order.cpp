@@ -1,0 +1,201 @@
+// The Delaunay graph does not depend on the insertion order (Karavelas and
+// Yvinec's incremental algorithm, as CGAL's Apollonius_graph_2): the sites
+// are inserted one by one in random permutations instead of insert_all's
+// bulk order.
+//
+// General position (random ellipses and circles, nested ones included): the
+// whole graph must be the same for every order -- visible sites, [hidden,
+// hiding] pairs, edges (a multiset), faces and hull. That includes the
+// hiding site of a site nested in several: sites are disjoint or nested, so
+// containment is a forest whose roots are the visible sites, and a hidden
+// site is always recorded under a visible site containing it (validate()) --
+// the root of its tree, whatever the order. Only identical sites, which hide
+// each other, could swap roles; general position has none.
+//
+// Degenerate inputs (four or more sites tangent to one circle): the graph may
+// keep either diagonal of a degree-4 Voronoi vertex depending on the order,
+// so only validity is required: every order passes validate() and
+// brute_force_check().
+//
+// A failure prints the sites (.ell lines) and the order.
+#include "graph/delaunay_graph.hpp"
+#include "sites/ellipse.hpp"
+#include "sites/site_generators.hpp"
+#include "tests/support/ellipse_graph.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+using Pairs = std::vector<std::pair<SiteId, SiteId>>;
+
+struct GraphShape {
+    std::vector<SiteId> visible;
+    Pairs hidden, edges, hull;
+    std::vector<std::array<SiteId, 3>> faces;
+};
+
+GraphShape shape_of(const DelaunayGraph& g) {
+    return {g.visible_sites(), g.hidden(), g.edges(), g.hull(), g.faces()};
+}
+
+std::string replay(const std::vector<Ellipse>& sites, const std::vector<SiteId>& order) {
+    std::ostringstream s;
+    s << "sites (a b w xc yc):\n";
+    for (const Ellipse& e : sites) s << e.str() << "\n";
+    s << "order:";
+    for (SiteId i : order) s << " " << i;
+    return s.str();
+}
+
+// Our own shuffle (std::shuffle's algorithm is implementation-defined), so
+// that a seed means the same orders everywhere.
+std::vector<SiteId> random_order(std::size_t n, std::mt19937_64& rng) {
+    std::vector<SiteId> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
+    return order;
+}
+
+// The graph of `sites` inserted in `order`, checked by validate() and, with
+// `brute_force`, by brute_force_check().
+GraphShape build_in_order(const std::vector<Ellipse>& sites, const std::vector<SiteId>& order, bool brute_force) {
+    DelaunayGraph g = test::ellipse_graph(sites);
+    for (SiteId i : order) g.insert(i);
+    const std::string problem = brute_force ? g.brute_force_check() : g.validate();
+    INFO(replay(sites, order));
+    CHECK(problem == "");
+    return shape_of(g);
+}
+
+// Nested chains: inside every site that holds no other site (every
+// `every`-th one of the top-level sites) a concentric circle of a third of its
+// smaller semi-axis, and inside that one a circle of a ninth. Each lies
+// strictly inside the site's inscribed circle, hence inside the site and
+// apart from every other site; the innermost circle of a chain in a nested
+// site is nested in three sites.
+std::vector<Ellipse> with_nested_chains(std::vector<Ellipse> sites, std::size_t every) {
+    const std::size_t n = sites.size();
+    std::vector<char> holds(n, 0), nested(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            if (i != j && bounding_circle_inside_inscribed(sites[j], sites[i])) holds[i] = nested[j] = 1;
+    std::size_t top_level = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (holds[i] || (!nested[i] && top_level++ % every != 0)) continue;
+        const Rational r = std::min(sites[i].a(), sites[i].b()) / Rational(3);
+        sites.push_back(Ellipse::circle(sites[i].xc(), sites[i].yc(), r));
+        sites.push_back(Ellipse::circle(sites[i].xc(), sites[i].yc(), r / Rational(3)));
+    }
+    return sites;
+}
+
+// Returns the graph of the bulk order.
+GraphShape check_order_independence(const std::vector<Ellipse>& sites, std::mt19937_64& rng, int orders) {
+    DelaunayGraph bulk = test::ellipse_graph(sites);
+    bulk.insert_all();
+    REQUIRE(bulk.validate() == "");
+    const GraphShape want = shape_of(bulk);
+    for (int k = 0; k < orders; ++k) {
+        const std::vector<SiteId> order = random_order(sites.size(), rng);
+        const GraphShape got = build_in_order(sites, order, false);
+        INFO(replay(sites, order));
+        CHECK(got.visible == want.visible);
+        CHECK(got.hidden == want.hidden);
+        CHECK(got.edges == want.edges);
+        CHECK(got.faces == want.faces);
+        CHECK(got.hull == want.hull);
+    }
+    return want;
+}
+
+void check_every_order_valid(const std::vector<Ellipse>& sites, std::mt19937_64& rng, int orders) {
+    std::vector<SiteId> order(sites.size());
+    std::iota(order.begin(), order.end(), 0);
+    build_in_order(sites, order, true);
+    std::reverse(order.begin(), order.end());
+    build_in_order(sites, order, true);
+    for (int k = 0; k < orders; ++k) build_in_order(sites, random_order(sites.size(), rng), true);
+}
+
+// `count` generated sites, round(count / 8) of them nested, then the chains.
+std::vector<Ellipse> generated(SiteKind kind, long count, std::uint64_t seed) {
+    GeneratorOptions o;
+    o.kind = kind;
+    o.count = count;
+    o.seed = seed;
+    o.nested_fraction = Rational(1, 8);
+    return with_nested_chains(generate_sites(o), 10);
+}
+
+// k^2 copies of `site` translated to the points of a k x k square grid of step `step`.
+std::vector<Ellipse> square_grid(const Ellipse& site, long k, long step) {
+    std::vector<Ellipse> out;
+    for (long i = 0; i < k; ++i)
+        for (long j = 0; j < k; ++j)
+            out.push_back(Ellipse(site.a(), site.b(), site.w(), site.xc() + Rational(i * step), site.yc() + Rational(j * step)));
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("insertion order: random ellipses, nested ones included, give one graph", "[graph][order]") {
+    std::mt19937_64 rng(41);
+    for (const auto& [count, seed] : std::vector<std::pair<long, std::uint64_t>>{{50, 1}, {100, 2}, {150, 3}}) {
+        const std::vector<Ellipse> sites = generated(SiteKind::ellipses, count, seed);
+        INFO(sites.size() << " ellipses and circles, seed " << seed);
+        const GraphShape graph = check_order_independence(sites, rng, 3);
+        // Every nested site is hidden: the generated ones and both circles of each chain.
+        CHECK(graph.hidden.size() == (count + 4) / 8 + (sites.size() - count));
+    }
+}
+
+TEST_CASE("insertion order: random circles, nested ones included, give one graph", "[graph][order]") {
+    std::mt19937_64 rng(43);
+    for (const auto& [count, seed] : std::vector<std::pair<long, std::uint64_t>>{{60, 4}, {120, 5}, {160, 6}}) {
+        const std::vector<Ellipse> sites = generated(SiteKind::circles, count, seed);
+        INFO(sites.size() << " circles, seed " << seed);
+        const GraphShape graph = check_order_independence(sites, rng, 3);
+        // Every nested site is hidden: the generated ones and both circles of each chain.
+        CHECK(graph.hidden.size() == (count + 4) / 8 + (sites.size() - count));
+    }
+}
+
+TEST_CASE("insertion order: a ring of 8 equal cocircular circles, with and without its center", "[graph][order]") {
+    // 8 of the 12 integer points of x^2 + y^2 = 25, scaled by 20: the 8 equal
+    // circles are tangent to one circle centered at the origin.
+    const std::vector<std::pair<long, long>> ring = {{5, 0}, {4, 3}, {0, 5}, {-3, 4}, {-5, 0}, {-4, -3}, {0, -5}, {3, -4}};
+    std::vector<Ellipse> sites;
+    for (const auto& [x, y] : ring) sites.push_back(Ellipse::circle(Rational(20 * x), Rational(20 * y), Rational(5)));
+    std::mt19937_64 rng(47);
+    check_every_order_valid(sites, rng, 6);
+    sites.push_back(Ellipse::circle(Rational(0), Rational(0), Rational(7)));
+    check_every_order_valid(sites, rng, 6);
+}
+
+TEST_CASE("insertion order: a square grid of equal circles", "[graph][order]") {
+    // Every cell's four circles are tangent to one circle at its center.
+    std::mt19937_64 rng(53);
+    check_every_order_valid(square_grid(Ellipse::circle(Rational(0), Rational(0), Rational(10)), 3, 100), rng, 6);
+}
+
+TEST_CASE("insertion order: a square grid of identical ellipses", "[graph][order]") {
+    // Axis-aligned: the reflections of a cell map its four ellipses onto each
+    // other, so a circle at the cell's center tangent to one is tangent to
+    // all four. These ties go to the exact stage (tens of ms a call), so one
+    // cell and few orders: a 3 x 3 grid takes seconds per order.
+    std::mt19937_64 rng(59);
+    const Ellipse site(Rational(6), Rational(4), Rational(0), Rational(0), Rational(0));
+    check_every_order_valid(square_grid(site, 2, 20), rng, 2);
+}
