@@ -222,8 +222,13 @@ bool qir_step(const IntPolynomial& f, IsolatingInterval& iv, int s_lo, long e) {
 
 // width <= 2^-bits ?
 bool narrow_enough(const IsolatingInterval& iv, long bits) {
+    // width <= 2^-bits; bits < 0 (a root far above 1 wanted to a few bits)
+    // divides instead: fmpq_mul_2exp takes an unsigned exponent.
     Rational w = iv.width();
-    fmpq_mul_2exp(w.get(), w.get(), bits);
+    if (bits >= 0)
+        fmpq_mul_2exp(w.get(), w.get(), static_cast<ulong>(bits));
+    else
+        fmpq_div_2exp(w.get(), w.get(), static_cast<ulong>(-bits));
     return fmpz_cmp(fmpq_numref(w.get()), fmpq_denref(w.get())) <= 0;
 }
 

@@ -5,6 +5,7 @@
 // to sites that must outlive it; sites are never mutated.
 #pragma once
 
+#include "predicates/site_id.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
@@ -14,8 +15,6 @@
 #include <memory>
 
 namespace ellvor {
-
-using SiteId = std::size_t;
 
 class VoronoiCircleCache {
 public:

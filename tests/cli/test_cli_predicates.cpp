@@ -130,8 +130,8 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
     CHECK(j.at("second").at("point_approx") == json::array({50.0, -100.0}));
     CHECK(!j.contains("kappa2"));
 
-    // q = (-1, 0, 51) touches the line at (50, 0), between the contacts -> conflict.
-    const std::string between = s.file("between.cin", "1 100 49\n0 -100 50\n-1 0 51\n");
+    // q = (40, 0, 10) touches the line at (50, 0), between the contacts -> conflict.
+    const std::string between = s.file("between.cin", "1 100 49\n0 -100 50\n40 0 10\n");
     r = s.ellvor("bitangent " + between + " --cin");
     INFO(r.err);
     REQUIRE(r.status == 0);
