@@ -1,4 +1,4 @@
-// ellvor generate: random site sets and the seed paper's circle datasets.
+// ellvor generate: random site sets and the paper's circle datasets.
 #include "cli/command_list.hpp"
 
 #include "sites/site_generators.hpp"
@@ -39,9 +39,9 @@ const char* const kHelp =
     "  -o, --output FILE    write FILE atomically (a temporary file renamed into place)\n"
     "                       instead of standard output\n"
     "\n"
-    "paper-dataset writes the circle datasets of the seed paper (section 5.1) for kappa1\n"
-    "(sites E1 E2 and a query point), kappa2 (E1 E2 and a query circle Q) and incircle\n"
-    "(E1 E2 E3 and Q). Set 1 is the degenerate family, 2a/2b/2c add +-10^-2/-4/-6 (random\n"
+    "paper-dataset writes the circle datasets of Emiris, Tsigaridas and Tzoumas (2007,\n"
+    "section 5.1) for kappa1 (sites E1 E2 and a query point), kappa2 (E1 E2 and a query\n"
+    "circle Q) and incircle (E1 E2 E3 and Q). Set 1 is the degenerate family, 2a/2b/2c add +-10^-2/-4/-6 (random\n"
     "sign) to every coordinate and radius, 3 has 500 random instances. With -o DIR/ (an\n"
     "existing directory, or a path ending in '/', created if missing) each instance is one\n"
     "site file FAMILY-SET-NNNN.ell with the sites in order and Q last; a kappa1 query point is\n"
@@ -83,7 +83,7 @@ int run_paper_dataset(const Arguments& parsed) {
 
     std::ostringstream header;
     header << "# ellvor generate paper-dataset " << fam << " --set " << set << " --seed " << seed << " --bits " << bits
-           << "\n# seed paper (Emiris, Tsigaridas, Tzoumas 2007) section 5.1, " << fam << " set " << set << ": "
+           << "\n# Emiris, Tsigaridas, Tzoumas (2007) section 5.1, " << fam << " set " << set << ": "
            << ds.instances.size() << " instances\n";
     const std::string sites_line = family == PaperFamily::kappa1   ? "# each instance: E1 E2 (circles); query point in a comment\n"
                                    : family == PaperFamily::kappa2 ? "# each instance: E1 E2 Q (circles, Q the query)\n"

@@ -14,7 +14,7 @@ namespace {
 const char* const kHelp =
     "usage: ellvor resultant FILE [--cin] [--stats]\n"
     "\n"
-    "The InCircle resultant of the three sites of FILE (E1 E2 E3; seed section 3.1): the\n"
+    "The InCircle resultant of the three sites of FILE (E1 E2 E3; the paper, section 3.1): the\n"
     "univariate polynomial in the boundary parameter t of E1 whose roots include the\n"
     "tangency parameter on E1 of every circle tangent to the three sites. The known\n"
     "extraneous factors (powers of 1+t^2 and of the parallel-normals polynomials) are\n"
@@ -28,7 +28,7 @@ const char* const kHelp =
     "options:\n"
     "  --cin     read CGAL's circle format 'x y r' instead of .ell\n"
     "  --stats   print to stderr: degree, expected degree, the removed factors with their\n"
-    "            exponents, whether the seed's exponents held, the proven coefficient\n"
+    "            exponents, whether the paper's exponents held, the proven coefficient\n"
     "            bound, primes used, coefficient bits and the time\n"
     "\n"
     "exit status: 0 done; 2 bad input (FILE must hold exactly three sites, no two\n"

@@ -545,7 +545,7 @@ IncircleResultant incircle_resultant(const Ellipse& e1, const Ellipse& e2, const
             fmpz_poly_set_coeff_fmpz(r2.get(), static_cast<slong>(k), c.get());
         }
     }
-    // The seed's R2 = res_r(R1, B12) with R1's actual r-degree:
+    // The paper's R2 = res_r(R1, B12) with R1's actual r-degree:
     // R2f = +-lc_r(B12)^{D - deg_r R1} R2.
     const long r1_formal = static_cast<long>(Q.degree(1)) * B31.degree(0);
     if (r1_degree < r1_formal) {

@@ -1,5 +1,5 @@
 // The univariate InCircle resultant of an ordered triple (E1, E2, E3)
-// (seed section 3.1, system (4), expression (5), Lemma 3.1).
+// (the paper, section 3.1, system (4), expression (5), Lemma 3.1).
 //
 // With t, r, s the boundary parameters of E1, E2, E3:
 //     Q(t, r, s) = 0      the three normals are concurrent,
@@ -11,7 +11,7 @@
 // known extraneous factors: powers of (1 + t^2) and of the parallel-normals
 // polynomials of (E1, E3) and (E1, E2). We remove every one of them as far as
 // it divides (the exponents are detected, not assumed: circles break the
-// seed's exponents), and return the squarefree part of what is left ("the
+// paper's exponents), and return the squarefree part of what is left ("the
 // wanted factor"): degree 184 for three ellipses in general position.
 //
 // Before eliminating, every factor (1 + u^2) of Q is removed (a circle's
@@ -40,7 +40,7 @@
 // drop, not as a root. Dividing the known factors out "while they divide"
 // also removes a root that the wanted factor shares with them (a tritangent
 // circle at a collinear-normals parameter, a codimension-1 degeneracy);
-// generic_exponents = false flags every departure from the seed's exponents.
+// generic_exponents = false flags every departure from the paper's exponents.
 #pragma once
 
 #include "sites/ellipse.hpp"
@@ -73,7 +73,7 @@ struct IncircleResultant {
     // polynomial of (E1, E2) / (E1, E3)), or "parnorm12[deg d]" for an
     // irreducible factor of degree d when that polynomial is reducible.
     std::vector<std::pair<std::string, int>> removed_factors;
-    // True iff the exponents are exactly the seed's (Lemma 3.1: R1 carries
+    // True iff the exponents are exactly the paper's (Lemma 3.1: R1 carries
     // (1+t^2)^4 parnorm13 and res_r(R1', B12) (1+t^2)^28 parnorm12^6, so R2 holds
     // (1+t^2)^52 parnorm13^6 parnorm12^6), the wanted factor is squarefree and
     // has degree 184.

@@ -1,7 +1,7 @@
 // Time per InCircle call (kappa3): ellvor's incircle() on
 //   (a) random pairwise-disjoint ellipse quadruples (E1 E2 E3 | Q), ordered so
 //       that (E1, E2, E3) has its counter-clockwise Voronoi circle;
-//   (b) the seed paper's InCircle circle datasets (1), (2a), (2b), (2c), (3)
+//   (b) the paper's InCircle circle datasets (1), (2a), (2b), (2c), (3)
 //       (generate_paper_dataset), side by side with CGAL's Apollonius
 //       Vertex_conflict_2 on the same circles (seed Table 2, last five columns:
 //       "Our code" 4.22 / 6.01 / 6.09 / 7.02 / 11.18 ms, Apollonius 0.040 /
@@ -17,7 +17,7 @@
 // CGAL reads doubles: each rational is rounded to the nearest double, so CGAL
 // sees rounded input except on set (1) (dyadic). Agreement is counted only
 // where ellvor's voronoi_circle_count says the counter-clockwise circle exists
-// (ccw_only or both); elsewhere ellvor answers no-circle by DESIGN.md's rule
+// (ccw_only or both); elsewhere ellvor answers no-circle by the rule of docs/DESIGN.md §2
 // and CGAL's sign is an artifact of a vertex that does not exist.
 //
 //   build/experiments/bench_incircle                      # default (make bench), stdout only

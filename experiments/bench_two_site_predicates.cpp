@@ -1,5 +1,5 @@
 // Time per call of kappa1 (side_of_bisector) and kappa2 (infinite_vertex_conflict)
-// on the seed's circle datasets (section 5.1: (1), (2a), (2b), (2c), (3), 500
+// on the paper's circle datasets (section 5.1: (1), (2a), (2b), (2c), (3), 500
 // instances each, fixed seed) and on random ellipses, with the stage that
 // decided, against CGAL's Apollonius_graph_filtered_traits_2 (EPICK) on the same
 // circles (converted to double). Prints a markdown table and writes

@@ -2,7 +2,7 @@
 //
 // (i) The InCircle resultant (exact/incircle_resultant.hpp) of a generic
 //     ellipse triple whose 15 parameters are each perturbed by +-10^-e
-//     (independent seeded signs), e = 4, 8, 12, 16, 20 -- beside the seed
+//     (independent seeded signs), e = 4, 8, 12, 16, 20 -- beside the paper
 //     paper's Table 1 row "resultant" (25.12 / 57.24 / 102.63 / 160.44 /
 //     231.19 s on a P4 2.6 GHz), with degree, primes and coefficient bits.
 // (ii) incircle() on exactly degenerate quadruples (Q externally tangent to

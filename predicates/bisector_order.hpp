@@ -1,5 +1,5 @@
-// Order of Voronoi vertices along the bisector of two sites (research digest
-// 2.4): every circle externally tangent to E1 and E2 touches E1 on the arc
+// Order of Voronoi vertices along the bisector of two sites (docs/DESIGN.md
+// §2): every circle externally tangent to E1 and E2 touches E1 on the arc
 // facing E2, and along the bisector the tangency point moves monotonically,
 // counter-clockwise, from E1's "departure" external bitangent point (the end
 // at the infinite vertex (E2, E1, infinity)) to its "arrival" point (the end

@@ -1,5 +1,5 @@
 // The external bitangents of two separated ellipses, located exactly on the
-// boundary of one of them (research digest 2.1, 2.3). Parameters live on the
+// boundary of one of them (docs/DESIGN.md §2). Parameters live on the
 // projective line: a real algebraic number of degree <= 4, or infinity (the
 // i-point), and counter-clockwise order on the ellipse is increasing t
 // followed by infinity.

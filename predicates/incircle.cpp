@@ -88,7 +88,7 @@ int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, lon
     return difference.certain_sign();
 }
 
-// The exact stage (seed section 3.1): Q is externally tangent to the circle
+// The exact stage (docs/DESIGN.md §4.5): Q is externally tangent to the circle
 // of (E1, E2, E3) iff that circle is also a Voronoi circle of (E1, E2, Q) or
 // (E1, Q, E2), i.e. iff one of those touches E1 at the same point. `prec` is
 // the precision the subdivision reached.

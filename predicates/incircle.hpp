@@ -1,4 +1,4 @@
-// kappa3, InCircle (CGAL Vertex_conflict_2 with four sites; DESIGN.md): the
+// kappa3, InCircle (CGAL Vertex_conflict_2 with four sites; docs/DESIGN.md §2): the
 // position of a query site Q relative to the Voronoi circle of the ordered
 // triple (E1, E2, E3) -- externally tangent to the three, tangency points
 // counter-clockwise E1 -> E2 -> E3.

@@ -1,4 +1,4 @@
-// Relative position of two ellipses (seed section 1; research digest 2.1),
+// Relative position of two ellipses (docs/DESIGN.md §3),
 // decided exactly from the real roots of the intersection quartic and their
 // multiplicities, after an exact bounding-circle filter.
 #pragma once

@@ -1,4 +1,4 @@
-// kappa1 (seed section 5.1; CGAL Oriented_side_of_bisector_2): which of two
+// kappa1 (the paper, section 5.1; CGAL Oriented_side_of_bisector_2): which of two
 // ellipses is closer to a rational point p, under the signed distance
 // (positive outside, negative inside, zero on the boundary).
 #pragma once

@@ -1,5 +1,5 @@
-// How many Voronoi circles an ordered triple of sites has (research digest
-// 2.4): a circle externally tangent to all three with an empty open disk, its
+// How many Voronoi circles an ordered triple of sites has (docs/DESIGN.md
+// §2): a circle externally tangent to all three with an empty open disk, its
 // tangency points counter-clockwise in the order E1, E2, E3 (the CCW circle)
 // or E1, E3, E2 (the CW circle). Decided from three kappa2 signs only.
 #pragma once

@@ -55,7 +55,7 @@ Ball ContactComparison::contact(const CertifiedVoronoiCircle& c) const {
 
 // The InCircle resultant of the triple rotated to start at the shared site
 // (a rotation keeps the circle) -- or at its twin --, times the two
-// parallel-normals polynomials that the resultant divides out (seed Lemma
+// parallel-normals polynomials that the resultant divides out (the paper's Lemma
 // 3.1): a genuine contact can be a root of those (e.g. when the normals at two
 // contact points are collinear), so they stay among the candidates. Squarefree.
 IntPolynomial ContactComparison::polynomial(const CertifiedVoronoiCircle& c) const {

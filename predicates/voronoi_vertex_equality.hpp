@@ -1,4 +1,4 @@
-// The exact stage for comparisons of Voronoi vertices (seed section 3.1,
+// The exact stage for comparisons of Voronoi vertices (docs/DESIGN.md §4.5; the paper, section 3.1,
 // Lemma 3.1): when two certified Voronoi circles share a site E and their
 // enclosures cannot be separated, decide exactly whether they touch E at the
 // same point. Each contact parameter on E is a root of the InCircle resultant

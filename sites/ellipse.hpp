@@ -1,7 +1,7 @@
-// An ellipse site with exact rational parameters (DESIGN.md): semi-axes a, b > 0,
+// An ellipse site with exact rational parameters (docs/DESIGN.md §2): semi-axes a, b > 0,
 // rotation w = tan(omega/2) of the a-axis, center (xc, yc).
 //
-// Boundary (seed, section 2), with t = tan(theta/2):
+// Boundary (the paper, section 2), with t = tan(theta/2):
 //   P(t) = C + a cos(theta) u + b sin(theta) v,   u = (cos w, sin w), v = (-sin w, cos w),
 //   cos(theta) = (1 - t^2)/(1 + t^2),  sin(theta) = 2t/(1 + t^2).
 // We keep it homogeneous: P(t) = (X(t) : Y(t) : W(t)) with integer polynomials of

@@ -1,6 +1,6 @@
 // The polynomials of one, two and three ellipses. Every function is a short
-// sequence of named steps; the comments cite the seed (Emiris-Tsigaridas-
-// Tzoumas 2007, sections 2-3) and the digest /work/shared/research/predicates.md.
+// sequence of named steps; the comments cite the paper (Emiris-Tsigaridas-
+// Tzoumas 2007, sections 2-3; docs/DESIGN.md).
 //
 // Notation: P(t) = (X : Y : W)(t), W = L (1 + t^2) with L > 0, and the
 // tangent direction T(t) = (Tx, Ty) = (X'W - XW', Y'W - YW') = W^2 dP/dt,

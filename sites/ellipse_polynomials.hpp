@@ -1,4 +1,4 @@
-// The exact polynomials of one, two and three ellipses (seed sections 2-3),
+// The exact polynomials of one, two and three ellipses (the paper, sections 2-3),
 // all with integer coefficients, primitive, in the boundary parameters
 // t (of E1), r (of E2), s (of E3) -- variables 0, 1, 2 of DensePolynomial.
 //
@@ -39,7 +39,7 @@ struct LinePolynomials {
 // Its value at a point is negative on the ellipse's side (the conic is
 // negative inside and the polar line separates).
 LinePolynomials tangent_line(const Ellipse& e);
-// Normal line at P(t) (seed eq. 1, times W^3):
+// Normal line at P(t) (the paper's eq. 1, times W^3):
 //   (Tx W, Ty W, -(Tx X + Ty Y)) divided by its positive integer content,
 // T = (tangent_x, tangent_y). Formal degree 4; for a circle all three have the
 // factor (1 + t^2) (the normal passes through the center).
@@ -73,13 +73,13 @@ IntPolynomial intersection_quartic(const Ellipse& e1, const Ellipse& e2);
 // its positive content only: > 0 when the tangent line misses E2, 0 when it
 // touches E2, < 0 when it crosses E2.
 IntPolynomial bitangent_quartic(const Ellipse& e1, const Ellipse& e2);
-// Bisector B(t, r) (seed eqs. 1-2): det [N1(t); N2(r); perpendicular bisector
+// Bisector B(t, r) (the paper's eqs. 1-2): det [N1(t); N2(r); perpendicular bisector
 // of P1(t) P2(r)], every factor (1 + t^2), (1 + r^2) removed, primitive.
-// Bidegree (6, 6) for two ellipses (seed section 3); a circle E1 gives degree
+// Bidegree (6, 6) for two ellipses (the paper, section 3); a circle E1 gives degree
 // 2 in t (circle E2: 2 in r); two circles (2, 2).
 DensePolynomial bisector_polynomial(const Ellipse& e1, const Ellipse& e2);
 // Collinear normals: the normal of E1 at t passes through P2(r) and T1(t) is
-// parallel to T2(r), i.e. it is also normal to E2 (seed Lemma 3.1's degree-12
+// parallel to T2(r), i.e. it is also normal to E2 (the paper's Lemma 3.1's degree-12
 // factor). res_r of the two conditions (formal degrees 2 and 2 in r).
 // Degree 12 for every pair (formal degree 12); irreducible for two generic
 // ellipses. Circle E1, ellipse E2: (1 + t^2)^2 times a degree-8 factor (the 4
@@ -92,7 +92,7 @@ IntPolynomial parallel_normals_polynomial(const Ellipse& e1, const Ellipse& e2);
 // --- three ellipses ------------------------------------------------------
 
 // Q(t, r, s) = det [N1(t); N2(r); N3(s)]: the normals of E1 at t, E2 at r,
-// E3 at s are concurrent (or all parallel) (seed system (4)); degree 4 in each
+// E3 at s are concurrent (or all parallel) (the paper's system (4)); degree 4 in each
 // variable (a circle's variable, say t, through the factor (1 + t^2));
 // primitive.
 DensePolynomial normals_concurrency_polynomial(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);

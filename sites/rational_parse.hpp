@@ -1,4 +1,4 @@
-// Parsing one exact rational token (DESIGN.md, "Commands").
+// Parsing one exact rational token (docs/DESIGN.md §6).
 //
 // Accepted grammar (no spaces inside a token):
 //   integer     [sign] digits                         "-12", "+7", "007"

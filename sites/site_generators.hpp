@@ -70,7 +70,7 @@ bool bounding_circle_inside_inscribed(const Ellipse& inner, const Ellipse& host)
 // A one-line description of the options, for file headers.
 std::string describe(const GeneratorOptions& options);
 
-// ---- The circle datasets of the seed paper, section 5.1 ---------------------
+// ---- The circle datasets of the paper (Emiris, Tsigaridas, Tzoumas 2007), section 5.1 ---------------------
 //
 // family   kappa1:   sites E1 E2, query point q       (side_of_bisector)
 //          kappa2:   sites E1 E2, query site Q        (vertex_conflict with the infinite vertex)

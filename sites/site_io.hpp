@@ -1,4 +1,4 @@
-// Reading and writing site files (DESIGN.md, "Commands").
+// Reading and writing site files (docs/DESIGN.md §6).
 //
 // `.ell`: one ellipse a line, "a b w xc yc", each token a rational as accepted
 // by parse_rational (integer, p/q, exact decimal). `.cin` (CGAL's Apollonius

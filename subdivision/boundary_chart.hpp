@@ -1,6 +1,6 @@
 // A chart of an ellipse's boundary for the numerical stages: the rational
 // parametrization P(t) = (X, Y)/W in t, or in u = -1/t (the "symmetric"
-// parametrization of seed section 2, which covers the i-point at u = 0).
+// parametrization of the paper, section 2, which covers the i-point at u = 0).
 // Both run counter-clockwise; a solver picks the chart in which its parameter
 // stays within [-1, 1] so that no unknown runs off to infinity.
 #pragma once

@@ -1,5 +1,5 @@
 // Certified enclosure of the Voronoi circle of an ordered triple (E1, E2, E3)
-// (DESIGN.md: externally tangent to the three, tangency points
+// (docs/DESIGN.md §2: externally tangent to the three, tangency points
 // counter-clockwise in that order), by the Krawczyk form of interval Newton
 // on the tritangent system
 //     P_i(t_i) + rho nu_i(t_i) - V = 0,   i = 1, 2, 3

@@ -11,7 +11,7 @@
 
 namespace ellvor {
 
-// Unknowns of the tritangent system (research digest 3; seed system (3) in
+// Unknowns of the tritangent system (docs/DESIGN.md §4.1; the paper's system (3) in
 // another form): the angles theta_i of the tangency points
 // P_i = C_i + R_i (a_i cos theta_i, b_i sin theta_i), the radius rho and the
 // center V, with P_i + rho nu_i(theta_i) = V (nu_i the outward unit normal).

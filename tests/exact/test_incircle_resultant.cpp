@@ -242,7 +242,7 @@ TEST_CASE("InCircle resultant agrees with FLINT's multivariate resultant, within
           "[exact][resultant]") {
     std::mt19937_64 rng(91);
     MultivariateOracle oracle;
-    // Generic ellipses (the seed's exponents), then circles: the r-degree of R1
+    // Generic ellipses (the paper's exponents), then circles: the r-degree of R1
     // drops below the formal one there, so R2f carries lc_r(B12) powers.
     const int masks[] = {0, 0, 1, 7};
     bool formal_degree_dropped = false;

@@ -326,8 +326,8 @@ TEST_CASE("kappa4 infinite edge: random disjoint circles agree with CGAL", "[pre
 }
 
 TEST_CASE("kappa4 on CGAL's test vectors that are valid ellvor input", "[predicates][kappa4]") {
-    // CGAL test/Apollonius_graph_2/include/test.h (research digest, section 3),
-    // circles (x, y, r). ellvor needs radius > 0 and pairwise disjoint sites;
+    // CGAL's test/Apollonius_graph_2/include/test.h, circles (x, y, r).
+    // ellvor needs radius > 0 and pairwise disjoint sites;
     // each vector is checked for that first.
     Traits traits;
     const auto cgal_finite = traits.finite_edge_interior_conflict_2_object();

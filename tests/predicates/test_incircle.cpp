@@ -5,7 +5,7 @@
 // and their perturbations by 10^-k.
 //
 // CGAL's inversion-based code returns an artifact sign when the triple has
-// no counter-clockwise circle; ellvor returns no_circle (NEGATIVE, DESIGN.md)
+// no counter-clockwise circle; ellvor returns no_circle (NEGATIVE, docs/DESIGN.md §2)
 // there. So CGAL is compared only where the CCW circle exists.
 #include "predicates/incircle.hpp"
 #include "predicates/voronoi_circle_count.hpp"
@@ -381,7 +381,7 @@ TEST_CASE("incircle: the four-circle filter agrees with the general cascade", "[
 }
 
 TEST_CASE("incircle: a Voronoi center exactly on Q's boundary is a conflict", "[predicates][incircle]") {
-    // The seed's InCircle set (1) at y = 1: the Voronoi circle of the three
+    // The paper's InCircle set (1) at y = 1: the Voronoi circle of the three
     // circles is the unit circle at the origin, and Q = circle (0, 1) r 1 passes
     // through its center: no precision can place the center inside or outside
     // Q, but d(V, Q) = 0 < rho. (The four-circle filter is off so that the

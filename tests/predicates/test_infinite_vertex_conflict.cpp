@@ -150,7 +150,7 @@ TEST_CASE("kappa2 constructed tangencies on the bitangents y = 1 and y = -1, i-p
 }
 
 TEST_CASE("kappa2 constructed tangencies on circles agree with the oracle's exact tie", "[predicates][infinite_vertex_conflict]") {
-    // Circles (-2,0),(2,0) r = 1 (the seed's kappa2 family): L of (E1, E2) is y = 1.
+    // Circles (-2,0),(2,0) r = 1 (the paper's kappa2 family): L of (E1, E2) is y = 1.
     const oracle::Circle c1{-2, 0, 1}, c2{2, 0, 1};
     for (int k = -8; k <= 8; ++k) {
         // Query of radius 1/2 touching y = 1 from below at x = k, and disjoint from the sites

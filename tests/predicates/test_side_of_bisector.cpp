@@ -87,7 +87,7 @@ TEST_CASE("kappa1's exact circle path alone agrees with the closed form", "[pred
     }
 }
 
-TEST_CASE("kappa1 on the seed's circle datasets (1), (2a-c), (3)", "[predicates][side_of_bisector]") {
+TEST_CASE("kappa1 on the paper's circle datasets (1), (2a-c), (3)", "[predicates][side_of_bisector]") {
     // Circles (-2,0) and (2,0) of radius 1. Dataset (1), read as the path from
     // (0,-100) up the bisector x = 0 to the origin, then along the center line to
     // (100,0), step 1/2 (both legs degenerate); also the straight segment

@@ -365,7 +365,7 @@ TEST_CASE("bisector polynomial: degrees and equidistant normal intersections", "
         bool c1, c2;
         int dt, dr;
     };
-    // (6, 6) for two ellipses (seed section 3); a circle E1 gives degree 2 in t,
+    // (6, 6) for two ellipses (the paper, section 3); a circle E1 gives degree 2 in t,
     // two circles (2, 2).
     const Case cases[] = {{false, false, 6, 6}, {true, false, 2, 6}, {false, true, 6, 2}, {true, true, 2, 2}};
     long real_found = 0;

@@ -1,5 +1,5 @@
 // Deterministic generators: reproducibility, disjointness (conservative and by exact
-// boundary sampling), nested fraction, bit sizes, and the seed paper's datasets.
+// boundary sampling), nested fraction, bit sizes, and the paper's datasets.
 #include <catch2/catch.hpp>
 
 #include "sites/site_generators.hpp"
