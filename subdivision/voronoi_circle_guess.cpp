@@ -62,17 +62,22 @@ double scale_of(const std::array<Shape, 3>& e) {
 }
 
 // Damped Newton; true when |F| is at the rounding level of the sites and of
-// the circle (a huge circle of nearly collinear sites has a large center).
+// the circle (a huge circle of nearly collinear sites has a large center),
+// or, when Newton stalls above that, within kStalledTolerance of it: an
+// ill-conditioned system (a needle-like site touched near its tip) cannot do
+// better in doubles, and the Arb stage, which certifies or refuses every
+// guess, carries on from there.
 bool newton(const std::array<Shape, 3>& e, Vector6& X) {
+    constexpr double kTolerance = 1e-13, kStalledTolerance = 1e-6;
     const double site_scale = scale_of(e);
-    auto tolerance_at = [&](const Vector6& Y) {
-        return 1e-13 * std::max({site_scale, std::fabs(Y[3]), std::fabs(Y[4]), std::fabs(Y[5])});
+    auto tolerance_at = [&](const Vector6& Y, double relative) {
+        return relative * std::max({site_scale, std::fabs(Y[3]), std::fabs(Y[4]), std::fabs(Y[5])});
     };
     Vector6 F;
     Matrix6 J;
     evaluate(e, X, F, J);
     for (int it = 0; it < 60; ++it) {
-        if (F.norm() < tolerance_at(X)) return true;
+        if (F.norm() < tolerance_at(X, kTolerance)) return true;
         const Vector6 step = J.partialPivLu().solve(F);
         if (!step.allFinite()) return false;
         double damping = 1;
@@ -85,7 +90,7 @@ bool newton(const std::array<Shape, 3>& e, Vector6& X) {
         }
         X = next, F = Fn, J = Jn;
     }
-    return F.norm() < tolerance_at(X);
+    return F.norm() < tolerance_at(X, kStalledTolerance);
 }
 
 // The tangency points appear counter-clockwise on the circle iff the
