@@ -67,9 +67,7 @@ int run(const std::vector<std::string>& args) {
         });
     } catch (const IntersectingSites& e) {
         if (progress) std::fprintf(stderr, "\n");
-        throw InputError(file.name, file.lines[e.second()], 1,
-                         "site " + std::to_string(e.second()) + " intersects site " + std::to_string(e.first()) +
-                             " (line " + std::to_string(file.lines[e.first()]) + "); sites must be disjoint or nested");
+        throw crossing_sites_error(file, e.first(), e.second());
     }
     if (progress) std::fprintf(stderr, "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

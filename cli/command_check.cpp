@@ -1,5 +1,6 @@
 // ellvor check FILE [--cin] [--describe]: validates a site file.
 #include "cli/command_list.hpp"
+#include "cli/site_arguments.hpp"
 
 #include "predicates/relative_position.hpp"
 #include "sites/site_io.hpp"
@@ -174,10 +175,8 @@ int run_check(const std::vector<std::string>& args) {
             << ", INVALID\n";
         out.flush();
         const PairReport& r = intersecting.front();
-        std::cerr << "ellvor: " << file.name << ':' << file.lines[r.j] << ":1: site " << r.j << " intersects site "
-                  << r.i << " (line " << file.lines[r.i] << "); sites must be disjoint or nested ("
-                  << intersecting.size() << " intersecting pair" << (intersecting.size() == 1 ? "" : "s")
-                  << " in all)\n";
+        std::cerr << "ellvor: " << crossing_sites_error(file, r.i, r.j).what() << " (" << intersecting.size()
+                  << " intersecting pair" << (intersecting.size() == 1 ? "" : "s") << " in all)\n";
         return kExitInput;
     }
     out << ", OK\n";
