@@ -131,6 +131,32 @@ int two_roots_sign(const Number& x, const Number& y, const Number& d1, const Num
 }  // namespace
 
 int sign_of_quadratic(const Rational& a, const Rational& b, const Rational& d) { return quadratic_sign(a, b, d); }
+
+int sign_of_biquadratic(const Integer& a, const Integer& b, const Integer& c, const Integer& e, const Integer& d1,
+                        const Integer& d2) {
+    const int sv = d2.is_zero() ? 0 : quadratic_sign(c, e, d1);
+    const int su = quadratic_sign(a, b, d1);
+    if (sv == 0) return su;
+    if (su == 0 || su == sv) return sv;
+    // u^2 - v^2 d2 = (a^2 + b^2 d1 - (c^2 + e^2 d1) d2) + 2 (a b - c e d2) sqrt(d1)
+    Integer rational, root, t, w;
+    mul(rational, a, a);
+    mul(t, b, b);
+    mul(t, t, d1);
+    add(rational, rational, t);
+    mul(w, c, c);
+    mul(t, e, e);
+    mul(t, t, d1);
+    add(w, w, t);
+    mul(w, w, d2);
+    sub(rational, rational, w);
+    mul(root, a, b);
+    mul(t, c, e);
+    mul(t, t, d2);
+    sub(root, root, t);
+    twice(root);
+    return su * quadratic_sign(rational, root, d1);
+}
 int sign_of_quadratic(const Integer& a, const Integer& b, const Integer& d) { return quadratic_sign(a, b, d); }
 
 int sign_of_two_roots(const Rational& x, const Rational& y, const Rational& d1, const Rational& z,

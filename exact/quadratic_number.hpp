@@ -34,6 +34,15 @@ int sign_of_two_roots(const Rational& x, const Rational& y, const Rational& d1, 
                       const Rational& d2);
 int sign_of_two_roots(const Integer& x, const Integer& y, const Integer& d1, const Integer& z, const Integer& d2);
 
+// sign(a + b sqrt(d1) + c sqrt(d2) + e sqrt(d1) sqrt(d2)), d1, d2 >= 0: the
+// sign of a product of two elements of Q(sqrt d1), Q(sqrt d2) plus another
+// (cross and dot products of vectors with coordinates in two fields). Proof:
+// with u = a + b sqrt(d1), v = c + e sqrt(d1) in Q(sqrt d1) it is u + v
+// sqrt(d2), whose sign is read off unless sign(u) = -sign(v); then it is
+// sign(u) * sign(u^2 - v^2 d2), and u^2 - v^2 d2 is again in Q(sqrt d1).
+int sign_of_biquadratic(const Integer& a, const Integer& b, const Integer& c, const Integer& e, const Integer& d1,
+                        const Integer& d2);
+
 class QuadraticNumber {
 public:
     QuadraticNumber() = default;  // 0

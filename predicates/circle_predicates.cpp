@@ -321,6 +321,100 @@ VoronoiCircles circle_voronoi_circle_count(const Ellipse& c1, const Ellipse& c2,
                : (cw ? VoronoiCircles::cw_only : VoronoiCircles::none);
 }
 
+namespace {
+
+// A unit direction P + sqrt(radicand) R (up to a positive factor), integers.
+struct Direction {
+    Lifted p, r;  // [2] unused
+    Integer radicand;
+};
+
+// The contact direction on C (scaled frame, origin C) of the external
+// bitangent with X (circle_predicates.hpp, circle_infinite_edge_interior_conflict).
+Direction bitangent_direction(const Lifted& x, const Integer& radius_c, bool arrival, const char* who) {
+    Direction n;
+    Integer dr, d2;
+    fmpz_sub(dr.get(), radius_c.get(), x[2].get());
+    fmpz_mul(d2.get(), x[0].get(), x[0].get());
+    fmpz_addmul(d2.get(), x[1].get(), x[1].get());
+    fmpz_set(n.radicand.get(), d2.get());
+    fmpz_submul(n.radicand.get(), dr.get(), dr.get());
+    if (n.radicand.sign() <= 0)
+        throw Error(std::string(who) + ": no external bitangent (one site inside the other)");
+    for (int i = 0; i < 2; ++i) fmpz_mul(n.p[i].get(), dr.get(), x[i].get());
+    // J = (-D_y, D_x); departure takes -J.
+    fmpz_neg(n.r[0].get(), x[1].get());
+    fmpz_set(n.r[1].get(), x[0].get());
+    if (!arrival)
+        for (int i = 0; i < 2; ++i) fmpz_neg(n.r[i].get(), n.r[i].get());
+    return n;
+}
+
+// sign of cross(u, v) (cross) or dot(u, v) for directions in two fields.
+int sign_of_product(const Direction& u, const Direction& v, bool cross) {
+    auto form = [cross](Integer& out, const Lifted& a, const Lifted& b) {
+        if (cross) det2(out, a[0], b[1], a[1], b[0]);
+        else {
+            fmpz_mul(out.get(), a[0].get(), b[0].get());
+            fmpz_addmul(out.get(), a[1].get(), b[1].get());
+        }
+    };
+    Integer a, b, c, e;
+    form(a, u.p, v.p);
+    form(b, u.r, v.p);
+    form(c, u.p, v.r);
+    form(e, u.r, v.r);
+    return sign_of_biquadratic(a, b, c, e, u.radicand, v.radicand);
+}
+
+bool same_direction(const Direction& u, const Direction& v) {
+    return sign_of_product(u, v, true) == 0 && sign_of_product(u, v, false) > 0;
+}
+
+// Which half-turn from `from` v lies in: 0 along it, 1 in (0, pi), 2 at pi,
+// 3 in (pi, 2 pi).
+int half_turn(const Direction& from, const Direction& v) {
+    const int c = sign_of_product(from, v, true);
+    if (c > 0) return 1;
+    if (c < 0) return 3;
+    return sign_of_product(from, v, false) > 0 ? 0 : 2;
+}
+
+// +1 strictly inside the counter-clockwise arc from `from` to `to`, 0 at an
+// end, -1 outside (a single point when from == to).
+int position_in_arc(const Direction& from, const Direction& to, const Direction& x) {
+    if (same_direction(x, from) || same_direction(x, to)) return 0;
+    const int hx = half_turn(from, x), ht = half_turn(from, to);
+    if (ht == 0) return -1;
+    if (hx != ht) return hx < ht ? 1 : -1;
+    // Same open half-turn: x comes first iff the turn from x to `to` is counter-clockwise.
+    return sign_of_product(x, to, true) > 0 ? 1 : -1;
+}
+
+}  // namespace
+
+bool circle_infinite_edge_interior_conflict(const Ellipse& c2, const Ellipse& c3, const Ellipse& c4, const Ellipse& q,
+                                            bool b) {
+    const char* who = "circle_infinite_edge_interior_conflict";
+    for (const Ellipse* c : {&c2, &c3, &c4, &q}) require_circle(*c, who);
+    Integer scale;
+    common_denominator(scale, {&c2, &c3, &c4, &q});
+    Lifted origin, x3, x4, xq;
+    scale_circle(origin, c2, scale);
+    for (auto [site, x] : {std::pair{&c3, &x3}, {&c4, &x4}, {&q, &xq}}) {
+        scale_circle(*x, *site, scale);
+        for (int i = 0; i < 2; ++i) fmpz_sub((*x)[i].get(), (*x)[i].get(), origin[i].get());
+    }
+    const Integer& r2 = origin[2];
+    const Direction from = bitangent_direction(x3, r2, true, who), to = bitangent_direction(x4, r2, false, who);
+    int inside = position_in_arc(from, to, bitangent_direction(xq, r2, false, who));
+    if (inside == 0) {  // Q's line coincides with an end: its other line decides
+        inside = position_in_arc(from, to, bitangent_direction(xq, r2, true, who));
+        if (inside == 0) return !b;
+    }
+    return b ? inside < 0 : inside > 0;
+}
+
 int circle_order_on_bisector(const Ellipse& c1, const Ellipse& c2, const CircleVoronoiVertex& a,
                              const CircleVoronoiVertex& b) {
     for (const CircleVoronoiVertex* v : {&a, &b}) {

@@ -114,4 +114,16 @@ VoronoiCircles circle_voronoi_circle_count(const Ellipse& c1, const Ellipse& c2,
 int circle_order_on_bisector(const Ellipse& c1, const Ellipse& c2, const CircleVoronoiVertex& a,
                              const CircleVoronoiVertex& b);
 
+// kappa4 for the Voronoi edge dual to the Delaunay edge (infinity, C2) with
+// hull neighbours C3 (before) and C4 (after), with the semantics of
+// infinite_edge_interior_conflict (edge_conflict.hpp): the contact directions
+// on C2 of the external bitangents with C3, C4 and Q (unit normals n =
+// ((r2 - rX) D +- sqrt(|D|^2 - (r2 - rX)^2) J) / |D|^2, D = C_X - C2, J = D
+// turned by +90 degrees; + where the hull arrives on C2, - where it departs)
+// are ordered counter-clockwise by signs of cross and dot products, elements
+// of a biquadratic field (exact/quadratic_number.hpp). Throws Error when a
+// site lies inside C2 (no external bitangent).
+bool circle_infinite_edge_interior_conflict(const Ellipse& c2, const Ellipse& c3, const Ellipse& c4, const Ellipse& q,
+                                            bool endpoints_in_conflict);
+
 }  // namespace ellvor

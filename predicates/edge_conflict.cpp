@@ -182,7 +182,9 @@ Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e
 }
 
 Decision<bool> infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
-                                               const Ellipse& q, bool b) {
+                                               const Ellipse& q, bool b, bool use_circle_closed_form) {
+    if (use_circle_closed_form && e2.is_circle() && e3.is_circle() && e4.is_circle() && q.is_circle())
+        return Decision<bool>::decided(circle_infinite_edge_interior_conflict(e2, e3, e4, q, b), Stage::exact);
     // Contact points on E2 of the edge's ends and of Q's boundary lines.
     BoundaryParameter from = external_bitangent_on(e2, e3, HullSide::arrival);   // vertex (E2, E3, inf)
     BoundaryParameter to = external_bitangent_on(e2, e4, HullSide::departure);   // vertex (E4, E2, inf)

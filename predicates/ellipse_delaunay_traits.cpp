@@ -89,6 +89,10 @@ Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
 
 Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
     ++stats_.vertex_conflict4.calls;
+    // Four circles take the closed form: no solver to cache.
+    if (site(i).is_circle() && site(j).is_circle() && site(k).is_circle() && site(q).is_circle())
+        return incircle_sign(counted(stats_.vertex_conflict4, incircle(site(i), site(j), site(k), site(q)), "incircle",
+                                     ids({i, j, k, q})));
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},

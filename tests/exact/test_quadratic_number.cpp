@@ -186,6 +186,55 @@ TEST_CASE("quadratic number: sign of x + y sqrt(d1) + z sqrt(d2) agrees with Arb
     CHECK(decided > 2000);
 }
 
+TEST_CASE("quadratic number: sign of a + b sqrt(d1) + c sqrt(d2) + e sqrt(d1 d2) agrees with Arb, exact zeros included",
+          "[circle-predicates][quadratic_number]") {
+    // (1 + sqrt 2)(1 - sqrt 3) = 1 + sqrt 2 - sqrt 3 - sqrt 6 < 0; then sums that vanish exactly.
+    CHECK(sign_of_biquadratic(Integer(1), Integer(1), Integer(-1), Integer(-1), Integer(2), Integer(3)) == -1);
+    // sqrt 2 sqrt 8 - 4 = 0; 2 sqrt 2 - sqrt 8 = 0.
+    CHECK(sign_of_biquadratic(Integer(-4), Integer(0), Integer(0), Integer(1), Integer(2), Integer(8)) == 0);
+    CHECK(sign_of_biquadratic(Integer(0), Integer(2), Integer(-1), Integer(0), Integer(2), Integer(8)) == 0);
+    CHECK(sign_of_biquadratic(Integer(0), Integer(0), Integer(0), Integer(0), Integer(5), Integer(7)) == 0);
+    Rng rng(2029);
+    int decided = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const long bits = i % 3 == 0 ? 12 : i % 3 == 1 ? 120 : 1500;
+        Integer a = random_integer(rng, bits), b = random_integer(rng, bits), c = random_integer(rng, bits),
+                e = random_integer(rng, bits), d1 = random_integer(rng, bits, false), d2 = random_integer(rng, bits, false);
+        bool exact_zero = false;
+        if (i % 4 == 1) {
+            // d2 = d1 k^2: sqrt(d1 d2) = k d1 is rational and sqrt d2 = k sqrt d1, so
+            // a = -e k d1 and b = -c k make the sum exactly 0 in a field in disguise.
+            const Integer k = random_integer(rng, 8, false) + Integer(1);
+            d2 = d1 * k * k;
+            a = -(e * k * d1);
+            b = -(c * k);
+            exact_zero = true;
+        }
+        INFO(a.str() << " + " << b.str() << " sqrt(" << d1.str() << ") + " << c.str() << " sqrt(" << d2.str()
+                     << ") + " << e.str() << " sqrt(d1 d2)");
+        const int got = sign_of_biquadratic(a, b, c, e, d1, d2);
+        Ball r1(Rational(d1), kPrec), r2(Rational(d2), kPrec), want(Rational(a), kPrec), t;
+        arb_sqrt(r1.get(), r1.get(), kPrec);
+        arb_sqrt(r2.get(), r2.get(), kPrec);
+        arb_mul(t.get(), Ball(Rational(b), kPrec).get(), r1.get(), kPrec);
+        arb_add(want.get(), want.get(), t.get(), kPrec);
+        arb_mul(t.get(), Ball(Rational(c), kPrec).get(), r2.get(), kPrec);
+        arb_add(want.get(), want.get(), t.get(), kPrec);
+        arb_mul(t.get(), r1.get(), r2.get(), kPrec);
+        arb_mul(t.get(), t.get(), Ball(Rational(e), kPrec).get(), kPrec);
+        arb_add(want.get(), want.get(), t.get(), kPrec);
+        if (exact_zero) {
+            CHECK(got == 0);
+            continue;
+        }
+        if (const int sgn = want.certain_sign()) {
+            ++decided;
+            CHECK(got == sgn);
+        }
+    }
+    CHECK(decided > 2000);
+}
+
 TEST_CASE("quadratic number: the double pre-check only decides what it proves at the edges of the double range",
           "[circle-predicates][quadratic_number]") {
     // a and b sqrt(d) of opposite signs and equal to 2^-1100 relative: the

@@ -15,6 +15,7 @@
 // Every failure prints the sites as a replayable .ell snippet.
 #include "predicates/bisector_order.hpp"
 #include "predicates/circle_predicates.hpp"
+#include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/voronoi_circle_count.hpp"
@@ -205,6 +206,47 @@ TEST_CASE("circle predicates agree with ellvor's general predicates on 1000 rand
 }
 
 // ----------------------------------------------------------- against CGAL --
+
+TEST_CASE("the infinite-edge conflict of circles in closed form agrees with the general path", "[circle-predicates]") {
+    // Random quadruples (hull neighbours or not: the predicate is defined for
+    // any four separated circles), and the degenerate ones of a row of equal
+    // circles, where bitangent contacts coincide and the ends decide.
+    Rng rng(5150);
+    int n = 0, ties = 0;
+    auto check = [&](const Ellipse& c2, const Ellipse& c3, const Ellipse& c4, const Ellipse& q) {
+        for (bool b : {false, true}) {
+            INFO(ell({&c2, &c3, &c4, &q}) << "b " << b);
+            const Decision<bool> general = infinite_edge_interior_conflict(c2, c3, c4, q, b, false);
+            const Decision<bool> closed = infinite_edge_interior_conflict(c2, c3, c4, q, b);
+            CHECK(closed.stage == Stage::exact);
+            CHECK(*closed == *general);
+            CHECK(circle_infinite_edge_interior_conflict(c2, c3, c4, q, b) == *general);
+        }
+    };
+    while (n < 400) {
+        std::vector<oracle::Circle> c(4);
+        for (auto& k : c) k = {rnd(rng, -10, 10, 7), rnd(rng, -10, 10, 5), rnd_pos(rng, 3, 4)};
+        bool ok = true;
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) ok = ok && circles_apart(c[i], c[j]);
+        if (!ok) continue;
+        ++n;
+        check(c[0].ellipse(), c[1].ellipse(), c[2].ellipse(), c[3].ellipse());
+    }
+    // A row of equal circles on the x-axis: the bitangents of neighbours are the
+    // same lines y = +-1.
+    std::vector<Ellipse> row;
+    for (int i = 0; i < 5; ++i) row.push_back(Ellipse::circle(3 * i, 0, 1));
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+            for (int k = 0; k < 5; ++k)
+                for (int m = 0; m < 5; ++m)
+                    if (i != j && i != k && i != m && j != k && j != m && k != m) {
+                        ++ties;
+                        check(row[i], row[j], row[k], row[m]);
+                    }
+    CHECK(ties == 120);
+}
 
 TEST_CASE("circle predicates agree with CGAL's exact Apollonius traits on random rational circles",
           "[circle-predicates]") {
