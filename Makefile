@@ -4,6 +4,8 @@
 #   make test      install missing packages, build and run the whole test suite
 #   make sanitize  the test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #   make bench     build and run the benchmark programs under experiments/
+#   make fuzz      the libFuzzer targets under fuzz/ (clang, ASan + UBSan), FUZZ_SECONDS each;
+#                  findings in build-fuzz/findings/
 
 BUILD    ?= build
 CXX      ?= g++
@@ -17,6 +19,7 @@ LIB_SRC   := $(wildcard util/*.cpp sites/*.cpp subdivision/*.cpp exact/*.cpp pre
 CLI_SRC   := $(wildcard cli/*.cpp)
 TEST_SRC  := $(wildcard tests/*.cpp tests/*/*.cpp)
 BENCH_SRC := $(wildcard experiments/*.cpp)
+FUZZ_SRC  := $(wildcard fuzz/*.cpp)
 
 LIB_OBJ   := $(LIB_SRC:%.cpp=$(BUILD)/obj/%.o)
 CLI_OBJ   := $(CLI_SRC:%.cpp=$(BUILD)/obj/%.o)
@@ -25,9 +28,10 @@ LIBRARY   := $(BUILD)/libellvor.a
 ELLVOR    := $(BUILD)/ellvor
 TESTS     := $(BUILD)/ellvor_tests
 BENCHES   := $(BENCH_SRC:experiments/%.cpp=$(BUILD)/experiments/%)
+FUZZERS   := $(FUZZ_SRC:fuzz/%.cpp=$(BUILD)/%)
 DEPS_STAMP := $(BUILD)/.deps-installed
 
-.PHONY: all deps run test check-tests sanitize bench clean
+.PHONY: all deps run test check-tests sanitize bench fuzz fuzzers clean
 .DEFAULT_GOAL := all
 
 all: $(ELLVOR) $(TESTS)
@@ -59,6 +63,13 @@ $(BUILD)/experiments/%: experiments/%.cpp $(LIBRARY)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -DNDEBUG -frounding-math $< $(LIBRARY) -o $@ $(LDLIBS)
 
+# A libFuzzer target: the library built with -fsanitize=fuzzer-no-link (see
+# fuzz), linked with libFuzzer's main.
+$(FUZZERS): $(BUILD)/%: $(BUILD)/obj/fuzz/%.o $(LIBRARY)
+	$(CXX) $(CXXFLAGS) -fsanitize=fuzzer $^ -o $@ $(LDLIBS)
+
+fuzzers: $(FUZZERS)
+
 run: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR)
 	$(ELLVOR) check data/example-300.ell --describe
@@ -80,7 +91,24 @@ bench: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES)
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
 
-clean:
-	rm -rf build build-sanitize
+# libFuzzer needs clang; its packages are installed here only, so that `make
+# test` and CI never depend on clang. The build gets its own directory.
+FUZZ_BUILD    := build-fuzz
+FUZZ_SECONDS  ?= 60
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev llvm-14
+FUZZ_STAMP    := $(FUZZ_BUILD)/.fuzz-deps-installed
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BENCHES:=.d)
+$(FUZZ_STAMP): scripts/install-deps.sh
+	@bash scripts/install-deps.sh $(FUZZ_PACKAGES)
+	@mkdir -p $(FUZZ_BUILD) && touch $@
+
+fuzz: $(FUZZ_STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) BUILD=$(FUZZ_BUILD) CXX=clang++-14 OPT="-O1 -g" \
+	    SANITIZE="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined \
+	        -fsanitize-recover=float-cast-overflow -fno-omit-frame-pointer" fuzzers
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/run-fuzz.sh $(FUZZ_BUILD)
+
+clean:
+	rm -rf build build-sanitize build-fuzz
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BENCHES:=.d) $(FUZZ_SRC:%.cpp=$(BUILD)/obj/%.d)

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ellvor needs; installs only what is missing,
 # so it is cheap to run again. Needs root (or sudo) when something is missing.
+# With arguments, installs those packages instead (`make fuzz` passes clang's).
 set -euo pipefail
 packages=(g++ make libflint-dev libflint-arb-dev libmpfr-dev libgmp-dev catch2 libeigen3-dev
           libcgal-dev nlohmann-json3-dev python3)
+[ $# -eq 0 ] || packages=("$@")
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

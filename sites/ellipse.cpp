@@ -117,15 +117,9 @@ bool operator==(const Ellipse& p, const Ellipse& q) {
     return p.a_ == q.a_ && p.b_ == q.b_ && p.w_ == q.w_ && p.xc_ == q.xc_ && p.yc_ == q.yc_;
 }
 
-bool Ellipse::same_shape_and_place(const Ellipse& o) const {
-    // Two ellipses are the same point set iff their normalized conics agree.
-    if (xc_ != o.xc_ || yc_ != o.yc_) return false;
-    // Both conics have F-part normalized by the same construction scale only
-    // when a^2 b^2 agree; compare the quadratic forms divided by a^2 b^2.
-    const Rational s1 = a_ * a_ * b_ * b_, s2 = o.a_ * o.a_ * o.b_ * o.b_;
-    for (int i = 0; i < 3; ++i)
-        if (conic_[i] / s1 != o.conic_[i] / s2) return false;
-    return true;
+Ellipse::PointSetKey Ellipse::point_set_key() const {
+    const Rational scale = a_ * a_ * b_ * b_;
+    return {xc_, yc_, conic_[0] / scale, conic_[1] / scale, conic_[2] / scale};
 }
 
 }  // namespace ellvor

@@ -84,9 +84,13 @@ public:
 
     friend bool operator==(const Ellipse& p, const Ellipse& q);
     friend bool operator!=(const Ellipse& p, const Ellipse& q) { return !(p == q); }
-    // Same point set (a circle's rotation does not matter; swapped axes with a
-    // quarter turn are the same ellipse).
-    bool same_shape_and_place(const Ellipse& o) const;
+    // Equal for two ellipses exactly when they are the same point set (a
+    // circle's rotation does not matter; swapped axes with a quarter turn are
+    // the same ellipse): the center and the quadratic form divided by a^2 b^2,
+    // R diag(1/a^2, 1/b^2) R^T. Ordered, so that a reader finds duplicates in
+    // O(log n) a site.
+    using PointSetKey = std::array<Rational, 5>;
+    PointSetKey point_set_key() const;
 
 private:
     Rational a_, b_, w_, xc_, yc_;

@@ -59,3 +59,25 @@ TEST_CASE("ellipse rejects non-positive axes", "[sites][ellipse]") {
     CHECK_THROWS_AS(Ellipse(0, 1, 0, 0, 0), Error);
     CHECK_THROWS_AS(Ellipse(1, Rational(-1, 2), 0, 0, 0), Error);
 }
+
+TEST_CASE("point_set_key is equal exactly for the same point set", "[sites][ellipse]") {
+    std::mt19937_64 rng(11);
+    for (int trial = 0; trial < 50; ++trial) {
+        const Rational a = Rational(1 + trial % 7, 1 + trial % 3), b = a + Rational(1, 1 + trial % 5);
+        Rational w = random_rational(rng, 5, 4);
+        if (w == Rational(1) || w.sign() == 0) w = Rational(1, 3);
+        const Rational x = random_rational(rng, 100, 7), y = random_rational(rng, 100, 7);
+        const Ellipse e(a, b, w, x, y);
+        // A half turn (w -> -1/w) and swapped axes with a quarter turn (w -> (1 + w) / (1 - w)).
+        CHECK(Ellipse(a, b, Rational(-1) / w, x, y).point_set_key() == e.point_set_key());
+        CHECK(Ellipse(b, a, (Rational(1) + w) / (Rational(1) - w), x, y).point_set_key() == e.point_set_key());
+        // Another rotation, size, axis ratio or center is another point set.
+        CHECK(Ellipse(a, b, w + Rational(1, 2), x, y).point_set_key() != e.point_set_key());
+        CHECK(Ellipse(a * Rational(2), b * Rational(2), w, x, y).point_set_key() != e.point_set_key());
+        CHECK(Ellipse(a, b + Rational(1), w, x, y).point_set_key() != e.point_set_key());
+        CHECK(Ellipse(a, b, w, x, y + Rational(1, 1000)).point_set_key() != e.point_set_key());
+    }
+    // A circle's rotation does not matter.
+    CHECK(Ellipse(Rational(2), Rational(2), Rational(3), Rational(1), Rational(1)).point_set_key() ==
+          Ellipse::circle(Rational(1), Rational(1), Rational(2)).point_set_key());
+}

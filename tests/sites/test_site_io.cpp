@@ -156,6 +156,23 @@ TEST_CASE("read_sites rejects duplicates, naming both lines and ids", "[sites][i
     CHECK(read_error("2 1 0 0 0\n1 2 0 0 0\n") == "(no error)");
 }
 
+TEST_CASE("read_sites: many concentric sites are read without comparing every pair", "[sites][io][fuzz]") {
+    // Nested concentric circles and ellipses are valid; the duplicate test used
+    // to compare each site with every earlier one at the same center (20000
+    // sites: about 50 s). Now a lookup of the point set.
+    std::ostringstream text;
+    const int n = 20000;
+    for (int i = 1; i <= n; ++i) text << (i % 2 ? i : i + 1) << ' ' << i << " 0 0 0\n";
+    std::istringstream in(text.str());
+    const auto start = std::chrono::steady_clock::now();
+    CHECK(read_sites(in, "c.ell").size() == n);
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
+    // A duplicate far down the file is still found (site 1 is "3 2 0 0 0": the same
+    // ellipse with swapped axes and a quarter turn).
+    CHECK(read_error(text.str() + "2 3 1 0 0\n").find("t.ell:20001:1: duplicate site: site 20000 (line 20001) is "
+                                                      "the same point set as site 1 (line 2)") == 0);
+}
+
 TEST_CASE("read_sites from a path: cannot open, directories", "[sites][io]") {
     try {
         read_sites("/nonexistent/dir/x.ell");

@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz targets: fuzz/corpus/parser/ and fuzz/corpus/build/.
+
+Run from the repository root: python3 fuzz/make_corpus.py. The seeds are the
+inputs the issue asks the fuzzers to start from: huge and tiny numbers, values
+at and just over the 4096-bit cap, nearly touching, duplicate and
+near-duplicate sites, degenerate placements (all on a line, all on a circle),
+rotated and nested ellipses, CRLF, comments and blank lines, .cin lines, and
+the repository's examples. The build seeds have at most 8 sites and 512 bytes
+(the build target's caps); the parser gets all of them plus the long ones.
+"""
+import os
+import shutil
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+
+CAP = 2**4096 - 1   # the largest 4096-bit number
+OVER = 2**4096      # 4097 bits: just over the cap
+
+# Small files: seeds for both targets.
+SMALL = {
+    "two-circles.ell": "1 1 0 0 0\n1 1 0 3 0\n",
+    "three-ellipses.ell": "2 1 0 0 0\n1 2 0 6 0\n3/2 1/2 1/3 3 5\n",
+    "rotated.ell": "3 1 1/2 0 0\n2 1 -2 8 1\n1 3 0.25 0 7\n5/2 1 7 -7 2\n",
+    "nested.ell": "10 6 0 0 0\n2 1 1/3 1 1\n1 1 0 -5 0\n3 3 0 20 0\n",
+    "nested-deep.ell": "20 20 0 0 0\n10 5 1/2 0 0\n2 1 0 1 0\n1/2 1/4 0 1 0\n30 1 0 60 0\n",
+    "collinear.ell": "".join(f"1 1 0 {3 * i} 0\n" for i in range(6)),
+    "collinear-diagonal.ell": "".join(f"{1 + i % 2} {1 + i % 2} 0 {7 * i} {7 * i}\n" for i in range(6)),
+    "collinear-ellipses.ell": "".join(f"2 1 0 {6 * i} 0\n" for i in range(5)),
+    # Rational points on the circle of radius 10 (Pythagorean triples).
+    "cocircular.ell": "".join(f"1 1 0 {x} {y}\n" for x, y in [(6, 8), (8, 6), (-6, 8), (10, 0), (0, -10), (-8, -6)]),
+    "cocircular-four.ell": "1 1 0 10 0\n1 1 0 0 10\n1 1 0 -10 0\n1 1 0 0 -10\n",
+    "touching.ell": "1 1 0 0 0\n1 1 0 2 0\n",
+    "nearly-touching.ell": "1 1 0 0 0\n1 1 0 2." + "0" * 39 + "1 0\n",
+    "nearly-touching-ellipses.ell": "2 1 0 0 0\n2 1 0 4.000000000000000000000000000000000000001 0\n1 1 0 2 5\n",
+    "near-duplicate.ell": "1 1 0 0 0\n1.0000000001 1 0 0 0\n",
+    "near-duplicate-shifted.ell": "2 1 0 0 0\n2 1 0 1e-40 0\n",
+    "duplicate.ell": "1 2 0 0 0\n3 3 0 9 9\n1 2 0 0 0\n",
+    "duplicate-point-set.ell": "2 1 0 5 5\n1 2 1 5 5\n",
+    # Three or four sites, so that the build reaches faces and InCircle.
+    "huge-center.ell": "1 1 0 0 0\n1 1 0 5 1\n1 1 0 1e300 3\n2 1 0 -7 2\n",
+    "huge-axis.ell": "1e300 1 0 0 0\n1 1 0 0 1e301\n1 1 0 5 -1e301\n",
+    "huge-axis-999.ell": "1 1 0 0 0\n1 1 0 5 1\n1e999 1 0 0 1e1000\n",
+    "tiny-axis.ell": "1e-300 1 0 0 0\n1 1 0 5 0\n1 1 0 2 6\n",
+    "tiny-circles.ell": "1e-300 1e-300 0 0 0\n1e-300 1e-300 0 1e-299 0\n1e-300 1e-300 0 0 3e-300\n",
+    "translated-1e20.ell": "".join(f"{r} 1 {w} 1000000000000000000{x:02d} {y}\n"
+                                   for r, w, x, y in [(1, 0, 0, 0), (1, 0, 5, 1), (1, 0, 2, 6), (2, "1/3", 3, -5)]),
+    "just-over-cap.ell": "1 1 0 1e1234 0\n",
+    "under-cap.ell": "1 1 0 1e1233 0\n",
+    "exponent-huge.ell": "1 1 0 1e99999999 0\n",
+    "crlf.ell": "# CRLF\r\n1 1 0 0 0\r\n\r\n1 1 0 4 0\r\n",
+    "comments.ell": "# header\n\n   \n1 1 0 0 0 # first\n\t1/2\t1/2\t0\t5\t5\n#\n2 1 0 -5 0#no space\n",
+    "blank-lines.ell": "\n\n\n1 1 0 0 0\n\n\n",
+    "no-final-newline.ell": "1 1 0 0 0\n2 2 0 10 0",
+    "empty.ell": "",
+    "decimals.ell": "0.5 .5 0 5. -1.25e-3\n+3 2 -0 1E2 007\n",
+    "fractions.ell": "3/4 10/6 -1/7 -100/3 22/7\n",
+    "malformed.ell": "1 1.2.3 0 0 0\n0x10 1 0 0 0\nnan 1 0 0 0\n1 1 1/-2 0 0\n",
+    "missing-field.ell": "1 1 0 0\n",
+    "extra-field.ell": "1 1 0 0 0 9\n",
+    "zero-axis.ell": "0 1 0 0 0\n",
+    "nul.ell": "1 1 0 0 0\n1 1\0 0 0 0\n",
+    "two-circles.cin": "0 0 1\n3 0 1\n",
+    "cin-several.cin": "0 0 1\n5 0 2\n0 7 1/2\n-4 -4 1.5\n",
+    "cin-nested.cin": "0 0 10\n1 1 1\n30 0 3\n",
+    "cin-bad.cin": "1 2\n0 0 0\n",
+}
+
+# Long files: the parser's seeds only (over the build target's 512 bytes).
+LONG = {
+    "cap-numerator.ell": f"1 1 0 {CAP} 0\n",
+    "cap-denominator.ell": f"1/{CAP} 1 0 0 0\n",
+    "cap-fraction.ell": f"{CAP}/{CAP - 2} 1 0 0 0\n",
+    "over-cap-numerator.ell": f"1 1 0 {OVER} 0\n",
+    "over-cap-denominator.ell": f"1 1/{OVER} 0 0 0\n",
+    "cap-after-reduction.ell": f"1 1 0 {2 * CAP}/2 0\n",  # 4097 bits written, 4096 read
+    "long-token.ell": "1 1 0 0 " + "1" * 4100 + "\n",
+    "long-decimal.ell": "1 1 0 0 0." + "0" * 1300 + "1\n",
+}
+
+
+def write(directory, name, text):
+    os.makedirs(directory, exist_ok=True)
+    with open(os.path.join(directory, name), "w", newline="") as f:
+        f.write(text)
+
+
+def main():
+    for sub in ("parser", "build"):
+        shutil.rmtree(os.path.join(ROOT, sub), ignore_errors=True)
+    parser, build = os.path.join(ROOT, "parser"), os.path.join(ROOT, "build")
+    for name, text in SMALL.items():
+        write(parser, name, text)
+        if name.endswith(".ell"):
+            write(build, name, text)
+    for name, text in LONG.items():
+        write(parser, name, text)
+    data = os.path.join(os.path.dirname(ROOT), "..", "data")
+    for name in ("example.ell", "example-300.ell"):
+        shutil.copyfile(os.path.join(data, name), os.path.join(parser, name))
+    # The first 8 sites of the example (no comments): within the build caps.
+    with open(os.path.join(data, "example.ell")) as f:
+        sites = [line.split("#")[0].strip() for line in f]
+    write(build, "example-first8.ell", "".join(s + "\n" for s in [s for s in sites if s][:8]))
+
+
+if __name__ == "__main__":
+    main()

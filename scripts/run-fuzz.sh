@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer targets built by `make fuzz` one after the other, each for
+# FUZZ_SECONDS seconds (default 60), and lists the findings.
+#
+# libFuzzer runs in fork mode and keeps going after a crash, a timeout (an
+# execution over 10 s) or an out-of-memory, so one bounded run collects every
+# finding it meets instead of stopping at the first. New corpus entries go to
+# BUILD/corpus/NAME (the committed seeds in fuzz/corpus/NAME are only read),
+# findings to BUILD/findings/NAME/, logs to BUILD/NAME.log (NAME: parser or
+# build). Exits 1 when a findings directory is not empty (findings of earlier
+# runs count until removed).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build-fuzz}
+seconds=${FUZZ_SECONDS:-60}
+# libFuzzer reads -max_total_time=0 as "no limit": the run must stay bounded.
+if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
+    echo "run-fuzz.sh: FUZZ_SECONDS must be a positive number of seconds, found '$seconds'" >&2
+    exit 2
+fi
+# Symbolized stack traces; UBSan reports stop the execution (a finding), but
+# the open ones listed in fuzz/ubsan.supp.
+export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=fuzz/ubsan.supp
+
+run_target() {
+    local name=$1 target=$2 max_len=$3
+    local corpus=$build/corpus/$name findings=$build/findings/$name
+    mkdir -p "$corpus" "$findings"
+    echo "== $target: $seconds s (log: $build/$name.log)"
+    "$build/$target" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+        -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" \
+        -dict=fuzz/ell.dict -artifact_prefix="$findings/" -print_final_stats=1 \
+        "$corpus" "fuzz/corpus/$name" >"$build/$name.log" 2>&1 || true
+    grep -E '^#[0-9]+: cov' "$build/$name.log" | tail -n 1 || true
+}
+
+# The parser target takes long lines (tokens beyond the 4096-bit cap); the
+# build target ignores inputs over 512 bytes anyway.
+run_target parser fuzz_site_parser 12000
+run_target build fuzz_build 512
+
+status=0
+for name in parser build; do
+    mapfile -t found < <(find "$build/findings/$name" -type f | sort)
+    echo "$name: ${#found[@]} finding(s)"
+    for f in "${found[@]}"; do echo "  $f"; done
+    [ ${#found[@]} -eq 0 ] || status=1
+done
+exit "$status"
