@@ -47,11 +47,14 @@ std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
         *slope = sp - sq;
         return v;
     };
+    // Samples half a step off the axes, all around the circle (the last
+    // interval wraps past pi: bitangents along the axes of a triple lie there).
     constexpr int kSamples = 64;
     std::vector<double> roots;
-    double slope, lo = -M_PI, f_lo = f(lo, &slope);
+    const double step = 2 * M_PI / kSamples;
+    double slope, lo = -M_PI + step / 2, f_lo = f(lo, &slope);
     for (int i = 1; i <= kSamples; ++i) {
-        double hi = -M_PI + 2 * M_PI * i / kSamples, f_hi = f(hi, &slope);
+        double hi = lo + step, f_hi = f(hi, &slope);
         if ((f_lo < 0) != (f_hi < 0)) {
             double a = lo, b = hi, fa = f_lo, x = 0.5 * (lo + hi);
             for (int it = 0; it < 60; ++it) {
