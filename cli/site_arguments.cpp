@@ -18,13 +18,6 @@ void require_site_count(const SiteFile& file, std::size_t min, std::size_t max, 
     throw InputError(file.name + ": " + what);
 }
 
-InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second) {
-    if (first > second) std::swap(first, second);
-    return InputError(file.name, file.lines[second], 1,
-                      "site " + std::to_string(second) + " intersects site " + std::to_string(first) + " (line " +
-                          std::to_string(file.lines[first]) + "); sites must be disjoint or nested");
-}
-
 void require_no_crossing(const SiteFile& file) {
     const auto& s = file.sites;
     for (std::size_t j = 1; j < s.size(); ++j)

@@ -16,11 +16,7 @@ SiteFile read_site_argument(const Arguments& parsed, const std::string& path);
 // surplus site is reported at its line. `roles` names them, e.g. "E1 E2 [Q]".
 void require_site_count(const SiteFile& file, std::size_t min, std::size_t max, const std::string& roles);
 
-// The input error for two sites whose boundaries cross, at the later site's
-// line: "FILE:LINE:1: site j intersects site i (line L); sites must be
-// disjoint or nested".
-InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second);
-// Throws that error for the first crossing pair of the file's sites (the
+// Throws crossing_sites_error (sites/site_io.hpp) for the first crossing pair of the file's sites (the
 // predicate commands take a few sites; `build` learns of crossings from the
 // graph, which tests each pair it meets).
 void require_no_crossing(const SiteFile& file);

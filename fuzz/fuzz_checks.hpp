@@ -10,10 +10,12 @@
 #pragma once
 
 #include "graph/delaunay_graph.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
 #include "sites/site_io.hpp"
 #include "util/error.hpp"
 
 #include <exception>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -73,17 +75,14 @@ inline Outcome read_ell_text(const std::string& text) {
 
 inline Outcome build_sites(const SiteFile& file) {
     try {
-        DelaunayGraph graph(file.sites);
+        DelaunayGraph graph(std::make_unique<EllipseDelaunayTraits>(file.sites));
         graph.insert_all();
         std::string problem = graph.validate();
         if (problem.empty()) problem = graph.brute_force_check();
         if (!problem.empty()) return {Outcome::finding, "invalid graph: " + problem, file};
     } catch (const IntersectingSites& e) {
         // Located at the later site's line, as `ellvor build` reports it.
-        const InputError located(file.name, file.lines[e.second()], 1,
-                                 "site " + std::to_string(e.second()) + " intersects site " +
-                                     std::to_string(e.first()) + "; sites must be disjoint or nested");
-        return {Outcome::input_error, located.what(), file};
+        return {Outcome::input_error, crossing_sites_error(file, e.first(), e.second()).what(), file};
     } catch (const InputError& e) {
         return {Outcome::input_error, e.what(), file};
     } catch (const std::exception& e) {

@@ -5,6 +5,21 @@
 
 namespace ellvor {
 
+namespace {
+
+// floor(v) clamped to [0, count - 1], without converting an out-of-range
+// double to long (undefined behaviour).
+long index_in(double v, long count) {
+    if (!(v >= 0)) return 0;
+    if (v >= static_cast<double>(count - 1)) return count - 1;
+    return static_cast<long>(v);
+}
+
+// Cells along a side of length `cells` cells: ceil, at least 1, at most `limit`.
+long cell_count(double cells, long limit) { return index_in(cells, limit) + 1; }
+
+}  // namespace
+
 SiteGrid::SiteGrid(const std::vector<LocationHint>& points) {
     for (const LocationHint& p : points) x_.push_back(p.x), y_.push_back(p.y);
     if (x_.empty()) return;
@@ -12,20 +27,20 @@ SiteGrid::SiteGrid(const std::vector<LocationHint>& points) {
     const auto [ymin, ymax] = std::minmax_element(y_.begin(), y_.end());
     x0_ = *xmin, y0_ = *ymin;
     const double width = std::max(*xmax - *xmin, 0.0), height = std::max(*ymax - *ymin, 0.0);
-    const double area = std::max(width * height, 1e-300);
-    cell_ = std::sqrt(area / static_cast<double>(x_.size()));
+    const double n = static_cast<double>(x_.size());
+    // About one site per cell; a box of zero height or width (collinear
+    // centers) gets cells along its length.
+    cell_ = width * height > 0 ? std::sqrt(width * height / n) : std::max(width, height) / n;
     if (!(cell_ > 0) || !std::isfinite(cell_)) cell_ = std::max({width, height, 1.0});
     // At most about 4 n cells, however thin the box.
-    columns_ = std::clamp(static_cast<long>(width / cell_) + 1, 1L, 4 * static_cast<long>(x_.size()));
-    rows_ = std::clamp(static_cast<long>(height / cell_) + 1, 1L, 4 * static_cast<long>(x_.size()) / columns_ + 1);
+    columns_ = cell_count(width / cell_, 4 * static_cast<long>(x_.size()));
+    rows_ = cell_count(height / cell_, 4 * static_cast<long>(x_.size()) / columns_ + 1);
     cell_ = std::max({cell_, width / static_cast<double>(columns_), height / static_cast<double>(rows_)}) * (1 + 1e-9);
     cells_.resize(static_cast<std::size_t>(columns_ * rows_));
 }
 
 long SiteGrid::cell_of(double x, double y) const {
-    const long c = std::clamp(static_cast<long>((x - x0_) / cell_), 0L, columns_ - 1);
-    const long r = std::clamp(static_cast<long>((y - y0_) / cell_), 0L, rows_ - 1);
-    return r * columns_ + c;
+    return index_in((y - y0_) / cell_, rows_) * columns_ + index_in((x - x0_) / cell_, columns_);
 }
 
 void SiteGrid::add(SiteId s) {

@@ -3,7 +3,9 @@
 #include "sites/rational_parse.hpp"
 #include "util/error.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -78,6 +80,58 @@ std::string shown(std::string_view token) {
 
 }  // namespace
 
+namespace {
+
+// q 2^k, exactly.
+Rational times_power_of_two(const Rational& q, long k) {
+    Rational r;
+    fmpq_mul_2exp(r.get(), q.get(), static_cast<ulong>(k));
+    return r;
+}
+
+// The extent of the site set (the larger side of the bounding box of the
+// sites' bounding circles) against its smallest semi-axis: in doubles when
+// they clearly decide, exactly otherwise (numbers beyond the double range,
+// or a ratio near the limit).
+void require_dynamic_range(const SiteFile& file) {
+    if (file.sites.size() < 2) return;
+    constexpr double kClearlyInside = 0x1p250;
+    double x_lo = HUGE_VAL, x_hi = -HUGE_VAL, y_lo = HUGE_VAL, y_hi = -HUGE_VAL, smallest = HUGE_VAL;
+    for (const Ellipse& e : file.sites) {
+        const auto& k = e.enclosure();
+        const double r = std::max(k.a.hi, k.b.hi);
+        x_lo = std::min(x_lo, k.xc.lo - r), x_hi = std::max(x_hi, k.xc.hi + r);
+        y_lo = std::min(y_lo, k.yc.lo - r), y_hi = std::max(y_hi, k.yc.hi + r);
+        smallest = std::min({smallest, k.a.lo, k.b.lo});
+    }
+    const double extent = std::max(x_hi - x_lo, y_hi - y_lo);
+    if (std::isfinite(extent) && smallest > 0 && extent < kClearlyInside * smallest) return;
+
+    std::size_t tiniest = 0;
+    Rational xmin, xmax, ymin, ymax, least;
+    for (std::size_t i = 0; i < file.sites.size(); ++i) {
+        const Ellipse& e = file.sites[i];
+        const Rational r = std::max(e.a(), e.b()), s = std::min(e.a(), e.b());
+        if (i == 0 || e.xc() - r < xmin) xmin = e.xc() - r;
+        if (i == 0 || e.xc() + r > xmax) xmax = e.xc() + r;
+        if (i == 0 || e.yc() - r < ymin) ymin = e.yc() - r;
+        if (i == 0 || e.yc() + r > ymax) ymax = e.yc() + r;
+        if (i == 0 || s < least) least = s, tiniest = i;
+    }
+    const Rational span = std::max(xmax - xmin, ymax - ymin);
+    if (span <= times_power_of_two(least, kMaxDynamicRangeBits)) return;
+    const long bits = static_cast<long>(fmpz_bits(fmpq_numref(span.get()))) -
+                      static_cast<long>(fmpz_bits(fmpq_denref(span.get()))) -
+                      static_cast<long>(fmpz_bits(fmpq_numref(least.get()))) +
+                      static_cast<long>(fmpz_bits(fmpq_denref(least.get())));
+    throw InputError(file.name, file.lines[tiniest], 1,
+                     "the site set spans about 2^" + std::to_string(bits) +
+                         " times the smallest semi-axis, this site's; ellvor supports extents up to 2^" +
+                         std::to_string(kMaxDynamicRangeBits) + " times the smallest semi-axis");
+}
+
+}  // namespace
+
 SiteFile read_site_file(std::istream& in, const std::string& name, SiteFormat format) {
     SiteFile file;
     file.name = name;
@@ -129,6 +183,14 @@ SiteFile read_site_file(std::istream& in, const std::string& name, SiteFormat fo
         } else {
             positive(0, "semi-axis a");
             positive(1, "semi-axis b");
+            const bool a_larger = values[0] > values[1];
+            const Rational& larger = values[a_larger ? 0 : 1];
+            const Rational& smaller = values[a_larger ? 1 : 0];
+            if (larger > times_power_of_two(smaller, kMaxAspectBits))
+                throw InputError(name, line_number, tokens[a_larger ? 0 : 1].column,
+                                 "semi-axes " + shown(tokens[0].text) + " and " + shown(tokens[1].text) +
+                                     " differ by more than a factor 2^" + std::to_string(kMaxAspectBits) +
+                                     ", the largest ratio ellvor supports");
         }
         if (file.sites.size() >= kMaxSites)
             throw InputError(name, line_number, 1, "too many sites: at most " + std::to_string(kMaxSites));
@@ -149,6 +211,7 @@ SiteFile read_site_file(std::istream& in, const std::string& name, SiteFormat fo
         file.lines.push_back(line_number);
     }
     if (in.bad()) throw InputError(name, line_number + 1, 1, "read error");
+    require_dynamic_range(file);
     return file;
 }
 
@@ -232,6 +295,13 @@ void write_file_atomically(const std::string& path, const std::function<void(std
         std::remove(tmp.c_str());
         throw;
     }
+}
+
+InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second) {
+    if (first > second) std::swap(first, second);
+    return InputError(file.name, file.lines[second], 1,
+                      "site " + std::to_string(second) + " intersects site " + std::to_string(first) + " (line " +
+                          std::to_string(file.lines[first]) + "); sites must be disjoint or nested");
 }
 
 }  // namespace ellvor

@@ -12,7 +12,9 @@
 // 1-based column of the offending token (or of the end of the line for missing
 // fields; column 1 for whole-line or whole-file problems):
 //   missing or extra fields, a token that is not a rational, nan/inf, zero
-//   denominators, numbers beyond kMaxRationalBits, a <= 0, b <= 0 (r <= 0), two
+//   denominators, numbers beyond kMaxRationalBits, a <= 0, b <= 0 (r <= 0), a
+//   semi-axis ratio beyond 2^kMaxAspectBits, a site set whose extent exceeds
+//   its smallest semi-axis by more than 2^kMaxDynamicRangeBits, two
 //   sites that are the same point set (the message names both lines and ids),
 //   a line longer than kMaxLineLength bytes, more than kMaxSites sites, a NUL
 //   byte, a file that cannot be opened.
@@ -21,6 +23,7 @@
 #pragma once
 
 #include "sites/ellipse.hpp"
+#include "util/error.hpp"
 
 #include <cstddef>
 #include <functional>
@@ -37,6 +40,14 @@ enum class SiteFormat { ell, cin };
 // with more sites than kMaxSites.
 constexpr std::size_t kMaxLineLength = 1 << 20;  // 1 MiB
 constexpr std::size_t kMaxSites = 10'000'000;
+// Shape and scale caps (docs/DESIGN.md §6). The numerical stages resolve a
+// site's boundary in doubles first: beyond a semi-axis ratio of 2^40 the tip
+// of a needle (radius of curvature b^2 / a) is below their resolution. And
+// a set whose extent exceeds its smallest semi-axis by more than 2^256 would
+// need thousands of bits per decision. Both are input errors that state the
+// limit.
+constexpr long kMaxAspectBits = 40;
+constexpr long kMaxDynamicRangeBits = 256;
 
 struct SiteFile {
     std::string name;             // the display name used in messages
@@ -51,6 +62,12 @@ SiteFile read_site_file(const std::string& path, SiteFormat format = SiteFormat:
 
 std::vector<Ellipse> read_sites(std::istream& in, const std::string& display_name, SiteFormat format = SiteFormat::ell);
 std::vector<Ellipse> read_sites(const std::string& path, SiteFormat format = SiteFormat::ell);
+
+// The input error for two sites of a file whose boundaries cross, at the
+// later site's line: "FILE:LINE:1: site j intersects site i (line L); sites
+// must be disjoint or nested" (the reader does not test pairs: the graph and
+// the commands find crossings).
+InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second);
 
 // Writers. `header` lines (may be empty) are written first, each prefixed with "# ".
 void write_ell(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header = "");
