@@ -104,7 +104,9 @@ Config make_config(bool full) {
     return c;
 }
 
-// The target "every decision <= 1 s" (at the default cap).
+// The target "every decision <= 1 s" (at the default cap), on wall time: the
+// exact stage's resultant runs on every hardware thread, so its CPU time can
+// exceed the time one waits for it.
 constexpr double kDecisionBudget = 1.0;
 // The target of the degenerate grids: ellvor within 15x of CGAL's hierarchy.
 constexpr double kGridRatioTarget = 15.0;
@@ -910,7 +912,7 @@ void collinear_case(const TripleCase& c, const Config& config, CollinearResults&
             return;
         }
         const VoronoiCircleEnclosure& enc = solver->enclosure();
-        out.slowest.note(t.max_cpu, label + ", refine(64)");
+        out.slowest.note(t.max_wall, label + ", refine(64)");
 
         // The reference circle the queries are built from: for circles the
         // exact circumcircle construction (and ellvor's enclosure must hold
@@ -939,7 +941,7 @@ void collinear_case(const TripleCase& c, const Config& config, CollinearResults&
             const DecisionRun d = decide_incircle(quad, {}, config.runs);
             const std::string query = gap > 0 ? "1 unit outside" : "1 unit inside";
             check_decision(d, expected, label + ", query " + query, quad, precision::kDefaultCap, anomalies);
-            out.slowest.note(d.time.max_cpu, label + ", InCircle " + query);
+            out.slowest.note(d.time.max_wall, label + ", InCircle " + query);
             out.incircle.add({c.family, integer(c.k), query, d.text, stage_name(d.stage), integer(d.precision),
                               cpu_wall(d.time), integer(d.time.runs)});
         }
@@ -1072,7 +1074,7 @@ void invariance_family(const std::string& family, SiteKind kind, const Config& c
         med.wall = median(wall);
         mx.cpu = *std::max_element(cpu.begin(), cpu.end());
         mx.wall = *std::max_element(wall.begin(), wall.end());
-        out.slowest.note(mx.cpu, family + " #" + std::to_string(slowest_index) + ", " + v.name);
+        out.slowest.note(mx.wall, family + " #" + std::to_string(slowest_index) + ", " + v.name);
         out.disagreements += disagree;
         out.table.add({family, v.name, integer(static_cast<long long>(quads.size())), integer(disagree),
                        std::to_string(answers[0]) + " / " + std::to_string(answers[1]) + " / " +
@@ -1096,7 +1098,7 @@ std::vector<Ellipse> tangent_quadruple() {
 }
 
 struct CapResults {
-    Table table{"precision_caps", {"cap", "answer", "stage", "precision", "CPU (wall)", "max CPU", "runs"}};
+    Table table{"precision_caps", {"cap", "answer", "stage", "precision", "CPU (wall)", "slowest run: CPU (wall)", "runs"}};
     std::vector<std::pair<long, DecisionRun>> runs;
 };
 
@@ -1110,7 +1112,7 @@ CapResults cap_section(const Config& config, Anomalies& anomalies) {
         const DecisionRun d = decide_incircle(quad, o, config.full ? 5 : 1);
         check_decision(d, InCircle::tangent, "tangent quadruple, cap " + std::to_string(cap), quad, cap, anomalies);
         out.table.add({integer(cap), d.text, stage_name(d.stage), integer(d.precision), cpu_wall(d.time),
-                       seconds_cell(d.time.max_cpu), integer(d.time.runs)});
+                       duration(d.time.max_cpu) + " (" + duration(d.time.max_wall) + ")", integer(d.time.runs)});
         out.runs.push_back({cap, d});
     }
     return out;
@@ -1161,15 +1163,15 @@ int main(int argc, char** argv) {
     targets.push_back({"every decision certified (no wrong or undecided answer, exception or invalid graph)",
                        std::to_string(anomalies.count()) + " anomalies", anomalies.count() == 0});
     std::vector<std::pair<std::string, Slowest>> slow = {
-        {"grids: slowest predicate call (wall, in the build)", grid_slowest_call},
-        {"nearly collinear triples: slowest refine(64) or InCircle run", collinear.slowest},
-        {"rows: slowest predicate call (wall, in the build)", rows.slowest},
-        {"translation and scaling: slowest decision", invariance.slowest}};
+        {"grids: slowest predicate call in the build", grid_slowest_call},
+        {"nearly collinear triples: slowest run of refine(64) or InCircle", collinear.slowest},
+        {"rows: slowest predicate call in the build", rows.slowest},
+        {"translation and scaling: slowest decision (median of its runs)", invariance.slowest}};
     for (const auto& [cap, d] : caps.runs)
         if (cap <= precision::kDefaultCap)
-            slow.push_back({"tangent quadruple at cap " + std::to_string(cap) + ", slowest run", {d.time.max_cpu, ""}});
+            slow.push_back({"tangent quadruple at cap " + std::to_string(cap) + ", slowest run", {d.time.max_wall, ""}});
     for (const auto& [where, s] : slow)
-        targets.push_back({"every decision ≤ 1 s (default cap), " + where,
+        targets.push_back({"every decision ≤ 1 s (default cap; wall time), " + where,
                            duration(s.seconds) + (s.what.empty() ? "" : " (" + s.what + ")"), s.seconds <= kDecisionBudget});
     targets.push_back({"translated and scaled quadruples answer as the originals",
                        std::to_string(invariance.disagreements) + " disagreements", invariance.disagreements == 0});
@@ -1179,7 +1181,8 @@ int main(int argc, char** argv) {
     for (const auto& [cap, d] : caps.runs)
         if (cap > precision::kDefaultCap)
             targets.push_back({"(beyond the default cap) the tangent quadruple at cap " + std::to_string(cap) + " ≤ 1 s",
-                               duration(d.time.max_cpu) + " (slowest run, CPU)", d.time.max_cpu <= kDecisionBudget});
+                               duration(d.time.max_wall) + " wall, " + duration(d.time.max_cpu) + " CPU (slowest run)",
+                               d.time.max_wall <= kDecisionBudget});
 
     // Markdown.
     std::ostringstream md;
@@ -1198,7 +1201,9 @@ int main(int argc, char** argv) {
        << " for the row of ellipses), `--out DIR` writes this file and `near_degenerate.csv` (one line per table "
           "cell: table, row, column, value; times in seconds, memory in bytes).\n\n";
 
-    md << "## Targets\n\n" << target_lines(targets) << "\nAnomalies: " << anomalies.count() << ".\n";
+    md << "## Targets\n\nThe ratio to CGAL is on CPU time; the \"≤ 1 s\" targets are on wall time (what a caller "
+          "waits; the exact stage's resultant runs on every hardware thread), the slowest run or call.\n\n"
+       << target_lines(targets) << "\nAnomalies: " << anomalies.count() << ".\n";
     for (const std::string& a : anomalies.list()) md << "\n" << a << "\n";
 
     md << "\n## 1. Degenerate circle grids against CGAL\n\n";
@@ -1274,7 +1279,8 @@ int main(int argc, char** argv) {
     md << "\n## 4. Precision caps\n\n`incircle` on the exactly tangent quadruple `2 1 0 5 0`, `2 1 1 0 5`, `2 1 0 -5 0`, "
           "`2 1 1 0 -5` (the circle of radius 3 about the origin touches all four) with `options.refinement.cap` = "
           "64, 4096 (the default), 2^17, 2^20: the subdivision stage refines up to the cap, then the exact stage "
-          "proves the tangency.\n\n"
+          "proves the tangency. The exact stage's resultant runs on every hardware thread "
+          "(std::thread::hardware_concurrency(), 2 here), so on an idle machine its CPU time exceeds its wall time.\n\n"
        << caps.table.markdown();
 
     std::cout << md.str();
