@@ -105,7 +105,7 @@ $(FUZZ_STAMP): scripts/install-deps.sh
 fuzz: $(FUZZ_STAMP)
 	@$(MAKE) --no-print-directory -j$(JOBS) BUILD=$(FUZZ_BUILD) CXX=clang++-14 OPT="-O1 -g" \
 	    SANITIZE="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined \
-	        -fsanitize-recover=float-cast-overflow -fno-omit-frame-pointer" fuzzers
+	        -fno-omit-frame-pointer" fuzzers
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/run-fuzz.sh $(FUZZ_BUILD)
 
 clean:

@@ -18,10 +18,9 @@ if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
     echo "run-fuzz.sh: FUZZ_SECONDS must be a positive number of seconds, found '$seconds'" >&2
     exit 2
 fi
-# Symbolized stack traces; UBSan reports stop the execution (a finding), but
-# the open ones listed in fuzz/ubsan.supp.
+# Symbolized stack traces; every UBSan report stops the execution (a finding).
 export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer
-export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=fuzz/ubsan.supp
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 run_target() {
     local name=$1 target=$2 max_len=$3

@@ -87,13 +87,9 @@ TEST_CASE("fuzz: numbers beyond the 4096-bit cap are input errors naming the lin
     CHECK(r.status == 0);
 }
 
-TEST_CASE("fuzz: every build seed gives a valid graph or an input error, but the open findings", "[fuzz]") {
-    // Open findings in predicates/ and exact/ (experiments/results/fuzz.md):
-    // a gmp abort, an internal error, and a build of 5 s.
-    const std::set<std::string> open = {"huge-center.ell", "translated-1e20.ell", "huge-axis-999.ell"};
+TEST_CASE("fuzz: every build seed gives a valid graph or an input error", "[fuzz]") {
     std::size_t built = 0;
     for (const std::string& path : corpus_files("build")) {
-        if (open.count(std::filesystem::path(path).filename().string())) continue;
         INFO(path);
         const Outcome o = ellvor::fuzz::build_site_text(ellvor::test::read_file(path));
         INFO(o.message);
@@ -104,15 +100,61 @@ TEST_CASE("fuzz: every build seed gives a valid graph or an input error, but the
     CHECK(built >= 20);
 }
 
-TEST_CASE("fuzz: sites with equal center coordinates (SiteGrid cast overflow) build a valid graph", "[fuzz]") {
-    // Under clang's UBSan, any two centers on a horizontal or vertical line made
-    // SiteGrid cast ~1e150 to long (open, fuzz/ubsan.supp); the answer must
-    // stay right meanwhile.
+TEST_CASE("fuzz: sites with equal center coordinates build a valid graph", "[fuzz]") {
+    // Any two centers on a horizontal or vertical line once made SiteGrid
+    // convert ~1e150 to long (undefined behaviour, seen by clang's UBSan).
     for (const char* text : {"1 1 0 0 0\n1 1 0 3 0\n", "1 1 0 0 0\n1 1 0 0 3\n1 1 0 0 7\n",
                              "1 1 0 0 0\n2 1 0 6 0\n1 2 0 12 0\n1 1 0 20 0\n"}) {
         INFO(text);
         const Outcome o = ellvor::fuzz::build_site_text(text);
         INFO(o.message);
         CHECK(o.kind == Outcome::accepted);
+    }
+}
+
+TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are input errors naming the limit",
+          "[fuzz]") {
+    // The minimized findings of experiments/results/fuzz.md ('/' separates lines there).
+    struct Finding {
+        const char* what;
+        const char* text;
+        const char* limit;  // nullptr: a valid graph
+    };
+    const Finding findings[] = {
+        // B1: a negative refinement bit count reached fmpq_mul_2exp (gmp abort, SIGSEGV).
+        {"B1 gmp abort", "1 1 0 0 0\n1 1 0 0 2\n1 1 0 1e201 0\n1 2 0 2 0\n", "spans about 2^"},
+        {"B1 at 4e30", "4e30 2 1 4 0\n1 2 0 7 7\n1 1 0 0 6\n2 2 2 12 31\n", "differ by more than a factor 2^40"},
+        {"B1 SIGSEGV", "1 1 1 0 0\n2 27 0 7 7\n1 1 0 1e201 4\n2 3 880 3 3\n", "spans about 2^"},
+        {"B1 center 1e300", "1 1 0 0 0\n1 1 0 5 1\n1 1 0 1e300 3\n2 1 0 -7 2\n", "spans about 2^"},
+        // B2: InCircle 10^20 away from the origin ("internal error").
+        {"B2 translated 1e20",
+         "1 1 0 100000000000000000000 0\n1 1 0 100000000000000000005 1\n1 1 0 100000000000000000002 6\n"
+         "2 1 1/3 100000000000000000003 -5\n",
+         nullptr},
+        {"B2 refinement", "1 1 0 5 1\n1 1 0 10000002 6\n2 1 1/3 10000000000000000002 6\n2 1 1/3 100000000000000000003 -5\n",
+         nullptr},
+        // B3: the exhaustive search gave up or ran for minutes.
+        {"B3 gap 1e-81", "1 1 0 0 0\n2 1 0 1 71\n1 1 0 1e-40 2\n1 1 0 0 5\n", nullptr},
+        {"B3 tangent pair", "1 1 0 0 0\n1 1 0 0 2\n1 1 0 0 3655555555555555555555555555555555555555555555555555555555555\n1 1 0 1 5\n",
+         nullptr},
+        {"B3 needle 1e17", "1 1 0 0 0\n2 100000000000000000 0 6 .7\n2 2 0 1e4 1e+4\n2 2 0 32 35e20\n",
+         "differ by more than a factor 2^40"},
+        {"B3 1e-404", "1 1 0 0 0\n2 2 0 7 7\n1 1000000000000000000001 10 1e-404 14\n2 2 0 35 35\n",
+         "differ by more than a factor 2^40"},
+        // B4: right but slow (1e999 axes).
+        {"B4 axis 1e999", "1 1 0 0 0\n1 1 0 5 1\n1e999 1 0 0 1e1000\n", "differ by more than a factor 2^40"},
+        {"B4 center 7e999", "9 1 0 0 0\n2 2 0 7e999 74\n2 2 20 35 35\n", "spans about 2^"},
+    };
+    for (const Finding& f : findings) {
+        INFO(f.what << "\n" << f.text);
+        const Outcome o = ellvor::fuzz::build_site_text(f.text);
+        INFO(o.message);
+        if (f.limit) {
+            REQUIRE(o.kind == Outcome::input_error);
+            CHECK(names_location(o.message));
+            CHECK(contains(o.message, f.limit));
+        } else {
+            CHECK(o.kind == Outcome::accepted);
+        }
     }
 }
