@@ -72,6 +72,8 @@ int run(const std::vector<std::string>& args) {
     if (progress) std::fprintf(stderr, "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    // The build's statistics, before validation asks predicates of its own.
+    const nlohmann::json stats = build_stats_json(graph, seconds);
     std::cout << sites.size() << " sites (" << graph.hidden().size() << " hidden), " << graph.edges().size()
               << " Delaunay edges, " << graph.faces().size() << " faces, built in " << seconds << " s\n";
 
@@ -83,15 +85,14 @@ int run(const std::vector<std::string>& args) {
         if (!problem.empty()) status = kExitFailure;
     }
     if (parsed.has("--stats")) {
-        const nlohmann::json s = build_stats_json(graph, seconds);
         std::cout << "time per insertion: " << 1e6 * seconds / std::max<std::size_t>(1, sites.size()) << " us\n";
         std::cout << "predicate calls (decided by filter / subdivision / exact):\n";
-        for (const auto& [name, row] : s["predicates"].items())
+        for (const auto& [name, row] : stats["predicates"].items())
             std::cout << "  " << name << ": " << row["calls"] << " (" << row["filter"] << " / " << row["subdivision"]
                       << " / " << row["exact"] << ")\n";
     }
     if (parsed.has("--json")) {
-        const nlohmann::json j = graph_json(graph, sites, seconds);
+        const nlohmann::json j = graph_json(graph, sites, stats);
         const std::string out = parsed.value("--json");
         if (out == "-") {
             std::cout << j.dump() << "\n";

@@ -39,7 +39,7 @@ nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds) {
     return s;
 }
 
-nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double seconds) {
+nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats) {
     const auto faces = graph.faces();
     nlohmann::json j;
     j["sites"] = nlohmann::json::array();
@@ -51,7 +51,7 @@ nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>
     j["faces"] = faces;
     j["voronoi_vertices"] = nlohmann::json::array();
     for (const auto& f : faces) j["voronoi_vertices"].push_back(voronoi_vertex(sites, f));
-    j["stats"] = build_stats_json(graph, seconds);
+    j["stats"] = stats;
     return j;
 }
 

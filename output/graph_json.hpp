@@ -16,7 +16,9 @@ namespace ellvor {
 // {"seconds", "inserted", "predicates": {name: {"calls", one count per stage}}}.
 nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds);
 
-// The whole document; `sites` are the graph's sites, `seconds` its build time.
-nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double seconds);
+// The whole document; `sites` are the graph's sites, `stats` the build's
+// statistics (build_stats_json taken right after the build: validation asks
+// predicates too).
+nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats);
 
 }  // namespace ellvor
