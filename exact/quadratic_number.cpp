@@ -95,51 +95,17 @@ int quadratic_sign(const Number& a, const Number& b, const Number& d) {
     return c > 0 ? sa : c < 0 ? sb : 0;
 }
 
-// The body of sign_of_two_roots (see the header for the proof).
+// The body of sign_of_biquadratic (see the header for the proof); also the
+// last step of sign_of_two_roots (e = 0).
 template <class Number>
-int two_roots_sign(const Number& x, const Number& y, const Number& d1, const Number& z, const Number& d2) {
-    const int sv = d2.is_zero() ? 0 : z.sign();
-    if (sv == 0) return quadratic_sign(x, y, d1);
-    if (d1.is_zero() || y.is_zero()) return quadratic_sign(x, z, d2);
-    if (d1 == d2) {  // one field after all: x + (y + z) sqrt(d)
-        Number yz;
-        add(yz, y, z);
-        return quadratic_sign(x, yz, d1);
-    }
-    // The whole sum in intervals first.
-    const Interval ix = rough_enclosure(x.get()), iy = rough_enclosure(y.get()), iz = rough_enclosure(z.get());
-    const Interval id1 = rough_enclosure(d1.get()), id2 = rough_enclosure(d2.get());
-    if (ix.finite() && iy.finite() && iz.finite() && id1.finite() && id2.finite())
-        if (const int s = proven_sign(ix + iy * id1.sqrt() + iz * id2.sqrt())) return s;
-    const int su = quadratic_sign(x, y, d1);
-    if (su == 0 || su == sv) return sv;
-    // u and v of opposite signs: sign(u) * sign(u^2 - v^2),
-    // u^2 - v^2 = (x^2 + y^2 d1 - z^2 d2) + 2 x y sqrt(d1).
-    Number rational, root, t;
-    mul(rational, x, x);
-    mul(t, y, y);
-    mul(t, t, d1);
-    add(rational, rational, t);
-    mul(t, z, z);
-    mul(t, t, d2);
-    sub(rational, rational, t);
-    mul(root, x, y);
-    twice(root);
-    return su * quadratic_sign(rational, root, d1);
-}
-
-}  // namespace
-
-int sign_of_quadratic(const Rational& a, const Rational& b, const Rational& d) { return quadratic_sign(a, b, d); }
-
-int sign_of_biquadratic(const Integer& a, const Integer& b, const Integer& c, const Integer& e, const Integer& d1,
-                        const Integer& d2) {
+int biquadratic_sign(const Number& a, const Number& b, const Number& c, const Number& e, const Number& d1,
+                     const Number& d2) {
     const int sv = d2.is_zero() ? 0 : quadratic_sign(c, e, d1);
     const int su = quadratic_sign(a, b, d1);
     if (sv == 0) return su;
     if (su == 0 || su == sv) return sv;
     // u^2 - v^2 d2 = (a^2 + b^2 d1 - (c^2 + e^2 d1) d2) + 2 (a b - c e d2) sqrt(d1)
-    Integer rational, root, t, w;
+    Number rational, root, t, w;
     mul(rational, a, a);
     mul(t, b, b);
     mul(t, t, d1);
@@ -156,6 +122,34 @@ int sign_of_biquadratic(const Integer& a, const Integer& b, const Integer& c, co
     sub(root, root, t);
     twice(root);
     return su * quadratic_sign(rational, root, d1);
+}
+
+// The body of sign_of_two_roots (see the header for the proof).
+template <class Number>
+int two_roots_sign(const Number& x, const Number& y, const Number& d1, const Number& z, const Number& d2) {
+    const int sv = d2.is_zero() ? 0 : z.sign();
+    if (sv == 0) return quadratic_sign(x, y, d1);
+    if (d1.is_zero() || y.is_zero()) return quadratic_sign(x, z, d2);
+    if (d1 == d2) {  // one field after all: x + (y + z) sqrt(d)
+        Number yz;
+        add(yz, y, z);
+        return quadratic_sign(x, yz, d1);
+    }
+    // The whole sum in intervals first.
+    const Interval ix = rough_enclosure(x.get()), iy = rough_enclosure(y.get()), iz = rough_enclosure(z.get());
+    const Interval id1 = rough_enclosure(d1.get()), id2 = rough_enclosure(d2.get());
+    if (ix.finite() && iy.finite() && iz.finite() && id1.finite() && id2.finite())
+        if (const int s = proven_sign(ix + iy * id1.sqrt() + iz * id2.sqrt())) return s;
+    return biquadratic_sign(x, y, z, Number(0), d1, d2);
+}
+
+}  // namespace
+
+int sign_of_quadratic(const Rational& a, const Rational& b, const Rational& d) { return quadratic_sign(a, b, d); }
+
+int sign_of_biquadratic(const Integer& a, const Integer& b, const Integer& c, const Integer& e, const Integer& d1,
+                        const Integer& d2) {
+    return biquadratic_sign(a, b, c, e, d1, d2);
 }
 int sign_of_quadratic(const Integer& a, const Integer& b, const Integer& d) { return quadratic_sign(a, b, d); }
 

@@ -59,9 +59,7 @@ using namespace ellvor;
 
 namespace {
 
-using ellvor::experiments::cpu_model;
-using ellvor::experiments::loadavg;
-using ellvor::experiments::source_state;
+using namespace ellvor::experiments;
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Traits = CGAL::Apollonius_graph_filtered_traits_2<K>;
@@ -101,11 +99,6 @@ double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 // Nearest-rank percentile.
 double percentile(std::vector<double> v, double p) {

@@ -141,14 +141,9 @@ std::vector<Case> random_cases(SiteKind kind, int n, bool (*want)(VoronoiCircles
     return out;
 }
 
-Rational power_of_ten(long k, bool inverse) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k));
-    return inverse ? Rational(Integer(1), p) : Rational(p);
-}
 
 Case offset_case(long k) {  // X = 10^k; k < 0 means X = 0
-    const Rational x = k < 0 ? Rational(0) : power_of_ten(k, false);
+    const Rational x = k < 0 ? Rational(0) : power_of_ten(k);
     const Triple s = {Ellipse(4, 2, 0, x, 0), Ellipse(3, Rational(3, 2UL), Rational(1, 3UL), x + 10, 0),
                       Ellipse(Rational(5, 2UL), Rational(5, 2UL), 0, x + 5, 8)};
     return {k < 0 ? "X = 0" : "X = 10^" + std::to_string(k), s, *voronoi_circle_count(s[0], s[1], s[2])};
@@ -157,7 +152,7 @@ Case offset_case(long k) {  // X = 10^k; k < 0 means X = 0
 // Lifting the middle circle leaves one tangent circle, below the line; the
 // order that makes it counter-clockwise is taken from the count.
 Case line_case(long k) {
-    Triple s = {Ellipse::circle(0, 0, 1), Ellipse::circle(3, power_of_ten(k, true), 1), Ellipse::circle(6, 0, 1)};
+    Triple s = {Ellipse::circle(0, 0, 1), Ellipse::circle(3, power_of_ten(-k), 1), Ellipse::circle(6, 0, 1)};
     if (*voronoi_circle_count(s[0], s[1], s[2]) == VoronoiCircles::cw_only) std::swap(s[1], s[2]);
     return {"k = " + std::to_string(k), s, *voronoi_circle_count(s[0], s[1], s[2])};
 }

@@ -57,28 +57,13 @@ using namespace ellvor;
 
 namespace {
 
-using ellvor::experiments::cpu_model;
-using ellvor::experiments::loadavg;
-using ellvor::experiments::source_state;
+using namespace ellvor::experiments;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using AGTraits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
 using AG = CGAL::Apollonius_graph_2<AGTraits>;
 using Pairs = std::vector<std::pair<SiteId, SiteId>>;
 
-double now_wall() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double now_cpu() {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 std::string fmt(const char* f, double x) {
     char buf[64];
     std::snprintf(buf, sizeof buf, f, x);

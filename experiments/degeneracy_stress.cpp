@@ -49,9 +49,7 @@ using namespace ellvor;
 
 namespace {
 
-using ellvor::experiments::cpu_model;
-using ellvor::experiments::loadavg;
-using ellvor::experiments::source_state;
+using namespace ellvor::experiments;
 
 struct Row {
     std::string part;    // "resultant" or "incircle"
@@ -69,17 +67,7 @@ struct Row {
     double paper_seconds = 0;
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
-Rational ten_to_minus(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k));
-    return Rational(Integer(1), p);
-}
 
 Rational two_to_minus(long k) {
     Integer p;
@@ -115,7 +103,7 @@ void resultant_rows(int reps, std::uint64_t seed, bool full, std::vector<Row>& r
         for (int e : {30, 40, 60, 80, 100}) exponents.push_back(e);
     for (int e : exponents) {
         SiteRandom rng(seed + static_cast<std::uint64_t>(e));
-        const Rational eps = e ? ten_to_minus(e) : Rational(0);
+        const Rational eps = e ? power_of_ten(-e) : Rational(0);
         const Ellipse e1 = e ? perturbed(g1, eps, rng) : g1, e2 = e ? perturbed(g2, eps, rng) : g2,
                       e3 = e ? perturbed(g3, eps, rng) : g3;
         std::vector<double> times;
@@ -216,7 +204,7 @@ void incircle_rows(int reps, bool full, std::vector<Row>& rows) {
                 if (full || c.name != "axial" || e <= 30) jobs.push_back({e, dir, 256});
             }
         for (const Job& job : jobs) {
-            const Ellipse q = job.e ? moved(c, ten_to_minus(job.e), job.dir) : c.s[3];
+            const Ellipse q = job.e ? moved(c, power_of_ten(-job.e), job.dir) : c.s[3];
             InCircleOptions options;
             options.refinement.cap = job.cap;
             std::vector<double> times;

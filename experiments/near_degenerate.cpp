@@ -75,9 +75,7 @@ using namespace ellvor;
 
 namespace {
 
-using ellvor::experiments::cpu_model;
-using ellvor::experiments::loadavg;
-using ellvor::experiments::source_state;
+using namespace ellvor::experiments;
 
 using Pairs = std::vector<std::pair<SiteId, SiteId>>;
 
@@ -113,20 +111,6 @@ constexpr double kGridRatioTarget = 15.0;
 
 // ------------------------------------------------------------------- timing --
 
-double now_wall() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double now_cpu() {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 // Medians (and maxima) of repeated runs, seconds.
 struct Timing {
@@ -287,11 +271,6 @@ private:
 
 // ---------------------------------------------------------- exact numbers --
 
-Rational ten_to(int k) {
-    Rational p(1);
-    for (int i = 0; i < (k < 0 ? -k : k); ++i) p = p * Rational(10);
-    return k < 0 ? Rational(1) / p : p;
-}
 
 // Exactly a double (what CGAL reads): a dyadic number with a 53-bit numerator.
 bool exact_in_double(const Rational& q) {
@@ -329,7 +308,7 @@ struct TripleCase {
 
 // Section 2's triples for one k.
 std::vector<TripleCase> collinear_triples(int k) {
-    const Rational lift = ten_to(-k);
+    const Rational lift = power_of_ten(-k);
     return {
         {"circles, horizontal", k,
          {Ellipse::circle(0, 0, 1), Ellipse::circle(6, 0, 1), Ellipse::circle(3, lift, 1)}},
@@ -356,7 +335,7 @@ long row_offset(int i) { return (i % 2 ? -1 : 1) * (1 + i % 9); }
 std::vector<Ellipse> row_sites(bool ellipses, int k) {
     std::vector<Ellipse> s;
     for (int i = 0; i < 20; ++i) {
-        const Rational x(6L * i), y = Rational(row_offset(i)) * ten_to(-k);
+        const Rational x(6L * i), y = Rational(row_offset(i)) * power_of_ten(-k);
         if (!ellipses) {
             s.push_back(Ellipse::circle(x, y, 1));
         } else {
@@ -1010,10 +989,10 @@ struct Version {
 
 std::vector<Version> versions() {
     return {{"as is", 1, 0},
-            {"+" + power_text(10, 30), 1, ten_to(30)},
-            {"+" + power_text(10, -30), 1, ten_to(-30)},
-            {"×" + power_text(10, 100), ten_to(100), 0},
-            {"×" + power_text(10, -100), ten_to(-100), 0}};
+            {"+" + power_text(10, 30), 1, power_of_ten(30)},
+            {"+" + power_text(10, -30), 1, power_of_ten(-30)},
+            {"×" + power_text(10, 100), power_of_ten(100), 0},
+            {"×" + power_text(10, -100), power_of_ten(-100), 0}};
 }
 
 std::vector<Ellipse> transformed(const std::vector<Ellipse>& sites, const Version& v) {

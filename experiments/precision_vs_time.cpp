@@ -38,9 +38,7 @@ using namespace ellvor;
 
 namespace {
 
-using ellvor::experiments::cpu_model;
-using ellvor::experiments::loadavg;
-using ellvor::experiments::source_state;
+using namespace ellvor::experiments;
 
 struct Triple {
     std::string name, description;
@@ -128,14 +126,6 @@ std::vector<Triple> triples() {
     return out;
 }
 
-double now_wall() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double now_cpu() {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 struct Measurement {
     std::string triple;
@@ -147,11 +137,6 @@ struct Measurement {
     VoronoiCircleEnclosure enclosure;
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 Measurement measure(const Triple& t, long bits, bool once) {
     Measurement m;

@@ -2,9 +2,13 @@
 // headers of the result files in experiments/results/.
 #pragma once
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace ellvor::experiments {
 
@@ -45,6 +49,24 @@ inline std::string loadavg() {
     std::string a, b, c;
     in >> a >> b >> c;
     return a + " " + b + " " + c;
+}
+
+// Wall-clock and process CPU time in seconds (differences only).
+inline double now_wall() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+inline double now_cpu() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+// The median (the mean of the middle two for an even count; 0 for none).
+inline double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 // The common command line of the experiments: [--full] [--out DIR].

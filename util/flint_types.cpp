@@ -78,4 +78,10 @@ void ball_endpoints(const Ball& b, Rational& lo, Rational& hi) {
     arb_get_ubound_arf(x.get(), b.get(), ARF_PREC_EXACT);
     arf_get_fmpq(hi.get(), x.get());
 }
+Rational power_of_ten(long k) {
+    Integer p;
+    fmpz_ui_pow_ui(p.get(), 10, static_cast<ulong>(k < 0 ? -k : k));
+    return k < 0 ? Rational(Integer(1), p) : Rational(p);
+}
+
 }  // namespace ellvor

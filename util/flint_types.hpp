@@ -148,6 +148,8 @@ private:
 namespace ellvor {
 // Rational endpoints [lo, hi] of a ball (exact: Arb's endpoints are dyadic).
 void ball_endpoints(const Ball& b, Rational& lo, Rational& hi);
+// 10^k exactly, for k of either sign (decimal data: offsets, perturbations).
+Rational power_of_ten(long k);
 }  // namespace ellvor
 
 #include <arb_mat.h>

@@ -30,11 +30,6 @@ struct Graph {
     Pairs hidden, edges, hull;
 };
 
-Rational ten_to_minus(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k));
-    return Rational(Integer(1), p);
-}
 
 Graph cgal_graph(const std::vector<Ellipse>& sites) {
     AG ag;
@@ -74,7 +69,7 @@ Graph cgal_graph(const std::vector<Ellipse>& sites) {
 // the normal; in two parallel rows when `rows` is 2.
 std::vector<Ellipse> row(int k, int n, const Rational& dx, const Rational& dy, int rows) {
     std::vector<Ellipse> out;
-    const Rational eps = ten_to_minus(k);
+    const Rational eps = power_of_ten(-k);
     for (int r = 0; r < rows; ++r)
         for (int i = 0; i < n; ++i) {
             const Rational along(3 * i), across = Rational(5 * r) + Rational(((i * 7 + r) % 9) + 1) * eps *

@@ -66,11 +66,6 @@ struct Cgal {
 const char* name(VoronoiCircles v) { return voronoi_circles_name(v); }
 bool has_ccw(VoronoiCircles v) { return v == VoronoiCircles::ccw_only || v == VoronoiCircles::both; }
 
-Rational ten_to_minus(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k));
-    return Rational(Integer(1), p);
-}
 
 bool apart(const std::vector<Ellipse>& sites) {
     for (std::size_t i = 0; i < sites.size(); ++i)
@@ -261,15 +256,15 @@ TEST_CASE("circle predicates agree with CGAL's exact Apollonius traits on random
         std::vector<Ellipse> s;
         for (int i = 0; i < 4; ++i) {
             if (n % 10 == 9) {
-                const Rational grid = ten_to_minus(300);
+                const Rational grid = power_of_ten(-300);
                 auto offset = [&] { return grid * Rational(Integer(static_cast<long>(rng() >> 1)), Integer(1)); };
                 s.push_back(Ellipse::circle(rnd(rng, -10, 10, 7) + offset(), rnd(rng, -10, 10, 3) + offset(),
                                             rnd_pos(rng, 4, 5) + offset()));
             } else if (n % 2 == 0) {
-                s.push_back(Ellipse::circle(rnd(rng, -10, 10, 1000003) + ten_to_minus(12) * rnd(rng, 0, 1, 1009),
+                s.push_back(Ellipse::circle(rnd(rng, -10, 10, 1000003) + power_of_ten(-12) * rnd(rng, 0, 1, 1009),
                                             rnd(rng, -10, 10, 999983), rnd_pos(rng, 4, 1000033)));
             } else {
-                const Rational grid = ten_to_minus(30);
+                const Rational grid = power_of_ten(-30);
                 s.push_back(Ellipse::circle(Rational(rnd(rng, -10, 10, 7)) + grid * rnd(rng, -1000, 1000, 1),
                                             rnd(rng, -10, 10, 3) + grid * rnd(rng, -1000, 1000, 1),
                                             rnd_pos(rng, 4, 5) + grid * rnd(rng, 0, 1000, 1)));
@@ -300,7 +295,7 @@ TEST_CASE("near-collinear triples 10^-k off the line: exact answers and CGAL agr
     // Unequal radii: (0,0) r 1, (7,0) r 2, (3, eps) r 1/2.
     const Cgal cgal;
     for (int k : {12, 16, 20, 30, 40}) {
-        const Rational eps = ten_to_minus(k);
+        const Rational eps = power_of_ten(-k);
         // Equal radii: one circle, the circumcircle, of the centers'
         // orientation; a small middle site leaves room on both sides.
         struct Triple { Ellipse a, b, c; VoronoiCircles want; };
@@ -401,7 +396,7 @@ TEST_CASE("exactly degenerate quadruples: four circles on a square, six on a hex
             // Q's radius changed by 10^-40: smaller -> no conflict; bigger ->
             // conflict (only for side 3: with side 2 a bigger Q would cut its
             // neighbours).
-            const Rational eps = ten_to_minus(40);
+            const Rational eps = power_of_ten(-40);
             const Ellipse bigger = Ellipse::circle(q.xc(), q.yc(), Rational(1) + eps),
                           smaller = Ellipse::circle(q.xc(), q.yc(), Rational(1) - eps);
             CHECK(circle_vertex_conflict(v, smaller) == 1);

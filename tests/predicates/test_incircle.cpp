@@ -44,11 +44,6 @@ CSite cgal_site(long x, long y, long r) { return CSite(CPoint(double(x), double(
 
 int cgal_sign(CGAL::Sign s) { return s == CGAL::NEGATIVE ? -1 : (s == CGAL::POSITIVE ? 1 : 0); }
 
-Rational ten_to_minus(int k) {
-    Rational r(1);
-    for (int i = 0; i < k; ++i) r = r / Rational(10);
-    return r;
-}
 
 std::string show(const Decision<InCircle>& d) {
     return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
@@ -224,7 +219,7 @@ TEST_CASE("incircle on an exactly tangent ellipse quadruple and its perturbation
     // toward it -> conflict; the precision needed grows with k.
     long previous = 0;
     for (int k : {6, 30, 100}) {
-        const Rational eps = ten_to_minus(k);
+        const Rational eps = power_of_ten(-k);
         const Ellipse away(2, 1, 1, 0, Rational(-5) - eps), toward(2, 1, 1, 0, Rational(-5) + eps);
         long used = 0;
         for (const Ellipse* q : {&away, &toward}) {
@@ -280,7 +275,7 @@ TEST_CASE("incircle on an exactly tangent circle quadruple, CGAL's ZERO, and per
     subdivision_only.use_filter = false;
     long previous = 0;
     for (int k : {6, 30, 100}) {
-        const Rational eps = ten_to_minus(k);
+        const Rational eps = power_of_ten(-k);
         long used = 0;
         for (int dir : {1, -1}) {
             const apollonius::Circle cp{cq.x, cq.y, dir > 0 ? Rational(1) + eps : Rational(1) - eps};

@@ -34,11 +34,6 @@ namespace {
 
 bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
-Rational ten_to_minus(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k));
-    return Rational(Integer(1), p);
-}
 
 std::string show(const Decision<InCircle>& d) {
     return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
@@ -198,7 +193,7 @@ TEST_CASE("incircle exact stage: rotations of the degenerate quadruples stay tan
 TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[predicates][incircle][exact]") {
     for (const Degenerate& c : {case_a(), case_b(), case_c()}) {
         for (int k : {6, 30, 100}) {
-            const Rational eps = ten_to_minus(k);
+            const Rational eps = power_of_ten(-k);
             for (int dir : {1, -1}) {
                 const Ellipse q = moved(c, eps, dir);
                 const InCircle want = dir > 0 ? InCircle::no_conflict : InCircle::conflict;

@@ -21,11 +21,6 @@ using namespace ellvor;
 
 namespace {
 
-Rational power_of_ten(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k < 0 ? -k : k));
-    return k < 0 ? Rational(Integer(1), p) : Rational(p);
-}
 
 struct Similarity {
     std::string name;

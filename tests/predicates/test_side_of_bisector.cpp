@@ -20,11 +20,6 @@ using oracle::rnd;
 using oracle::rnd_pos;
 using oracle::Rng;
 
-Rational ten_to_minus(int k) {
-    Rational r(1);
-    for (int i = 0; i < k; ++i) r = r / Rational(10);
-    return r;
-}
 
 using ellvor::test::bounding_circles_apart;
 
@@ -113,7 +108,7 @@ TEST_CASE("kappa1 on the paper's circle datasets (1), (2a-c), (3)", "[predicates
     for (const Point& p : path) run(p);
     // (2a), (2b), (2c): the points perturbed by up to 10^-2, 10^-4, 10^-6.
     for (int k : {2, 4, 6}) {
-        const Rational eps = ten_to_minus(k);
+        const Rational eps = power_of_ten(-k);
         for (const Point& p : path) run({p.x + eps * rnd(rng, -1, 1, 1000), p.y + eps * rnd(rng, -1, 1, 1000)});
     }
     // (3): two random circles in [-10,10]^2 with radii in (0,2], one point.
@@ -214,7 +209,7 @@ TEST_CASE("kappa1 ellipse ties by symmetry are ZERO, decided exactly", "[predica
 }
 
 TEST_CASE("kappa1 near ties 1e-30 apart are decided after the filter, with the right sign", "[predicates][side_of_bisector]") {
-    const Rational tiny = ten_to_minus(30);
+    const Rational tiny = power_of_ten(-30);
     // Circles: the Pythagorean tie at (0,0) moved by +-1e-30 in x and y; the oracle decides at 256 bits.
     for (int sx : {-1, 0, 1})
         for (int sy : {-1, 0, 1}) {

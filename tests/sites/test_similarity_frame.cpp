@@ -11,11 +11,6 @@ using namespace ellvor;
 
 namespace {
 
-Rational power_of_ten(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k < 0 ? -k : k));
-    return k < 0 ? Rational(Integer(1), p) : Rational(p);
-}
 
 // The image of a site in a frame, and its largest semi-axis there, as a double.
 double framed_size(const SimilarityFrame& f, const Ellipse& e) {

@@ -25,11 +25,6 @@ namespace {
 
 constexpr long kOraclePrecision = 2048;
 
-Rational ten_to(int k) {
-    Integer p;
-    fmpz_ui_pow_ui(p.get(), 10, static_cast<unsigned long>(k < 0 ? -k : k));
-    return k < 0 ? Rational(Integer(1), p) : Rational(p);
-}
 
 bool overlaps(const Ball& a, const Ball& b) { return arb_overlaps(a.get(), b.get()) != 0; }
 
@@ -126,8 +121,8 @@ struct Family {
     Rational radius, cx, cy;
 };
 Family family(int k) {
-    const Rational g = ten_to(-k), x1(-7, 12UL), x2(6), c(65, 24UL);
-    const Rational R = Rational(43, 8UL) * ten_to(k);
+    const Rational g = power_of_ten(-k), x1(-7, 12UL), x2(6), c(65, 24UL);
+    const Rational R = Rational(43, 8UL) * power_of_ten(k);
     return {Ellipse(Rational(3, 4UL), Rational(4, 3UL), Rational(1, 2UL), 0, 0),
             Ellipse(Rational(1, 2UL), 1, 0, 3, -g), Ellipse(2, 1, 0, 6, 0), R, c,
             Rational(1) + R - (x1 - c) * (x1 - c) / (Rational(2) * R)};
@@ -153,7 +148,7 @@ Ellipse query_above(const Ball& vx, const Ball& vy, const Ball& radius, long del
 TEST_CASE("huge circles of nearly collinear circles are certified from the tangent line, k = 12 .. 40",
           "[subdivision][huge-circle]") {
     for (int k : {12, 16, 20, 30, 40}) {
-        const Rational lift = ten_to(-k);
+        const Rational lift = power_of_ten(-k);
         // Unit circles on the x-axis with the middle one lifted (the circle is
         // below), and the same on the tilted line through (0, 0) and (6, 8).
         const apollonius::Circle rows[2][3] = {
