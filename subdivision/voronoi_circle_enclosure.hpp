@@ -13,10 +13,13 @@
 // and its open disk misses all three; with the tangency points
 // counter-clockwise this is the unique counter-clockwise Voronoi circle.
 //
-// Where the certificate starts: first from floating-point guesses
-// (voronoi_circle_guess.hpp); when none certifies, from the exhaustive search
+// Where the certificate starts (docs/DESIGN.md §4.2): first from
+// floating-point guesses (voronoi_circle_guess.hpp); then, for circles far
+// larger than the sites, from their nearly common tangent line
+// (huge_circle_start.hpp); when none certifies, from the exhaustive search
 // (voronoi_circle_search.hpp), which either certifies the circle or proves
-// that there is none.
+// that there is none. The work happens in a similarity frame of the triple
+// (docs/DESIGN.md §4.3).
 #pragma once
 
 #include "sites/ellipse.hpp"
@@ -61,10 +64,11 @@ public:
     VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
     // Finds and certifies the counter-clockwise Voronoi circle at about 64
-    // bits (more for sites far from the origin relative to their size): from
-    // the floating-point guesses, then by the exhaustive search. False means
-    // proved: the triple has no counter-clockwise Voronoi circle. Throws
-    // Error only for a degenerate triple on which the search hits its cap.
+    // bits (more when the sites' magnitudes exceed their size in the frame):
+    // from the floating-point guesses, the tangent-line starts, then by the
+    // exhaustive search. False means proved: the triple has no
+    // counter-clockwise Voronoi circle. Throws Error only for a degenerate
+    // triple on which the search hits its cap.
     bool certify();
     // The exhaustive search alone (tests and experiments force this path);
     // the same contract as certify().
