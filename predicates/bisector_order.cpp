@@ -40,6 +40,16 @@ Ball BisectorFrame::position(const Ball& parameter, bool flipped, long prec) {
     Ball excess;
     arb_sub(excess.get(), p.get(), two_pi.get(), prec);
     if (arb_is_nonnegative(excess.get())) p = excess;
+    // A ball that still touches 0 or 2 pi may stand for either representative
+    // (a tangency point just past the departure point, computed in the other
+    // chart, is 2 pi + epsilon before the reduction): the position is then
+    // anywhere in [0, 2 pi] at this precision. A finite vertex lies strictly
+    // inside, so a higher precision decides.
+    arb_sub(excess.get(), p.get(), two_pi.get(), prec);
+    if (!arb_is_positive(p.get()) || !arb_is_negative(excess.get())) {
+        arb_const_pi(p.get(), prec);
+        arb_add_error(p.get(), p.get());
+    }
     return p;
 }
 

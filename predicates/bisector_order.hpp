@@ -18,8 +18,9 @@ public:
     // E1, E2 separated (throws Error otherwise).
     BisectorFrame(const Ellipse& e1, const Ellipse& e2);
     // Position (radians in (0, 2 pi)) of the circle whose tangency point on E1
-    // is at chart parameter `parameter` (flipped: u = -1/t). The ball may
-    // straddle 0 only for circles at the departure end (never for finite ones).
+    // is at chart parameter `parameter` (flipped: u = -1/t): a ball inside
+    // (0, 2 pi), or the whole [0, 2 pi] when this precision cannot tell a
+    // position near the departure end from one near the arrival end.
     Ball position(const Ball& parameter, bool flipped, long prec);
 
 private:

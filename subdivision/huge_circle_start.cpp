@@ -48,13 +48,27 @@ std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
         return v;
     };
     // Samples half a step off the axes, all around the circle (the last
-    // interval wraps past pi: bitangents along the axes of a triple lie there).
+    // interval wraps past pi: bitangents along the axes of a triple lie there),
+    // and at the four axis directions of both shapes: a needle's support value
+    // has a valley there only ~(minor / major) radians wide, which may hold a
+    // pair of roots between two uniform samples.
     constexpr int kSamples = 64;
+    const double step = 2 * M_PI / kSamples, first = -M_PI + step / 2;
+    std::vector<double> samples;
+    for (int i = 0; i <= kSamples; ++i) samples.push_back(first + i * step);
+    for (const Shape* k : {&p, &q})
+        for (int quarter = 0; quarter < 4; ++quarter) {
+            double axis = std::atan2(k->s, k->c) + quarter * M_PI / 2;
+            while (axis < first) axis += 2 * M_PI;
+            while (axis >= first + 2 * M_PI) axis -= 2 * M_PI;
+            samples.push_back(axis);
+        }
+    std::sort(samples.begin(), samples.end());
     std::vector<double> roots;
-    const double step = 2 * M_PI / kSamples;
-    double slope, lo = -M_PI + step / 2, f_lo = f(lo, &slope);
-    for (int i = 1; i <= kSamples; ++i) {
-        double hi = lo + step, f_hi = f(hi, &slope);
+    double slope, lo = samples.front(), f_lo = f(lo, &slope);
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+        const double hi = samples[i];
+        double f_hi = f(hi, &slope);
         if ((f_lo < 0) != (f_hi < 0)) {
             double a = lo, b = hi, fa = f_lo, x = 0.5 * (lo + hi);
             for (int it = 0; it < 60; ++it) {
@@ -184,48 +198,76 @@ struct FirstOrderCircle {
     long ratio_bits;  // log2(R / size), roughly
 };
 
+// Dot product of a point with (n_x, n_y) or with d = n turned by +90 degrees.
+Ball along_normal(const BallVector& p, const BallVector& n, long prec) {
+    Ball v;
+    arb_mul(v.get(), p.x.get(), n.x.get(), prec);
+    arb_addmul(v.get(), p.y.get(), n.y.get(), prec);
+    return v;
+}
+Ball along_line(const BallVector& p, const BallVector& n, long prec) {
+    Ball v;
+    arb_mul(v.get(), p.y.get(), n.x.get(), prec);
+    arb_submul(v.get(), p.x.get(), n.y.get(), prec);
+    return v;
+}
+
 // The circle of the bitangent direction phi of sites (i, j), with the third
-// site k, at precision prec; false when g does not have kGapBits correct bits
-// at this precision, or R <= 0 (no circle on the line's far side).
+// site k, at precision prec; false when the gap g = h_k(n) - h_i(n) does not
+// have kGapBits correct bits at this precision, or there is no circle of
+// positive radius on the line's far side.
 bool first_order_circle(const std::array<ArbSite, 3>& s, int i, int j, int k, const Ball& phi, long size_bits,
                         long prec, FirstOrderCircle& out, bool& resolved) {
     const BallVector n = direction(phi, prec);
-    std::array<BallVector, 3> support;
-    std::array<Ball, 3> h;
-    for (int m : {i, j, k}) h[m] = s[m].support(n, &support[m], prec);
-    Ball g;
-    arb_sub(g.get(), h[k].get(), h[i].get(), prec);
-    resolved = !arb_contains_zero(g.get()) && arb_rel_accuracy_bits(g.get()) >= kGapBits;
-    if (!resolved) return false;
-    // d = n turned by +90 degrees; x_m = S_m . d.
-    std::array<Ball, 3> x;
-    for (int m : {i, j, k}) {
-        arb_mul(x[m].get(), support[m].y.get(), n.x.get(), prec);
-        arb_submul(x[m].get(), support[m].x.get(), n.y.get(), prec);
-    }
-    Ball ki, kj, product, radius, c, offset, height;
-    arb_sub(ki.get(), x[k].get(), x[i].get(), prec);
-    arb_sub(kj.get(), x[k].get(), x[j].get(), prec);
-    arb_mul(product.get(), ki.get(), kj.get(), prec);
-    arb_div(radius.get(), product.get(), g.get(), prec);
-    arb_mul_2exp_si(radius.get(), radius.get(), -1);
-    if (!arb_is_positive(radius.get())) return false;
-    arb_add(c.get(), x[i].get(), x[j].get(), prec);
+    BallVector support_i, support_j, support_k;
+    const Ball h = s[i].support(n, &support_i, prec);
+    s[j].support(n, &support_j, prec);
+    Ball c, half_spacing_squared;
+    arb_add(c.get(), along_line(support_i, n, prec).get(), along_line(support_j, n, prec).get(), prec);
     arb_mul_2exp_si(c.get(), c.get(), -1);
-    // n.V = h_i + R - (x_i - c)^2 / (2 R)
-    arb_sub(offset.get(), x[i].get(), c.get(), prec);
-    arb_sqr(offset.get(), offset.get(), prec);
-    arb_div(offset.get(), offset.get(), radius.get(), prec);
-    arb_mul_2exp_si(offset.get(), offset.get(), -1);
-    arb_add(height.get(), h[i].get(), radius.get(), prec);
-    arb_sub(height.get(), height.get(), offset.get(), prec);
-    // V = c d + height n, d = (-n_y, n_x)
-    arb_mul(out.center.x.get(), height.get(), n.x.get(), prec);
-    arb_submul(out.center.x.get(), c.get(), n.y.get(), prec);
-    arb_mul(out.center.y.get(), height.get(), n.y.get(), prec);
-    arb_addmul(out.center.y.get(), c.get(), n.x.get(), prec);
-    out.radius = radius;
-    out.ratio_bits = std::max(0L, magnitude(radius) - size_bits);
+    arb_sub(half_spacing_squared.get(), along_line(support_i, n, prec).get(), c.get(), prec);
+    arb_sqr(half_spacing_squared.get(), half_spacing_squared.get(), prec);
+    // Site k touches the circle at its boundary point with outward normal u,
+    // u = n first (k near the line), then u toward the circle's center (k far
+    // off, the circle between it and the pair).
+    BallVector u = n;
+    for (int round = 0; round < 3; ++round) {
+        s[k].support(u, &support_k, prec);
+        Ball w_line, w_normal, radius, numerator, t;
+        arb_sub(w_line.get(), along_line(support_k, n, prec).get(), c.get(), prec);
+        arb_sub(w_normal.get(), along_normal(support_k, n, prec).get(), h.get(), prec);
+        if (round == 0) {
+            resolved = !arb_contains_zero(w_normal.get()) && arb_rel_accuracy_bits(w_normal.get()) >= kGapBits;
+            if (!resolved) return false;
+        }
+        arb_sqr(numerator.get(), w_line.get(), prec);
+        arb_sub(numerator.get(), numerator.get(), half_spacing_squared.get(), prec);
+        arb_addmul(numerator.get(), w_normal.get(), w_normal.get(), prec);
+        arb_div(radius.get(), numerator.get(), w_normal.get(), prec);
+        arb_mul_2exp_si(radius.get(), radius.get(), -1);
+        if (!arb_is_positive(radius.get())) return false;
+        // n.V = h_i + R - (x_i - c)^2 / (2 R); V = c d + (n.V) n, d = (-n_y, n_x)
+        Ball height;
+        arb_div(t.get(), half_spacing_squared.get(), radius.get(), prec);
+        arb_mul_2exp_si(t.get(), t.get(), -1);
+        arb_add(height.get(), h.get(), radius.get(), prec);
+        arb_sub(height.get(), height.get(), t.get(), prec);
+        arb_mul(out.center.x.get(), height.get(), n.x.get(), prec);
+        arb_submul(out.center.x.get(), c.get(), n.y.get(), prec);
+        arb_mul(out.center.y.get(), height.get(), n.y.get(), prec);
+        arb_addmul(out.center.y.get(), c.get(), n.x.get(), prec);
+        out.radius = radius;
+        Ball length;
+        arb_sub(u.x.get(), out.center.x.get(), support_k.x.get(), prec);
+        arb_sub(u.y.get(), out.center.y.get(), support_k.y.get(), prec);
+        arb_hypot(length.get(), u.x.get(), u.y.get(), prec);
+        arb_div(u.x.get(), u.x.get(), length.get(), prec);
+        arb_div(u.y.get(), u.y.get(), length.get(), prec);
+        // A start needs no rigour: midpoints keep the error of V out of u.
+        arb_get_mid_arb(u.x.get(), u.x.get());
+        arb_get_mid_arb(u.y.get(), u.y.get());
+    }
+    out.ratio_bits = std::max(0L, magnitude(out.radius) - size_bits);
     return true;
 }
 

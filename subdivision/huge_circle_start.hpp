@@ -1,22 +1,26 @@
-// Starts for Voronoi circles far larger than their sites: nearly collinear
-// sites (rows of grains, perturbed grids, rationals close to a line) have
-// Voronoi circles of radius R up to 10^40 times the sites' size. A
-// double-precision guess cannot resolve them, and the exhaustive search needs
-// about log2(R / size) levels of boxes.
+// Starts for Voronoi circles far larger than their sites, of radius R up to
+// 10^40 times the sites' size. A double-precision guess cannot resolve them,
+// and the exhaustive search needs about log2(R / size) levels of boxes.
 //
-// As R grows the circle tends to a line tangent to the three sites. From an
-// external bitangent of two of the sites (tangent at S_i, S_j with outward
-// normal n; computed in Arb at high precision), the gap g = h_k(n) - h_i(n)
-// of the third site's support value beyond it, and the positions x_m = S_m.d
-// of the support points along the line (d perpendicular to n), the circle
-// follows to first order in 1/R: near the line its boundary is the parabola
-//     n.x = n.V - R + (d.x - c)^2 / (2 R),
-// and asking that it touch the three sites at their support heights gives
-//     c = (x_i + x_j) / 2,   1/R = 2 g / ((x_k - x_i)(x_k - x_j)),
-// n.V = h_i + R - (x_i - c)^2 / (2 R), each tangency point the site's boundary
-// point whose outward normal points at V. The relative error is O(size / R),
-// so Newton at a precision covering log2(R / size) converges from it; the
-// caller certifies (or rejects) each start like any other.
+// As R grows, the circle near two of the sites tends to a line tangent to
+// both: an external bitangent of sites i, j (tangent at S_i, S_j with outward
+// normal n, d perpendicular to n; computed in Arb at high precision). Near
+// the line the circle's boundary is, to first order in 1/R, the parabola
+//     n.x = n.V - R + (d.x - c)^2 / (2 R),   c = (S_i.d + S_j.d) / 2,
+// touching i and j at their support heights h_i = h_j:
+//     n.V = h_i + R - (S_i.d - c)^2 / (2 R).
+// The third site k touches it at the point S_k of outward normal u; with
+// w = S_k - (c, h_i) in (d, n) coordinates, |V - S_k| = R gives
+//     R = (w_d^2 - (S_i.d - c)^2 + w_n^2) / (2 w_n).
+// u = n first; then u points from S_k to V, twice. This covers both ways a
+// circle gets huge: the three sites nearly on a line (w_n = the gap
+// h_k(n) - h_i(n) small; rows of grains, perturbed grids, rationals close to
+// a line: R up to 10^40 times the sizes), and a third site far from a close
+// pair (w_n ~ the distance; a far site seen past a needle's tip). Each
+// tangency point is the site's boundary point whose outward normal points at
+// V. The relative error is O(size / R), so Newton at a precision covering
+// log2(R / size) converges from it; the caller certifies (or rejects) each
+// start like any other.
 #pragma once
 
 #include "sites/ellipse.hpp"

@@ -144,6 +144,16 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
         // B4: right but slow (1e999 axes).
         {"B4 axis 1e999", "1 1 0 0 0\n1 1 0 5 1\n1e999 1 0 0 1e1000\n", "differ by more than a factor 2^40"},
         {"B4 center 7e999", "9 1 0 0 0\n2 2 0 7e999 74\n2 2 20 35 35\n", "spans about 2^"},
+        // B6: an invalid graph (order on a bisector near its departure end).
+        {"B6 order near departure",
+         "1 1 0 1000000010000000000280 0\n1 1 280 10000000000000.410000002 6\n2 1 1/3 050000000000000000002 6\n"
+         "22222 1 1/3 05000000/2 -5\n",
+         nullptr},
+        // B7: the search gave up after 20 s (a far site past a needle's tip).
+        {"B7 needle and far site",
+         "1 1 0 1000000000000000000200 0\n1 1000000000 0 100000000000000000005 1\n1 1 0 100000000000000000002 6\n"
+         "2 1 1/1 030000003 -5\n",
+         nullptr},
     };
     for (const Finding& f : findings) {
         INFO(f.what << "\n" << f.text);
