@@ -41,6 +41,7 @@
 #include "sites/site_generators.hpp"
 #include "sites/site_io.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "util/ball_arithmetic.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
 
@@ -668,16 +669,6 @@ void check_decision(const DecisionRun& d, std::optional<InCircle> expected, cons
     anomalies.add(what, quad, "ellvor incircle FILE --json --max-precision " + std::to_string(cap));
 }
 
-// Arb arithmetic at one precision, for building queries.
-struct ArbAt {
-    long prec;
-    Ball q(const Rational& v) const { return Ball(v, prec); }
-    Ball add(const Ball& a, const Ball& b) const { Ball r; arb_add(r.get(), a.get(), b.get(), prec); return r; }
-    Ball sub(const Ball& a, const Ball& b) const { Ball r; arb_sub(r.get(), a.get(), b.get(), prec); return r; }
-    Ball mul(const Ball& a, const Ball& b) const { Ball r; arb_mul(r.get(), a.get(), b.get(), prec); return r; }
-    Ball div(const Ball& a, const Ball& b) const { Ball r; arb_div(r.get(), a.get(), b.get(), prec); return r; }
-    Ball sqrt(const Ball& a) const { Ball r; arb_sqrt(r.get(), a.get(), prec); return r; }
-};
 constexpr long kQueryPrecision = 1024;
 
 // Queries carry this many bits: enough for a unit gap on a circle of radius
@@ -702,7 +693,7 @@ struct CircleBalls {
 // site's centre): its centre at distance radius + 1 + gap from c's centre, so
 // that it is `gap` units outside the circle (gap < 0: it reaches |gap| inside).
 Ellipse query_at_gap(const CircleBalls& c, const Point& from, long gap) {
-    const ArbAt A{kQueryPrecision};
+    const BallArithmetic A{kQueryPrecision};
     const Ball dx = A.sub(c.x, A.q(from.x)), dy = A.sub(c.y, A.q(from.y));
     const Ball len = A.sqrt(A.add(A.mul(dx, dx), A.mul(dy, dy)));
     const Ball reach = A.add(c.radius, A.q(Rational(1 + gap)));
@@ -718,7 +709,7 @@ CircleBalls equal_circles_voronoi_circle(const std::vector<Ellipse>& c) {
     const Rational d = Rational(2) * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by));
     const Rational ox = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d;
     const Rational oy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d;
-    const ArbAt A{kQueryPrecision};
+    const BallArithmetic A{kQueryPrecision};
     const Rational r2 = (ax - ox) * (ax - ox) + (ay - oy) * (ay - oy);
     return {A.q(ox), A.q(oy), A.sub(A.sqrt(A.q(r2)), A.q(c[0].a()))};
 }

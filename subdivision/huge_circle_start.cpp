@@ -198,6 +198,18 @@ struct FirstOrderCircle {
     long ratio_bits;  // log2(R / size), roughly
 };
 
+// The unit vector from `from` toward `to`.
+BallVector unit_direction(const BallVector& from, const BallVector& to, long prec) {
+    BallVector u;
+    Ball length;
+    arb_sub(u.x.get(), to.x.get(), from.x.get(), prec);
+    arb_sub(u.y.get(), to.y.get(), from.y.get(), prec);
+    arb_hypot(length.get(), u.x.get(), u.y.get(), prec);
+    arb_div(u.x.get(), u.x.get(), length.get(), prec);
+    arb_div(u.y.get(), u.y.get(), length.get(), prec);
+    return u;
+}
+
 // Dot product of a point with (n_x, n_y) or with d = n turned by +90 degrees.
 Ball along_normal(const BallVector& p, const BallVector& n, long prec) {
     Ball v;
@@ -257,12 +269,7 @@ bool first_order_circle(const std::array<ArbSite, 3>& s, int i, int j, int k, co
         arb_mul(out.center.y.get(), height.get(), n.y.get(), prec);
         arb_addmul(out.center.y.get(), c.get(), n.x.get(), prec);
         out.radius = radius;
-        Ball length;
-        arb_sub(u.x.get(), out.center.x.get(), support_k.x.get(), prec);
-        arb_sub(u.y.get(), out.center.y.get(), support_k.y.get(), prec);
-        arb_hypot(length.get(), u.x.get(), u.y.get(), prec);
-        arb_div(u.x.get(), u.x.get(), length.get(), prec);
-        arb_div(u.y.get(), u.y.get(), length.get(), prec);
+        u = unit_direction(support_k, out.center, prec);
         // A start needs no rigour: midpoints keep the error of V out of u.
         arb_get_mid_arb(u.x.get(), u.x.get());
         arb_get_mid_arb(u.y.get(), u.y.get());
@@ -281,13 +288,7 @@ VoronoiCircleStart start_of(const std::array<ArbSite, 3>& s, const FirstOrderCir
     for (int m = 0; m < 3; ++m) {
         BallVector toward = s[m].center();
         for (int round = 0; round < 2; ++round) {
-            BallVector n;
-            Ball length;
-            arb_sub(n.x.get(), circle.center.x.get(), toward.x.get(), prec);
-            arb_sub(n.y.get(), circle.center.y.get(), toward.y.get(), prec);
-            arb_hypot(length.get(), n.x.get(), n.y.get(), prec);
-            arb_div(n.x.get(), n.x.get(), length.get(), prec);
-            arb_div(n.y.get(), n.y.get(), length.get(), prec);
+            const BallVector n = unit_direction(toward, circle.center, prec);
             s[m].support(n, &toward, prec);
             if (round == 1) {
                 start.flipped[m] = s[m].chart_parameter(n, start.parameter[m], prec);

@@ -20,6 +20,7 @@
 #pragma once
 
 #include "sites/ellipse.hpp"
+#include "util/ball_arithmetic.hpp"
 
 #include <arb.h>
 
@@ -69,16 +70,6 @@ struct Result {
 
 namespace detail {
 
-struct Arb {
-    long prec;
-    Ball q(const Rational& v) const { return Ball(v, prec); }
-    Ball add(const Ball& a, const Ball& b) const { Ball r; arb_add(r.get(), a.get(), b.get(), prec); return r; }
-    Ball sub(const Ball& a, const Ball& b) const { Ball r; arb_sub(r.get(), a.get(), b.get(), prec); return r; }
-    Ball mul(const Ball& a, const Ball& b) const { Ball r; arb_mul(r.get(), a.get(), b.get(), prec); return r; }
-    Ball div(const Ball& a, const Ball& b) const { Ball r; arb_div(r.get(), a.get(), b.get(), prec); return r; }
-    Ball sqrt(const Ball& a) const { Ball r; arb_sqrt(r.get(), a.get(), prec); return r; }
-};
-
 // An affine function alpha + beta s of the free unknown.
 struct Affine {
     Rational alpha, beta;
@@ -89,7 +80,7 @@ struct Affine {
 // All Voronoi circles of the three circles, at `prec` bits.
 inline Result voronoi_circles(const Circle& c1, const Circle& c2, const Circle& c3, long prec = 4096) {
     Result out;
-    const detail::Arb A{prec};
+    const ellvor::BallArithmetic A{prec};
     // Rows (coefficients of X, Y, R | right-hand side) for i = 2, 3.
     auto power = [](const Circle& c) { return c.x * c.x + c.y * c.y - c.r * c.r; };
     std::array<std::array<Rational, 3>, 2> m;
@@ -179,7 +170,7 @@ inline int incircle(const Circle& c1, const Circle& c2, const Circle& c3, const 
     if (!r.certain || r.ccw_count() > 1) return 3;
     const Solution* s = r.ccw();
     if (!s) return -1;
-    const detail::Arb A{prec};
+    const ellvor::BallArithmetic A{prec};
     const Ball dx = A.sub(s->x, A.q(q.x)), dy = A.sub(s->y, A.q(q.y));
     const Ball d = A.sqrt(A.add(A.mul(dx, dx), A.mul(dy, dy)));
     const Ball diff = A.sub(d, A.add(s->radius, A.q(q.r)));

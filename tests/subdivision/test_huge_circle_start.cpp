@@ -13,6 +13,7 @@
 #include "predicates/incircle.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/predicates/apollonius_oracle.hpp"
+#include "util/ball_arithmetic.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -39,15 +40,6 @@ Ball widened(const Ball& b, long bits_below) {
 
 // ------------------------------------------------------------- the oracle --
 
-struct Arb {
-    long prec = kOraclePrecision;
-    Ball q(const Rational& v) const { return Ball(v, prec); }
-    Ball add(const Ball& a, const Ball& b) const { Ball r; arb_add(r.get(), a.get(), b.get(), prec); return r; }
-    Ball sub(const Ball& a, const Ball& b) const { Ball r; arb_sub(r.get(), a.get(), b.get(), prec); return r; }
-    Ball mul(const Ball& a, const Ball& b) const { Ball r; arb_mul(r.get(), a.get(), b.get(), prec); return r; }
-    Ball div(const Ball& a, const Ball& b) const { Ball r; arb_div(r.get(), a.get(), b.get(), prec); return r; }
-    Ball mid(const Ball& a) const { Ball r; arb_get_mid_arb(r.get(), a.get()); return r; }
-};
 
 // Distance from a far point V to E, and the unit vector from the nearest
 // point to V: Newton on the nearest point's angle theta in E's frame,
@@ -57,7 +49,7 @@ struct Foot {
     Ball distance, ux, uy;
 };
 Foot foot(const Ellipse& e, const Ball& vx, const Ball& vy) {
-    const Arb A;
+    const BallArithmetic A{kOraclePrecision};
     const Ball c = A.q(e.cos_rotation()), s = A.q(e.sin_rotation()), a = A.q(e.a()), b = A.q(e.b());
     const Ball dx = A.sub(vx, A.q(e.xc())), dy = A.sub(vy, A.q(e.yc()));
     const Ball x = A.add(A.mul(c, dx), A.mul(s, dy)), y = A.sub(A.mul(c, dy), A.mul(s, dx));
@@ -90,7 +82,7 @@ Foot foot(const Ellipse& e, const Ball& vx, const Ball& vy) {
 // F(0) > 0 to F(sqrt(a^2 x^2 + b^2 y^2)) <= 0, so bisection finds its one root
 // whatever the aspect (the foot iteration above needs a start near P).
 Ball distance_by_multiplier(const Ellipse& e, const Ball& vx, const Ball& vy) {
-    const Arb A;
+    const BallArithmetic A{kOraclePrecision};
     const Ball c = A.q(e.cos_rotation()), s = A.q(e.sin_rotation()), a = A.q(e.a()), b = A.q(e.b());
     const Ball dx = A.sub(vx, A.q(e.xc())), dy = A.sub(vy, A.q(e.yc()));
     const Ball x = A.add(A.mul(c, dx), A.mul(s, dy)), y = A.sub(A.mul(c, dy), A.mul(s, dx));
@@ -117,7 +109,7 @@ Ball distance_by_multiplier(const Ellipse& e, const Ball& vx, const Ball& vy) {
 // Newton for d1(V) = d2(V) = d3(V); returns V and the common distance, or
 // false when it did not converge.
 bool equidistant_point(const std::array<const Ellipse*, 3>& e, Ball& vx, Ball& vy, Ball& radius) {
-    const Arb A;
+    const BallArithmetic A{kOraclePrecision};
     for (int it = 0; it < 60; ++it) {
         const Foot f1 = foot(*e[0], vx, vy), f2 = foot(*e[1], vx, vy), f3 = foot(*e[2], vx, vy);
         const Ball g1 = A.sub(f1.distance, f2.distance), g2 = A.sub(f1.distance, f3.distance);
@@ -161,7 +153,7 @@ Family family(int k) {
 // A unit circle at distance R + 1 + delta above V (a rational point within
 // 2^-100 of it): it meets the open disk iff delta < 0.
 Ellipse query_above(const Ball& vx, const Ball& vy, const Ball& radius, long delta) {
-    const Arb A;
+    const BallArithmetic A{kOraclePrecision};
     const Ball y = A.add(A.add(vy, radius), A.q(Rational(1 + delta)));
     Rational qx, qy, hi;
     Ball x = widened(vx, 0);
@@ -282,7 +274,7 @@ TEST_CASE("huge circles of a needle, a small circle past its side and a far site
                 CHECK(found.found_by != CircleStart::search);
                 // The test's own nearest-point computation from the certified
                 // center: every site at the certified radius.
-                const Ball vx = Arb().mid(found.center_x), vy = Arb().mid(found.center_y);
+                const Ball vx = BallArithmetic::mid(found.center_x), vy = BallArithmetic::mid(found.center_y);
                 for (const Ellipse* e : triple)
                     CHECK(arb_contains(widened(found.radius, 100).get(), distance_by_multiplier(*e, vx, vy).get()));
             }
