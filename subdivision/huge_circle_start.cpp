@@ -23,8 +23,17 @@ constexpr long kMarginBits = 64;
 // ---------------------------------------------------------------- doubles
 
 struct Shape {
-    double a, b, c, s, x, y;  // semi-axes, rotation, center relative to the first site's
+    double a, b, c, s, x, y;  // semi-axes, rotation, center relative to a reference point
 };
+
+// The shape of e with its center relative to origin's, in doubles. Each pair
+// is seen from one of its own sites: a third site far away (10^29 sizes)
+// would round a close pair's relative position away.
+Shape shape_relative_to(const Ellipse& e, const Ellipse& origin) {
+    const auto& k = e.enclosure();
+    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - origin.xc()).to_double(),
+            (e.yc() - origin.yc()).to_double()};
+}
 
 // Support value h(n) = n.C + |(a n.u, b n.v)| and its derivative along the
 // unit circle, h'(phi) = S(n) . n'(phi) with S the support point.
@@ -307,21 +316,16 @@ VoronoiCircleStart start_of(const std::array<ArbSite, 3>& s, const FirstOrderCir
 bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, long min_ratio_bits,
                                 const std::function<bool(const VoronoiCircleStart&)>& try_start) {
     const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
-    std::array<Shape, 3> shapes;
     Rational smallest;
-    for (int m = 0; m < 3; ++m) {
-        const Ellipse& e = *sites[m];
-        const auto& k = e.enclosure();
-        shapes[m] = {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - e1.xc()).to_double(),
-                     (e.yc() - e1.yc()).to_double()};
-        for (const Rational* axis : {&e.a(), &e.b()})
+    for (const Ellipse* e : sites)
+        for (const Rational* axis : {&e->a(), &e->b()})
             if (smallest.is_zero() || *axis < smallest) smallest = *axis;
-    }
     const long size_bits = magnitude(Ball(smallest, 64));
     constexpr int kPairs[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
     for (const auto& pair : kPairs) {
         const int i = pair[0], j = pair[1], k = pair[2];
-        for (double phi0 : bitangent_directions(shapes[i], shapes[j])) {
+        const Ellipse &ei = *sites[i], &ej = *sites[j];
+        for (double phi0 : bitangent_directions(shape_relative_to(ei, ei), shape_relative_to(ej, ei))) {
             // Raise the precision until g is resolved, then to what the
             // circle's size needs.
             for (long prec = kFirstPrecision; prec <= kLastPrecision; prec *= 2) {

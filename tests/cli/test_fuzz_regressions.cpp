@@ -154,6 +154,11 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
          "1 1 0 1000000000000000000200 0\n1 1000000000 0 100000000000000000005 1\n1 1 0 100000000000000000002 6\n"
          "2 1 1/1 030000003 -5\n",
          nullptr},
+        // B8: validation gave up after 45 s (the far site first in the triple).
+        {"B8 far site first",
+         "4 2 0 0 0\n1.5 3025 0 133333333333333333333333333330 10\n4 325 0 10 10\n4 3 -0.2 20 10\n1 1 0 0 0\n"
+         "1.2 0.8 1/5 2075 10.25\n",
+         nullptr},
     };
     for (const Finding& f : findings) {
         INFO(f.what << "\n" << f.text);

@@ -235,12 +235,15 @@ TEST_CASE("huge circles of a close pair and a far circle are certified from the 
             {{Rational(0), Rational(0), Rational(1)}, {Rational(3), Rational(0), Rational(1)}, {Rational(1), -far, Rational(2)}},
             {{Rational(0), Rational(0), Rational(1)}, {Rational(3), Rational(0), Rational(1)}, {far, -far, Rational(1)}},
             {{Rational(0), Rational(0), Rational(1)}, {Rational(3), Rational(1, 2UL), Rational(1)}, {far, Rational(5), Rational(3)}}};
+        // Both orientations, each in its three rotations: the far site first
+        // once made the pair's bitangents round away (a fuzz finding).
+        constexpr int kOrders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
         for (const auto& c : triples) {
-            for (bool swapped : {false, true}) {
-                const Ellipse e1 = c[0].ellipse(), e2 = c[swapped ? 2 : 1].ellipse(), e3 = c[swapped ? 1 : 2].ellipse();
+            for (const auto& order : kOrders) {
+                const apollonius::Circle &c1 = c[order[0]], &c2 = c[order[1]], &c3 = c[order[2]];
+                const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), e3 = c3.ellipse();
                 INFO("k " << k << apollonius::ell({&e1, &e2, &e3}));
-                const apollonius::Result oracle = apollonius::voronoi_circles(
-                    c[0], c[swapped ? 2 : 1], c[swapped ? 1 : 2], 4096);
+                const apollonius::Result oracle = apollonius::voronoi_circles(c1, c2, c3, 4096);
                 REQUIRE(oracle.certain);
                 VoronoiCircleSolver solver(e1, e2, e3);
                 REQUIRE(solver.refine(128) == bool(oracle.ccw()));
@@ -266,7 +269,9 @@ TEST_CASE("huge circles of a needle, a small circle past its side and a far site
             const Ellipse needle(1, power_of_ten(aspect), 0, 5, 1), small = Ellipse::circle(2, 6, 1),
                           far(2, 1, 1, -power_of_ten(k), -5);
             for (const auto& triple : {std::array<const Ellipse*, 3>{&needle, &small, &far},
-                                       std::array<const Ellipse*, 3>{&needle, &far, &small}}) {
+                                       std::array<const Ellipse*, 3>{&far, &needle, &small},
+                                       std::array<const Ellipse*, 3>{&needle, &far, &small},
+                                       std::array<const Ellipse*, 3>{&far, &small, &needle}}) {
                 INFO("aspect 10^" << aspect << " k " << k << apollonius::ell({triple[0], triple[1], triple[2]}));
                 VoronoiCircleSolver solver(*triple[0], *triple[1], *triple[2]);
                 REQUIRE(solver.refine(128));
