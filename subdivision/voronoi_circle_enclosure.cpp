@@ -90,12 +90,14 @@ void VoronoiCircleSolver::set_frame() {
 
 const VoronoiCircleEnclosure& VoronoiCircleSolver::enclosure() const {
     if (frame_.is_identity()) return enclosure_;
-    original_ = enclosure_;
+    if (!original_) original_ = std::make_unique<VoronoiCircleEnclosure>();
+    VoronoiCircleEnclosure& original = *original_;
+    original = enclosure_;
     const long prec = std::max(enclosure_.precision, kStartPrecision);
-    original_.radius = frame_.length_to_original(enclosure_.radius, prec);
-    original_.center_x = frame_.x_to_original(enclosure_.center_x, prec);
-    original_.center_y = frame_.y_to_original(enclosure_.center_y, prec);
-    return original_;
+    original.radius = frame_.length_to_original(enclosure_.radius, prec);
+    original.center_x = frame_.x_to_original(enclosure_.center_x, prec);
+    original.center_y = frame_.y_to_original(enclosure_.center_y, prec);
+    return original;
 }
 
 std::array<const BoundaryChart*, 3> VoronoiCircleSolver::charts() const {

@@ -29,6 +29,7 @@
 #include "subdivision/voronoi_circle_search.hpp"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace ellvor {
@@ -127,7 +128,9 @@ private:
     long magnitude_bits_ = -1;  // site_magnitude_bits, computed on first use
     BallMatrix midpoint_{6, 1};  // exact midpoint of the current box
     VoronoiCircleEnclosure enclosure_;           // in the frame
-    mutable VoronoiCircleEnclosure original_;    // enclosure_ mapped back by enclosure()
+    // enclosure_ mapped back by enclosure(), allocated only for a frame that
+    // is not the identity (one per cached face: keep the solver small).
+    mutable std::unique_ptr<VoronoiCircleEnclosure> original_;
     bool certified_ = false;
 };
 
