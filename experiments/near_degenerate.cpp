@@ -418,6 +418,7 @@ public:
         return timed(kKappa4Infinite, {p2, p3, p4, q},
                      [=](DelaunayTraits& t) { return t.infinite_edge_interior(p2, p3, p4, q, b); });
     }
+    void forget_face(SiteId i, SiteId j, SiteId k) override { inner_.forget_face(i, j, k); }
     const TraitsStats& stats() const override { return inner_.stats(); }
 
 private:

@@ -262,6 +262,8 @@ void DelaunayGraph::retriangulate_conflict_region(ConflictRegion& region, const 
     const std::vector<VertexIndex> hidden = region.hidden_vertices();
     region.check_inner_vertices(boundary, hidden);
     for (VertexIndex h : hidden) hide(site_of(h), region.site());
+    TriangulationPredicates pred = predicates();
+    for (FaceIndex f : region.faces()) pred.forget(f);
     const VertexIndex v = tds_.star_hole(region.site(), boundary, region.faces());
     for (VertexIndex b : bogus) tds_.remove_degree_2(b);
     record_vertex(region.site(), v);

@@ -11,6 +11,13 @@ Sign TriangulationPredicates::incircle(FaceIndex f, SiteId q) {
     return traits_.vertex_conflict(site(F.v[ccw(k)]), site(F.v[cw(k)]), q);
 }
 
+void TriangulationPredicates::forget(FaceIndex f) {
+    const Triangulation::Face& F = tds_.face(f);
+    for (VertexIndex v : F.v)
+        if (is_infinite(v) || site(v) == Triangulation::kBogusSite) return;
+    traits_.forget_face(site(F.v[0]), site(F.v[1]), site(F.v[2]));
+}
+
 bool TriangulationPredicates::edge_interior(Edge e, SiteId q, bool b) {
     const FaceIndex g = tds_.neighbor(e);
     const bool inf_f = tds_.is_infinite_face(e.face), inf_g = tds_.is_infinite_face(g);

@@ -33,6 +33,9 @@ public:
     // at once when q hides one of the edge's sites.
     bool edge_interior(Edge e, SiteId q, bool b);
     ConflictType finite_edge_conflict_type_degenerated(SiteId p1, SiteId p2, SiteId q);
+    // Face f is about to leave the triangulation: the traits may drop its
+    // Voronoi circle (finite faces of real sites only).
+    void forget(FaceIndex f);
 
 private:
     // Edge e with one infinite face beside it: a ray or the whole bisector.

@@ -82,6 +82,11 @@ public:
     // kappa4 on the Voronoi edge of (infinity, p2), between the hull neighbours p3 and p4.
     virtual bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) = 0;
 
+    // The graph no longer has the face of the counter-clockwise triple
+    // (i, j, k): what the traits keep for its Voronoi circle may go (it is
+    // computed again should the triple be asked about later).
+    virtual void forget_face(SiteId i, SiteId j, SiteId k) = 0;
+
     // Which stage decided the calls so far, per predicate.
     virtual const TraitsStats& stats() const = 0;
 

@@ -97,6 +97,8 @@ Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId
     // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
                                           entry.solver.get());
+    // Later calls on this face read the enclosure; the charts can go.
+    entry.solver->release_charts();
     return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", ids({i, j, k, q})));
 }
 

@@ -36,7 +36,11 @@ public:
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override;
     bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
 
+    // Drops the face's cached solver: the cache holds live faces only.
+    void forget_face(SiteId i, SiteId j, SiteId k) override { cache_.erase(i, j, k); }
+
     const TraitsStats& stats() const override { return stats_; }
+    std::size_t cached_circles() const { return cache_.size(); }
 
 private:
     std::vector<Ellipse> sites_;

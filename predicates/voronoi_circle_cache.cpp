@@ -12,11 +12,20 @@ int VoronoiCircleCache::Entry::index_of(SiteId id) const {
     throw Error("VoronoiCircleCache: site " + std::to_string(id) + " is not in this triple");
 }
 
+namespace {
+
+// The rotation of a triple that starts with its smallest id.
+int first_of_rotation(const std::array<SiteId, 3>& ids) {
+    return static_cast<int>(std::min_element(ids.begin(), ids.end()) - ids.begin());
+}
+
+}  // namespace
+
 VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, SiteId j, const Ellipse& ej,
                                                    SiteId k, const Ellipse& ek) {
     std::array<SiteId, 3> ids = {i, j, k};
     std::array<const Ellipse*, 3> sites = {&ei, &ej, &ek};
-    const int first = static_cast<int>(std::min_element(ids.begin(), ids.end()) - ids.begin());
+    const int first = first_of_rotation(ids);
     std::rotate(ids.begin(), ids.begin() + first, ids.end());
     std::rotate(sites.begin(), sites.begin() + first, sites.end());
     auto found = entries_.find(ids);
@@ -27,6 +36,12 @@ VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, S
     ++misses_;
     Entry entry{ids, std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2])};
     return entries_.emplace(ids, std::move(entry)).first->second;
+}
+
+void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) {
+    std::array<SiteId, 3> ids = {i, j, k};
+    std::rotate(ids.begin(), ids.begin() + first_of_rotation(ids), ids.end());
+    entries_.erase(ids);
 }
 
 }  // namespace ellvor

@@ -29,6 +29,9 @@ public:
     // sites, created (not yet certified) on first use.
     Entry& at(SiteId i, const Ellipse& ei, SiteId j, const Ellipse& ej, SiteId k, const Ellipse& ek);
 
+    // Removes the entry of (i, j, k) or of a rotation of it, if any.
+    void erase(SiteId i, SiteId j, SiteId k);
+
     std::size_t size() const { return entries_.size(); }
     std::size_t hits() const { return hits_; }
     std::size_t misses() const { return misses_; }

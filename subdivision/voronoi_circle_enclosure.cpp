@@ -100,7 +100,12 @@ const VoronoiCircleEnclosure& VoronoiCircleSolver::enclosure() const {
     return original;
 }
 
-std::array<const BoundaryChart*, 3> VoronoiCircleSolver::charts() const {
+std::array<const BoundaryChart*, 3> VoronoiCircleSolver::charts() {
+    if (site_charts_.empty()) {
+        site_charts_.reserve(6);
+        for (const Ellipse* e : work_sites_)
+            for (bool f : {false, true}) site_charts_.emplace_back(*e, f);
+    }
     std::array<const BoundaryChart*, 3> out{};
     for (int i = 0; i < 3; ++i) out[i] = &site_charts_[2 * i + (enclosure_.flipped[i] ? 1 : 0)];
     return out;
@@ -287,12 +292,6 @@ bool VoronoiCircleSolver::certify_by_search(const VoronoiCircleSearchOptions& op
 
 void VoronoiCircleSolver::start_at(const std::array<bool, 3>& flipped, const std::array<Ball, 3>& parameter,
                                    const Ball& radius, const Ball& center_x, const Ball& center_y) {
-    // Built on first use: most solvers of a graph's cache are never certified.
-    if (site_charts_.empty()) {
-        site_charts_.reserve(6);
-        for (const Ellipse* e : work_sites_)
-            for (bool f : {false, true}) site_charts_.emplace_back(*e, f);
-    }
     enclosure_ = VoronoiCircleEnclosure{};
     enclosure_.flipped = flipped;
     for (int i = 0; i < 3; ++i) arb_set(midpoint_.at(i, 0), parameter[i].get());
@@ -388,6 +387,10 @@ bool VoronoiCircleSolver::refine(long bits) {
     }
     throw Error("VoronoiCircleSolver: a certified Voronoi circle could not be refined to " + std::to_string(bits) +
                 " bits (internal error)");
+}
+
+void VoronoiCircleSolver::release_charts() {
+    std::vector<BoundaryChart>().swap(site_charts_);
 }
 
 void VoronoiCircleSolver::refine_existing(long bits) {

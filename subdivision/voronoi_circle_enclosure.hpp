@@ -94,6 +94,12 @@ public:
     const SimilarityFrame& frame() const { return frame_; }
     const VoronoiCircleEnclosure& frame_enclosure() const { return enclosure_; }
 
+    // Frees the boundary charts (six of them, about 3 KB of small integer
+    // polynomials), which only a further Newton step or certificate needs;
+    // that rebuilds them. A cache that keeps one solver per face calls this
+    // between uses: the enclosure is what later queries read.
+    void release_charts();
+
 private:
     bool certify_from(const VoronoiCircleGuess& guess);
     // A cheap attempt from the midpoint of a search box: Newton at the box's
@@ -113,8 +119,9 @@ private:
     // One Newton step on the midpoint; returns the step's size in bits below
     // the values (larger = smaller step), or -1 if the Jacobian is singular.
     long newton_step(long prec);
-    // The charts of the current midpoint (enclosure_.flipped).
-    std::array<const BoundaryChart*, 3> charts() const;
+    // The charts of the current midpoint (enclosure_.flipped), built on
+    // first use: most solvers of a graph's cache are never certified.
+    std::array<const BoundaryChart*, 3> charts();
 
     // Chooses the frame and the sites the numerics work on (once).
     void set_frame();

@@ -3,6 +3,7 @@
 // strongest oracle).
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
+#include "sites/site_generators.hpp"
 #include "tests/support/ellipse_graph.hpp"
 #include "util/error.hpp"
 
@@ -294,6 +295,30 @@ TEST_CASE("graph: random ellipses are valid (local and brute force)", "[graph]")
     // Seed 99: 5 of 8 sets validated; 3 hit an undecided kappa3 in the
     // predicate layer (reported with the data, never guessed).
     CHECK(validated >= 5);
+}
+
+TEST_CASE("graph: the traits keep the Voronoi circles of live faces only", "[graph][cache]") {
+    // Each insertion's conflict faces die; their cached solvers go with them
+    // (forget_face), so the cache never exceeds the faces of the graph. It
+    // once kept every triple ever asked about: about 5 per site.
+    for (long nested : {0L, 5L}) {
+        GeneratorOptions o;
+        o.count = 300;
+        o.seed = 17 + static_cast<std::uint64_t>(nested);
+        o.nested_fraction = Rational(nested, 100UL);
+        auto traits = std::make_unique<EllipseDelaunayTraits>(generate_sites(o));
+        const EllipseDelaunayTraits* t = traits.get();
+        DelaunayGraph g(std::move(traits));
+        g.insert_all();
+        INFO("nested " << nested << "%, faces " << g.faces().size() << ", cached " << t->cached_circles()
+                       << ", kappa3 calls " << g.predicate_stats().vertex_conflict4.calls);
+        CHECK(t->cached_circles() > 0);
+        CHECK(t->cached_circles() <= g.faces().size());
+        CHECK(g.predicate_stats().vertex_conflict4.calls > 2 * g.faces().size());
+        if (nested) CHECK(!g.hidden().empty());
+        CHECK(g.validate().empty());
+        CHECK(g.brute_force_check().empty());
+    }
 }
 
 // Circles jittered off a line (degree-2 vertices, nearly collinear Voronoi

@@ -112,6 +112,25 @@ TEST_CASE("cache: cyclic rotations share one entry, the reversed triple does not
     CHECK(!again.solver->certified());  // a fresh entry after clear()
 }
 
+TEST_CASE("cache: erase drops the entry of any rotation and nothing else", "[predicates][cache]") {
+    const SiteId i = 7, j = 3, k = 5;
+    const Ellipse &ei = site(0), &ej = site(1), &ek = site(2);
+    VoronoiCircleCache cache;
+    REQUIRE(cache.at(i, ei, j, ej, k, ek).solver->certify());
+    cache.at(i, ei, k, ek, j, ej);  // the reversed triple: another entry
+    REQUIRE(cache.size() == 2);
+    cache.erase(1, 2, 4);  // no such triple
+    CHECK(cache.size() == 2);
+    cache.erase(k, i, j);  // a rotation of (i, j, k)
+    CHECK(cache.size() == 1);
+    CHECK(&cache.at(j, ej, i, ei, k, ek) == &cache.at(i, ei, k, ek, j, ej));  // the reversed one stayed
+    const std::size_t misses = cache.misses();
+    VoronoiCircleCache::Entry& fresh = cache.at(j, ej, k, ek, i, ei);
+    CHECK(cache.misses() == misses + 1);
+    CHECK(!fresh.solver->certified());  // recomputed on demand
+    CHECK(cache.size() == 2);
+}
+
 TEST_CASE("cache: incircle refines the cached solver once and reuses it", "[predicates][cache]") {
     const Ellipse &e1 = site(0), &e2 = site(1), &e3 = site(2);
     VoronoiCircleCache cache;

@@ -330,6 +330,40 @@ TEST_CASE("Voronoi circle enclosures of random ellipse triples are nested and ta
     CHECK(no_ccw >= 20);
 }
 
+TEST_CASE("Voronoi circle solver: after release_charts a refinement rebuilds them and stays nested",
+          "[subdivision][voronoi_circle_enclosure]") {
+    Rng rng(4242);
+    int done = 0;
+    for (int iter = 0; iter < 400 && done < 20; ++iter) {
+        Ellipse e[3] = {Ellipse(1, 1, 0, 0, 0), Ellipse(1, 1, 0, 0, 0), Ellipse(1, 1, 0, 0, 0)};
+        for (auto& ei : e)
+            ei = Ellipse(rnd_pos(rng, 2, 40, 10), rnd_pos(rng, 2, 40, 10), rnd(rng, -3, 3, 13), rnd(rng, -12, 12, 11),
+                         rnd(rng, -12, 12, 7));
+        if (!bounding_circles_apart(e[0], e[1]) || !bounding_circles_apart(e[0], e[2]) || !bounding_circles_apart(e[1], e[2])) continue;
+        VoronoiCircleSolver released(e[0], e[1], e[2]), kept(e[0], e[1], e[2]);
+        if (!released.certify()) continue;
+        REQUIRE(kept.certify());
+        INFO(apollonius::ell({&e[0], &e[1], &e[2]}));
+        const VoronoiCircleEnclosure low = released.enclosure();
+        released.release_charts();
+        // Reading the enclosure needs no charts; refining rebuilds them.
+        CHECK(released.enclosure().correct_bits() == low.correct_bits());
+        REQUIRE(released.refine(300));
+        REQUIRE(kept.refine(300));
+        const VoronoiCircleEnclosure& high = released.enclosure();
+        CHECK(high.correct_bits() >= 300);
+        CHECK(contains(low.radius, high.radius));
+        CHECK(contains(low.center_x, high.center_x));
+        CHECK(contains(low.center_y, high.center_y));
+        CHECK(arb_overlaps(high.radius.get(), kept.enclosure().radius.get()));
+        released.release_charts();
+        REQUIRE(released.refine(600));
+        CHECK(contains(high.radius, released.enclosure().radius));
+        ++done;
+    }
+    CHECK(done == 20);
+}
+
 // Regression (found by this suite against the tree of 72e9dbf/c32597e, fixed
 // by 978734a "certification escalates precision"):
 //  (a) ellipse triples whose counter-clockwise Voronoi circle exists
