@@ -25,10 +25,10 @@ std::string ids(std::initializer_list<SiteId> list) {
 // decides under the default options; an undecided one is an internal error
 // that value() reports, naming the sites here).
 template <class T>
-T counted(PredicateCount& count, const Decision<T>& d, const char* what, const std::string& sites) {
+T counted(PredicateCount& count, const Decision<T>& d, const char* what, std::initializer_list<SiteId> sites) {
     count.stages.record(d.stage);
     if (!d.is_decided())
-        throw Error(std::string("undecided predicate: ") + what + " of sites (" + sites +
+        throw Error(std::string("undecided predicate: ") + what + " of sites (" + ids(sites) +
                     ") could not be certified (precision " + std::to_string(d.precision) + ", internal error)");
     return *d;
 }
@@ -52,12 +52,17 @@ LocationHint EllipseDelaunayTraits::location_hint(SiteId i) const {
 
 bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     if (p == q) return true;
+    // Most pairs are far apart: decided at once, cheaper than the memo.
+    if (bounding_circles_apart_in_doubles(site(p), site(q))) {
+        ++stats_.is_hidden.calls;
+        stats_.is_hidden.stages.record(Stage::filter);
+        return false;
+    }
     const std::uint64_t key = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint64_t>(q);
     auto found = hidden_memo_.find(key);
     if (found != hidden_memo_.end()) return found->second;
     ++stats_.is_hidden.calls;
-    const RelativePosition r = counted(stats_.is_hidden, relative_position(site(p), site(q)), "relative position",
-                                       ids({p, q}));
+    const RelativePosition r = counted(stats_.is_hidden, relative_position(site(p), site(q)), "relative position", {p, q});
     if (r == RelativePosition::intersecting) throw IntersectingSites(std::min(p, q), std::max(p, q));
     bool q_in_p = false, p_in_q = false;
     switch (r) {
@@ -76,13 +81,13 @@ bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
 Sign EllipseDelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
     ++stats_.side_of_bisector.calls;
     return counted(stats_.side_of_bisector, ellvor::side_of_bisector(site(i), site(j), site(k).center()),
-                   "side of bisector", ids({i, j, k}));
+                   "side of bisector", {i, j, k});
 }
 
 Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
     ++stats_.vertex_conflict3.calls;
     const Sign s = counted(stats_.vertex_conflict3, infinite_vertex_conflict(site(i), site(j), site(q)),
-                           "infinite vertex conflict", ids({i, j, q}));
+                           "infinite vertex conflict", {i, j, q});
     if (s == Sign::zero) throw Error("internal error: infinite vertex conflict returned 0 for sites (" + ids({i, j, q}) + ")");
     return s;
 }
@@ -91,39 +96,39 @@ Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId
     ++stats_.vertex_conflict4.calls;
     // Four circles take the closed form: no solver to cache.
     if (site(i).is_circle() && site(j).is_circle() && site(k).is_circle() && site(q).is_circle())
-        return incircle_sign(counted(stats_.vertex_conflict4, incircle(site(i), site(j), site(k), site(q)), "incircle",
-                                     ids({i, j, k, q})));
+        return incircle_sign(
+            counted(stats_.vertex_conflict4, incircle(site(i), site(j), site(k), site(q)), "incircle", {i, j, k, q}));
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
                                           entry.solver.get());
     // Later calls on this face read the enclosure; the charts can go.
     entry.solver->release_charts();
-    return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", ids({i, j, k, q})));
+    return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", {i, j, k, q}));
 }
 
 bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
     return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b),
-                   "finite edge interior conflict", ids({p1, p2, p3, p4, q}));
+                   "finite edge interior conflict", {p1, p2, p3, p4, q});
 }
 
 bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
     return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b),
-                   "finite edge interior conflict", ids({p1, p2, p3, q}));
+                   "finite edge interior conflict", {p1, p2, p3, q});
 }
 
 bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) {
     ++stats_.finite_edge.calls;
     return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(q), b),
-                   "finite edge interior conflict", ids({p1, p2, q}));
+                   "finite edge interior conflict", {p1, p2, q});
 }
 
 bool EllipseDelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
     ++stats_.infinite_edge.calls;
     return counted(stats_.infinite_edge, infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b),
-                   "infinite edge interior conflict", ids({p2, p3, p4, q}));
+                   "infinite edge interior conflict", {p2, p3, p4, q});
 }
 
 }  // namespace ellvor

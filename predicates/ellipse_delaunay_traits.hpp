@@ -1,6 +1,6 @@
 // The Delaunay traits of ellipse sites: the model of DelaunayTraits that the
 // graph is built with. It owns the sites, the certified Voronoi circles of the
-// triples asked about (one solver per triple, reused by every kappa3 call on
+// faces asked about (one solver per triple, reused by every kappa3 call on
 // it), the memo of relative positions and the stage counters.
 #pragma once
 

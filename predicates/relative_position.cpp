@@ -2,9 +2,11 @@
 
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
+#include "util/interval.hpp"
 
 
 #include <algorithm>
+#include <cmath>
 
 namespace ellvor {
 
@@ -58,7 +60,7 @@ int side_of_boundary(const IntPolynomial& quartic) {
 }
 
 // Exact filter: the circumscribed circles (radius max(a, b)) are apart.
-bool bounding_circles_apart(const Ellipse& e1, const Ellipse& e2) {
+bool bounding_circles_apart_exactly(const Ellipse& e1, const Ellipse& e2) {
     const Rational r = std::max(e1.a(), e1.b()) + std::max(e2.a(), e2.b());
     const Rational dx = e1.xc() - e2.xc(), dy = e1.yc() - e2.yc();
     return dx * dx + dy * dy > r * r;
@@ -66,9 +68,18 @@ bool bounding_circles_apart(const Ellipse& e1, const Ellipse& e2) {
 
 }  // namespace
 
+bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2) {
+    const Ellipse::Enclosure &k1 = e1.enclosure(), &k2 = e2.enclosure();
+    const Interval dx = k1.xc - k2.xc, dy = k1.yc - k2.yc;
+    const Interval r = Interval(std::fmax(k1.a.hi, k1.b.hi)) + Interval(std::fmax(k2.a.hi, k2.b.hi));
+    const Interval gap = dx.square() + dy.square() - r.square();
+    return gap.finite() && gap.positive();
+}
+
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2) {
     auto exactly = [](RelativePosition p) { return Decision<RelativePosition>::decided(p, Stage::exact); };
-    if (bounding_circles_apart(e1, e2)) return Decision<RelativePosition>::decided(RelativePosition::separated, Stage::filter);
+    if (bounding_circles_apart_in_doubles(e1, e2) || bounding_circles_apart_exactly(e1, e2))
+        return Decision<RelativePosition>::decided(RelativePosition::separated, Stage::filter);
     const IntPolynomial i12 = intersection_quartic(e1, e2);
     if (i12.is_zero()) return exactly(RelativePosition::identical);
     const ContactPoints contact = contact_points(i12);

@@ -25,6 +25,11 @@ const char* relative_position_name(RelativePosition p);
 // intersection quartic).
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2);
 
+// The filter's first step alone: the circumscribed circles (radius max(a, b))
+// are apart, proved in outward-rounded doubles. False when the doubles cannot
+// tell; then relative_position decides. Cheaper than any memo lookup.
+bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2);
+
 // CGAL's Is_hidden(p, q): q lies inside p, internal tangency and identical
 // sites included.
 bool is_hidden(const Ellipse& p, const Ellipse& q);

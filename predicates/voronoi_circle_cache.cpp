@@ -12,15 +12,6 @@ int VoronoiCircleCache::Entry::index_of(SiteId id) const {
     throw Error("VoronoiCircleCache: site " + std::to_string(id) + " is not in this triple");
 }
 
-namespace {
-
-// The rotation of a triple that starts with its smallest id.
-int first_of_rotation(const std::array<SiteId, 3>& ids) {
-    return static_cast<int>(std::min_element(ids.begin(), ids.end()) - ids.begin());
-}
-
-}  // namespace
-
 VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, SiteId j, const Ellipse& ej,
                                                    SiteId k, const Ellipse& ek) {
     std::array<SiteId, 3> ids = {i, j, k};
@@ -38,10 +29,6 @@ VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, S
     return entries_.emplace(ids, std::move(entry)).first->second;
 }
 
-void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) {
-    std::array<SiteId, 3> ids = {i, j, k};
-    std::rotate(ids.begin(), ids.begin() + first_of_rotation(ids), ids.end());
-    entries_.erase(ids);
-}
+void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) { entries_.erase(triple_key(i, j, k)); }
 
 }  // namespace ellvor

@@ -189,3 +189,36 @@ TEST_CASE("relative position is symmetric and invariant under a quarter turn of 
         CHECK(*relative_position(turn(e1), turn(e2)) == p);
     }
 }
+
+TEST_CASE("bounding circles apart in doubles: never claims a pair whose exact test fails, decides far pairs",
+          "[predicates][relative_position]") {
+    // Pairs near the boundary of the test (gap of the bounding circles from
+    // -1e-9 to +1e-9 relative, and exactly 0: tangent bounding circles) and
+    // far apart, at several scales, against the exact rational comparison.
+    std::mt19937_64 rng(5150);
+    std::uniform_int_distribution<long> small(1, 1000), sign(0, 1);
+    int decided = 0, far = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const Rational scale = n % 3 == 0 ? q(1) : n % 3 == 1 ? q(1, 1UL << 40) : q(1L << 40);
+        const Rational a1 = q(small(rng), 7) * scale, b1 = q(small(rng), 9) * scale, a2 = q(small(rng), 5) * scale;
+        const Rational reach = std::max(a1, b1) + a2;
+        // The second center on the x axis at reach (1 + eps), eps in {-1e-9, 0, 1e-9} or far.
+        const int kind = static_cast<int>(rng() % 4);
+        const Rational eps = kind == 0 ? q(-1, 1000000000) : kind == 1 ? q(0) : kind == 2 ? q(1, 1000000000) : q(small(rng));
+        const Rational dx = reach * (q(1) + eps) * (sign(rng) ? q(1) : q(-1));
+        const Ellipse e1(a1, b1, q(small(rng), 1000), q(small(rng)), q(-small(rng))), e2 = Ellipse::circle(e1.xc() + dx, e1.yc(), a2);
+        const Rational r = std::max(e1.a(), e1.b()) + e2.a(), ddx = e1.xc() - e2.xc(), ddy = e1.yc() - e2.yc();
+        const bool apart_exactly = ddx * ddx + ddy * ddy > r * r;
+        const bool apart_in_doubles = bounding_circles_apart_in_doubles(e1, e2);
+        INFO(oracle::ell({&e1, &e2}) << " kind " << kind);
+        if (apart_in_doubles) CHECK(apart_exactly);
+        CHECK(bounding_circles_apart_in_doubles(e2, e1) == apart_in_doubles);
+        decided += apart_in_doubles;
+        if (kind == 3) {
+            ++far;
+            CHECK(apart_in_doubles);
+        }
+    }
+    CHECK(far > 500);
+    CHECK(decided >= far);
+}
