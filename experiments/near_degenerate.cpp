@@ -31,6 +31,7 @@
 // Every anomaly -- a wrong or undecided answer, an exception, an invalid graph,
 // a broken construction -- is printed as "ANOMALY: ..." with a replayable .ell
 // snippet and makes the program exit with status 1.
+#include "experiments/peak_memory.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "graph/triangulation_index.hpp"
@@ -576,63 +577,6 @@ CgalRun run_cgal(const CgalInput& in, int runs) {
     r.edges = r.edge_list.size();
     for (auto f = ag->finite_faces_begin(); f != ag->finite_faces_end(); ++f) ++r.faces;
     return r;
-}
-
-// ------------------------------------------------------------ peak memory --
-
-long status_kb(const char* field) {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    const std::size_t n = std::strlen(field);
-    while (std::getline(in, line))
-        if (line.compare(0, n, field) == 0 && line.size() > n && line[n] == ':') return std::stol(line.substr(n + 1));
-    return -1;
-}
-
-struct PeakMemory {
-    long start_kb = -1, peak_kb = -1;  // the child's VmRSS before the build, its VmHWM after
-    std::string error;
-};
-
-// Runs `build` once in a forked child and reads the child's own high-water
-// mark, so that the peaks of different builds are not mixed (a child's VmHWM
-// starts at its RSS at the fork, not at the parent's peak).
-template <class F>
-PeakMemory peak_memory_in_child(F&& build) {
-    PeakMemory m;
-    int fd[2];
-    if (pipe(fd) != 0) return {-1, -1, "pipe failed"};
-    std::cout.flush();
-    std::cerr.flush();
-    const pid_t pid = fork();
-    if (pid < 0) {
-        close(fd[0]);
-        close(fd[1]);
-        return {-1, -1, "fork failed"};
-    }
-    if (pid == 0) {
-        close(fd[0]);
-        long out[2] = {status_kb("VmRSS"), -1};
-        int status = 0;
-        try {
-            build();
-            out[1] = status_kb("VmHWM");
-        } catch (...) {
-            status = 1;
-        }
-        if (write(fd[1], out, sizeof out) != static_cast<ssize_t>(sizeof out)) status = 1;
-        _exit(status);
-    }
-    close(fd[1]);
-    long in[2] = {-1, -1};
-    const bool got = read(fd[0], in, sizeof in) == static_cast<ssize_t>(sizeof in);
-    close(fd[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!got || !WIFEXITED(status) || WEXITSTATUS(status) != 0) m.error = "child failed";
-    m.start_kb = in[0];
-    m.peak_kb = in[1];
-    return m;
 }
 
 // ---------------------------------------------------------------- InCircle --

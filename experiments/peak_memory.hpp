@@ -1,0 +1,71 @@
+// Peak memory of one piece of work, measured in a forked child: the child's
+// own high-water mark (VmHWM) after the work, against its RSS at the fork
+// (inherited from the parent, which is the baseline).
+#pragma once
+
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace ellvor::experiments {
+
+inline long status_kb(const char* field) {
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    const std::size_t n = std::strlen(field);
+    while (std::getline(in, line))
+        if (line.compare(0, n, field) == 0 && line.size() > n && line[n] == ':') return std::stol(line.substr(n + 1));
+    return -1;
+}
+
+struct PeakMemory {
+    long start_kb = -1, peak_kb = -1;  // the child's VmRSS before the build, its VmHWM after
+    std::string error;
+};
+
+// Runs `build` once in a forked child and reads the child's own high-water
+// mark, so that the peaks of different builds are not mixed (a child's VmHWM
+// starts at its RSS at the fork, not at the parent's peak).
+template <class F>
+PeakMemory peak_memory_in_child(F&& build) {
+    PeakMemory m;
+    int fd[2];
+    if (pipe(fd) != 0) return {-1, -1, "pipe failed"};
+    std::cout.flush();
+    std::cerr.flush();
+    const pid_t pid = fork();
+    if (pid < 0) {
+        close(fd[0]);
+        close(fd[1]);
+        return {-1, -1, "fork failed"};
+    }
+    if (pid == 0) {
+        close(fd[0]);
+        long out[2] = {status_kb("VmRSS"), -1};
+        int status = 0;
+        try {
+            build();
+            out[1] = status_kb("VmHWM");
+        } catch (...) {
+            status = 1;
+        }
+        if (write(fd[1], out, sizeof out) != static_cast<ssize_t>(sizeof out)) status = 1;
+        _exit(status);
+    }
+    close(fd[1]);
+    long in[2] = {-1, -1};
+    const bool got = read(fd[0], in, sizeof in) == static_cast<ssize_t>(sizeof in);
+    close(fd[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!got || !WIFEXITED(status) || WEXITSTATUS(status) != 0) m.error = "child failed";
+    m.start_kb = in[0];
+    m.peak_kb = in[1];
+    return m;
+}
+
+}  // namespace ellvor::experiments
