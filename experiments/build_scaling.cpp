@@ -19,7 +19,8 @@
 // Times: wall and CPU time of the build only (site generation and checks
 // excluded); below 0.3 s a build is repeated (median, at most 20 runs).
 // Peak memory, for n >= 1000: one more build of ellipses, of circles and of
-// CGAL's hierarchy, each in a forked child (peak_memory.hpp).
+// CGAL's hierarchy, each in a forked child (peak_memory.hpp), before any other
+// work of the program.
 //
 //   build/experiments/build_scaling                       # default (make bench): n <= 1000, stdout only
 //   build/experiments/build_scaling --full --out experiments/results
@@ -322,6 +323,28 @@ int main(int argc, char** argv) {
     const std::vector<std::string> sets = {"ellipses", "ellipses-nest10", "circles"};
 
     const std::string load_before = loadavg();
+    // Peak memory first, before this program has built anything: each build in
+    // its own child, which generates its sites and then builds.
+    std::map<std::pair<std::string, long>, PeakMemory> memory;
+    for (long n : ns) {
+        if (n < 1000) continue;
+        for (const std::string set : {"ellipses", "circles"}) {
+            std::vector<Ellipse> sites;
+            memory[{set == "circles" ? "ellvor-circles" : set, n}] = peak_memory_in_child(
+                [&] { sites = make_sites(set, n); },
+                [&] {
+                    DelaunayGraph g(std::make_unique<EllipseDelaunayTraits>(sites));
+                    g.insert_all();
+                });
+        }
+        std::vector<AG::Site_2> input;
+        memory[{"cgal-hierarchy", n}] = peak_memory_in_child([&] { input = cgal_sites(make_sites("circles", n)); },
+                                                             [&] {
+                                                                 AGH ag;
+                                                                 ag.insert(input.begin(), input.end());
+                                                             });
+        std::cerr << "[build_scaling] peak memory measured, n = " << n << "\n";
+    }
     std::vector<Row> rows;
     int anomalies = 0;
     for (long n : ns) {
@@ -338,11 +361,7 @@ int main(int argc, char** argv) {
             Summary mine;
             Row r = run_ellvor(set, label, sites, set == "circles" ? &mine : nullptr, anomalies);
             if (n >= 100) r.kappa1_us = 1e6 * kappa1_seconds(sites);
-            if (n >= 1000 && set != "ellipses-nest10")
-                r.memory = peak_memory_in_child([&] {
-                    DelaunayGraph g(std::make_unique<EllipseDelaunayTraits>(sites));
-                    g.insert_all();
-                });
+            if (memory.count({label, n})) r.memory = memory.at({label, n});
             std::cerr << "[build_scaling] " << label << " n = " << n << ": " << fmt("%.4f", r.seconds) << " s wall, "
                       << fmt("%.4f", r.cpu_seconds) << " s cpu (" << r.reps << " runs), " << r.edges << " edges, "
                       << r.hidden << " hidden, validate " << r.validate << ", brute force " << r.brute << "\n";
@@ -367,13 +386,7 @@ int main(int argc, char** argv) {
                             ++anomalies;
                         }
                     }
-                    if (n >= 1000 && hierarchy) {
-                        const std::vector<AG::Site_2> input = cgal_sites(sites);
-                        c.memory = peak_memory_in_child([&] {
-                            AGH ag;
-                            ag.insert(input.begin(), input.end());
-                        });
-                    }
+                    if (memory.count({c.set, n})) c.memory = memory.at({c.set, n});
                     std::cerr << "[build_scaling] " << c.set << " n = " << n << ": " << fmt("%.5f", c.seconds)
                               << " s wall, " << fmt("%.5f", c.cpu_seconds) << " s cpu (" << c.reps
                               << " runs); ellvor / CGAL (cpu) = " << fmt("%.1f", r.cpu_seconds / c.cpu_seconds)
@@ -466,9 +479,10 @@ int main(int argc, char** argv) {
     }
     md << "\nCPU seconds, wall seconds in parentheses; ratios on CPU time.\n\n";
 
-    md << "## Peak memory\n\nOne more build each, in a child forked from this program; the growth of the child's "
-          "resident memory over the build (VmHWM after it minus VmRSS at the fork). ellvor's includes its traits' "
-          "copy of the sites; CGAL's, its graph (the input vector of double circles is built before the fork).\n\n"
+    md << "## Peak memory\n\nOne more build each, in a child forked from this program before it builds anything "
+          "else; the child generates its sites, then builds. The growth of the child's resident memory over the "
+          "build (VmHWM after it minus VmRSS before it). ellvor's includes its traits' copy of the sites; CGAL's is "
+          "its graph (the vector of double circles is made before).\n\n"
           "| n | ellipses (MB) | per site (KB) | ellvor circles (MB) | CGAL hierarchy (MB) | ellvor / hierarchy |\n"
           "|---:|---:|---:|---:|---:|---:|\n";
     for (long n : ns) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <utility>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,11 +28,13 @@ struct PeakMemory {
     std::string error;
 };
 
-// Runs `build` once in a forked child and reads the child's own high-water
-// mark, so that the peaks of different builds are not mixed (a child's VmHWM
-// starts at its RSS at the fork, not at the parent's peak).
-template <class F>
-PeakMemory peak_memory_in_child(F&& build) {
+// Runs `prepare` (its input, not measured) and then `build` once in a forked
+// child and reads the child's own high-water mark, so that the peaks of
+// different builds are not mixed (a child's VmHWM starts at its RSS at the
+// fork, not at the parent's peak). Fork before the parent has done large work:
+// the child reuses memory the parent freed but still holds, which hides growth.
+template <class Prepare, class F>
+PeakMemory peak_memory_in_child(Prepare&& prepare, F&& build) {
     PeakMemory m;
     int fd[2];
     if (pipe(fd) != 0) return {-1, -1, "pipe failed"};
@@ -45,9 +48,11 @@ PeakMemory peak_memory_in_child(F&& build) {
     }
     if (pid == 0) {
         close(fd[0]);
-        long out[2] = {status_kb("VmRSS"), -1};
+        long out[2] = {-1, -1};
         int status = 0;
         try {
+            prepare();
+            out[0] = status_kb("VmRSS");
             build();
             out[1] = status_kb("VmHWM");
         } catch (...) {
@@ -66,6 +71,11 @@ PeakMemory peak_memory_in_child(F&& build) {
     m.start_kb = in[0];
     m.peak_kb = in[1];
     return m;
+}
+
+template <class F>
+PeakMemory peak_memory_in_child(F&& build) {
+    return peak_memory_in_child([] {}, std::forward<F>(build));
 }
 
 }  // namespace ellvor::experiments
