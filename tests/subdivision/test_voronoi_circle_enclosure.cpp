@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <vector>
 
 using namespace ellvor;
 
@@ -39,6 +40,16 @@ bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 using ellvor::test::bounding_circles_apart;
 
 bool contains(const Ball& big, const Ball& small) { return arb_contains(big.get(), small.get()) != 0; }
+
+// Three random ellipses (semi-axes 1/5 .. 4, centers within 12 of the
+// origin) into e; false when their bounding circles are not pairwise apart.
+bool random_separated_triple(Rng& rng, std::vector<Ellipse>& e) {
+    e.clear();
+    for (int i = 0; i < 3; ++i)
+        e.push_back(Ellipse(rnd_pos(rng, 2, 40, 10), rnd_pos(rng, 2, 40, 10), rnd(rng, -3, 3, 13), rnd(rng, -12, 12, 11),
+                            rnd(rng, -12, 12, 7)));
+    return bounding_circles_apart(e[0], e[1]) && bounding_circles_apart(e[0], e[2]) && bounding_circles_apart(e[1], e[2]);
+}
 
 std::string show(const VoronoiCircleEnclosure& e) {
     return "center_x " + e.center_x.str(25) + "\ncenter_y " + e.center_y.str(25) + "\nradius " + e.radius.str(25) +
@@ -247,14 +258,11 @@ TEST_CASE("Voronoi circle of a mirror-symmetric ellipse triple is centered on th
 TEST_CASE("Voronoi circle enclosures of random ellipse triples are nested and tangent",
           "[subdivision][voronoi_circle_enclosure]") {
     Rng rng(9001);
+    std::vector<Ellipse> e;
     int certified = 0, refused = 0, no_ccw = 0, skipped_ipoint = 0;
     const long prec = 1000;
     for (int iter = 0; iter < 1500 && certified < 110; ++iter) {
-        Ellipse e[3] = {Ellipse(1, 1, 0, 0, 0), Ellipse(1, 1, 0, 0, 0), Ellipse(1, 1, 0, 0, 0)};
-        for (auto& ei : e)
-            ei = Ellipse(rnd_pos(rng, 2, 40, 10), rnd_pos(rng, 2, 40, 10), rnd(rng, -3, 3, 13), rnd(rng, -12, 12, 11),
-                         rnd(rng, -12, 12, 7));
-        if (!bounding_circles_apart(e[0], e[1]) || !bounding_circles_apart(e[0], e[2]) || !bounding_circles_apart(e[1], e[2])) continue;
+        if (!random_separated_triple(rng, e)) continue;
         INFO(apollonius::ell({&e[0], &e[1], &e[2]}));
         const VoronoiCircles count = *voronoi_circle_count(e[0], e[1], e[2]);
         INFO("count " << voronoi_circles_name(count));
@@ -333,13 +341,10 @@ TEST_CASE("Voronoi circle enclosures of random ellipse triples are nested and ta
 TEST_CASE("Voronoi circle solver: after release_charts a refinement rebuilds them and stays nested",
           "[subdivision][voronoi_circle_enclosure]") {
     Rng rng(4242);
+    std::vector<Ellipse> e;
     int done = 0;
     for (int iter = 0; iter < 400 && done < 20; ++iter) {
-        Ellipse e[3] = {Ellipse(1, 1, 0, 0, 0), Ellipse(1, 1, 0, 0, 0), Ellipse(1, 1, 0, 0, 0)};
-        for (auto& ei : e)
-            ei = Ellipse(rnd_pos(rng, 2, 40, 10), rnd_pos(rng, 2, 40, 10), rnd(rng, -3, 3, 13), rnd(rng, -12, 12, 11),
-                         rnd(rng, -12, 12, 7));
-        if (!bounding_circles_apart(e[0], e[1]) || !bounding_circles_apart(e[0], e[2]) || !bounding_circles_apart(e[1], e[2])) continue;
+        if (!random_separated_triple(rng, e)) continue;
         VoronoiCircleSolver released(e[0], e[1], e[2]), kept(e[0], e[1], e[2]);
         if (!released.certify()) continue;
         REQUIRE(kept.certify());
