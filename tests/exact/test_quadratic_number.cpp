@@ -62,6 +62,22 @@ std::string show(const Rational& a, const Rational& b, const Rational& d) {
     return a.str() + " + (" + b.str() + ") sqrt(" + d.str() + ")";
 }
 
+// An exact sign against its Arb enclosure: an exact zero must give 0 and lie
+// in the ball; otherwise, where the ball has a sign, the same sign (counted in
+// `decided`). False for an exact zero: nothing more to check.
+bool check_against_ball(int got, const Ball& want, bool exact_zero, int& decided) {
+    if (exact_zero) {
+        CHECK(got == 0);
+        CHECK(arb_contains_zero(want.get()));
+        return false;
+    }
+    if (const int s = want.certain_sign()) {
+        ++decided;
+        CHECK(got == s);
+    }
+    return true;
+}
+
 }  // namespace
 
 TEST_CASE("quadratic number: sign of a + b sqrt(d) agrees with Arb on random operands",
@@ -93,15 +109,7 @@ TEST_CASE("quadratic number: sign of a + b sqrt(d) agrees with Arb on random ope
         INFO(show(a, b, d));
         const int got = sign_of_quadratic(a, b, d);
         const Ball want = ball(a, b, d);
-        if (i % 5 == 2) {
-            CHECK(got == 0);
-            CHECK(arb_contains_zero(want.get()));
-            continue;
-        }
-        if (const int s = want.certain_sign()) {
-            ++decided;
-            CHECK(got == s);
-        }
+        if (!check_against_ball(got, want, i % 5 == 2, decided)) continue;
         // The integer version on integer operands (numerators) agrees with the rational one.
         const Integer ia = a.numerator(), ib = b.numerator(), id = d.numerator();
         CHECK(sign_of_quadratic(ia, ib, id) == sign_of_quadratic(Rational(ia), Rational(ib), Rational(id)));
@@ -166,15 +174,7 @@ TEST_CASE("quadratic number: sign of x + y sqrt(d1) + z sqrt(d2) agrees with Arb
         const int got = sign_of_two_roots(x, y, d1, z, d2);
         Ball want = ball(x, y, d1), part = ball(Rational(0), z, d2);
         arb_add(want.get(), want.get(), part.get(), kPrec);
-        if (exact_zero) {
-            CHECK(got == 0);
-            CHECK(arb_contains_zero(want.get()));
-            continue;
-        }
-        if (const int s = want.certain_sign()) {
-            ++decided;
-            CHECK(got == s);
-        }
+        if (!check_against_ball(got, want, exact_zero, decided)) continue;
         // compare() is the same sign.
         CHECK(compare(QuadraticNumber(x, y, d1), QuadraticNumber(Rational(0), -z, d2)) == got);
         // The integer version on integer operands (numerators) agrees with the rational one.
@@ -223,14 +223,7 @@ TEST_CASE("quadratic number: sign of a + b sqrt(d1) + c sqrt(d2) + e sqrt(d1 d2)
         arb_mul(t.get(), r1.get(), r2.get(), kPrec);
         arb_mul(t.get(), t.get(), Ball(Rational(e), kPrec).get(), kPrec);
         arb_add(want.get(), want.get(), t.get(), kPrec);
-        if (exact_zero) {
-            CHECK(got == 0);
-            continue;
-        }
-        if (const int sgn = want.certain_sign()) {
-            ++decided;
-            CHECK(got == sgn);
-        }
+        check_against_ball(got, want, exact_zero, decided);
     }
     CHECK(decided > 2000);
 }
