@@ -19,6 +19,7 @@ public:
     explicit EllipseDelaunayTraits(std::vector<Ellipse> sites);
 
     const Ellipse& site(SiteId i) const { return sites_.at(i); }
+    const std::vector<Ellipse>& sites() const { return sites_; }
 
     std::size_t size() const override { return sites_.size(); }
     // The weight is the area (up to the factor pi): a b.
