@@ -50,13 +50,15 @@ int run(const std::vector<std::string>& args) {
     const auto& s = file.sites;
 
     const auto start = std::chrono::steady_clock::now();
-    VoronoiCircleSolver solver(s[0], s[1], s[2]);
-    const Decision<InCircle> d = incircle(s[0], s[1], s[2], s[3], options, &solver);
+    VoronoiCircle circle(s[0], s[1], s[2]);
+    const Decision<InCircle> d = incircle(s[0], s[1], s[2], s[3], options, &circle);
+    // Arb Newton steps: none when the double-interval stage decided.
+    const long newton_steps = circle.has_solver() ? circle.solver().enclosure().newton_steps : 0;
     const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     if (parsed.has("--json")) {
         nlohmann::json j = {{"result", incircle_name(*d)}, {"sign", to_int(incircle_sign(*d))},
                             {"stage", stage_name(d.stage)}, {"precision", d.precision},
-                            {"newton_steps", solver.enclosure().newton_steps}, {"time_us", us}};
+                            {"newton_steps", newton_steps}, {"time_us", us}};
         std::cout << j.dump() << "\n";
     } else {
         std::cout << incircle_name(*d) << "\n";

@@ -99,11 +99,11 @@ Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId
         return incircle_sign(
             counted(stats_.vertex_conflict4, incircle(site(i), site(j), site(k), site(q)), "incircle", {i, j, k, q}));
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
-    // The cached solver is the circle of the rotated triple entry.ids: ask in that order.
+    // The cached circle is that of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
-                                          entry.solver.get());
-    // Later calls on this face read the enclosure; the charts can go.
-    entry.solver->release_charts();
+                                          &entry.circle);
+    // Later calls on this face read the enclosures; the charts can go.
+    entry.circle.release_charts();
     return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", {i, j, k, q}));
 }
 

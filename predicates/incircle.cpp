@@ -43,12 +43,12 @@ Sign incircle_sign(InCircle r) {
 namespace {
 
 // d(V, Q) - rho with double intervals (the filter): -1, +1, or 0.
-int filtered_distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q) {
-    const LocalPoint v = to_local(q, enclose(c.center_x), enclose(c.center_y));
+int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q) {
+    const LocalPoint v = to_local(q, center_x, center_y);
     const int side = filtered_side(v);
     if (side < 0) return -1;  // the center is inside Q
     if (side == 0) return 0;
-    const Interval distance = outside_distance_bounds(v), radius = enclose(c.radius);
+    const Interval distance = outside_distance_bounds(v);
     if (distance.lo > radius.hi) return 1;
     if (distance.hi < radius.lo) return -1;
     return 0;
@@ -78,7 +78,8 @@ int center_near_boundary(const VoronoiCircleEnclosure& c, const Ellipse& q, long
 
 // d(V, Q) - rho at precision prec: -1, +1, or 0 when undecided.
 int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, long prec) {
-    if (int s = filtered_distance_minus_radius(c, q)) return s;
+    if (int s = filtered_distance_minus_radius(enclose(c.center_x), enclose(c.center_y), enclose(c.radius), q))
+        return s;
     const int side = certified_side(q, c.center_x, c.center_y, prec);
     if (side < 0) return -1;  // the center is inside Q
     if (side == 0) return center_near_boundary(c, q, prec);
@@ -120,28 +121,37 @@ Decision<InCircle> circle_incircle_exactly(const Ellipse& e1, const Ellipse& e2,
 }  // namespace
 
 Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
-                            const InCircleOptions& options, VoronoiCircleSolver* solver) {
+                            const InCircleOptions& options, VoronoiCircle* circle) {
     if (options.use_filter) {
         const Decision<InCircle> filtered = circle_incircle_filter(e1, e2, e3, q);
         if (filtered.is_decided()) return filtered;
     }
     if (options.use_circle_closed_form && e1.is_circle() && e2.is_circle() && e3.is_circle() && q.is_circle())
         return circle_incircle_exactly(e1, e2, e3, q);
-    const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
-    if (*count == VoronoiCircles::none || *count == VoronoiCircles::cw_only) return count.with(InCircle::no_circle);
-    std::unique_ptr<VoronoiCircleSolver> own;
-    if (!solver) {
-        own = std::make_unique<VoronoiCircleSolver>(e1, e2, e3);
-        solver = own.get();
+    std::unique_ptr<VoronoiCircle> own;
+    if (!circle) {
+        own = std::make_unique<VoronoiCircle>(e1, e2, e3);
+        circle = own.get();
     }
+    // The double-interval stage: a certified circle also proves that it exists.
+    const DoubleVoronoiCircle* in_doubles = options.use_filter ? circle->in_doubles() : nullptr;
+    if (in_doubles) {
+        const int s = filtered_distance_minus_radius(in_doubles->center_x, in_doubles->center_y, in_doubles->radius, q);
+        if (s) return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : InCircle::no_conflict, Stage::filter);
+    } else {
+        const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
+        if (*count == VoronoiCircles::none || *count == VoronoiCircles::cw_only) return count.with(InCircle::no_circle);
+    }
+    VoronoiCircleSolver* solver = &circle->solver();
     // Q in the solver's frame (similarity_frame.hpp), made once the solver
     // has chosen it.
     std::optional<Ellipse> framed_q;
     const Decision<Sign> gap = refine_then_exact(
         "incircle", options.refinement,
         [&](long prec) {
-            // The count said the circle exists: certification is complete,
-            // so "no circle" here would be an internal contradiction (thrown).
+            // The count (or the double certificate) said the circle exists:
+            // certification is complete, so "no circle" here would be an
+            // internal contradiction (thrown).
             solver->refine_existing(std::max(prec - precision::kEnclosureGuard, 1L));
             if (solver->frame().is_identity()) return distance_minus_radius(solver->enclosure(), q, prec);
             if (!framed_q) framed_q = solver->frame().apply(q);

@@ -7,7 +7,7 @@
 #include "predicates/stage.hpp"
 #include "predicates/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
-#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle.hpp"
 
 namespace ellvor {
 
@@ -24,22 +24,25 @@ Sign incircle_sign(InCircle r);
 
 struct InCircleOptions {
     RefinementOptions refinement;  // the subdivision stage's cap; exact_stage = false stops there undecided
-    bool use_filter = true;        // false: skip the closed-form filter for four circles
+    bool use_filter = true;        // false: skip the double-interval filters
     bool use_circle_closed_form = true;  // false: four circles take the general path (tests compare the two)
 };
 
 // The cascade: for four circles, a closed-form filter in double intervals
 // (circle_incircle_filter.hpp), then the closed form exactly in Q(sqrt D)
-// (circle_predicates.hpp). Otherwise: the existence of the counter-clockwise
-// circle from three kappa2 signs; then the certified enclosure of the circle
-// (center V, radius rho) and the distance d(V, Q) -- double intervals first,
-// then Arb -- compared with rho at doubling precision, past the cap the exact
-// stage (staged_refinement.hpp): Q is tangent iff the circle is also a
-// Voronoi circle of (E1, E2, Q) or (E1, Q, E2) touching E1 at the same point
-// (voronoi_vertex_equality.hpp). Undecided only with exact_stage = false.
-// `solver`, when given, is the cached solver of (E1, E2, E3) and is refined in
-// place (see VoronoiCircleCache); its enclosure tells the Newton steps spent.
+// (circle_predicates.hpp). Otherwise the filter is the circle certified in
+// double intervals (voronoi_circle_in_doubles.hpp) and the distance d(V, Q)
+// in double intervals. When that does not decide: the existence of the
+// counter-clockwise circle (certified by the doubles, or from three kappa2
+// signs); then the Arb enclosure of the circle (center V, radius rho) and
+// the distance d(V, Q) compared with rho at doubling precision, past the cap
+// the exact stage (staged_refinement.hpp): Q is tangent iff the circle is
+// also a Voronoi circle of (E1, E2, Q) or (E1, Q, E2) touching E1 at the same
+// point (voronoi_vertex_equality.hpp). Undecided only with exact_stage = false.
+// `circle`, when given, is the cached circle of (E1, E2, E3) (see
+// VoronoiCircleCache): its double certificate is made once, its solver
+// refined in place.
 Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
-                            const InCircleOptions& options = {}, VoronoiCircleSolver* solver = nullptr);
+                            const InCircleOptions& options = {}, VoronoiCircle* circle = nullptr);
 
 }  // namespace ellvor

@@ -25,8 +25,7 @@ VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, S
         return found->second;
     }
     ++misses_;
-    Entry entry{ids, std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2])};
-    return entries_.emplace(ids, std::move(entry)).first->second;
+    return entries_.emplace(ids, Entry{ids, VoronoiCircle(*sites[0], *sites[1], *sites[2])}).first->second;
 }
 
 void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) { entries_.erase(triple_key(i, j, k)); }

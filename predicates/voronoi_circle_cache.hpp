@@ -7,12 +7,11 @@
 
 #include "predicates/triple_key.hpp"
 #include "sites/ellipse.hpp"
-#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle.hpp"
 
 #include <array>
 #include <cstddef>
 #include <map>
-#include <memory>
 
 namespace ellvor {
 
@@ -20,8 +19,8 @@ class VoronoiCircleCache {
 public:
     struct Entry {
         std::array<SiteId, 3> ids;  // rotated so that the smallest id comes first
-        std::unique_ptr<VoronoiCircleSolver> solver;
-        // Index in the solver's triple of the site with this id.
+        VoronoiCircle circle;  // of the sites in the order of ids
+        // Index in the circle's triple of the site with this id.
         int index_of(SiteId id) const;
     };
 

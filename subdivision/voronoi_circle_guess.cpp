@@ -268,7 +268,8 @@ bool equidistant_point_search(const std::array<Shape, 3>& e, const std::function
 }  // namespace
 
 bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
+                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess,
+                                   GuessEffort effort) {
     const Point origin = e1.center();
     const std::array<Shape, 3> e = {shape_of(e1, origin), shape_of(e2, origin), shape_of(e3, origin)};
     std::vector<Vector6> tried;
@@ -291,6 +292,7 @@ bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const E
             if (newton(e, X) && is_counterclockwise_solution(e, X) && offer(X)) return true;
         }
     }
+    if (effort == GuessEffort::quick) return false;
     // Continuation from each model's counter-clockwise circle to the ellipses.
     for (CircleModel m : kModels) {
         const auto circles = blend(e, m, 0);

@@ -23,6 +23,11 @@ struct VoronoiCircleGuess {
     double radius, x, y;
 };
 
+// How hard to look: `quick` stops after the first phase below (the
+// double-interval stage, which must cost little when it fails), `thorough`
+// runs all three.
+enum class GuessEffort { quick, thorough };
+
 // Floating-point solutions with positive radius and counter-clockwise
 // tangency points, offered to `try_guess` until it accepts one (returns
 // true): first Newton from the Apollonius circles of three circle models of
@@ -33,6 +38,7 @@ struct VoronoiCircleGuess {
 // collinear sites); the caller's certificate is what decides. Returns false
 // when no offered guess was accepted.
 bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess);
+                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess,
+                                   GuessEffort effort = GuessEffort::thorough);
 
 }  // namespace ellvor

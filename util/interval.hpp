@@ -30,6 +30,10 @@ struct Interval {
         return x;
     }
     static double down(double x) { return -up(-x); }
+    // std::fmin / std::fmax (a NaN operand yields the other one), inlined:
+    // the library calls cost more than the comparisons.
+    static double min(double a, double b) { return (b < a || a != a) ? b : a; }
+    static double max(double a, double b) { return (b > a || a != a) ? b : a; }
 
     Interval() = default;
     // An exact double.
@@ -44,19 +48,21 @@ struct Interval {
     Interval operator-() const { return {-hi, -lo}; }
     friend Interval operator*(Interval a, Interval b) {
         const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-        return {down(std::fmin(std::fmin(p1, p2), std::fmin(p3, p4))),
-                up(std::fmax(std::fmax(p1, p2), std::fmax(p3, p4)))};
+        return {down(min(min(p1, p2), min(p3, p4))), up(max(max(p1, p2), max(p3, p4)))};
+    }
+    // An exact double times an interval (two products instead of four).
+    friend Interval operator*(double c, Interval b) {
+        return c >= 0 ? Interval{down(c * b.lo), up(c * b.hi)} : Interval{down(c * b.hi), up(c * b.lo)};
     }
     // Division by an interval that does not contain zero (callers check).
     friend Interval operator/(Interval a, Interval b) {
         const double q1 = a.lo / b.lo, q2 = a.lo / b.hi, q3 = a.hi / b.lo, q4 = a.hi / b.hi;
-        return {down(std::fmin(std::fmin(q1, q2), std::fmin(q3, q4))),
-                up(std::fmax(std::fmax(q1, q2), std::fmax(q3, q4)))};
+        return {down(min(min(q1, q2), min(q3, q4))), up(max(max(q1, q2), max(q3, q4)))};
     }
     Interval square() const {
         if (lo >= 0) return {down(lo * lo), up(hi * hi)};
         if (hi <= 0) return {down(hi * hi), up(lo * lo)};
-        return {0, up(std::fmax(lo * lo, hi * hi))};
+        return {0, up(max(lo * lo, hi * hi))};
     }
     // Square root of the nonnegative part.
     Interval sqrt() const { return {lo > 0 ? down(std::sqrt(lo)) : 0.0, up(std::sqrt(std::fmax(hi, 0.0)))}; }

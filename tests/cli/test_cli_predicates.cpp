@@ -195,12 +195,21 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent c
         CHECK(j.at("result") == c.word);
         CHECK(j.at("sign") == c.sign);
         for (const char* key : {"stage", "precision", "newton_steps", "time_us"}) CHECK(j.contains(key));
-        // Four circles: the closed-form filter decides these clear cases
-        // (no Newton step); otherwise the Arb stage does.
-        const bool circles = c.sites.find("2 1 1") == std::string::npos;
-        CHECK(j.at("stage") == (circles ? "filter" : "subdivision"));
-        CHECK((j.at("newton_steps") == 0) == circles);
+        // The filter decides these clear cases, with no Arb Newton step: the
+        // closed form for four circles, the circle certified in double
+        // intervals for the ellipse.
+        CHECK(j.at("stage") == "filter");
+        CHECK(j.at("newton_steps") == 0);
     }
+    // 10^-30 away from tangency (the degenerate quadruple below, Q moved
+    // away): beyond doubles, Arb decides.
+    const std::string near = s.file("near.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5.000000000000000000000000000001\n");
+    Run near_run = s.ellvor("incircle " + near + " --json");
+    REQUIRE(near_run.status == 0);
+    const json near_json = parse(near_run);
+    CHECK(near_json.at("result") == "no-conflict");
+    CHECK(near_json.at("stage") == "subdivision");
+    CHECK(near_json.at("newton_steps") > 0);
     // CGAL's .cin form.
     const std::string cin = s.file("far.cin", "6 0 1\n0 6 1\n-6 0 1\n30 30 1\n");
     Run r = s.ellvor("incircle " + cin + " --cin");

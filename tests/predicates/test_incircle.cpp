@@ -152,8 +152,8 @@ TEST_CASE("incircle on random ellipse quadruples: which stage decided", "[predic
         ++total;
         INFO(apollonius::ell({&e[0], &e[1], &e[2], &e[3]}));
         const Decision<VoronoiCircles> count = voronoi_circle_count(e[0], e[1], e[2]);
-        VoronoiCircleSolver solver(e[0], e[1], e[2]);
-        const Decision<InCircle> got = incircle(e[0], e[1], e[2], e[3], {}, &solver);
+        VoronoiCircle circle(e[0], e[1], e[2]);
+        const Decision<InCircle> got = incircle(e[0], e[1], e[2], e[3], {}, &circle);
         INFO(show(got) << " count " << voronoi_circles_name((*count)));
         stages.record(got.stage);
         if (!has_ccw((*count))) {
@@ -161,6 +161,7 @@ TEST_CASE("incircle on random ellipse quadruples: which stage decided", "[predic
             no_circle_stages.record(got.stage);
             CHECK((*got) == InCircle::no_circle);
             CHECK(got.stage == count.stage);
+            CHECK(circle.in_doubles() == nullptr);  // nothing to certify
             continue;
         }
         if (!got.is_decided()) {
@@ -169,27 +170,38 @@ TEST_CASE("incircle on random ellipse quadruples: which stage decided", "[predic
                                        apollonius::ell({&e[0], &e[1], &e[2], &e[3]}).c_str());
             continue;
         }
-        CHECK(got.stage == Stage::subdivision);
         CHECK(((*got) == InCircle::conflict || (*got) == InCircle::no_conflict));
-        CHECK(solver.enclosure().newton_steps > 0);
-        if (got.precision <= 64)
+        CHECK((got.stage == Stage::filter || got.stage == Stage::subdivision));
+        // The Arb stage alone (no double-interval filter) agrees.
+        InCircleOptions arb;
+        arb.use_filter = false;
+        VoronoiCircle arb_circle(e[0], e[1], e[2]);
+        const Decision<InCircle> by_arb = incircle(e[0], e[1], e[2], e[3], arb, &arb_circle);
+        INFO("Arb alone: " << show(by_arb));
+        CHECK((*by_arb) == (*got));
+        CHECK(by_arb.stage == Stage::subdivision);
+        CHECK(arb_circle.solver().enclosure().newton_steps > 0);
+        if (by_arb.precision <= 64)
             ++decided_at_start;
         else
             ++decided_higher;
-        // The same answer without a given solver, and a second call with the
-        // refined one.
+        // The same answer without a given circle, and a second call with the
+        // cached one.
         const Decision<InCircle> a = incircle(e[0], e[1], e[2], e[3]);
-        const Decision<InCircle> b = incircle(e[0], e[1], e[2], e[3], {}, &solver);
+        const Decision<InCircle> b = incircle(e[0], e[1], e[2], e[3], {}, &circle);
         CHECK((*a) == (*got));
         CHECK((*b) == (*got));
     }
     if (verbose())
-        std::printf("[incircle/ellipses] total %d, at 64 bits %d, higher %d, undecided %d, no_circle %d (filter %lu "
-                    "subdivision %lu exact %lu)\n",
+        std::printf("[incircle/ellipses] total %d, Arb at 64 bits %d, higher %d, undecided %d, no_circle %d (filter %lu "
+                    "subdivision %lu exact %lu); all: filter %lu subdivision %lu\n",
                     total, decided_at_start, decided_higher, undecided, no_circle,
                     (unsigned long)no_circle_stages[Stage::filter], (unsigned long)no_circle_stages[Stage::subdivision],
-                    (unsigned long)no_circle_stages[Stage::exact]);
+                    (unsigned long)no_circle_stages[Stage::exact], (unsigned long)stages[Stage::filter],
+                    (unsigned long)stages[Stage::subdivision]);
     CHECK(decided_at_start >= 9 * (total - no_circle) / 10);
+    // The double-interval stage decides nearly every query that has a circle.
+    CHECK(stages[Stage::filter] - no_circle_stages[Stage::filter] >= static_cast<std::uint64_t>(9 * (total - no_circle) / 10));
     CHECK(undecided == 0);  // the certification of the circle is complete (exhaustive search)
     CHECK(no_circle >= 20);
 }
@@ -216,7 +228,10 @@ TEST_CASE("incircle on an exactly tangent ellipse quadruple and its perturbation
         CHECK(d.precision >= 512);
     }
     // The fourth site moved by 10^-k: away from the circle -> no_conflict,
-    // toward it -> conflict; the precision needed grows with k.
+    // toward it -> conflict; the precision Arb needs grows with k (the double
+    // filter decides k = 6, and must agree).
+    InCircleOptions arb;
+    arb.use_filter = false;
     long previous = 0;
     for (int k : {6, 30, 100}) {
         const Rational eps = power_of_ten(-k);
@@ -224,10 +239,13 @@ TEST_CASE("incircle on an exactly tangent ellipse quadruple and its perturbation
         long used = 0;
         for (const Ellipse* q : {&away, &toward}) {
             INFO("k " << k << apollonius::ell({&e1, &e2, &e3, q}));
-            const Decision<InCircle> d = incircle(e1, e2, e3, *q);
+            const Decision<InCircle> d = incircle(e1, e2, e3, *q, arb);
             INFO(show(d));
             CHECK((*d) == (q == &away ? InCircle::no_conflict : InCircle::conflict));
             CHECK(d.stage == Stage::subdivision);
+            const Decision<InCircle> filtered = incircle(e1, e2, e3, *q);
+            CHECK((*filtered) == (*d));
+            CHECK((filtered.stage == Stage::filter) == (k == 6));
             used = std::max(used, d.precision);
         }
         if (verbose()) std::printf("[incircle/tangent ellipses] k %d precision %ld\n", k, used);

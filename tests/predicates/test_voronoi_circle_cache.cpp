@@ -59,14 +59,13 @@ TEST_CASE("cache: cyclic rotations share one entry, the reversed triple does not
     CHECK(cache.hits() == 0);
     // Rotated so that the smallest id comes first: (3, 5, 7).
     CHECK(a.ids == std::array<SiteId, 3>{3, 5, 7});
-    REQUIRE(a.solver != nullptr);
-    CHECK(!a.solver->certified());  // created, not yet certified
+    CHECK(!a.circle.has_solver());  // created, nothing computed yet
 
     VoronoiCircleCache::Entry& b = cache.at(j, ej, k, ek, i, ei);
     VoronoiCircleCache::Entry& c = cache.at(k, ek, i, ei, j, ej);
     CHECK(&b == &a);
     CHECK(&c == &a);
-    CHECK(b.solver.get() == a.solver.get());
+    CHECK(&b.circle == &a.circle);
     CHECK(cache.size() == 1);
     CHECK(cache.hits() == 2);
     CHECK(cache.misses() == 1);
@@ -94,8 +93,8 @@ TEST_CASE("cache: cyclic rotations share one entry, the reversed triple does not
 
     // The entry's solver is the circle of the ordered triple (i, j, k): the
     // sites were rotated with the ids. Here: center (0, 0), radius 5.
-    REQUIRE(a.solver->certify());
-    const VoronoiCircleEnclosure& enc = a.solver->enclosure();
+    REQUIRE(a.circle.solver().certify());
+    const VoronoiCircleEnclosure& enc = a.circle.solver().enclosure();
     CHECK(enc.center_x.contains(Rational(0)));
     CHECK(enc.center_y.contains(Rational(0)));
     CHECK(enc.radius.contains(Rational(5)));
@@ -104,19 +103,19 @@ TEST_CASE("cache: cyclic rotations share one entry, the reversed triple does not
     CHECK(overlaps(direct.enclosure().radius, enc.radius));
     // The reversed triple has no counter-clockwise circle (the three are
     // counter-clockwise in the order i, j, k): no certificate.
-    CHECK(!r.solver->certify());
+    CHECK(!r.circle.solver().certify());
 
     cache.clear();
     CHECK(cache.size() == 0);
     VoronoiCircleCache::Entry& again = cache.at(i, ei, j, ej, k, ek);
-    CHECK(!again.solver->certified());  // a fresh entry after clear()
+    CHECK(!again.circle.has_solver());  // a fresh entry after clear()
 }
 
 TEST_CASE("cache: erase drops the entry of any rotation and nothing else", "[predicates][cache]") {
     const SiteId i = 7, j = 3, k = 5;
     const Ellipse &ei = site(0), &ej = site(1), &ek = site(2);
     VoronoiCircleCache cache;
-    REQUIRE(cache.at(i, ei, j, ej, k, ek).solver->certify());
+    REQUIRE(cache.at(i, ei, j, ej, k, ek).circle.solver().certify());
     cache.at(i, ei, k, ek, j, ej);  // the reversed triple: another entry
     REQUIRE(cache.size() == 2);
     cache.erase(1, 2, 4);  // no such triple
@@ -127,43 +126,54 @@ TEST_CASE("cache: erase drops the entry of any rotation and nothing else", "[pre
     const std::size_t misses = cache.misses();
     VoronoiCircleCache::Entry& fresh = cache.at(j, ej, k, ek, i, ei);
     CHECK(cache.misses() == misses + 1);
-    CHECK(!fresh.solver->certified());  // recomputed on demand
+    CHECK(!fresh.circle.has_solver());  // recomputed on demand
     CHECK(cache.size() == 2);
 }
 
-TEST_CASE("cache: incircle refines the cached solver once and reuses it", "[predicates][cache]") {
+TEST_CASE("cache: incircle certifies the cached circle once and reuses it", "[predicates][cache]") {
     const Ellipse &e1 = site(0), &e2 = site(1), &e3 = site(2);
     VoronoiCircleCache cache;
     VoronoiCircleCache::Entry& entry = cache.at(0, e1, 1, e2, 2, e3);
-    // Two queries decided at the start precision, one on each side of the circle.
+    // One query on each side of the circle.
     const Ellipse q1 = site(3);  // reaches y = -4.5 > -5 on the y-axis: conflict
     const Ellipse q2(2, 1, 0, 30, 30);  // far away: no conflict (an ellipse, so the four-circle filter is not used)
-    const Decision<InCircle> d1 = incircle(e1, e2, e3, q1, {}, entry.solver.get());
+
+    // The filter: the circle certified in doubles, made once; no Arb solver.
+    const Decision<InCircle> d1 = incircle(e1, e2, e3, q1, {}, &entry.circle);
     INFO(show(d1) << ell({&e1, &e2, &e3, &q1}));
     REQUIRE((*d1) == InCircle::conflict);
-    REQUIRE(entry.solver->certified());
-    const long steps = entry.solver->enclosure().newton_steps;
-    CHECK(steps > 0);
-
-    // A second call through the cache (a rotation of the triple) with another
-    // query at the same precision: no further Newton steps.
-    VoronoiCircleCache::Entry& same = cache.at(2, e3, 0, e1, 1, e2);
+    CHECK(d1.stage == Stage::filter);
+    const DoubleVoronoiCircle* in_doubles = entry.circle.in_doubles();
+    REQUIRE(in_doubles != nullptr);
+    CHECK(in_doubles->radius.lo <= 5);
+    CHECK(in_doubles->radius.hi >= 5);
+    VoronoiCircleCache::Entry& same = cache.at(2, e3, 0, e1, 1, e2);  // a rotation of the triple
     REQUIRE(&same == &entry);
-    const Decision<InCircle> d2 = incircle(e3, e1, e2, q2, {}, same.solver.get());
-    INFO(show(d2));
+    const Decision<InCircle> d2 = incircle(e3, e1, e2, q2, {}, &same.circle);
     CHECK((*d2) == InCircle::no_conflict);
-    CHECK(d2.precision == d1.precision);
-    CHECK(same.solver->enclosure().newton_steps == steps);
-    // And the first query again.
-    const Decision<InCircle> d3 = incircle(e1, e2, e3, q1, {}, entry.solver.get());
-    CHECK((*d3) == InCircle::conflict);
-    CHECK(entry.solver->enclosure().newton_steps == steps);
+    CHECK(d2.stage == Stage::filter);
+    CHECK(same.circle.in_doubles() == in_doubles);
+    CHECK(!entry.circle.has_solver());
+
+    // Without the filter: the Arb solver, refined once and reused.
+    InCircleOptions arb;
+    arb.use_filter = false;
+    const Decision<InCircle> d3 = incircle(e1, e2, e3, q1, arb, &entry.circle);
+    REQUIRE((*d3) == InCircle::conflict);
+    CHECK(d3.stage == Stage::subdivision);
+    REQUIRE(entry.circle.has_solver());
+    const long steps = entry.circle.solver().enclosure().newton_steps;
+    CHECK(steps > 0);
+    const Decision<InCircle> d4 = incircle(e3, e1, e2, q2, arb, &same.circle);
+    CHECK((*d4) == InCircle::no_conflict);
+    CHECK(d4.precision == d3.precision);
+    CHECK(same.circle.solver().enclosure().newton_steps == steps);
 
     // Without the cache every call pays the Newton steps again.
-    VoronoiCircleSolver fresh_solver(e3, e1, e2);
-    const Decision<InCircle> fresh = incircle(e3, e1, e2, q2, {}, &fresh_solver);
-    CHECK((*fresh) == InCircle::no_conflict);
-    CHECK(fresh_solver.enclosure().newton_steps > 0);
+    VoronoiCircle fresh(e3, e1, e2);
+    const Decision<InCircle> again = incircle(e3, e1, e2, q2, arb, &fresh);
+    CHECK((*again) == InCircle::no_conflict);
+    CHECK(fresh.solver().enclosure().newton_steps > 0);
 }
 
 TEST_CASE("cache: incircle with and without the cache agree on random quadruples", "[predicates][cache]") {
@@ -191,7 +201,7 @@ TEST_CASE("cache: incircle with and without the cache agree on random quadruples
         const Ellipse &e1 = pool[id[0]], &e2 = pool[id[1]], &e3 = pool[id[2]], &q = pool[id[3]];
         INFO(ell({&e1, &e2, &e3, &q}));
         VoronoiCircleCache::Entry& entry = cache.at(id[0], e1, id[1], e2, id[2], e3);
-        const Decision<InCircle> cached = incircle(e1, e2, e3, q, {}, entry.solver.get());
+        const Decision<InCircle> cached = incircle(e1, e2, e3, q, {}, &entry.circle);
         const Decision<InCircle> plain = incircle(e1, e2, e3, q);
         INFO("cached " << show(cached) << ", plain " << show(plain));
         CHECK((*cached) == (*plain));

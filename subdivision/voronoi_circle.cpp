@@ -1,0 +1,23 @@
+#include "subdivision/voronoi_circle.hpp"
+
+namespace ellvor {
+
+const DoubleVoronoiCircle* VoronoiCircle::in_doubles() {
+    if (doubles_tried_ == Tried::not_yet) {
+        const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(*sites_[0], *sites_[1], *sites_[2]);
+        doubles_tried_ = c ? Tried::certified : Tried::failed;
+        if (c) doubles_ = *c;
+    }
+    return doubles_tried_ == Tried::certified ? &doubles_ : nullptr;
+}
+
+VoronoiCircleSolver& VoronoiCircle::solver() {
+    if (!solver_) solver_ = std::make_unique<VoronoiCircleSolver>(*sites_[0], *sites_[1], *sites_[2]);
+    return *solver_;
+}
+
+void VoronoiCircle::release_charts() {
+    if (solver_) solver_->release_charts();
+}
+
+}  // namespace ellvor

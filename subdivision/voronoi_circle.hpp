@@ -1,0 +1,42 @@
+// The Voronoi circle of an ordered triple (E1, E2, E3) as the predicates ask
+// about it, stage by stage: first the double-interval certificate
+// (voronoi_circle_in_doubles.hpp), tried once and kept (a few doubles); the
+// Arb solver (voronoi_circle_enclosure.hpp) is made only when a question
+// needs more than doubles, and its charts can be freed between questions. A
+// cache of one per face (predicates/voronoi_circle_cache.hpp) stays small.
+#pragma once
+
+#include "sites/ellipse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle_in_doubles.hpp"
+
+#include <array>
+#include <memory>
+
+namespace ellvor {
+
+class VoronoiCircle {
+public:
+    // The sites must outlive this object.
+    VoronoiCircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) : sites_{&e1, &e2, &e3} {}
+
+    // The certified double enclosure, computed on the first call; nullptr
+    // when the doubles could not certify it (which proves nothing: the
+    // solver decides).
+    const DoubleVoronoiCircle* in_doubles();
+    // The Arb solver, made on first use.
+    VoronoiCircleSolver& solver();
+    bool has_solver() const { return solver_ != nullptr; }
+    // VoronoiCircleSolver::release_charts, if there is a solver.
+    void release_charts();
+    const std::array<const Ellipse*, 3>& sites() const { return sites_; }
+
+private:
+    std::array<const Ellipse*, 3> sites_;
+    enum class Tried : unsigned char { not_yet, certified, failed };
+    Tried doubles_tried_ = Tried::not_yet;
+    DoubleVoronoiCircle doubles_;
+    std::unique_ptr<VoronoiCircleSolver> solver_;
+};
+
+}  // namespace ellvor

@@ -1,0 +1,49 @@
+// The Voronoi circle of an ordered triple (E1, E2, E3) certified in double
+// intervals: the floating-point stage in front of the Arb solver
+// (voronoi_circle_enclosure.hpp), with the same certificate.
+//
+// The Krawczyk operator of the tritangent system
+//     F(x) = P_i(t_i) + rho nu_i(t_i) - V = 0,   i = 1, 2, 3,
+//     x = (t_1, t_2, t_3, rho, V_x, V_y)
+// (docs/DESIGN.md §4.1) is evaluated in outward-rounded double intervals
+// (util/interval.hpp) on a small box X around a floating-point solution m:
+//     K(X) = m - Y F(m) + (I - Y J(X)) (X - m),   Y ~ J(m)^-1 in doubles.
+// K(X) inside the interior of X proves exactly one solution in X, and it lies
+// in K(X). With rho > 0 and the tangency points counter-clockwise on the box,
+// that solution is THE counter-clockwise Voronoi circle, for the reason given
+// in voronoi_circle_enclosure.hpp. Anything the doubles cannot prove
+// (no convergence, a box that does not contract, an overflow, rho or the
+// orientation not of certain sign) is "not certified", and the Arb solver
+// runs; it never answers "no circle".
+#pragma once
+
+#include "sites/ellipse.hpp"
+#include "util/interval.hpp"
+
+#include <array>
+#include <optional>
+
+namespace ellvor {
+
+struct DoubleVoronoiCircle {
+    Interval center_x, center_y, radius;
+    // Chart parameter of each tangency point, as in VoronoiCircleEnclosure:
+    // t_i, or u_i = -1/t_i when flipped (the chart in which |parameter| <= 1).
+    std::array<Interval, 3> parameter;
+    std::array<bool, 3> flipped{};
+};
+
+// From the quick floating-point guesses (voronoi_circle_guess.hpp,
+// GuessEffort::quick); nullopt when none of them certifies.
+std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
+                                                                      const Ellipse& e3);
+
+// The certificate alone, from one floating-point solution: tangency angles
+// theta_i (P_i = C_i + R_i (a_i cos theta_i, b_i sin theta_i)), radius and
+// center in the plane's coordinates.
+std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const std::array<const Ellipse*, 3>& sites,
+                                                                      const std::array<double, 3>& theta,
+                                                                      double radius, double center_x,
+                                                                      double center_y);
+
+}  // namespace ellvor

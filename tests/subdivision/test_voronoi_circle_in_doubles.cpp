@@ -1,0 +1,187 @@
+// The Voronoi circle certified in double intervals
+// (subdivision/voronoi_circle_in_doubles.hpp) against the Arb solver, the
+// oracle here: on random and on near-degenerate triples the double stage
+// either certifies a circle that Arb also certifies and whose enclosure meets
+// Arb's, or hands over. It never certifies a circle where there is none (by
+// the kappa2 signs of predicates/voronoi_circle_count.hpp).
+#include "predicates/voronoi_circle_count.hpp"
+#include "subdivision/voronoi_circle.hpp"
+#include "subdivision/voronoi_circle_in_doubles.hpp"
+#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/random_sites.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+using Rng = std::mt19937_64;
+using ellvor::test::bounding_circles_apart;
+using ellvor::test::random_fraction;
+
+bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
+
+bool meets(const Interval& a, const Interval& b) { return !(a.hi < b.lo || b.hi < a.lo); }
+
+std::string show(const Interval& x) {
+    char buf[80];
+    std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", x.lo, x.hi);
+    return buf;
+}
+
+struct Tally {
+    int triples = 0, by_arb = 0, by_doubles = 0, no_circle = 0;
+};
+
+// One triple: the double certificate against Arb's.
+void compare_with_arb(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, Tally& tally) {
+    ++tally.triples;
+    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(e1, e2, e3);
+    INFO(apollonius::ell({&e1, &e2, &e3}));
+    // Whether the circle exists: from the kappa2 signs (exact at the end),
+    // cheaper than Arb's exhaustive search for proving that it does not.
+    const VoronoiCircles count = *voronoi_circle_count(e1, e2, e3);
+    if (count == VoronoiCircles::none || count == VoronoiCircles::cw_only) {
+        ++tally.no_circle;
+        CHECK(!d.has_value());  // a certificate where there is no circle: contradiction
+        return;
+    }
+    ++tally.by_arb;
+    VoronoiCircleSolver arb(e1, e2, e3);
+    REQUIRE(arb.certify());
+    if (!d) return;  // handed over
+    ++tally.by_doubles;
+    const VoronoiCircleEnclosure& c = arb.enclosure();
+    INFO("doubles: x " << show(d->center_x) << " y " << show(d->center_y) << " radius " << show(d->radius));
+    INFO("Arb: x " << c.center_x.str(20) << " y " << c.center_y.str(20) << " radius " << c.radius.str(20));
+    // Both hold the unique counter-clockwise circle: the enclosures meet.
+    CHECK(meets(d->center_x, enclose(c.center_x)));
+    CHECK(meets(d->center_y, enclose(c.center_y)));
+    CHECK(meets(d->radius, enclose(c.radius)));
+    for (int i = 0; i < 3; ++i) {
+        // Tangency parameters, in the same chart, or else as t_i (unless one
+        // of them holds the i-point, where t_i is unbounded).
+        if (d->flipped[i] == c.flipped[i]) {
+            CHECK(meets(d->parameter[i], enclose(c.parameter[i])));
+        } else {
+            const Ball t = c.tangency_parameter(i, 64);
+            if (d->parameter[i].contains_zero() || !arb_is_finite(t.get())) continue;
+            const Interval td = d->flipped[i] ? Interval(-1.0) / d->parameter[i] : d->parameter[i];
+            CHECK(meets(td, enclose(t)));
+        }
+    }
+    // The enclosure is tight: in doubles the plane's coordinates, not the
+    // circle's size, set the rounding (a triple 10^12 from the origin gets
+    // a radius to about 10^-3), and nearly collinear triples are ill-conditioned.
+    const double size = d->radius.hi + std::fabs(d->center_x.hi) + std::fabs(d->center_y.hi);
+    CHECK(d->radius.hi - d->radius.lo <= 1e-6 * size);
+}
+
+Ellipse random_site(Rng& rng, long half_box, long max_axis_tenths, long min_axis_tenths = 2) {
+    const long den_center = 1000;
+    if (std::uniform_int_distribution<int>(0, 4)(rng) == 0)
+        return Ellipse::circle(random_fraction(rng, -half_box * den_center, half_box * den_center, den_center),
+                               random_fraction(rng, -half_box * den_center, half_box * den_center, den_center),
+                               random_fraction(rng, min_axis_tenths, max_axis_tenths, 10));
+    return Ellipse(random_fraction(rng, min_axis_tenths, max_axis_tenths, 10),
+                   random_fraction(rng, min_axis_tenths, max_axis_tenths, 10), random_fraction(rng, -300, 300, 97),
+                   random_fraction(rng, -half_box * den_center, half_box * den_center, den_center),
+                   random_fraction(rng, -half_box * den_center, half_box * den_center, den_center));
+}
+
+}  // namespace
+
+TEST_CASE("doubles vs Arb: 10^4 random triples, certified or handed over, never contradicting",
+          "[subdivision][voronoi_circle_in_doubles]") {
+    Rng rng(20261124);
+    Tally tally;
+    while (tally.triples < 10000) {
+        std::vector<Ellipse> e;
+        while (e.size() < 3) {
+            Ellipse s = random_site(rng, 15, 40);
+            bool apart = true;
+            for (const Ellipse& o : e) apart = apart && bounding_circles_apart(o, s);
+            if (apart) e.push_back(s);
+        }
+        compare_with_arb(e[0], e[1], e[2], tally);
+    }
+    if (verbose())
+        std::printf("[doubles vs Arb] random: %d triples, %d with a circle, %d certified in doubles, %d without\n",
+                    tally.triples, tally.by_arb, tally.by_doubles, tally.no_circle);
+    CHECK(tally.no_circle >= 1000);  // both kinds are exercised
+    CHECK(tally.by_doubles >= 0.95 * tally.by_arb);
+}
+
+TEST_CASE("doubles vs Arb: near-degenerate triples", "[subdivision][voronoi_circle_in_doubles]") {
+    Rng rng(77);
+    Tally tally;
+    auto q = [](long n, unsigned long d) { return Rational(n, d); };
+    std::vector<std::array<Ellipse, 3>> triples;
+    for (int k = 2; k <= 14; k += 2) {
+        const Rational eps = power_of_ten(-k);
+        // Nearly collinear centers: huge circles (radius ~ 10^k).
+        triples.push_back({Ellipse::circle(-10, 0, 1), Ellipse::circle(0, eps, 1), Ellipse::circle(10, 0, 1)});
+        triples.push_back({Ellipse(2, 1, 0, -10, 0), Ellipse(2, 1, q(1, 3), 0, eps), Ellipse(2, 1, 0, 10, 0)});
+        // Sites 10^-k apart: tiny gaps.
+        triples.push_back({Ellipse(1, q(1, 2), 0, 0, 0), Ellipse(1, q(1, 2), 0, Rational(2) + eps, 0),
+                           Ellipse(1, q(1, 2), 1, 1, Rational(2) + eps)});
+        // Needles: axis ratio 10^k / 100.
+        triples.push_back({Ellipse(5, Rational(100) * eps + eps, 0, 0, 0), Ellipse(1, 1, 0, 0, 3),
+                           Ellipse(1, q(1, 3), q(1, 2), 4, -4)});
+        // Far from the origin: 10^k offsets.
+        const Rational far = power_of_ten(k);
+        triples.push_back({Ellipse(2, 1, 0, far, far), Ellipse(1, 1, 0, far + 5, far), Ellipse(1, 2, q(1, 5), far, far + 6)});
+        // Cocircular (Q-free, but the triple is symmetric) at growing scales.
+        triples.push_back({Ellipse(2, 1, 0, 5 * far, 0), Ellipse(2, 1, 1, 0, 5 * far), Ellipse(2, 1, 0, -5 * far, 0)});
+    }
+    // Random near-collinear triples with ellipses of very different sizes.
+    while (triples.size() < 400) {
+        const Rational eps = power_of_ten(-std::uniform_int_distribution<int>(1, 12)(rng));
+        const Ellipse a = random_site(rng, 2, 30), b = random_site(rng, 2, 30);
+        const Ellipse e1(a.a(), a.b(), a.w(), a.xc() - 20, a.yc());
+        const Ellipse e2(b.a() / 100, b.b() / 100, b.w(), b.xc() / 100, eps);
+        const Ellipse e3(b.a(), b.b(), a.w(), b.xc() + 20, b.yc());
+        if (!bounding_circles_apart(e1, e2) || !bounding_circles_apart(e2, e3) || !bounding_circles_apart(e1, e3)) continue;
+        triples.push_back({e1, e2, e3});
+    }
+    for (const auto& t : triples)
+        for (int rotation = 0; rotation < 2; ++rotation) {
+            // Both orientations: one of them usually has no circle.
+            if (rotation == 0) compare_with_arb(t[0], t[1], t[2], tally);
+            else compare_with_arb(t[0], t[2], t[1], tally);
+        }
+    if (verbose())
+        std::printf("[doubles vs Arb] near-degenerate: %d triples, %d with a circle, %d certified in doubles, %d without\n",
+                    tally.triples, tally.by_arb, tally.by_doubles, tally.no_circle);
+    CHECK(tally.by_doubles > 0);
+    CHECK(tally.by_doubles < tally.by_arb);  // some are beyond doubles and handed over
+}
+
+TEST_CASE("VoronoiCircle: the double certificate once, the solver only on demand",
+          "[subdivision][voronoi_circle_in_doubles]") {
+    const Ellipse e1 = Ellipse::circle(6, 0, 1), e2 = Ellipse::circle(0, 6, 1), e3 = Ellipse::circle(-6, 0, 1);
+    VoronoiCircle circle(e1, e2, e3);
+    CHECK(!circle.has_solver());
+    const DoubleVoronoiCircle* d = circle.in_doubles();
+    REQUIRE(d != nullptr);
+    CHECK(circle.in_doubles() == d);
+    CHECK(!circle.has_solver());
+    // The circle is centered at the origin with radius 5.
+    CHECK(d->center_x.contains_zero());
+    CHECK(d->center_y.contains_zero());
+    CHECK(meets(d->radius, Interval(5.0)));
+    CHECK(d->radius.hi - d->radius.lo < 1e-12);
+    // The reversed triple has no counter-clockwise circle: never certified.
+    VoronoiCircle reversed(e1, e3, e2);
+    CHECK(reversed.in_doubles() == nullptr);
+    REQUIRE(!reversed.solver().certify());
+    CHECK(reversed.has_solver());
+}
