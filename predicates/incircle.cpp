@@ -42,8 +42,18 @@ Sign incircle_sign(InCircle r) {
 
 namespace {
 
-// d(V, Q) - rho with double intervals (the filter): -1, +1, or 0.
+// d(V, Q) - rho with double intervals (the filter): -1, +1, or 0. Most
+// queries are far from tangent: Q's inscribed and circumscribed circles
+// (radii min and max of a, b about its center C) decide them first, since
+// d(V, Q) >= |V - C| - max(a, b), and Q meets the open disk when its
+// inscribed disk does, |V - C| < rho + min(a, b).
 int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q) {
+    const Ellipse::Enclosure& k = q.enclosure();
+    const Interval squared_distance = (center_x - k.xc).square() + (center_y - k.yc).square();
+    const Interval outer = radius + Interval(Interval::max(k.a.hi, k.b.hi));
+    if (outer.lo > 0 && squared_distance.lo > outer.square().hi) return 1;
+    const Interval inner = radius + Interval(Interval::min(k.a.lo, k.b.lo));
+    if (squared_distance.hi < inner.square().lo) return -1;
     const LocalPoint v = to_local(q, center_x, center_y);
     const int side = filtered_side(v);
     if (side < 0) return -1;  // the center is inside Q

@@ -191,10 +191,6 @@ Vector6 start_from(const std::array<Shape, 3>& e, const std::array<double, 3>& c
     return X;
 }
 
-// The three sites as circles of the same centers: radius min(a, b) (inscribed,
-// so still disjoint), the mean, or max(a, b).
-enum class CircleModel { inscribed, mean, circumscribed };
-
 double model_radius(const Shape& k, CircleModel m) {
     switch (m) {
         case CircleModel::inscribed: return std::min(k.a, k.b);
@@ -268,8 +264,7 @@ bool equidistant_point_search(const std::array<Shape, 3>& e, const std::function
 }  // namespace
 
 bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess,
-                                   GuessEffort effort) {
+                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
     const Point origin = e1.center();
     const std::array<Shape, 3> e = {shape_of(e1, origin), shape_of(e2, origin), shape_of(e3, origin)};
     std::vector<Vector6> tried;
@@ -283,18 +278,16 @@ bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const E
         g.radius = X[3], g.x = X[4], g.y = X[5];
         return try_guess(g);
     };
-    constexpr CircleModel kModels[] = {CircleModel::inscribed, CircleModel::mean, CircleModel::circumscribed};
     // Direct Newton on the ellipses from each Apollonius circle of each model.
-    for (CircleModel m : kModels) {
+    for (CircleModel m : kCircleModels) {
         const auto circles = blend(e, m, 0);
         for (const auto& circle : model_circles(circles)) {
             Vector6 X = start_from(e, circle);
             if (newton(e, X) && is_counterclockwise_solution(e, X) && offer(X)) return true;
         }
     }
-    if (effort == GuessEffort::quick) return false;
     // Continuation from each model's counter-clockwise circle to the ellipses.
-    for (CircleModel m : kModels) {
+    for (CircleModel m : kCircleModels) {
         const auto circles = blend(e, m, 0);
         for (const auto& circle : model_circles(circles)) {
             Vector6 X = start_from(circles, circle);
@@ -314,6 +307,12 @@ bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const E
         }
     }
     return equidistant_point_search(e, offer);
+}
+
+std::vector<std::array<double, 3>> model_apollonius_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                            CircleModel model) {
+    const Point origin = e1.center();
+    return model_circles(blend({shape_of(e1, origin), shape_of(e2, origin), shape_of(e3, origin)}, model, 0));
 }
 
 }  // namespace ellvor

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <vector>
 
 namespace ellvor {
 
@@ -23,11 +24,6 @@ struct VoronoiCircleGuess {
     double radius, x, y;
 };
 
-// How hard to look: `quick` stops after the first phase below (the
-// double-interval stage, which must cost little when it fails), `thorough`
-// runs all three.
-enum class GuessEffort { quick, thorough };
-
 // Floating-point solutions with positive radius and counter-clockwise
 // tangency points, offered to `try_guess` until it accepts one (returns
 // true): first Newton from the Apollonius circles of three circle models of
@@ -38,7 +34,17 @@ enum class GuessEffort { quick, thorough };
 // collinear sites); the caller's certificate is what decides. Returns false
 // when no offered guess was accepted.
 bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
-                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess,
-                                   GuessEffort effort = GuessEffort::thorough);
+                                   const std::function<bool(const VoronoiCircleGuess&)>& try_guess);
+
+// The three sites as circles of the same centers: radius min(a, b)
+// (inscribed, so still disjoint), the mean, or max(a, b).
+enum class CircleModel { inscribed, mean, circumscribed };
+constexpr CircleModel kCircleModels[] = {CircleModel::inscribed, CircleModel::mean, CircleModel::circumscribed};
+
+// The circles externally tangent to the three circles of a model
+// (Apollonius, collinear centers included), as {radius, x, y} with the
+// center (x, y) relative to E1's center, like VoronoiCircleGuess.
+std::vector<std::array<double, 3>> model_apollonius_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                            CircleModel model);
 
 }  // namespace ellvor

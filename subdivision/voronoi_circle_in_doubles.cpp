@@ -20,32 +20,6 @@ Interval constant(double c, const Interval&) { return Interval(c); }
 double root(double x) { return std::sqrt(x); }
 Interval root(const Interval& x) { return x.sqrt(); }
 
-// A value and its derivative in the chart parameter (forward differentiation).
-template <class N>
-struct Jet {
-    N value, derivative;
-};
-template <class N>
-Jet<N> operator+(const Jet<N>& f, const Jet<N>& g) { return {f.value + g.value, f.derivative + g.derivative}; }
-template <class N>
-Jet<N> operator-(const Jet<N>& f, const Jet<N>& g) { return {f.value - g.value, f.derivative - g.derivative}; }
-template <class N>
-Jet<N> operator*(const Jet<N>& f, const Jet<N>& g) {
-    return {f.value * g.value, f.derivative * g.value + f.value * g.derivative};
-}
-template <class N>
-Jet<N> operator*(const N& c, const Jet<N>& f) { return {c * f.value, c * f.derivative}; }
-template <class N>
-Jet<N> operator/(const Jet<N>& f, const Jet<N>& g) {
-    const N q = f.value / g.value;
-    return {q, (f.derivative - q * g.derivative) / g.value};
-}
-template <class N>
-Jet<N> sqrt(const Jet<N>& f) {
-    const N s = root(f.value);
-    return {s, f.derivative / (constant(2, s) * s)};
-}
-
 // An ellipse: semi-axes, rotation (cos, sin) and center.
 template <class N>
 struct Shape {
@@ -62,48 +36,70 @@ Shape<double> double_shape(const Ellipse& e) {
     return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), k.xc.mid(), k.yc.mid()};
 }
 
-// Boundary point P and outward unit normal nu at chart parameter t, with
-// their derivatives in t. In the ellipse's frame the boundary is
-// (a cos, b sin) with cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2)
-// (sites/ellipse.hpp); the flipped chart u = -1/t gives the opposite point,
-// (cos, sin) -> -(cos, sin) at the same formula in u. The outward normal is
-// along (b cos, a sin), of length at least min(a, b).
+// Boundary point P and outward unit normal nu at chart parameter t, and
+// their derivatives in t when asked for.
 template <class N>
-struct BoundaryJet {
-    Jet<N> px, py, nx, ny;
+struct BoundaryPoint {
+    N px, py, nx, ny, dpx, dpy, dnx, dny;
 };
 
+// In the ellipse's frame the boundary is (a cos, b sin) with
+// cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2) (sites/ellipse.hpp); the
+// flipped chart u = -1/t gives the opposite point, (cos, sin) -> -(cos, sin)
+// at the same formula in u. The outward normal is along g = (b cos, a sin),
+// of length at least min(a, b). Derivatives: d/dt = w d/dtheta with
+// w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos); the unit normal
+// g/|g| has derivative (g' - nu (nu . g'))/|g|.
 template <class N>
-BoundaryJet<N> boundary_at(const Shape<N>& k, bool flipped, const N& t) {
-    const N one = constant(1, t), zero = constant(0, t);
-    const Jet<N> T{t, one}, T2 = T * T, den = Jet<N>{one, zero} + T2;
+BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool with_derivatives) {
+    const N one = constant(1, t), t2 = t * t;
+    const N inverse_den = one / (one + t2);
     const N sign = constant(flipped ? -1 : 1, t);
-    const Jet<N> c = sign * ((Jet<N>{one, zero} - T2) / den), s = sign * ((constant(2, t) * T) / den);
-    const Jet<N> lx = k.a * c, ly = k.b * s, gx = k.b * c, gy = k.a * s;
-    const Jet<N> norm = sqrt(gx * gx + gy * gy);
-    const Jet<N> mx = gx / norm, my = gy / norm;
-    const Jet<N> cx{k.xc, zero}, cy{k.yc, zero};
-    return {cx + (k.cos * lx - k.sin * ly), cy + (k.sin * lx + k.cos * ly), k.cos * mx - k.sin * my,
-            k.sin * mx + k.cos * my};
+    const N c = sign * (one - t2) * inverse_den, s = sign * (constant(2, t) * t) * inverse_den;
+    const N gx = k.b * c, gy = k.a * s;
+    const N inverse_norm = one / root(gx * gx + gy * gy);
+    const N mx = gx * inverse_norm, my = gy * inverse_norm;  // the unit normal in the ellipse's frame
+    const N lx = k.a * c, ly = k.b * s;
+    BoundaryPoint<N> p;
+    p.px = k.xc + (k.cos * lx - k.sin * ly);
+    p.py = k.yc + (k.sin * lx + k.cos * ly);
+    p.nx = k.cos * mx - k.sin * my;
+    p.ny = k.sin * mx + k.cos * my;
+    if (!with_derivatives) return p;
+    const N w = constant(2, t) * inverse_den;
+    const N dlx = -(k.a * s) * w, dly = (k.b * c) * w, dgx = -(k.b * s) * w, dgy = (k.a * c) * w;
+    const N projection = mx * dgx + my * dgy;
+    const N dmx = (dgx - mx * projection) * inverse_norm, dmy = (dgy - my * projection) * inverse_norm;
+    p.dpx = k.cos * dlx - k.sin * dly;
+    p.dpy = k.sin * dlx + k.cos * dly;
+    p.dnx = k.cos * dmx - k.sin * dmy;
+    p.dny = k.sin * dmx + k.cos * dmy;
+    return p;
 }
 
-// F and J of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y).
+// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y), and J
+// when `J` is given; `at` receives the three boundary points.
 template <class N>
 void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 3>& flipped,
-                       const std::array<N, 6>& x, std::array<N, 6>& F, std::array<std::array<N, 6>, 6>& J) {
-    const N zero = constant(0, x[0]), minus_one = constant(-1, x[0]);
-    for (auto& row : J) row.fill(zero);
+                       const std::array<N, 6>& x, std::array<N, 6>& F, std::array<std::array<N, 6>, 6>* J,
+                       std::array<BoundaryPoint<N>, 3>& at) {
     const N& rho = x[3];
     for (int i = 0; i < 3; ++i) {
-        const BoundaryJet<N> p = boundary_at(k[i], flipped[i], x[i]);
-        F[2 * i] = p.px.value + rho * p.nx.value - x[4];
-        F[2 * i + 1] = p.py.value + rho * p.ny.value - x[5];
-        J[2 * i][i] = p.px.derivative + rho * p.nx.derivative;
-        J[2 * i + 1][i] = p.py.derivative + rho * p.ny.derivative;
-        J[2 * i][3] = p.nx.value;
-        J[2 * i + 1][3] = p.ny.value;
-        J[2 * i][4] = minus_one;
-        J[2 * i + 1][5] = minus_one;
+        const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], J != nullptr);
+        F[2 * i] = p.px + rho * p.nx - x[4];
+        F[2 * i + 1] = p.py + rho * p.ny - x[5];
+    }
+    if (!J) return;
+    const N zero = constant(0, x[0]), minus_one = constant(-1, x[0]);
+    for (auto& row : *J) row.fill(zero);
+    for (int i = 0; i < 3; ++i) {
+        const BoundaryPoint<N>& p = at[i];
+        (*J)[2 * i][i] = p.dpx + rho * p.dnx;
+        (*J)[2 * i + 1][i] = p.dpy + rho * p.dny;
+        (*J)[2 * i][3] = p.nx;
+        (*J)[2 * i + 1][3] = p.ny;
+        (*J)[2 * i][4] = minus_one;
+        (*J)[2 * i + 1][5] = minus_one;
     }
 }
 
@@ -113,18 +109,26 @@ double magnitude(const Interval& x) { return std::fmax(std::fabs(x.lo), std::fab
 double add_up(double a, double b) { return Interval::up(a + b); }
 double mul_up(double c, double d) { return Interval::up(c * d); }
 
-struct Certificate {
-    std::array<Interval, 6> box;  // K(X): holds the unique solution
-};
+// The tangency points are counter-clockwise on the circle iff the normals
+// are: P_i = V - rho nu_i, and a translation followed by the scaling by
+// -rho multiplies the orientation of three points by rho^2 > 0.
+bool counterclockwise(const std::array<BoundaryPoint<Interval>, 3>& p) {
+    const Interval orientation =
+        (p[1].nx - p[0].nx) * (p[2].ny - p[0].ny) - (p[1].ny - p[0].ny) * (p[2].nx - p[0].nx);
+    return orientation.positive();
+}
 
 // The Krawczyk test with epsilon-inflation: boxes m +- r, r from the size of
 // the Newton correction, grown a few times when K(X) is not inside X.
-std::optional<Certificate> krawczyk(const std::array<Shape<Interval>, 3>& k, const std::array<bool, 3>& flipped,
-                                    const Vector6& m, const Matrix6& Y, double length_scale) {
+// Returns K(X), which holds the unique solution in X, once it has also
+// proved rho > 0 and the counter-clockwise order (on X, which contains K(X)).
+std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>, 3>& k,
+                                                const std::array<bool, 3>& flipped, const Vector6& m,
+                                                const Matrix6& Y, double length_scale) {
     std::array<Interval, 6> point, F;
-    std::array<std::array<Interval, 6>, 6> J;
+    std::array<BoundaryPoint<Interval>, 3> at;
     for (int j = 0; j < 6; ++j) point[j] = Interval(m[j]);
-    tritangent_system(k, flipped, point, F, J);
+    tritangent_system<Interval>(k, flipped, point, F, nullptr, at);
     std::array<Interval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
@@ -135,10 +139,11 @@ std::optional<Certificate> krawczyk(const std::array<Shape<Interval>, 3>& k, con
         const double unit = i < 3 ? 1.0 : length_scale;
         r[i] = 2 * magnitude(sum) + 1e-15 * (std::fabs(m[i]) + unit);
     }
+    std::array<std::array<Interval, 6>, 6> J;
     for (int attempt = 0; attempt < 3; ++attempt) {
         std::array<Interval, 6> X, K;
         for (int j = 0; j < 6; ++j) X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
-        tritangent_system(k, flipped, X, F, J);
+        tritangent_system(k, flipped, X, F, &J, at);
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
@@ -161,87 +166,97 @@ std::optional<Certificate> krawczyk(const std::array<Shape<Interval>, 3>& k, con
             if (!(K[i].lo > X[i].lo && K[i].hi < X[i].hi)) inside = false;
             reach[i] = std::fmax(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
         }
-        if (inside) return Certificate{K};
+        if (inside) {
+            if (!K[3].positive() || !counterclockwise(at)) return std::nullopt;
+            return K;
+        }
         for (int i = 0; i < 6; ++i) r[i] = 2 * std::fmax(r[i], reach[i]);
     }
     return std::nullopt;
 }
 
-// The tangency points are counter-clockwise on the circle iff the normals
-// are: P_i = V - rho nu_i, and a translation followed by the scaling by
-// -rho multiplies the orientation of three points by rho^2 > 0.
-bool counterclockwise(const std::array<Shape<Interval>, 3>& k, const std::array<bool, 3>& flipped,
-                      const std::array<Interval, 6>& box) {
-    std::array<Interval, 3> nx, ny;
-    for (int i = 0; i < 3; ++i) {
-        const BoundaryJet<Interval> p = boundary_at(k[i], flipped[i], box[i]);
-        nx[i] = p.nx.value, ny[i] = p.ny.value;
+// Newton in doubles in the charts from x, then the Krawczyk certificate;
+// `shape` and `enclosed` are the sites in doubles and enclosed. Keeps each
+// parameter in the chart where it is at most 1 in magnitude.
+std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<double>, 3>& shape,
+                                                       const std::array<Shape<Interval>, 3>& enclosed,
+                                                       std::array<bool, 3> flipped, std::array<double, 6> x,
+                                                       double length_scale) {
+    constexpr int kSteps = 12;
+    constexpr double kConverged = 1e-13;  // relative step size
+    std::array<double, 6> F;
+    std::array<std::array<double, 6>, 6> J;
+    std::array<BoundaryPoint<double>, 3> at;
+    Matrix6 Y;
+    bool converged = false;
+    for (int step = 0; step < kSteps && !converged; ++step) {
+        for (int i = 0; i < 3; ++i)
+            if (std::fabs(x[i]) > 1) x[i] = -1 / x[i], flipped[i] = !flipped[i];
+        tritangent_system(shape, flipped, x, F, &J, at);
+        Matrix6 jacobian;
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j) jacobian(i, j) = J[i][j];
+        const Eigen::PartialPivLU<Matrix6> lu(jacobian);
+        const Vector6 correction = lu.solve(Eigen::Map<const Vector6>(F.data()));
+        if (!correction.allFinite()) return std::nullopt;
+        converged = true;
+        for (int i = 0; i < 6; ++i) {
+            x[i] -= correction[i];
+            const double unit = i < 3 ? 1.0 : length_scale;
+            converged = converged && std::fabs(correction[i]) <= kConverged * (std::fabs(x[i]) + unit);
+        }
+        // Y: the inverse Jacobian one tiny step before the midpoint (any
+        // nonsingular Y is sound; a close one contracts).
+        if (converged) Y = lu.inverse();
     }
-    const Interval orientation = (nx[1] - nx[0]) * (ny[2] - ny[0]) - (ny[1] - ny[0]) * (nx[2] - nx[0]);
-    return orientation.positive();
+    if (!converged || !Y.allFinite()) return std::nullopt;
+    const std::optional<std::array<Interval, 6>> box =
+        krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
+    if (!box) return std::nullopt;
+    DoubleVoronoiCircle circle;
+    for (int i = 0; i < 3; ++i) circle.parameter[i] = (*box)[i];
+    circle.flipped = flipped;
+    circle.radius = (*box)[3], circle.center_x = (*box)[4], circle.center_y = (*box)[5];
+    return circle;
 }
 
 }  // namespace
 
-std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const std::array<const Ellipse*, 3>& sites,
-                                                                      const std::array<double, 3>& theta,
-                                                                      double radius, double center_x,
-                                                                      double center_y) {
+std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
+                                                                      const Ellipse& e3) {
+    const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
     std::array<Shape<double>, 3> shape;
     std::array<Shape<Interval>, 3> enclosed;
-    std::array<bool, 3> flipped;
-    Vector6 m;
-    double length_scale = std::fabs(radius);
+    double size = 0;
     for (int i = 0; i < 3; ++i) {
         shape[i] = double_shape(*sites[i]);
         enclosed[i] = interval_shape(*sites[i]);
-        length_scale = std::max({length_scale, shape[i].a, shape[i].b});
-        // The chart in which the parameter is at most 1 in magnitude.
-        flipped[i] = std::cos(theta[i]) < 0;
-        const double t = std::tan(theta[i] / 2);
-        m[i] = flipped[i] ? -1 / t : t;
+        size = std::max({size, shape[i].a, shape[i].b});
     }
-    m[3] = radius, m[4] = center_x, m[5] = center_y;
-    // One Newton step in doubles in the charts (the guess solved the system
-    // in angles), then Y = J(m)^-1.
-    Matrix6 Y;
-    for (int step = 0; step < 2; ++step) {
-        std::array<double, 6> x, F;
-        std::array<std::array<double, 6>, 6> J;
-        for (int j = 0; j < 6; ++j) x[j] = m[j];
-        tritangent_system(shape, flipped, x, F, J);
-        Matrix6 jacobian;
-        for (int i = 0; i < 6; ++i)
-            for (int j = 0; j < 6; ++j) jacobian(i, j) = J[i][j];
-        Y = Eigen::PartialPivLU<Matrix6>(jacobian).inverse();
-        if (!Y.allFinite()) return std::nullopt;
-        if (step == 0) m -= Y * Eigen::Map<const Vector6>(F.data());
-    }
-    if (!m.allFinite()) return std::nullopt;
-    const std::optional<Certificate> certificate = krawczyk(enclosed, flipped, m, Y, length_scale);
-    if (!certificate) return std::nullopt;
-    const std::array<Interval, 6>& box = certificate->box;
-    if (!box[3].positive() || !counterclockwise(enclosed, flipped, box)) return std::nullopt;
-    DoubleVoronoiCircle circle;
-    for (int i = 0; i < 3; ++i) circle.parameter[i] = box[i];
-    circle.flipped = flipped;
-    circle.radius = box[3], circle.center_x = box[4], circle.center_y = box[5];
-    return circle;
-}
-
-std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
-                                                                      const Ellipse& e3) {
-    std::optional<DoubleVoronoiCircle> certified;
-    const double origin_x = e1.enclosure().xc.mid(), origin_y = e1.enclosure().yc.mid();
-    for_each_voronoi_circle_guess(
-        e1, e2, e3,
-        [&](const VoronoiCircleGuess& g) {
-            certified = certify_voronoi_circle_in_doubles({&e1, &e2, &e3}, g.theta, g.radius, origin_x + g.x,
-                                                          origin_y + g.y);
-            return certified.has_value();
-        },
-        GuessEffort::quick);
-    return certified;
+    // Starts: the Apollonius circles of the circle models, each tangency at
+    // the point of E_i whose outward normal points at the center (exact for
+    // circles, close for a circle large or far against the site):
+    // (cos theta, sin theta) = (a d_u, b d_v)/|(a d_u, b d_v)| for the
+    // direction d from the site's center in its frame.
+    for (CircleModel model : kCircleModels)
+        for (const std::array<double, 3>& circle : model_apollonius_circles(e1, e2, e3, model)) {
+            std::array<double, 6> x;
+            std::array<bool, 3> flipped;
+            x[3] = circle[0], x[4] = shape[0].xc + circle[1], x[5] = shape[0].yc + circle[2];
+            for (int i = 0; i < 3; ++i) {
+                const Shape<double>& k = shape[i];
+                const double dx = x[4] - k.xc, dy = x[5] - k.yc;
+                const double du = k.a * (k.cos * dx + k.sin * dy), dv = k.b * (k.cos * dy - k.sin * dx);
+                const double norm = std::hypot(du, dv), c = du / norm, s = dv / norm;
+                // t = tan(theta/2) = s/(1 + c); flipped, u = -1/t = -s/(1 - c).
+                flipped[i] = c < 0;
+                x[i] = flipped[i] ? -s / (1 - c) : s / (1 + c);
+            }
+            if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) continue;
+            if (auto certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, circle[0])))
+                return certified;
+        }
+    return std::nullopt;
 }
 
 }  // namespace ellvor

@@ -33,17 +33,9 @@ struct DoubleVoronoiCircle {
     std::array<bool, 3> flipped{};
 };
 
-// From the quick floating-point guesses (voronoi_circle_guess.hpp,
-// GuessEffort::quick); nullopt when none of them certifies.
+// Starts from the Apollonius circles of circle models of the sites
+// (voronoi_circle_guess.hpp), Newton in doubles; nullopt when none certifies.
 std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
                                                                       const Ellipse& e3);
-
-// The certificate alone, from one floating-point solution: tangency angles
-// theta_i (P_i = C_i + R_i (a_i cos theta_i, b_i sin theta_i)), radius and
-// center in the plane's coordinates.
-std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const std::array<const Ellipse*, 3>& sites,
-                                                                      const std::array<double, 3>& theta,
-                                                                      double radius, double center_x,
-                                                                      double center_y);
 
 }  // namespace ellvor
