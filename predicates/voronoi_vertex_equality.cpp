@@ -71,11 +71,12 @@ IntPolynomial ContactComparison::polynomial(const CertifiedVoronoiCircle& c) con
 }
 
 // A short rational point in the finer center enclosure, proven the center of
-// both circles: then they are one circle (both touch the shared site, so their
-// radii are its distance). Short: at most a quarter of the enclosure's correct bits, so an
-// irrational center (whose simplest rational in the ball has about half of
-// them) almost never costs a check, while an exact center of h bits is the
-// simplest rational of every ball narrower than 2^-2h around it.
+// both circles: then they are one circle (both touch the shared site, so
+// their radii are its distance). Short: at most a quarter of the enclosure's
+// correct bits, so an irrational center (whose simplest rational in the ball
+// has about half of them) almost never costs a check, while an exact center
+// of h bits is the simplest rational of every ball narrower than 2^-2h
+// around it.
 bool ContactComparison::common_rational_center() const {
     const VoronoiCircleEnclosure &ea = a_.solver->enclosure(), &eb = b_.solver->enclosure();
     const VoronoiCircleEnclosure& finer = ea.correct_bits() >= eb.correct_bits() ? ea : eb;

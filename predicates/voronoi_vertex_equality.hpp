@@ -40,9 +40,11 @@ public:
     ContactComparison(const CertifiedVoronoiCircle& a, const CertifiedVoronoiCircle& b, bool use_rational_center = true)
         : a_(a), b_(b), try_rational_center_(use_rational_center) {}
     // Whether the two circles touch the shared site at the same point, proven
-    // exactly. Refines both solvers, doubling the precision, until each
-    // enclosure isolates a single root of its resultant (the resultants are
-    // computed on first need and kept). Throws Error past
+    // exactly. Refines both solvers, doubling the precision, until the
+    // enclosures are apart, or the rational center (tried once, when they
+    // first overlap) proves one circle, or each enclosure isolates a single
+    // root of its resultant (the resultants are computed on first need and
+    // kept). Throws Error past
     // max(precision::kExactIsolationLimit, 4 reached_precision) bits, where
     // reached_precision is what the subdivision stage already spent: simple
     // roots are isolated long before (an internal error).
