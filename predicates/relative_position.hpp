@@ -1,6 +1,7 @@
 // Relative position of two ellipses (docs/DESIGN.md §3),
 // decided exactly from the real roots of the intersection quartic and their
-// multiplicities, after an exact bounding-circle filter.
+// multiplicities, after a filter: the bounding circles, or the extents along
+// the line of the centers, apart.
 #pragma once
 
 #include "predicates/stage.hpp"
@@ -21,8 +22,8 @@ enum class RelativePosition {
 
 const char* relative_position_name(RelativePosition p);
 
-// Always decided: by the filter (bounding circles apart) or exactly (the
-// intersection quartic).
+// Always decided: by the filter (bounding circles or extents along the line
+// of the centers apart) or exactly (the intersection quartic).
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2);
 
 // The filter's first step alone: the circumscribed circles (radius max(a, b))

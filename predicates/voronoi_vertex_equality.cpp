@@ -2,6 +2,7 @@
 
 #include "exact/incircle_resultant.hpp"
 #include "exact/real_roots.hpp"
+#include "predicates/rational_voronoi_center.hpp"
 #include "sites/ellipse_polynomials.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
@@ -69,6 +70,26 @@ IntPolynomial ContactComparison::polynomial(const CertifiedVoronoiCircle& c) con
     return squarefree_part(product);
 }
 
+// A short rational point in the finer center enclosure, proven the center of
+// both circles: then they are one circle (both touch the shared site, so
+// their radii are its distance). Short: at most a quarter of the enclosure's
+// correct bits, so an irrational center (whose simplest rational in the ball
+// has about half of them) almost never costs a check, while an exact center
+// of h bits is the simplest rational of every ball narrower than 2^-2h
+// around it.
+bool ContactComparison::common_rational_center() const {
+    const VoronoiCircleEnclosure &ea = a_.solver->enclosure(), &eb = b_.solver->enclosure();
+    const VoronoiCircleEnclosure& finer = ea.correct_bits() >= eb.correct_bits() ? ea : eb;
+    const long max_bits = finer.correct_bits() / 4;
+    const std::optional<Rational> x = simplest_rational_in(finer.center_x, max_bits),
+                                  y = simplest_rational_in(finer.center_y, max_bits);
+    if (!x || !y) return false;
+    for (const VoronoiCircleEnclosure* e : {&ea, &eb})
+        if (!e->center_x.contains(*x) || !e->center_y.contains(*y)) return false;
+    RationalCenter center({*x, *y});
+    return center.is_center_of(a_.triple) && center.is_center_of(b_.triple);
+}
+
 bool ContactComparison::same_contact_point(long reached_precision) {
     const long limit = std::max(precision::kExactIsolationLimit, 4 * reached_precision);
     // From the start precision: a solver refined further already has these
@@ -103,7 +124,18 @@ std::optional<bool> ContactComparison::same_contact_point_at_current_precision()
     }
     const Ball ta = contact(a_), tb = contact(b_);
     if (!arb_is_finite(ta.get()) || !arb_is_finite(tb.get())) return std::nullopt;
-    if (!arb_overlaps(ta.get(), tb.get())) return false;
+    if (!arb_overlaps(ta.get(), tb.get())) {
+        proof_ = Proof::enclosures;
+        return false;
+    }
+    if (try_rational_center_) {
+        try_rational_center_ = false;
+        if (common_rational_center()) {
+            proof_ = Proof::rational_center;
+            return true;
+        }
+    }
+    proof_ = Proof::resultants;
     if (!pa_) pa_ = polynomial(a_);
     if (!pb_) pb_ = polynomial(b_);
     // Isolation is tested on widened balls first (k bits): cheap, since exact

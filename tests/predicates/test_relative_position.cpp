@@ -43,10 +43,20 @@ TEST_CASE("relative position: separated, filter for far pairs, exact for near on
     expect2(Ellipse::circle(0, 0, 1), Ellipse::circle(100, 0, 1), RP::separated, Stage::filter);
     expect2(Ellipse(3, 1, q(1, 3), 0, 0), Ellipse(5, 2, q(-2, 7), 40, -30), RP::separated, Stage::filter);
     // Bounding circles overlap (radius 4 each, centers 3 apart) but the flat
-    // ellipses y in [-1, 1] and [2, 4] are apart.
-    expect2(Ellipse(4, 1, 0, 0, 0), Ellipse(4, 1, 0, 0, 3), RP::separated, Stage::exact);
+    // ellipses y in [-1, 1] and [2, 4] are apart along the line of their
+    // centers: the filter's second test.
+    expect2(Ellipse(4, 1, 0, 0, 0), Ellipse(4, 1, 0, 0, 3), RP::separated, Stage::filter);
     // The same with the a-axis vertical (w = 1): x in [-1, 1] and [2, 4].
-    expect2(Ellipse(4, 1, 1, 0, 0), Ellipse(4, 1, 1, 3, 0), RP::separated, Stage::exact);
+    expect2(Ellipse(4, 1, 1, 0, 0), Ellipse(4, 1, 1, 3, 0), RP::separated, Stage::filter);
+    // Vertical neighbours of the grid "2 1 0 6i 4j": bounding circles tangent.
+    expect2(Ellipse(2, 1, 0, 0, 0), Ellipse(2, 1, 0, 0, 4), RP::separated, Stage::filter);
+    // Their gap closed to 10^-k: the doubles tell 10^-3, not 10^-30; touching is exact.
+    expect2(Ellipse(2, 1, 0, 0, 0), Ellipse(2, 1, 0, 0, Rational(2) + power_of_ten(-3)), RP::separated, Stage::filter);
+    expect2(Ellipse(2, 1, 0, 0, 0), Ellipse(2, 1, 0, 0, Rational(2) + power_of_ten(-30)), RP::separated, Stage::exact);
+    expect2(Ellipse(2, 1, 0, 0, 0), Ellipse(2, 1, 0, 0, 2), RP::externally_tangent, Stage::exact);
+    // Apart along the centers' line although the extents overlap on both axes
+    // (needles along (3, 4), side by side 5 apart).
+    expect2(Ellipse(10, 1, q(1, 2), 0, 0), Ellipse(10, 1, q(1, 2), -4, 3), RP::separated, Stage::filter);
     // Circles are their own bounding circles: close but apart is still the filter.
     expect2(Ellipse::circle(0, 0, 1), Ellipse::circle(q(201, 100), 0, 1), RP::separated, Stage::filter);
 }
