@@ -16,16 +16,20 @@
 // overflows or underflows, the exact value x of the polynomial differs from
 // the double x^ computed by at most gamma_N m, where m is the exact magnitude
 // (the magnitude computed without rounding, from the inputs' doubles).
-// Proof. Expand x^ into monomials of the input doubles: each rounding
-// multiplies everything below it by a factor (1 + d), |d| <= u, so a monomial
-// carries at most r factors, r the roundings on its path. The exact value x is
-// the same expansion without those factors and with each rounded difference
+// Proof. Expand x^ along the operations into a sum of signed products of
+// input doubles, without collecting like terms: each rounding multiplies
+// everything below it by a factor (1 + d), |d| <= u, so a product carries at
+// most r factors, r the roundings on its path, and the sum of the products'
+// absolute values is m. The exact value x is the same expansion without
+// those factors and with each rounded difference
 // v^ = fl(a - b) replaced by the exact a - b = v^ (1 + t), |t| <= u (the error
 // of a rounding to nearest is at most half an ulp of its result). By the
-// rules above, r plus the number of rounded differences in a monomial is at
+// rules above, r plus the number of rounded differences in a product is at
 // most N, and |prod (1 + d) - 1| <= gamma_r, |prod (1 + t) - 1| <= gamma_i,
 // gamma_r + gamma_i <= gamma_N (Higham, Accuracy and Stability, Lemma 3.1
-// and 3.3). Summing over the monomials, |x^ - x| <= gamma_N m.
+// and 3.3). Summing over the products, |x^ - x| <= gamma_N m. (A fused
+// multiply-add rounds once where the rules count two roundings: the bound
+// holds with contraction too.)
 //
 // The computed magnitude m^ adds and multiplies nonnegative numbers only, at
 // most N roundings on any path, so m^ >= (1 - u)^N m. certain_sign compares
