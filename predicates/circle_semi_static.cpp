@@ -40,8 +40,8 @@ Rounded<5> lorentz(const Lifted& a, const Lifted& b) { return a.x * b.x + a.y * 
 // The circles tangent to three sites, as TangentCircles of
 // circle_predicates.cpp computes them: C1 at the origin, a_i the lifted
 // sites, p_i = <a_i, a_i>, g = <a_2, a_3>, p_23 the power of (C2, C3) (from
-// their own difference: one rounding less than p_2 + p_3 - 2 g), k = a_2 x
-// a_3. The lifted circle of orientation o (+1 counter-clockwise) is
+// their own difference: a smaller index and magnitude than p_2 + p_3 - 2 g),
+// k = a_2 x a_3. The lifted circle of orientation o (+1 counter-clockwise) is
 //   w = (m + sqrt(rad) n) / (2 <k, k>),   rad = p_2 p_3 p_23,   n = -o k,
 //   m = (-M_x, -M_y, M_s),   M = (p_2 - g) p_3 a_2 + (p_3 - g) p_2 a_3,
 // and <k, k> = g^2 - p_2 p_3. The indices of semi_static.hpp are in the types;
@@ -66,7 +66,7 @@ public:
     // unproven. R = (m_s + sqrt(rad) n_s) / (2 <k, k>) - r1.
     int radius_sign(int o) const {
         const Rounded<4> n_s = o > 0 ? -k_s_ : k_s_;
-        return certain_sign_with_root(m_s_ - twice(exact(r1_) * kk_), n_s, rad_) * kk_sign_;
+        return certain_sign_with_root(m_s_ - twice(exact(c1_.r) * kk_), n_s, rad_) * kk_sign_;
     }
 
     // For the counter-clockwise circle: -1 when Q meets its open disk, +1
@@ -82,7 +82,7 @@ public:
 
 private:
     TangentCircles(const Circle& c1, const Circle& c2, const Circle& c3)
-        : c1_(c1), r1_(c1.r), a2_(lift(c2, c1)), a3_(lift(c3, c1)) {
+        : c1_(c1), a2_(lift(c2, c1)), a3_(lift(c3, c1)) {
         p2_ = lorentz(a2_, a2_);
         p3_ = lorentz(a3_, a3_);
         const Lifted d23 = lift(c3, c2);
@@ -100,7 +100,6 @@ private:
     }
 
     Circle c1_;
-    double r1_;
     Lifted a2_, a3_;
     Rounded<5> p2_, p3_, p23_, g_;
     Rounded<4> k_x_, k_y_, k_s_;
