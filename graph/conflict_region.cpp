@@ -2,64 +2,103 @@
 
 #include "util/error.hpp"
 
-#include <deque>
+#include <algorithm>
 #include <string>
 
 namespace ellvor {
 
+void ConflictMarks::start() {
+    // After 2^32 regions the generations wrap: blank everything once.
+    if (++generation_ == 0) {
+        faces_.assign(faces_.size(), Face{});
+        vertices_.assign(vertices_.size(), Vertex{});
+        generation_ = 1;
+    }
+}
+
+template <class Entry>
+Entry& ConflictMarks::entry(std::vector<Entry>& entries, int index) {
+    const auto i = static_cast<std::size_t>(index);
+    if (i >= entries.size()) entries.resize(i + 1);  // amortized: the capacity grows geometrically
+    Entry& e = entries[i];
+    if (e.generation != generation_) {
+        e = Entry{};
+        e.generation = generation_;
+    }
+    return e;
+}
+
+ConflictMarks::Face& ConflictMarks::face(FaceIndex f) { return entry(faces_, f.value()); }
+ConflictMarks::Vertex& ConflictMarks::vertex(VertexIndex v) { return entry(vertices_, v.value()); }
+
+const ConflictMarks::Face* ConflictMarks::find(FaceIndex f) const {
+    const auto i = static_cast<std::size_t>(f.value());
+    return i < faces_.size() && faces_[i].generation == generation_ ? &faces_[i] : nullptr;
+}
+
+ConflictRegion::ConflictRegion(const Triangulation& tds, TriangulationPredicates predicates, SiteId p,
+                               ConflictMarks& marks)
+    : tds_(tds), predicates_(predicates), p_(p), marks_(marks) {
+    marks_.start();
+}
+
 bool ConflictRegion::in_conflict(FaceIndex f) {
-    auto found = incircle_.find(f);
-    if (found == incircle_.end()) found = incircle_.emplace(f, predicates_.incircle(f, p_)).first;
-    return found->second == Sign::negative;
+    ConflictMarks::Face& m = marks_.face(f);
+    if (m.incircle == ConflictMarks::kUnknown) m.incircle = static_cast<signed char>(to_int(predicates_.incircle(f, p_)));
+    return m.incircle < 0;
 }
 
 bool ConflictRegion::hides(VertexIndex v) {
     if (v == Triangulation::kInfiniteVertex) return false;
-    auto found = hides_.find(v);
-    if (found == hides_.end()) found = hides_.emplace(v, predicates_.is_hidden(p_, predicates_.site(v))).first;
-    return found->second;
+    ConflictMarks::Vertex& m = marks_.vertex(v);
+    if (m.hidden == ConflictMarks::kUnknown) {
+        m.hidden = predicates_.is_hidden(p_, predicates_.site(v));
+        if (m.hidden) hidden_.push_back(v);
+    }
+    return m.hidden;
 }
 
 void ConflictRegion::expand(FaceIndex start) {
     faces_ = {start};
-    face_set_ = {start};
-    std::deque<FaceIndex> queue{start};
-    while (!queue.empty()) {
-        const FaceIndex f = queue.front();
-        queue.pop_front();
+    marks_.face(start).in_region = true;
+    // faces_ is the breadth-first queue: faces [next, end) are still to visit.
+    for (std::size_t next = 0; next < faces_.size(); ++next) {
+        const FaceIndex f = faces_[next];
         for (int i = 0; i < 3; ++i) {
+            if (marks_.face(f).crossed[i] != ConflictMarks::kUntested) continue;
             const Edge e{f, i};
-            if (crossed_.count(e)) continue;
             const Edge across = tds_.mirror_edge(e);
             // Every face around a hidden vertex is in conflict.
             const bool h1 = hides(tds_.face(f).v[ccw(i)]);
             const bool h2 = hides(tds_.face(f).v[cw(i)]);
-            const bool pass = h1 || h2 || (in_conflict(across.face) && predicates_.edge_interior(e, p_, true));
-            crossed_[e] = pass;
-            crossed_[across] = pass;
-            if (pass && face_set_.insert(across.face).second) {
+            const bool pass = h1 || h2 || (in_conflict(across.face) && predicates_.edge_interior_of_visible(e, p_, true));
+            marks_.face(f).crossed[i] = pass;
+            ConflictMarks::Face& other = marks_.face(across.face);
+            other.crossed[across.index] = pass;
+            if (pass && !other.in_region) {
+                other.in_region = true;
                 faces_.push_back(across.face);
-                queue.push_back(across.face);
             }
         }
     }
 }
 
 std::vector<VertexIndex> ConflictRegion::hidden_vertices() const {
-    std::vector<VertexIndex> out;
-    for (const auto& [v, hidden] : hides_)
-        if (hidden) out.push_back(v);
+    std::vector<VertexIndex> out = hidden_;
+    std::sort(out.begin(), out.end());
     return out;
 }
 
 std::vector<Edge> ConflictRegion::self_touching_edges() const {
     std::vector<Edge> out;
-    for (const auto& [e, pass] : crossed_) {
-        if (pass) continue;
-        const Edge across = tds_.mirror_edge(e);
-        if (!contains(e.face) || !contains(across.face)) continue;
-        if (e < across) out.push_back(e);
-    }
+    for (FaceIndex f : faces_)
+        for (int i = 0; i < 3; ++i) {
+            if (marks_.find(f)->crossed[i] != 0) continue;  // the growth crossed it
+            const Edge e{f, i};
+            const Edge across = tds_.mirror_edge(e);
+            if (contains(across.face) && e < across) out.push_back(e);
+        }
+    std::sort(out.begin(), out.end());
     return out;
 }
 
@@ -93,15 +132,14 @@ std::vector<Edge> ConflictRegion::boundary() const {
 }
 
 void ConflictRegion::check_inner_vertices(const std::vector<Edge>& boundary, const std::vector<VertexIndex>& hidden) {
-    std::set<VertexIndex> on_boundary;
-    for (const Edge& e : boundary) on_boundary.insert(tds_.face(e.face).v[ccw(e.index)]);
+    for (const Edge& e : boundary) marks_.vertex(tds_.face(e.face).v[ccw(e.index)]).on_boundary = true;
     for (FaceIndex f : faces_)
         for (VertexIndex v : tds_.face(f).v)
-            if (!on_boundary.count(v) && !hides(v))
+            if (!marks_.vertex(v).on_boundary && !hides(v))
                 throw Error("site " + std::to_string(predicates_.site(v)) + " would vanish inserting site " +
                             std::to_string(p_) + " (internal error)");
     for (VertexIndex v : hidden)
-        if (on_boundary.count(v))
+        if (marks_.vertex(v).on_boundary)
             throw Error("hidden site " + std::to_string(predicates_.site(v)) + " stays on the conflict boundary of site " +
                         std::to_string(p_) + " (internal error)");
 }

@@ -6,22 +6,63 @@
 // a Voronoi edge may have both ends in conflict and not its middle.)
 //
 // Every predicate answer about p is memoized for the insertion: kappa2/kappa3
-// per face, is_hidden(p, .) per vertex.
+// per face, is_hidden(p, .) per vertex. The memo lives in ConflictMarks,
+// arrays indexed by face and vertex that the graph keeps from one insertion to
+// the next: a region starts in O(1) and looks up in O(1), without allocating.
 #pragma once
 
 #include "graph/triangulation.hpp"
 #include "graph/triangulation_predicates.hpp"
 
-#include <map>
-#include <set>
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace ellvor {
 
+// What one conflict region knows about each face and vertex. An entry belongs
+// to the region whose generation it carries; older entries read as blank, so
+// starting a region only advances the generation.
+class ConflictMarks {
+public:
+    // Per face: kappa2/kappa3 against p, membership, and per edge whether the
+    // growth tested it and crossed it.
+    struct Face {
+        std::uint32_t generation = 0;
+        signed char incircle = kUnknown;  // a Sign, or kUnknown
+        bool in_region = false;
+        std::array<signed char, 3> crossed = {kUntested, kUntested, kUntested};
+    };
+    // Per vertex: whether p hides its site, and whether it is on the region's boundary.
+    struct Vertex {
+        std::uint32_t generation = 0;
+        signed char hidden = kUnknown;  // 0, 1, or kUnknown
+        bool on_boundary = false;
+    };
+    static constexpr signed char kUnknown = -2;
+    static constexpr signed char kUntested = -1;
+
+    // A new region: every entry blank.
+    void start();
+    // The entry of f (v) for the current region, blank if it had none.
+    Face& face(FaceIndex f);
+    Vertex& vertex(VertexIndex v);
+    // The entry if the current region made one, else nullptr.
+    const Face* find(FaceIndex f) const;
+
+private:
+    template <class Entry>
+    Entry& entry(std::vector<Entry>& entries, int index);
+
+    std::uint32_t generation_ = 0;
+    std::vector<Face> faces_;
+    std::vector<Vertex> vertices_;
+};
+
 class ConflictRegion {
 public:
-    ConflictRegion(const Triangulation& tds, TriangulationPredicates predicates, SiteId p)
-        : tds_(tds), predicates_(predicates), p_(p) {}
+    // Starts a region in `marks` (which it uses until the next region starts).
+    ConflictRegion(const Triangulation& tds, TriangulationPredicates predicates, SiteId p, ConflictMarks& marks);
 
     SiteId site() const { return p_; }
     // p meets the open Voronoi disk of face f.
@@ -33,12 +74,15 @@ public:
     void expand(FaceIndex start);
     // The faces, in the order they were reached.
     const std::vector<FaceIndex>& faces() const { return faces_; }
-    bool contains(FaceIndex f) const { return face_set_.count(f) != 0; }
+    bool contains(FaceIndex f) const {
+        const ConflictMarks::Face* m = marks_.find(f);
+        return m && m->in_region;
+    }
     // The vertices whose sites p hides, by increasing index.
     std::vector<VertexIndex> hidden_vertices() const;
     // The edges between two faces of the region that the growth did not cross,
-    // each once: the region touches itself along them, and the hole is a disk
-    // only once each is split by a bogus vertex.
+    // each once (by increasing face, then index): the region touches itself
+    // along them, and the hole is a disk only once each is split by a bogus vertex.
     std::vector<Edge> self_touching_edges() const;
     // The boundary edges (their face in the region), counter-clockwise. Throws
     // Error when they do not form one cycle (the region is not a disk).
@@ -51,11 +95,9 @@ private:
     const Triangulation& tds_;
     TriangulationPredicates predicates_;
     SiteId p_;
-    std::map<FaceIndex, Sign> incircle_;  // memo of predicates_.incircle(f, p)
-    std::map<VertexIndex, bool> hides_;   // memo of is_hidden(p, site)
+    ConflictMarks& marks_;
     std::vector<FaceIndex> faces_;
-    std::set<FaceIndex> face_set_;
-    std::map<Edge, bool> crossed_;  // every edge of a region face that was tested (both sides)
+    std::vector<VertexIndex> hidden_;  // in the order found
 };
 
 }  // namespace ellvor

@@ -154,7 +154,7 @@ void DelaunayGraph::rebuild_small(std::vector<SiteId> visible) {
 void DelaunayGraph::insert_general(SiteId p) {
     const VertexIndex nearest = nearest_vertex(p);
     if (hide_in_nearest(p, nearest)) return;
-    ConflictRegion region(tds_, predicates(), p);
+    ConflictRegion region(tds_, predicates(), p, conflict_marks_);
     const std::optional<FaceIndex> start = find_first_conflict(region, nearest);
     if (!start) {
         if (insert_in_voronoi_edge(p, nearest)) return;

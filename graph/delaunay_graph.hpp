@@ -15,6 +15,7 @@
 // which it owns: signs and booleans, never a number, never a site's shape.
 #pragma once
 
+#include "graph/conflict_region.hpp"
 #include "graph/site_grid.hpp"
 #include "graph/triangulation.hpp"
 #include "graph/triangulation_predicates.hpp"
@@ -29,8 +30,6 @@
 #include <vector>
 
 namespace ellvor {
-
-class ConflictRegion;
 
 struct GraphStats {
     std::size_t inserted = 0, hidden_on_insert = 0, degree_2_insertions = 0, bogus_vertices = 0;
@@ -117,6 +116,7 @@ private:
     VertexIndex last_vertex_;
     std::unique_ptr<SiteGrid> grid_;   // insert_all only: sites with a vertex, by location hint
     std::vector<VertexIndex> vertex_of_site_;  // the vertex a site got (checked before use: vertices die)
+    ConflictMarks conflict_marks_;             // the memo of the current insertion's conflict region
     GraphStats stats_;
 };
 

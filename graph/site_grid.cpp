@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ellvor {
 
@@ -51,22 +52,35 @@ void SiteGrid::add(SiteId s) {
 std::vector<SiteId> SiteGrid::near(SiteId s) const {
     std::vector<SiteId> out;
     if (added_ == 0) return out;
-    auto distance = [&](SiteId t) { return std::hypot(x_[t] - x_[s], y_[t] - y_[s]); };
+    // Each distance once: the sort compares pairs, not recomputed distances.
+    std::vector<std::pair<double, SiteId>> found;
     const long home = cell_of(x_[s], y_[s]), c0 = home % columns_, r0 = home / columns_;
     double best = HUGE_VAL;
+    auto visit = [&](long r, long c) {
+        for (SiteId t : cells_[static_cast<std::size_t>(r * columns_ + c)]) {
+            found.push_back({std::hypot(x_[t] - x_[s], y_[t] - y_[s]), t});
+            best = std::min(best, found.back().first);
+        }
+    };
     // A center in ring k is at least (k - 1) cells away from any point of the
-    // home cell: once that exceeds the best distance found, no ring can beat it.
-    for (long ring = 0; ring <= std::max(columns_, rows_) && (ring - 1) * cell_ <= best; ++ring)
-        for (long r = r0 - ring; r <= r0 + ring; ++r)
-            for (long c = c0 - ring; c <= c0 + ring; ++c) {
-                if (r < 0 || c < 0 || r >= rows_ || c >= columns_) continue;
-                if (std::max(std::labs(r - r0), std::labs(c - c0)) != ring) continue;  // the ring only
-                for (SiteId t : cells_[static_cast<std::size_t>(r * columns_ + c)]) {
-                    out.push_back(t);
-                    best = std::min(best, distance(t));
-                }
-            }
-    std::sort(out.begin(), out.end(), [&](SiteId a, SiteId b) { return distance(a) < distance(b); });
+    // home cell: once that exceeds the best distance found, no ring can beat
+    // it. Only the ring's cells are visited (its two rows, then its two
+    // columns without their ends), so a walk over k rings costs O(k^2).
+    for (long ring = 0; ring <= std::max(columns_, rows_) && (ring - 1) * cell_ <= best; ++ring) {
+        const long c_lo = std::max(c0 - ring, 0L), c_hi = std::min(c0 + ring, columns_ - 1);
+        for (const long r : {r0 - ring, r0 + ring}) {
+            if (r >= 0 && r < rows_)
+                for (long c = c_lo; c <= c_hi; ++c) visit(r, c);
+            if (ring == 0) break;  // one row
+        }
+        const long r_lo = std::max(r0 - ring + 1, 0L), r_hi = std::min(r0 + ring - 1, rows_ - 1);
+        for (const long c : {c0 - ring, c0 + ring})
+            if (ring > 0 && c >= 0 && c < columns_)
+                for (long r = r_lo; r <= r_hi; ++r) visit(r, c);
+    }
+    std::sort(found.begin(), found.end());
+    out.reserve(found.size());
+    for (const auto& [distance, t] : found) out.push_back(t);
     return out;
 }
 

@@ -2,7 +2,7 @@
 
 #include "util/error.hpp"
 
-#include <set>
+#include <algorithm>
 
 namespace ellvor {
 
@@ -179,13 +179,17 @@ VertexIndex Triangulation::star_hole(SiteId site, const std::vector<Edge>& bound
     }
     for (std::size_t k = 0; k < m; ++k)
         if (outer[k].b != outer[(k + 1) % m].a) throw Error("Triangulation::star_hole: boundary is not a cycle");
-    // Vertices of the hole that are not on its boundary disappear.
-    std::set<VertexIndex> on_boundary;
-    for (const Outer& o : outer) on_boundary.insert(o.a);
-    std::set<VertexIndex> inner;
+    // Vertices of the hole that are not on its boundary disappear (sorted
+    // vectors: a hole has a handful of vertices).
+    std::vector<VertexIndex> on_boundary;
+    for (const Outer& o : outer) on_boundary.push_back(o.a);
+    std::sort(on_boundary.begin(), on_boundary.end());
+    std::vector<VertexIndex> inner;
     for (FaceIndex f : hole)
         for (VertexIndex x : face(f).v)
-            if (!on_boundary.count(x)) inner.insert(x);
+            if (!std::binary_search(on_boundary.begin(), on_boundary.end(), x)) inner.push_back(x);
+    std::sort(inner.begin(), inner.end());
+    inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
     for (FaceIndex f : hole) kill_face(f);
     const VertexIndex v = add_vertex(site);
     std::vector<FaceIndex> fan(m);

@@ -19,12 +19,18 @@ void TriangulationPredicates::forget(FaceIndex f) {
 }
 
 bool TriangulationPredicates::edge_interior(Edge e, SiteId q, bool b) {
+    const Triangulation::Face& F = tds_.face(e.face);
+    for (VertexIndex v : {F.v[ccw(e.index)], F.v[cw(e.index)]})
+        if (!is_infinite(v) && traits_.is_hidden(q, site(v))) return true;
+    return edge_interior_of_visible(e, q, b);
+}
+
+bool TriangulationPredicates::edge_interior_of_visible(Edge e, SiteId q, bool b) {
     const FaceIndex g = tds_.neighbor(e);
     const bool inf_f = tds_.is_infinite_face(e.face), inf_g = tds_.is_infinite_face(g);
     if (!inf_f && !inf_g) {
         const Triangulation::Face& F = tds_.face(e.face);
         const SiteId p1 = site(F.v[ccw(e.index)]), p2 = site(F.v[cw(e.index)]);
-        if (traits_.is_hidden(q, p1) || traits_.is_hidden(q, p2)) return true;
         return traits_.finite_edge_interior(p1, p2, site(F.v[e.index]), site(tds_.mirror_vertex(e)), q, b);
     }
     if (!inf_f || !inf_g || !tds_.is_infinite_edge(e)) return finite_edge_interior_degenerated(e, q, b);
@@ -40,7 +46,6 @@ bool TriangulationPredicates::finite_edge_interior_degenerated(Edge e, SiteId q,
     }
     const Triangulation::Face& F = tds_.face(e.face);
     const SiteId p1 = site(F.v[ccw(e.index)]), p2 = site(F.v[cw(e.index)]);
-    if (traits_.is_hidden(q, p1) || traits_.is_hidden(q, p2)) return true;
     if (is_infinite(F.v[e.index])) return traits_.finite_edge_interior(p1, p2, q, b);
     return traits_.finite_edge_interior(p1, p2, site(F.v[e.index]), q, b);
 }
@@ -50,7 +55,6 @@ bool TriangulationPredicates::infinite_edge_interior(Edge e, SiteId q, bool b) {
     if (!is_infinite(tds_.face(e.face).v[ccw(e.index)])) return infinite_edge_interior(tds_.mirror_edge(e), q, b);
     const Triangulation::Face& F = tds_.face(e.face);
     const SiteId p2 = site(F.v[cw(e.index)]);
-    if (traits_.is_hidden(q, p2)) return true;
     return traits_.infinite_edge_interior(p2, site(F.v[e.index]), site(tds_.mirror_vertex(e)), q, b);
 }
 

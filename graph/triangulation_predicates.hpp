@@ -32,6 +32,9 @@ public:
     // kappa4 of edge e's Voronoi edge against q (with b: the whole edge); true
     // at once when q hides one of the edge's sites.
     bool edge_interior(Edge e, SiteId q, bool b);
+    // The same for a q known to hide neither of the edge's sites (a conflict
+    // region has asked already).
+    bool edge_interior_of_visible(Edge e, SiteId q, bool b);
     ConflictType finite_edge_conflict_type_degenerated(SiteId p1, SiteId p2, SiteId q);
     // Face f is about to leave the triangulation: the traits may drop its
     // Voronoi circle (finite faces of real sites only).

@@ -1,5 +1,6 @@
 #include "predicates/circle_incircle_filter.hpp"
 
+#include "predicates/circle_semi_static.hpp"
 #include "util/interval.hpp"
 
 #include <array>
@@ -22,6 +23,13 @@ Disk disk(const Ellipse& e) {
 }  // namespace
 
 Decision<InCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q) {
+    const Decision<InCircle> fast = circle_incircle_semi_static(e1, e2, e3, q);
+    if (fast.is_decided()) return fast;
+    return circle_incircle_interval_filter(e1, e2, e3, q);
+}
+
+Decision<InCircle> circle_incircle_interval_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                   const Ellipse& q) {
     const Decision<InCircle> undecided = Decision<InCircle>::undecided(Stage::filter, 0);
     auto decided = [](InCircle r) { return Decision<InCircle>::decided(r, Stage::filter); };
     if (!e1.is_circle() || !e2.is_circle() || !e3.is_circle() || !q.is_circle()) return undecided;

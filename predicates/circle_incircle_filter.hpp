@@ -1,4 +1,7 @@
-// The filter stage of InCircle when all four sites are circles: the
+// The filter stage of InCircle when all four sites are circles, in two steps:
+// the closed form of circle_predicates.hpp in plain doubles with a static
+// error bound (circle_semi_static.hpp), then, when that cannot prove the sign
+// or the sites are not doubles, the interval filter below: the
 // Apollonius circles of three circles in closed form (the equations
 // |V - C_i| = rho + r_i are linear in V after subtracting the first, then
 // quadratic in rho), evaluated in outward-rounded double intervals. A root
@@ -13,8 +16,12 @@
 
 namespace ellvor {
 
-// Decided by the filter stage (never tangent), or undecided: some interval
-// straddles zero, or a site is not a circle.
+// Decided by the filter stage (never tangent), or undecided: neither step
+// proves the answer, or a site is not a circle.
 Decision<InCircle> circle_incircle_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q);
+
+// The interval step alone (tests reach it with inputs the first step leaves).
+Decision<InCircle> circle_incircle_interval_filter(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                   const Ellipse& q);
 
 }  // namespace ellvor

@@ -1,6 +1,7 @@
 #include "predicates/infinite_vertex_conflict.hpp"
 
 #include "predicates/circle_predicates.hpp"
+#include "predicates/circle_semi_static.hpp"
 #include "predicates/external_bitangent.hpp"
 #include "sites/ellipse_polynomials.hpp"
 #include "util/error.hpp"
@@ -237,9 +238,15 @@ Decision<Sign> infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, co
     auto exactly = [](Sign s) { return Decision<Sign>::decided(s, Stage::exact); };
     // L is tangent to E1 where the counter-clockwise hull of E1 and E2 arrives
     // on E1: directed from E1's contact to E2's, both sites lie on its right.
-    // Three circles: the exact closed form costs less than the filter.
-    if (options.use_circle_closed_form && e1.is_circle() && e2.is_circle() && q.is_circle())
+    // Three circles: the closed form, in doubles with a static error bound,
+    // else exactly; both cost less than the general filter.
+    if (options.use_circle_closed_form && e1.is_circle() && e2.is_circle() && q.is_circle()) {
+        if (options.use_filter) {
+            const Decision<Sign> fast = circle_infinite_vertex_conflict_semi_static(e1, e2, q);
+            if (fast.is_decided()) return fast;
+        }
         return exactly(sign_of(circle_infinite_vertex_conflict(e1, e2, q)));
+    }
     if (options.use_filter)
         if (int s = filter_stage(e1, e2, q)) return Decision<Sign>::decided(sign_of(s), Stage::filter);
     BoundaryParameter t1 = external_bitangent_on(e1, e2, HullSide::arrival);

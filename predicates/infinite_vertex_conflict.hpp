@@ -18,13 +18,14 @@ namespace ellvor {
 // valid sites is. The exact stage checks it and throws Error; the filter does
 // not spend time on it (for crossing E1, E2 the external bitangent still
 // exists and its answer is the geometric one).
-// Three circles: the exact closed form (circle_predicates.hpp), cheaper than
-// any filter. Otherwise the cascade: double-interval filter on support
+// Three circles: the closed form of circle_predicates.hpp in doubles with a
+// static error bound (circle_semi_static.hpp; with use_filter), then exactly.
+// Otherwise the cascade: double-interval filter on support
 // functions -> exact signs at the bitangent's tangency parameter (a real
 // algebraic number of degree <= 4), with Arb only to order contact points in
 // the tie-break.
 struct InfiniteVertexConflictOptions {
-    bool use_filter = true;              // false: skip the filter (for tests and experiments)
+    bool use_filter = true;              // false: skip the filters (for tests and experiments)
     bool use_circle_closed_form = true;  // false: circles take the general path (tests compare the two)
 };
 // Always decided.

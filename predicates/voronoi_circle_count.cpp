@@ -1,6 +1,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 
 #include "predicates/circle_predicates.hpp"
+#include "predicates/circle_semi_static.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 
@@ -30,6 +31,10 @@ Decision<bool> pairwise_separated(const Ellipse& e1, const Ellipse& e2, const El
 }
 
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    // Three circles in doubles first: a count it proves also proves that no
+    // site contains another.
+    const Decision<VoronoiCircles> fast = circle_voronoi_circle_count_semi_static(e1, e2, e3);
+    if (fast.is_decided()) return fast;
     const Decision<bool> separated = pairwise_separated(e1, e2, e3);
     if (!*separated) return separated.with(VoronoiCircles::none);
     if (e1.is_circle() && e2.is_circle() && e3.is_circle())

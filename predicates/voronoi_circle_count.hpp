@@ -19,7 +19,8 @@ enum class VoronoiCircles {
 const char* voronoi_circles_name(VoronoiCircles v);
 
 // Sites must be pairwise separated or externally tangent; a hidden pair gives
-// none. Always decided: for three circles by the closed form
+// none. Always decided: for three circles in doubles with a static error
+// bound (circle_semi_static.hpp), else by the exact closed form
 // (circle_predicates.hpp), otherwise from three kappa2 signs; the stage is the
 // latest any of them needed.
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
