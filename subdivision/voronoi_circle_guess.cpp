@@ -22,12 +22,20 @@ struct Shape {
     double a, b, c, s, x, y;
 };
 
-// The center is subtracted exactly before rounding, so the shapes keep the
-// triple's relative geometry however far from (0, 0) it lies.
-Shape shape_of(const Ellipse& e, const Point& origin) {
-    const auto& k = e.enclosure();
-    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - origin.x).to_double(),
-            (e.yc() - origin.y).to_double()};
+// The center relative to the origin site's center: in doubles when both
+// centers are within 2^26 sizes of (0, 0) (the rounding of each, half an ulp,
+// is then below 2^-27 of the sizes: harmless in a starting point), else
+// subtracted exactly before rounding, so that the shapes keep the triple's
+// relative geometry however far from (0, 0) it lies.
+Shape shape_of(const Ellipse& e, const Ellipse& origin) {
+    const auto &k = e.enclosure(), &o = origin.enclosure();
+    const double size = std::min({k.a.mid(), k.b.mid(), o.a.mid(), o.b.mid()});
+    const double reach = std::max({std::fabs(k.xc.mid()), std::fabs(k.yc.mid()), std::fabs(o.xc.mid()),
+                                   std::fabs(o.yc.mid())});
+    if (reach < 0x1p26 * size)
+        return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), k.xc.mid() - o.xc.mid(), k.yc.mid() - o.yc.mid()};
+    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - origin.xc()).to_double(),
+            (e.yc() - origin.yc()).to_double()};
 }
 
 // Residual F(X) and Jacobian J(X) of P_i + rho nu_i - V = 0, X = (theta1..3, rho, x, y).
@@ -265,8 +273,7 @@ bool equidistant_point_search(const std::array<Shape, 3>& e, const std::function
 
 bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
                                    const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
-    const Point origin = e1.center();
-    const std::array<Shape, 3> e = {shape_of(e1, origin), shape_of(e2, origin), shape_of(e3, origin)};
+    const std::array<Shape, 3> e = {shape_of(e1, e1), shape_of(e2, e1), shape_of(e3, e1)};
     std::vector<Vector6> tried;
     // Offers a solution unless an equal one was offered already.
     auto offer = [&](const Vector6& X) {
@@ -311,8 +318,7 @@ bool for_each_voronoi_circle_guess(const Ellipse& e1, const Ellipse& e2, const E
 
 std::vector<std::array<double, 3>> model_apollonius_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
                                                             CircleModel model) {
-    const Point origin = e1.center();
-    return model_circles(blend({shape_of(e1, origin), shape_of(e2, origin), shape_of(e3, origin)}, model, 0));
+    return model_circles(blend({shape_of(e1, e1), shape_of(e2, e1), shape_of(e3, e1)}, model, 0));
 }
 
 }  // namespace ellvor
