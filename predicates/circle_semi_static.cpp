@@ -3,6 +3,7 @@
 #include "predicates/semi_static.hpp"
 
 #include <optional>
+#include <utility>
 
 namespace ellvor {
 
@@ -10,32 +11,51 @@ namespace {
 
 using namespace semi_static;
 
+// A circle site in doubles. Index 0: every parameter an exact double
+// (exact_double). Index 1: each parameter the double nearest to it
+// (rounded_input), x = x^ (1 + t) with |t| <= u, which the lemma of
+// semi_static.hpp counts like a rounding.
+template <int K>
 struct Circle {
-    double x, y, r;
+    Rounded<K> x, y, r;
 };
 
-// The site as a circle of exact doubles. Equal doubles a and b are equal
-// rationals, so this also proves that the site is a circle.
-std::optional<Circle> exact_circle(const Ellipse& e) {
-    Circle c;
-    double b;
-    if (!exact_double(e.xc(), c.x) || !exact_double(e.yc(), c.y) || !exact_double(e.a(), c.r) ||
-        !exact_double(e.b(), b) || b != c.r)
+// Equal doubles a and b are equal rationals, so this also proves that the
+// site is a circle.
+std::optional<Circle<0>> exact_circle(const Ellipse& e) {
+    double x, y, r, b;
+    if (!exact_double(e.xc(), x) || !exact_double(e.yc(), y) || !exact_double(e.a(), r) || !exact_double(e.b(), b) ||
+        b != r)
         return std::nullopt;
+    return Circle<0>{exact(x), exact(y), exact(r)};
+}
+
+std::optional<Circle<1>> rounded_circle(const Ellipse& e) {
+    if (!e.is_circle()) return std::nullopt;
+    const Ellipse::Enclosure& k = e.enclosure();
+    Circle<1> c;
+    if (!rounded_input(k.xc, c.x) || !rounded_input(k.yc, c.y) || !rounded_input(k.a, c.r)) return std::nullopt;
     return c;
 }
 
 // Site c in the lifted space of site o (circle_predicates.hpp): (C - C_o, r - r_o).
+// Of exact doubles, a rounded difference (index 1, magnitude |a - b|); of
+// rounded ones, a sum of two rounded inputs (index 2, magnitude |a| + |b|).
+template <int K>
 struct Lifted {
-    Rounded<1> x, y, s;
+    Rounded<K + 1> x, y, s;
 };
-Lifted lift(const Circle& c, const Circle& o) {
-    return {difference(c.x, o.x), difference(c.y, o.y), difference(c.r, o.r)};
+Lifted<0> lift(const Circle<0>& c, const Circle<0>& o) {
+    return {difference(c.x.value, o.x.value), difference(c.y.value, o.y.value), difference(c.r.value, o.r.value)};
 }
+Lifted<1> lift(const Circle<1>& c, const Circle<1>& o) { return {c.x - o.x, c.y - o.y, c.r - o.r}; }
 
 // <a, b> = a_x b_x + a_y b_y - a_s b_s; <a, a> is the power |D|^2 - rho^2 of
 // the pair, positive iff neither site contains the other.
-Rounded<5> lorentz(const Lifted& a, const Lifted& b) { return a.x * b.x + a.y * b.y - a.s * b.s; }
+template <int K>
+auto lorentz(const Lifted<K>& a, const Lifted<K>& b) {
+    return a.x * b.x + a.y * b.y - a.s * b.s;
+}
 
 // The circles tangent to three sites, as TangentCircles of
 // circle_predicates.cpp computes them: C1 at the origin, a_i the lifted
@@ -44,18 +64,17 @@ Rounded<5> lorentz(const Lifted& a, const Lifted& b) { return a.x * b.x + a.y * 
 // k = a_2 x a_3. The lifted circle of orientation o (+1 counter-clockwise) is
 //   w = (m + sqrt(rad) n) / (2 <k, k>),   rad = p_2 p_3 p_23,   n = -o k,
 //   m = (-M_x, -M_y, M_s),   M = (p_2 - g) p_3 a_2 + (p_3 - g) p_2 a_3,
-// and <k, k> = g^2 - p_2 p_3. The indices of semi_static.hpp are in the types;
-// the largest magnitude at inputs of 1, that of the squared InCircle form
-// below, is 27216 < 2^20 (the range of semi_static.hpp).
+// and <k, k> = g^2 - p_2 p_3. The indices of semi_static.hpp are in the types
+// (at most 54, for the squared InCircle form of rounded inputs); the largest
+// magnitude at inputs of 1, that of the squared InCircle form below, is 27216
+// < 2^20 (the range of semi_static.hpp).
+template <int K>
 class TangentCircles {
 public:
-    // Nothing when a site is not a circle of doubles or the bounds cannot
-    // prove the premises of the closed form: every power positive (so rad >
-    // 0) and <k, k> != 0 (no common tangent line).
-    static std::optional<TangentCircles> of(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-        const std::optional<Circle> c1 = exact_circle(e1), c2 = exact_circle(e2), c3 = exact_circle(e3);
-        if (!c1 || !c2 || !c3) return std::nullopt;
-        TangentCircles t(*c1, *c2, *c3);
+    // Nothing when the bounds cannot prove the premises of the closed form:
+    // every power positive (so rad > 0) and <k, k> != 0 (no common tangent line).
+    static std::optional<TangentCircles> of(const Circle<K>& c1, const Circle<K>& c2, const Circle<K>& c3) {
+        TangentCircles t(c1, c2, c3);
         if (certain_sign(t.p2_) <= 0 || certain_sign(t.p3_) <= 0 || certain_sign(t.p23_) <= 0) return std::nullopt;
         t.kk_sign_ = certain_sign(t.kk_);
         if (t.kk_sign_ == 0) return std::nullopt;
@@ -65,71 +84,84 @@ public:
     // +1 when the circle of orientation o has R > 0, -1 when R < 0, 0 when
     // unproven. R = (m_s + sqrt(rad) n_s) / (2 <k, k>) - r1.
     int radius_sign(int o) const {
-        const Rounded<4> n_s = o > 0 ? -k_s_ : k_s_;
-        return certain_sign_with_root(m_s_ - twice(exact(c1_.r) * kk_), n_s, rad_) * kk_sign_;
+        return certain_sign_with_root(m_s_ - twice(c1_.r * kk_), o > 0 ? -k_s_ : k_s_, rad_) * kk_sign_;
     }
 
     // For the counter-clockwise circle: -1 when Q meets its open disk, +1
     // when not, 0 when unproven. Q meets it iff h_Q - a_Q . w < 0, i.e.
     //   sign(p_Q <k, k> + <a_Q, M> + sqrt(rad) a_Q . k) sign(<k, k>) < 0
     // (circle_vertex_conflict in circle_predicates.cpp, divided by 2).
-    int conflict_sign(const Circle& q) const {
-        const Lifted a = lift(q, c1_);
+    int conflict_sign(const Circle<K>& q) const {
+        const Lifted<K> a = lift(q, c1_);
         const auto rational_part = lorentz(a, a) * kk_ + (a.x * m_x_ + a.y * m_y_ - a.s * m_s_);
         const auto root_part = a.x * k_x_ + a.y * k_y_ + a.s * k_s_;
         return certain_sign_with_root(rational_part, root_part, rad_) * kk_sign_;
     }
 
 private:
-    TangentCircles(const Circle& c1, const Circle& c2, const Circle& c3)
-        : c1_(c1), a2_(lift(c2, c1)), a3_(lift(c3, c1)) {
-        p2_ = lorentz(a2_, a2_);
-        p3_ = lorentz(a3_, a3_);
-        const Lifted d23 = lift(c3, c2);
-        p23_ = lorentz(d23, d23);
-        g_ = lorentz(a2_, a3_);
-        k_x_ = a2_.y * a3_.s - a2_.s * a3_.y;
-        k_y_ = a2_.s * a3_.x - a2_.x * a3_.s;
-        k_s_ = a2_.x * a3_.y - a2_.y * a3_.x;
-        kk_ = g_ * g_ - p2_ * p3_;
-        const Rounded<12> f2 = (p2_ - g_) * p3_, f3 = (p3_ - g_) * p2_;
-        m_x_ = f2 * a2_.x + f3 * a3_.x;
-        m_y_ = f2 * a2_.y + f3 * a3_.y;
-        m_s_ = f2 * a2_.s + f3 * a3_.s;
-        rad_ = p2_ * p3_ * p23_;
-    }
+    TangentCircles(const Circle<K>& c1, const Circle<K>& c2, const Circle<K>& c3)
+        : c1_(c1), a2_(lift(c2, c1)), a3_(lift(c3, c1)), p2_(lorentz(a2_, a2_)), p3_(lorentz(a3_, a3_)),
+          p23_(lorentz(lift(c3, c2), lift(c3, c2))), g_(lorentz(a2_, a3_)),
+          k_x_(a2_.y * a3_.s - a2_.s * a3_.y), k_y_(a2_.s * a3_.x - a2_.x * a3_.s), k_s_(a2_.x * a3_.y - a2_.y * a3_.x),
+          kk_(g_ * g_ - p2_ * p3_), m_x_(factor2() * a2_.x + factor3() * a3_.x),
+          m_y_(factor2() * a2_.y + factor3() * a3_.y), m_s_(factor2() * a2_.s + factor3() * a3_.s),
+          rad_(p2_ * p3_ * p23_) {}
 
-    Circle c1_;
-    Lifted a2_, a3_;
-    Rounded<5> p2_, p3_, p23_, g_;
-    Rounded<4> k_x_, k_y_, k_s_;
-    Rounded<12> kk_;
-    Rounded<15> m_x_, m_y_, m_s_;  // M (the sign of m_x, m_y is in the formulas)
-    Rounded<17> rad_;
+    using Power = decltype(lorentz(std::declval<Lifted<K>>(), std::declval<Lifted<K>>()));
+    using Coordinate = decltype(std::declval<Lifted<K>>().x);
+    using Cross = decltype(std::declval<Coordinate>() * std::declval<Coordinate>() -
+                           std::declval<Coordinate>() * std::declval<Coordinate>());
+    using Factor = decltype((std::declval<Power>() - std::declval<Power>()) * std::declval<Power>());
+    auto factor2() const { return (p2_ - g_) * p3_; }
+    auto factor3() const { return (p3_ - g_) * p2_; }
+
+    Circle<K> c1_;
+    Lifted<K> a2_, a3_;
+    Power p2_, p3_, p23_, g_;
+    Cross k_x_, k_y_, k_s_;
+    decltype(std::declval<Power>() * std::declval<Power>() - std::declval<Power>() * std::declval<Power>()) kk_;
+    decltype(std::declval<Factor>() * std::declval<Coordinate>() + std::declval<Factor>() * std::declval<Coordinate>())
+        m_x_, m_y_, m_s_;  // M (the sign of m_x, m_y is in the formulas)
+    decltype(std::declval<Power>() * std::declval<Power>() * std::declval<Power>()) rad_;
     int kk_sign_ = 0;
 };
+
+// kappa3 from circles of index K.
+template <int K>
+Decision<InCircle> incircle_of(const Circle<K>& c1, const Circle<K>& c2, const Circle<K>& c3, const Circle<K>& q) {
+    const Decision<InCircle> undecided = Decision<InCircle>::undecided(Stage::filter, 0);
+    const std::optional<TangentCircles<K>> circles = TangentCircles<K>::of(c1, c2, c3);
+    if (!circles) return undecided;
+    const int radius = circles->radius_sign(1);
+    if (radius < 0) return Decision<InCircle>::decided(InCircle::no_circle, Stage::filter);
+    if (radius == 0) return undecided;
+    const int s = circles->conflict_sign(q);
+    if (s == 0) return undecided;
+    return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : InCircle::no_conflict, Stage::filter);
+}
 
 }  // namespace
 
 Decision<InCircle> circle_incircle_semi_static(const Ellipse& c1, const Ellipse& c2, const Ellipse& c3,
                                                const Ellipse& q) {
-    const Decision<InCircle> undecided = Decision<InCircle>::undecided(Stage::filter, 0);
-    const std::optional<Circle> circle_q = exact_circle(q);
-    if (!circle_q) return undecided;
-    const std::optional<TangentCircles> circles = TangentCircles::of(c1, c2, c3);
-    if (!circles) return undecided;
-    const int radius = circles->radius_sign(1);
-    if (radius < 0) return Decision<InCircle>::decided(InCircle::no_circle, Stage::filter);
-    if (radius == 0) return undecided;
-    const int s = circles->conflict_sign(*circle_q);
-    if (s == 0) return undecided;
-    return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : InCircle::no_conflict, Stage::filter);
+    // Exact doubles first (smaller indices: a tighter bound), else the
+    // nearest doubles of the rationals.
+    const auto e1 = exact_circle(c1), e2 = exact_circle(c2), e3 = exact_circle(c3), eq = exact_circle(q);
+    if (e1 && e2 && e3 && eq) {
+        const Decision<InCircle> d = incircle_of(*e1, *e2, *e3, *eq);
+        if (d.is_decided()) return d;
+    }
+    const auto r1 = rounded_circle(c1), r2 = rounded_circle(c2), r3 = rounded_circle(c3), rq = rounded_circle(q);
+    if (r1 && r2 && r3 && rq) return incircle_of(*r1, *r2, *r3, *rq);
+    return Decision<InCircle>::undecided(Stage::filter, 0);
 }
 
 Decision<VoronoiCircles> circle_voronoi_circle_count_semi_static(const Ellipse& c1, const Ellipse& c2,
                                                                  const Ellipse& c3) {
     const Decision<VoronoiCircles> undecided = Decision<VoronoiCircles>::undecided(Stage::filter, 0);
-    const std::optional<TangentCircles> circles = TangentCircles::of(c1, c2, c3);
+    const auto e1 = exact_circle(c1), e2 = exact_circle(c2), e3 = exact_circle(c3);
+    if (!e1 || !e2 || !e3) return undecided;
+    const std::optional<TangentCircles<0>> circles = TangentCircles<0>::of(*e1, *e2, *e3);
     if (!circles) return undecided;
     const int ccw = circles->radius_sign(1), cw = circles->radius_sign(-1);
     if (ccw == 0 || cw == 0) return undecided;
@@ -140,14 +172,14 @@ Decision<VoronoiCircles> circle_voronoi_circle_count_semi_static(const Ellipse& 
 
 Decision<Sign> circle_infinite_vertex_conflict_semi_static(const Ellipse& c1, const Ellipse& c2, const Ellipse& q) {
     const Decision<Sign> undecided = Decision<Sign>::undecided(Stage::filter, 0);
-    const std::optional<Circle> e1 = exact_circle(c1), e2 = exact_circle(c2), eq = exact_circle(q);
+    const auto e1 = exact_circle(c1), e2 = exact_circle(c2), eq = exact_circle(q);
     if (!e1 || !e2 || !eq) return undecided;
     // circle_infinite_vertex_conflict (circle_predicates.cpp): with D = C2 -
     // C1, dr = r1 - r2, e = |D|^2 - dr^2 > 0, D_Q and rho_Q Q's lifted
     // coordinates, Q meets the half-plane iff
     //   dr D . D_Q + rho_Q |D|^2 + sqrt(e) D x D_Q > 0.
-    const Lifted d = lift(*e2, *e1), dq = lift(*eq, *e1);
-    const Rounded<5> e = lorentz(d, d);
+    const Lifted<0> d = lift(*e2, *e1), dq = lift(*eq, *e1);
+    const auto e = lorentz(d, d);
     if (certain_sign(e) <= 0) return undecided;
     const auto rational_part = -d.s * (d.x * dq.x + d.y * dq.y) + dq.s * (d.x * d.x + d.y * d.y);
     const int side = certain_sign_with_root(rational_part, d.x * dq.y - d.y * dq.x, e);

@@ -50,6 +50,7 @@
 #pragma once
 
 #include "util/flint_types.hpp"
+#include "util/interval.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -121,6 +122,23 @@ inline bool exact_double(const Rational& q, double& out) {
     constexpr slong kMantissa = slong(1) << 53;
     if (n >= kMantissa || n <= -kMantissa) return false;
     out = static_cast<double>(n) / static_cast<double>(d);
+    return true;
+}
+
+// A rational input known by its enclosure from enclose(const Rational&)
+// (util/interval.hpp): [down(x^), up(x^)] around the double x^ nearest to it
+// (Rational::to_double rounds to nearest), so x^ = up(lo), and x = x^ (1 + t)
+// with |t| <= u (half an ulp of x^): index 1, counted like a rounded
+// difference in the lemma above. Range: only 0 or 2^-30 <= |x^| <= 2^30.
+// Such doubles are multiples of 2^-82, so a nonzero value of degree d <= 12
+// in them (and their differences) is at least 2^(-82 d) >= 2^-984, a normal
+// double; differences stay below 2^31, so a magnitude of degree 12 is at most
+// 2^20 (2^31)^12 < 2^400. False outside the range (a later stage decides).
+inline bool rounded_input(const Interval& enclosure, Rounded<1>& out) {
+    const double x = Interval::up(enclosure.lo);
+    const double m = std::fabs(x);
+    if (m != 0 && !(m >= 0x1p-30 && m <= 0x1p30)) return false;
+    out = {x, m};
     return true;
 }
 

@@ -68,7 +68,7 @@ public:
     bool is_integer() const { return fmpz_is_one(fmpq_denref(v_)); }
     // Bits of the larger of |numerator| and denominator.
     long bits() const;
-    double to_double() const;
+    double to_double() const;  // the nearest double (in the normal range)
     std::string str() const;  // "p/q" or "p"
 
     friend bool operator==(const Rational& a, const Rational& b) { return fmpq_equal(a.v_, b.v_); }

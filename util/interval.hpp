@@ -84,7 +84,8 @@ inline Interval enclose(const Ball& b) {
     return {lo, hi};
 }
 
-// An enclosure of a rational (conversion within one ulp, then widened).
+// An enclosure of a rational: [down(x^), up(x^)] around its nearest double x^
+// (Rational::to_double), so x^ = up(lo) (predicates/semi_static.hpp reads it so).
 inline Interval enclose(const Rational& q) { return Interval::around(q.to_double()); }
 
 }  // namespace ellvor

@@ -24,6 +24,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 #include <random>
 
 using namespace ellvor;
@@ -176,13 +177,53 @@ TEST_CASE("semi-static circle predicates agree with the exact closed form and CG
     CHECK(compared_with_cgal > 300);
 }
 
+TEST_CASE("semi-static InCircle on circles that are not doubles (the nearest doubles, index 1) agrees with the exact "
+          "closed form",
+          "[semi-static][circle-predicates]") {
+    Rng rng(20261124);
+    int n = 0, decided = 0, near_tangent = 0;
+    while (n < 2000) {
+        // Denominators 3, 7, 10 (decimals, as the paper's sets), and every
+        // fifth query moved to within 10^-12 of the circle's boundary region
+        // by a tiny radius change, where the input rounding matters most.
+        const long den = n % 3 == 0 ? 3 : n % 3 == 1 ? 7 : 10;
+        std::array<oracle::Circle, 4> c;
+        for (auto& s : c) s = {oracle::rnd(rng, -20, 20, den), oracle::rnd(rng, -20, 20, den), oracle::rnd_pos(rng, 4 * den, den)};
+        if (!all_apart(c)) continue;
+        const Ellipse a = c[0].ellipse(), b = c[1].ellipse(), d = c[2].ellipse();
+        Ellipse q = c[3].ellipse();
+        if (n % 5 == 0 && circle_voronoi_circle_count(a, b, d) == VoronoiCircles::ccw_only) {
+            // Q's radius set to its distance to the circle, rounded to 10^-12.
+            const CircleVoronoiVertex vertex(a, b, d);
+            if (!vertex.exists()) continue;
+            const double gap = std::hypot(vertex.center_x().to_ball(64).mid_double() - q.xc().to_double(),
+                                          vertex.center_y().to_ball(64).mid_double() - q.yc().to_double()) -
+                               vertex.radius().to_ball(64).mid_double();
+            if (!(gap > 0.01)) continue;
+            q = Ellipse::circle(q.xc(), q.yc(), Rational(static_cast<long>(std::llround(gap * 1e12)), 1000000000000UL));
+            ++near_tangent;
+        }
+        ++n;
+        INFO(ell({&a, &b, &d, &q}));
+        const Decision<InCircle> k3 = circle_incircle_semi_static(a, b, d, q);
+        if (!k3.is_decided()) continue;
+        ++decided;
+        CHECK(k3.stage == Stage::filter);
+        CHECK(sign_of_incircle(*k3) == circle_vertex_conflict(a, b, d, q));
+    }
+    INFO("decided " << decided << " of " << n << " (" << near_tangent << " near tangent)");
+    CHECK(near_tangent > 100);
+    CHECK(decided >= n * 9 / 10);
+}
+
 TEST_CASE("the InCircle filter of four circles: the semi-static step first, the interval step for the rest",
           "[semi-static][circle-predicates]") {
     Rng rng(77);
-    int dyadic_n = 0, rational_n = 0;
+    int dyadic_n = 0, rational_n = 0, rational_fast = 0;
     while (dyadic_n + rational_n < 400) {
-        // Half dyadic (the semi-static step decides), half with denominators
-        // 3 and 7 (not doubles: only the interval step can).
+        // Half dyadic (the semi-static step decides on exact doubles), half
+        // with denominators 3 and 7 (not doubles: the semi-static step works
+        // on their nearest doubles, with one more rounding counted).
         const bool doubles = (dyadic_n + rational_n) % 2 == 0;
         std::array<oracle::Circle, 4> c;
         for (auto& s : c)
@@ -200,14 +241,15 @@ TEST_CASE("the InCircle filter of four circles: the semi-static step first, the 
             if (fast.is_decided()) CHECK(*filter == *fast);
         } else {
             ++rational_n;
-            CHECK(!fast.is_decided());
+            rational_fast += fast.is_decided();
+            if (fast.is_decided()) CHECK(*filter == *fast);
             const Decision<InCircle> interval = circle_incircle_interval_filter(a, b, d, q);
-            CHECK(filter.is_decided() == interval.is_decided());
-            if (interval.is_decided()) CHECK(*filter == *interval);
+            if (interval.is_decided() && filter.is_decided()) CHECK(*filter == *interval);
         }
         if (filter.is_decided()) CHECK(sign_of_incircle(*filter) == want);
         check_cascade(a, b, d, q);
     }
+    CHECK(rational_fast >= rational_n * 9 / 10);
 }
 
 // ------------------------------------------------- degenerate and near it --
