@@ -1,7 +1,7 @@
 // The filter stage of InCircle when all four sites are circles, in two steps:
 // the closed form of circle_predicates.hpp in plain doubles with a static
 // error bound (circle_semi_static.hpp), then, when that cannot prove the sign
-// or the sites are not doubles, the interval filter below: the
+// or the sites are out of its range, the interval filter below: the
 // Apollonius circles of three circles in closed form (the equations
 // |V - C_i| = rho + r_i are linear in V after subtracting the first, then
 // quadratic in rho), evaluated in outward-rounded double intervals. A root

@@ -3,10 +3,11 @@
 // to the cone, circle_predicates.hpp), evaluated in round-to-nearest and
 // compared against an error bound fixed by the operations. Each decides
 // (Stage::filter) when every parameter of its sites is a double (a dyadic
-// rational with a numerator below 2^53) and the bound proves the sign, and is
-// undecided otherwise: a common tangent line, a tangency, nested sites,
-// sites beyond doubles -- the caller goes on to the next stage. None answers
-// tangent or zero.
+// rational with a numerator below 2^53) -- InCircle also on other rationals,
+// through their nearest doubles (semi_static.hpp, rounded_input) -- and the
+// bound proves the sign, and is undecided otherwise: a common tangent line, a
+// tangency, nested sites, sites out of range -- the caller goes on to the
+// next stage. None answers tangent or zero.
 #pragma once
 
 #include "predicates/incircle.hpp"

@@ -142,14 +142,18 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
     std::array<std::array<Interval, 6>, 6> J;
     for (int attempt = 0; attempt < 3; ++attempt) {
         std::array<Interval, 6> X, K;
-        for (int j = 0; j < 6; ++j) X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
+        std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding outward widened X beyond m +- r
+        for (int j = 0; j < 6; ++j) {
+            X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
+            reach_of_box[j] = Interval::up(std::fmax(m[j] - X[j].lo, X[j].hi - m[j]));
+        }
         tritangent_system(k, flipped, X, F, &J, at);
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
             // Row i of I - Y J(X), using where J is zero (column t_c: rows
             // 2c, 2c + 1; V_x and V_y: -1 in the even and odd rows), times
-            // X - m = [-r, r]: its magnitude times r.
+            // X - m, within [-reach_of_box, reach_of_box]: its magnitude times that.
             std::array<Interval, 6> row;
             for (int c = 0; c < 3; ++c) row[c] = Y(i, 2 * c) * J[2 * c][c] + Y(i, 2 * c + 1) * J[2 * c + 1][c];
             row[3] = Interval(0.0);
@@ -159,7 +163,7 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
             double spread = 0;
             for (int c = 0; c < 6; ++c) {
                 const Interval entry = Interval(i == c ? 1.0 : 0.0) - row[c];
-                spread = add_up(spread, mul_up(magnitude(entry), r[c]));
+                spread = add_up(spread, mul_up(magnitude(entry), reach_of_box[c]));
             }
             K[i] = Interval(m[i]) - correction[i] + Interval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
