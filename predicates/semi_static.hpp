@@ -91,22 +91,42 @@ Rounded<A> twice(Rounded<A> y) {
     return {2 * y.value, 2 * y.magnitude};
 }
 
+// fl((N + 1) u m^) >= gamma_N m >= |x^ - x| (the lemma and the paragraph above).
+template <int N>
+double error_bound(Rounded<N> x) {
+    return (N + 1) * 0x1p-53 * x.magnitude;  // (N + 1) 2^-53 is exact: one rounding
+}
+
 // The sign of the exact value when the lemma proves it, else 0.
 template <int N>
 int certain_sign(Rounded<N> x) {
-    const double bound = (N + 1) * 0x1p-53 * x.magnitude;  // (N + 1) 2^-53 is exact: one rounding
+    const double bound = error_bound(x);
     return x.value > bound ? 1 : x.value < -bound ? -1 : 0;
 }
 
+// Whether |a| > |b| sqrt(r) is proven: |a| >= |a^| - E_a, |b| <= |b^| + E_b
+// and r <= r^ + E_r (E = error_bound), compared squared in outward-rounded
+// intervals (util/interval.hpp).
+template <int A, int B, int R>
+bool dominates(Rounded<A> a, Rounded<B> b, Rounded<R> r) {
+    const Interval low = Interval(std::fabs(a.value)) - Interval(error_bound(a));
+    const Interval high = Interval(std::fabs(b.value)) + Interval(error_bound(b));
+    const Interval r_high = Interval(r.value) + Interval(error_bound(r));
+    return low.lo > 0 && low.square().lo > (high.square() * r_high).hi;
+}
+
 // The sign of a + b sqrt(r) for r > 0 (the caller proves it), else 0. A zero
-// magnitude proves a zero value (equal radii make whole terms vanish). With
-// opposite signs of a and b it is sign(a) sign(a^2 - b^2 r), as
-// a^2 - b^2 r = (a - b sqrt(r)) (a + b sqrt(r)) and a - b sqrt(r) has the sign of a.
+// magnitude proves a zero value (equal radii make whole terms vanish). When
+// b has no certain sign (symmetric data can make it exactly 0), a decides if
+// |a| > |b| sqrt(r) is proven (dominates). With opposite signs of a and b it
+// is sign(a) sign(a^2 - b^2 r), as a^2 - b^2 r = (a - b sqrt(r)) (a + b sqrt(r))
+// and a - b sqrt(r) has the sign of a.
 template <int A, int B, int R>
 int certain_sign_with_root(Rounded<A> a, Rounded<B> b, Rounded<R> r) {
     if (b.magnitude == 0) return certain_sign(a);
     if (a.magnitude == 0) return certain_sign(b);
     const int sa = certain_sign(a), sb = certain_sign(b);
+    if (sa != 0 && sb == 0) return dominates(a, b, r) ? sa : 0;
     if (sa == 0 || sb == 0) return 0;
     if (sa == sb) return sa;
     return sa * certain_sign(a * a - b * b * r);

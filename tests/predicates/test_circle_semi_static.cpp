@@ -16,6 +16,7 @@
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/semi_static.hpp"
 #include "predicates/voronoi_circle_count.hpp"
+#include "sites/site_generators.hpp"
 #include "tests/predicates/circle_oracles.hpp"
 
 #include <CGAL/Apollonius_graph_traits_2.h>
@@ -26,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <utility>
 
 using namespace ellvor;
 
@@ -341,4 +343,29 @@ TEST_CASE("semi-static: huge, tiny and non-double coordinates", "[semi-static][c
     }
     CHECK(decided_huge > 190);
     CHECK(decided_tiny > 190);
+}
+
+// ------------------------------------------------------ a zero root term --
+
+TEST_CASE("semi-static InCircle on the paper's set (1): the square-root term is exactly 0, the rational part decides",
+          "[semi-static][circle-predicates]") {
+    // Set (1)'s triple is symmetric enough that a_Q . k = 0 for every query:
+    // b = 0 exactly, which no error bound proves; |a| > |b| sqrt(r) is proven
+    // instead (semi_static.hpp, dominates). The one tangent query stays undecided.
+    PaperDataset set = generate_paper_dataset(PaperFamily::incircle, "1", 1);
+    int decided = 0, tangent = 0;
+    for (PaperInstance& in : set.instances) {
+        if (circle_voronoi_circle_count(in.sites[0], in.sites[1], in.sites[2]) == VoronoiCircles::cw_only)
+            std::swap(in.sites[1], in.sites[2]);
+        const Ellipse &a = in.sites[0], &b = in.sites[1], &c = in.sites[2], &q = *in.query_site;
+        INFO(ell({&a, &b, &c, &q}));
+        const int want = circle_vertex_conflict(a, b, c, q);
+        tangent += want == 0;
+        const Decision<InCircle> k3 = circle_incircle_semi_static(a, b, c, q);
+        if (!k3.is_decided()) continue;
+        ++decided;
+        CHECK(sign_of_incircle(*k3) == want);
+    }
+    CHECK(tangent == 1);
+    CHECK(decided == static_cast<int>(set.instances.size()) - tangent);
 }
