@@ -32,8 +32,9 @@ const char* const kHelp =
     "  --json                print {result, sign, stage, precision, newton_steps, time_us}\n"
     "  --max-precision BITS  precision at which the exact stage takes over (default 4096)\n"
     "\n"
-    "The Voronoi circle is always certified (from a floating-point guess, or else by an\n"
-    "exhaustive search), so every answer is decided.\n"
+    "The Voronoi circle is always certified (in double intervals, else in Arb from a\n"
+    "floating-point guess or by an exhaustive search), so every answer is decided. --json's\n"
+    "stage is the one that decided: filter (doubles), subdivision (Arb) or exact.\n"
     "\n"
     "exit status: 0 decided; 2 bad input (FILE must hold exactly four sites, no two of\n"
     "them crossing); 1 internal error.\n";
