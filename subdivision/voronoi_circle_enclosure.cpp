@@ -214,7 +214,11 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
         tritangent_system(charts(), midpoint_, Fm, nullptr, prec);
         tritangent_system(charts(), midpoint_, Flow, &Jm, low);
     }
-    if (!arb_mat_approx_inv(Y.get(), Jm.get(), low)) return false;
+    // Y at two limbs at least, even for a 64-bit certificate: a Y good to
+    // 64 bits leaves K's midpoint a rounding off roots with short binary
+    // representations (the paper's set (1): radius exactly 1), and every
+    // later Newton step then works on full-length mantissas (1.4x slower).
+    if (!arb_mat_approx_inv(Y.get(), Jm.get(), std::max(low, kLowPrecision))) return false;
     BallMatrix YF(kUnknowns, 1);
     arb_mat_mul(YF.get(), Y.get(), Fm.get(), prec);
 
