@@ -419,6 +419,9 @@ public:
         return timed(kKappa4Infinite, {p2, p3, p4, q},
                      [=](DelaunayTraits& t) { return t.infinite_edge_interior(p2, p3, p4, q, b); });
     }
+    bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override {
+        return inner_.is_degenerate_edge(p1, p2, p3, p4);  // deletion only: never called here
+    }
     void forget_face(SiteId i, SiteId j, SiteId k) override { inner_.forget_face(i, j, k); }
     const TraitsStats& stats() const override { return inner_.stats(); }
 

@@ -3,17 +3,24 @@
 #include "graph/conflict_region.hpp"
 #include "util/error.hpp"
 
+#include "graph/subset_traits.hpp"
+
 #include <algorithm>
+#include <limits>
 #include <numeric>
+#include <unordered_map>
 
 namespace ellvor {
 namespace {
 std::string str(SiteId i) { return std::to_string(i); }
+// host_ of a site that no site hides.
+constexpr SiteId kNoHost = std::numeric_limits<SiteId>::max();
 }  // namespace
 
 DelaunayGraph::DelaunayGraph(std::unique_ptr<DelaunayTraits> traits) : traits_(std::move(traits)) {
     if (!traits_) throw Error("DelaunayGraph: no traits");
     hidden_in_.resize(traits_->size());
+    host_.assign(traits_->size(), kNoHost);
     inserted_.assign(traits_->size(), 0);
     vertex_of_site_.resize(traits_->size());
 }
@@ -49,7 +56,11 @@ void DelaunayGraph::insert(SiteId p) {
 void DelaunayGraph::hide(SiteId hidden, SiteId by) {
     auto& list = hidden_in_[by];
     list.push_back(hidden);
-    list.insert(list.end(), hidden_in_[hidden].begin(), hidden_in_[hidden].end());
+    host_[hidden] = by;
+    for (SiteId h : hidden_in_[hidden]) {
+        list.push_back(h);
+        host_[h] = by;
+    }
     hidden_in_[hidden].clear();
 }
 
@@ -122,6 +133,7 @@ void DelaunayGraph::insert_third(SiteId p) {
         }
     }
     small_.clear();
+    for (VertexIndex v : tds_.finite_vertices()) vertex_of_site_[site_of(v)] = v;
     const Triangulation::Face& first = tds_.face(FaceIndex(0));
     last_vertex_ = first.v[0] == Triangulation::kInfiniteVertex ? first.v[1] : first.v[0];
 }
@@ -273,6 +285,236 @@ void DelaunayGraph::record_vertex(SiteId p, VertexIndex v) {
     last_vertex_ = v;
     vertex_of_site_[p] = v;
     if (grid_) grid_->add(p);
+}
+
+// ---------------------------------------------------------------- deletion
+
+void DelaunayGraph::remove(SiteId s) {
+    if (s >= traits_->size()) throw Error("DelaunayGraph::remove: no site " + str(s));
+    if (!inserted_[s]) throw Error("DelaunayGraph::remove: site " + str(s) + " is not in the graph");
+    inserted_[s] = 0;
+    ++stats_.removed;
+    if (host_[s] != kNoHost) {
+        auto& list = hidden_in_[host_[s]];
+        list.erase(std::find(list.begin(), list.end(), s));
+        host_[s] = kNoHost;
+        return;
+    }
+    std::vector<SiteId> orphans;
+    orphans.swap(hidden_in_[s]);
+    if (tds_.empty()) {
+        small_.erase(std::find(small_.begin(), small_.end(), s));
+    } else if (tds_.number_of_vertices() == 4) {
+        // Three sites: the two others are the small case again.
+        TriangulationPredicates pred = predicates();
+        for (FaceIndex f : tds_.faces()) pred.forget(f);
+        std::vector<SiteId> rest;
+        for (VertexIndex v : tds_.finite_vertices())
+            if (site_of(v) != s) rest.push_back(site_of(v));
+        tds_.clear();
+        small_ = rest;
+        last_vertex_ = VertexIndex();
+    } else {
+        remove_vertex(vertex_of(s));
+    }
+    // The sites s hid come back (CGAL: largest first, so that fewer are hidden again).
+    std::stable_sort(orphans.begin(), orphans.end(),
+                     [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
+    for (SiteId h : orphans) {
+        host_[h] = kNoHost;
+        inserted_[h] = 0;
+        --stats_.inserted;  // counted again by insert
+        insert(h);
+    }
+}
+
+VertexIndex DelaunayGraph::vertex_of(SiteId s) const {
+    const VertexIndex v = vertex_of_site_[s];
+    if (tds_.is_vertex(v) && v != Triangulation::kInfiniteVertex && site_of(v) == s) return v;
+    for (VertexIndex w : tds_.finite_vertices())  // not recorded (sites of a rebuild): rare
+        if (site_of(w) == s) return w;
+    throw Error("DelaunayGraph: site " + str(s) + " has no vertex (internal error)");
+}
+
+// CGAL's remove with more than three vertices: degree 2 and 3 directly,
+// larger degrees through the small graph of the neighbours.
+void DelaunayGraph::remove_vertex(VertexIndex v) {
+    minimize_degree(v);
+    const std::vector<FaceIndex> star = tds_.incident_faces(v);
+    for (FaceIndex f : star)
+        for (VertexIndex w : tds_.face(f).v)
+            if (w != v && w != Triangulation::kInfiniteVertex) last_vertex_ = w;
+    if (star.size() > 3) {
+        if (!replace_star_by_small_graph(v)) rebuild_without(v);
+        return;
+    }
+    TriangulationPredicates pred = predicates();
+    for (FaceIndex f : star) pred.forget(f);
+    if (star.size() == 2) {
+        tds_.remove_degree_2(v);
+    } else {
+        // Degree 3: the link is a triangle, one face fills it.
+        const std::array<VertexIndex, 3> link = {tds_.face(star[0]).v[ccw(tds_.index(star[0], v))],
+                                                 tds_.face(star[1]).v[ccw(tds_.index(star[1], v))],
+                                                 tds_.face(star[2]).v[ccw(tds_.index(star[2], v))]};
+        tds_.replace_star(v, {Triangulation::NewFace{link, {-1, -1, -1}, {1, 2, 0}}});
+    }
+}
+
+// CGAL's minimize_degree: an edge at v whose two Voronoi vertices are one
+// circle (four sites tangent to it) is flipped, so that the circle becomes a
+// face of the neighbours; the small graph's conflict region then matches v's
+// star (a circle merely tangent to v is not in conflict with it).
+void DelaunayGraph::minimize_degree(VertexIndex v) {
+    TriangulationPredicates pred = predicates();
+    for (bool flipped = true; flipped;) {
+        flipped = false;
+        const std::vector<FaceIndex> star = tds_.incident_faces(v);
+        if (star.size() <= 3) return;
+        for (FaceIndex f : star) {
+            const int k = tds_.index(f, v);
+            const Edge e{f, ccw(k)};  // from w = f.v[cw(k)] to v
+            const VertexIndex w = tds_.face(f).v[cw(k)], x = tds_.face(f).v[ccw(k)], y = tds_.mirror_vertex(e);
+            if (w == Triangulation::kInfiniteVertex || x == Triangulation::kInfiniteVertex ||
+                y == Triangulation::kInfiniteVertex || !tds_.is_flippable(e))
+                continue;
+            if (!traits_->is_degenerate_edge(site_of(w), site_of(v), site_of(x), site_of(y))) continue;
+            pred.forget(f);
+            pred.forget(tds_.neighbor(e));
+            tds_.flip(e);
+            ++stats_.degenerate_flips;
+            flipped = true;
+            break;
+        }
+    }
+}
+
+// CGAL's remove_degree_d_vertex, without replaying flips: the faces that
+// fill v's star are those of the small graph of v's neighbours that v's site
+// conflicts with. v's cell is the same in the small graph as in the whole one
+// (cells are star-shaped about their sites), so that conflict region, bounded
+// counter-clockwise, reads as v's link; it is copied in by matching the two
+// cycles. False when they do not match (left to rebuild_without).
+bool DelaunayGraph::replace_star_by_small_graph(VertexIndex v) {
+    // A link edge with v on both sides gets a bogus vertex, as in insertion:
+    // the star becomes a disk; the small graph's region gets them likewise.
+    std::vector<VertexIndex> bogus;
+    for (FaceIndex f : tds_.incident_faces(v)) {
+        const int k = tds_.index(f, v);
+        if (tds_.index(tds_.neighbor({f, k}), v) >= 0)
+            bogus.push_back(tds_.insert_degree_2({f, k}, Triangulation::kBogusSite));
+    }
+    stats_.bogus_vertices += bogus.size();
+    const std::vector<FaceIndex> star = tds_.incident_faces(v);
+    const std::size_t m = star.size();
+    std::vector<VertexIndex> link(m);  // start of link edge k
+    std::vector<SiteId> neighbours;
+    for (std::size_t k = 0; k < m; ++k) {
+        link[k] = tds_.face(star[k]).v[ccw(tds_.index(star[k], v))];
+        if (link[k] != Triangulation::kInfiniteVertex) neighbours.push_back(site_of(link[k]));
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    const SiteId removed_local = neighbours.size();
+    std::vector<SiteId> ids = neighbours;
+    ids.push_back(site_of(v));
+    auto subset = std::make_unique<SubsetTraits>(*traits_, ids);
+    const SubsetTraits& local = *subset;
+    DelaunayGraph small(std::move(subset));
+    for (SiteId i = 0; i < removed_local; ++i) small.insert(i);
+    const std::optional<Hole> hole = small.conflict_hole(removed_local);
+    const Triangulation& st = small.tds_;
+    auto label = [&](VertexIndex x) {
+        return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : local.global(st.vertex(x).site);
+    };
+    auto big_label = [&](VertexIndex x) {
+        return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : site_of(x);
+    };
+    // The rotation that lays the region's boundary onto the link.
+    std::optional<std::size_t> rotation;
+    if (hole && hole->boundary.size() == m)
+        for (std::size_t r = 0; r < m && !rotation; ++r) {
+            bool same = true;
+            for (std::size_t k = 0; k < m && same; ++k) {
+                const Edge& e = hole->boundary[(k + r) % m];
+                same = label(st.face(e.face).v[ccw(e.index)]) == big_label(link[k]);
+            }
+            if (same) rotation = r;
+        }
+    bool filled = false;
+    if (rotation) {
+        std::unordered_map<int, VertexIndex> vertex_in_big;  // small vertex -> big vertex
+        std::unordered_map<int, int> position;               // boundary edge (face * 3 + index) -> link position
+        for (std::size_t k = 0; k < m; ++k) {
+            const Edge& e = hole->boundary[(k + *rotation) % m];
+            vertex_in_big[st.face(e.face).v[ccw(e.index)].value()] = link[k];
+            position[3 * e.face.value() + e.index] = static_cast<int>(k);
+        }
+        std::unordered_map<int, int> new_face_of;  // small face -> index in fill
+        for (std::size_t t = 0; t < hole->faces.size(); ++t) new_face_of[hole->faces[t].value()] = static_cast<int>(t);
+        std::vector<Triangulation::NewFace> fill(hole->faces.size());
+        for (std::size_t t = 0; t < fill.size(); ++t) {
+            const FaceIndex f = hole->faces[t];
+            for (int i = 0; i < 3; ++i) {
+                fill[t].v[i] = vertex_in_big.at(st.face(f).v[i].value());
+                const auto across = new_face_of.find(st.neighbor({f, i}).value());
+                if (across != new_face_of.end()) {
+                    fill[t].face[i] = across->second;
+                    fill[t].index[i] = st.mirror_index({f, i});
+                } else {
+                    fill[t].face[i] = -1;
+                    fill[t].index[i] = position.at(3 * f.value() + i);
+                }
+            }
+        }
+        TriangulationPredicates pred = predicates();
+        for (FaceIndex f : star) pred.forget(f);
+        tds_.replace_star(v, fill);
+        filled = true;
+        ++stats_.small_graph_removals;
+    }
+    for (VertexIndex b : bogus) tds_.remove_degree_2(b);
+    // The small graph's other faces were asked about in the big traits: drop them.
+    TriangulationPredicates small_pred = small.predicates();
+    for (FaceIndex f : st.faces()) {
+        const bool kept = filled && std::find(hole->faces.begin(), hole->faces.end(), f) != hole->faces.end();
+        if (!kept) small_pred.forget(f);
+    }
+    return filled;
+}
+
+std::optional<DelaunayGraph::Hole> DelaunayGraph::conflict_hole(SiteId p) {
+    if (tds_.empty()) return std::nullopt;
+    const VertexIndex nearest = nearest_vertex(p);
+    if (traits_->is_hidden(site_of(nearest), p)) return std::nullopt;
+    ConflictRegion region(tds_, predicates(), p, conflict_marks_);
+    const std::optional<FaceIndex> start = find_first_conflict(region, nearest);
+    if (!start) return std::nullopt;
+    region.expand(*start);
+    if (!region.hidden_vertices().empty()) return std::nullopt;
+    add_bogus_vertices(region);
+    return Hole{region.faces(), region.boundary()};
+}
+
+// The fallback of deletion: the triangulation of the other visible sites
+// built again (their hidden lists stay); counted in stats().removal_rebuilds.
+void DelaunayGraph::rebuild_without(VertexIndex v) {
+    ++stats_.removal_rebuilds;
+    std::vector<SiteId> rest;
+    TriangulationPredicates pred = predicates();
+    for (FaceIndex f : tds_.faces()) pred.forget(f);
+    for (VertexIndex w : tds_.finite_vertices())
+        if (w != v) rest.push_back(site_of(w));
+    tds_.clear();
+    small_.clear();
+    last_vertex_ = VertexIndex();
+    std::stable_sort(rest.begin(), rest.end(),
+                     [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
+    for (SiteId r : rest) {
+        inserted_[r] = 0;
+        --stats_.inserted;
+        insert(r);
+    }
 }
 
 // ---------------------------------------------------------------- output and checks

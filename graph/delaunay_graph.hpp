@@ -36,6 +36,10 @@ struct GraphStats {
     std::size_t conflict_faces = 0;      // faces removed by conflict regions, in all
     std::size_t walk_steps = 0;          // nearest-neighbour walk moves
     std::size_t rebuilds = 0;            // "all / all but one hidden" fallbacks
+    std::size_t removed = 0;             // remove() calls
+    std::size_t degenerate_flips = 0;    // deletion: edges of length 0 flipped away first
+    std::size_t small_graph_removals = 0;  // deletion through the neighbours' small graph (degree > 3)
+    std::size_t removal_rebuilds = 0;    // deletion that fell back to rebuilding the triangulation
 };
 
 class DelaunayGraph {
@@ -48,8 +52,16 @@ public:
     // not depend on the order except in degenerate configurations), each walk
     // started at a site with a near location hint.
     void insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress = {});
-    // Inserts one site (each id at most once).
+    // Inserts one site (each id at most once, unless removed in between).
     void insert(SiteId id);
+    // Removes an inserted site (CGAL's remove): a hidden one leaves its host's
+    // list; a visible one loses its vertex -- edges of length 0 around it are
+    // flipped away, a vertex of degree 2 or 3 is removed directly, else its
+    // star is replaced by the faces of its neighbours' small graph that the
+    // site conflicts with -- and then the sites it hid are inserted again,
+    // largest first.
+    void remove(SiteId id);
+    bool contains(SiteId id) const { return id < inserted_.size() && inserted_[id]; }
 
     std::size_t number_of_sites() const { return traits_->size(); }
     // Visible sites (those with a vertex), increasing ids.
@@ -108,10 +120,26 @@ private:
     void retriangulate_conflict_region(ConflictRegion& region, const std::vector<VertexIndex>& bogus);
     void record_vertex(SiteId p, VertexIndex v);
 
+    // Deletion.
+    VertexIndex vertex_of(SiteId s) const;
+    void remove_vertex(VertexIndex v);
+    void minimize_degree(VertexIndex v);
+    bool replace_star_by_small_graph(VertexIndex v);
+    // The faces p's insertion would remove, as a disk (bogus vertices added),
+    // with its boundary counter-clockwise; nullopt when p would not get a
+    // vertex of degree 3 or more by starring (deletion asks this of the small graph).
+    struct Hole {
+        std::vector<FaceIndex> faces;
+        std::vector<Edge> boundary;
+    };
+    std::optional<Hole> conflict_hole(SiteId p);
+    void rebuild_without(VertexIndex v);
+
     std::unique_ptr<DelaunayTraits> traits_;
     Triangulation tds_;
     std::vector<SiteId> small_;                  // the visible sites while tds_ is empty (< 3)
     std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
+    std::vector<SiteId> host_;                   // per hidden site: the visible site that hides it
     std::vector<char> inserted_;
     VertexIndex last_vertex_;
     std::unique_ptr<SiteGrid> grid_;   // insert_all only: sites with a vertex, by location hint

@@ -111,17 +111,25 @@ std::array<VertexIndex, 3> Triangulation::make_tetrahedron(SiteId a, SiteId b, S
     return {va, vb, vc};
 }
 
+bool Triangulation::is_flippable(Edge e) const {
+    const FaceIndex f = e.face, g = neighbor(e);
+    const int j = mirror_index(e);
+    if (face(f).v[e.index] == face(g).v[j]) return false;
+    for (const Edge& x : {Edge{f, ccw(e.index)}, Edge{f, cw(e.index)}, Edge{g, ccw(j)}, Edge{g, cw(j)}})
+        if (neighbor(x) == f || neighbor(x) == g) return false;
+    return true;
+}
+
 void Triangulation::flip(Edge e) {
     const FaceIndex f = e.face, g = neighbor(e);
     const int i = e.index, j = mirror_index(e);
     const VertexIndex vi = face(f).v[i], a = face(f).v[ccw(i)], b = face(f).v[cw(i)], w = face(g).v[j];
     if (vi == w) throw Error("Triangulation::flip: an edge between repeated vertices cannot be flipped");
+    if (!is_flippable(e)) throw Error("Triangulation::flip: unsupported configuration");
     const Edge x1 = mirror_edge({f, ccw(i)});  // edge (b, vi)
     const Edge x2 = mirror_edge({f, cw(i)});   // edge (vi, a)
     const Edge x3 = mirror_edge({g, ccw(j)});  // edge (a, w)
     const Edge x4 = mirror_edge({g, cw(j)});   // edge (w, b)
-    for (const Edge& x : {x1, x2, x3, x4})
-        if (x.face == f || x.face == g) throw Error("Triangulation::flip: unsupported configuration");
     face_at(f).v = {vi, a, w};
     face_at(g).v = {w, b, vi};
     link(f, 0, x3.face, x3.index);
@@ -202,6 +210,53 @@ VertexIndex Triangulation::star_hole(SiteId site, const std::vector<Edge>& bound
     vertex_at(v).face = fan[0];
     for (VertexIndex x : inner) delete_vertex(x);
     return v;
+}
+
+void Triangulation::replace_star(VertexIndex v, const std::vector<NewFace>& fill) {
+    const std::vector<FaceIndex> star = incident_faces(v);
+    const std::size_t m = star.size();
+    std::vector<Edge> outside(m);
+    std::vector<std::array<VertexIndex, 2>> link_ends(m);
+    for (std::size_t k = 0; k < m; ++k) {
+        const int j = index(star[k], v);
+        outside[k] = mirror_edge({star[k], j});
+        link_ends[k] = {face(star[k]).v[ccw(j)], face(star[k]).v[cw(j)]};
+        if (index(outside[k].face, v) >= 0) throw Error("Triangulation::replace_star: the star touches itself");
+    }
+    std::vector<int> used(m, 0);
+    for (std::size_t t = 0; t < fill.size(); ++t)
+        for (int i = 0; i < 3; ++i) {
+            const NewFace& F = fill[t];
+            const std::array<VertexIndex, 2> ends = {F.v[ccw(i)], F.v[cw(i)]};
+            if (F.face[i] < 0) {
+                const std::size_t k = static_cast<std::size_t>(F.index[i]);
+                if (k >= m || link_ends[k] != ends) throw Error("Triangulation::replace_star: a new face misses the link");
+                ++used[k];
+            } else {
+                const NewFace& G = fill.at(static_cast<std::size_t>(F.face[i]));
+                const int j = F.index[i];
+                if (G.face[j] != static_cast<int>(t) || G.index[j] != i || G.v[ccw(j)] != ends[1] || G.v[cw(j)] != ends[0])
+                    throw Error("Triangulation::replace_star: new faces not mutual");
+            }
+        }
+    if (std::any_of(used.begin(), used.end(), [](int u) { return u != 1; }))
+        throw Error("Triangulation::replace_star: the new faces do not cover the link once");
+    for (FaceIndex f : star) kill_face(f);
+    std::vector<FaceIndex> made;
+    made.reserve(fill.size());
+    for (const NewFace& F : fill) made.push_back(new_face(F.v[0], F.v[1], F.v[2]));
+    for (std::size_t t = 0; t < fill.size(); ++t)
+        for (int i = 0; i < 3; ++i) {
+            const NewFace& F = fill[t];
+            if (F.face[i] < 0) {
+                const Edge& out = outside[static_cast<std::size_t>(F.index[i])];
+                link(made[t], i, out.face, out.index);
+            } else {
+                link(made[t], i, made[static_cast<std::size_t>(F.face[i])], F.index[i]);
+            }
+            vertex_at(F.v[i]).face = made[t];
+        }
+    delete_vertex(v);
 }
 
 std::vector<FaceIndex> Triangulation::incident_faces(VertexIndex v) const {

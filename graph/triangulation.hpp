@@ -72,6 +72,25 @@ public:
     // Frees a vertex; the caller has removed it from every face.
     void delete_vertex(VertexIndex v);
 
+    // A face of the triangulation that replaces a vertex's star: its vertices,
+    // and across each edge i either another new face (`face[i]`, its edge
+    // `index[i]`) or, with face[i] = -1, the star's link edge at position
+    // index[i].
+    struct NewFace {
+        std::array<VertexIndex, 3> v;
+        std::array<int, 3> face, index;
+    };
+    // Deletes v and the faces around it (its star) and puts `fill` in their
+    // place. The link of v is the cycle of the edges opposite v in its faces,
+    // counter-clockwise from incident_faces(v).front() (position 0); each
+    // link edge must be used once, by a new edge with the same endpoints, and
+    // no link edge may have the star on both sides (split it first with
+    // insert_degree_2). Throws Error otherwise, before changing anything.
+    void replace_star(VertexIndex v, const std::vector<NewFace>& fill);
+    // Edge e can be flipped: its two faces have distinct opposite vertices
+    // and the four edges around them lie in other faces.
+    bool is_flippable(Edge e) const;
+
     const Vertex& vertex(VertexIndex v) const { return vertices_[static_cast<std::size_t>(v.value())]; }
     const Face& face(FaceIndex f) const { return faces_[static_cast<std::size_t>(f.value())]; }
     bool is_vertex(VertexIndex v) const {

@@ -30,7 +30,8 @@ nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds) {
     const std::pair<const char*, const PredicateCount*> rows[] = {
         {"is_hidden", &t.is_hidden},         {"side_of_bisector", &t.side_of_bisector},
         {"vertex_conflict_3", &t.vertex_conflict3}, {"incircle", &t.vertex_conflict4},
-        {"finite_edge", &t.finite_edge},     {"infinite_edge", &t.infinite_edge}};
+        {"finite_edge", &t.finite_edge},     {"infinite_edge", &t.infinite_edge},
+        {"degenerate_edge", &t.degenerate_edge}};
     for (const auto& [name, count] : rows) {
         nlohmann::json& row = s["predicates"][name];
         row["calls"] = count->calls;

@@ -37,6 +37,7 @@ struct TraitsStats {
     PredicateCount vertex_conflict4;   // kappa3
     PredicateCount finite_edge;        // kappa4, 6/5/4 sites
     PredicateCount infinite_edge;      // kappa4, infinite edge
+    PredicateCount degenerate_edge;    // a Voronoi edge of length 0 (deletion)
 };
 
 // A point in doubles near a site (its center). Only the length of the
@@ -81,6 +82,11 @@ public:
     virtual bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) = 0;
     // kappa4 on the Voronoi edge of (infinity, p2), between the hull neighbours p3 and p4.
     virtual bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) = 0;
+
+    // CGAL's Is_degenerate_edge_2: the faces (p1, p2, p3) and (p1, p4, p2)
+    // beside the Delaunay edge (p1, p2) have one Voronoi circle (the Voronoi
+    // edge has length 0). Deletion flips such edges first.
+    virtual bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) = 0;
 
     // The graph no longer has the face of the counter-clockwise triple
     // (i, j, k): what the traits keep for its Voronoi circle may go (it is

@@ -181,6 +181,16 @@ Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e
     return decide(e1, e2, q, b, EdgeShape{}, options);
 }
 
+Decision<bool> voronoi_edge_is_degenerate(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+                                          const RefinementOptions& options) {
+    Decision<bool> provenance = Decision<bool>::decided(false, Stage::filter);
+    EdgeGeometry geometry(e1, e2, options, provenance);
+    const BisectorPoint a = geometry.vertex(e1, e2, e3), b = geometry.vertex(e1, e4, e2);
+    const std::optional<Sign> order = geometry.compare(a, b);
+    if (!order) return Decision<bool>::undecided(provenance.stage, provenance.precision);
+    return provenance.with(*order == Sign::zero);
+}
+
 Decision<bool> infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
                                                const Ellipse& q, bool b, bool use_circle_closed_form) {
     if (use_circle_closed_form && e2.is_circle() && e3.is_circle() && e4.is_circle() && q.is_circle())

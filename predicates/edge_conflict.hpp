@@ -35,6 +35,15 @@ Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e
 Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
                                              bool endpoints_in_conflict, const RefinementOptions& options = {});
 
+// CGAL's Is_degenerate_edge_2: the Voronoi edge of (E1, E2) between
+// VC(E1, E2, E3) and VC(E1, E4, E2) has length 0, i.e. the two Voronoi
+// vertices are one circle tangent to the four sites (both must exist).
+// Deletion flips such edges first. Equality is proven exactly (the closed
+// form for circles, voronoi_vertex_equality.hpp otherwise); undecided only
+// with options.exact_stage = false.
+Decision<bool> voronoi_edge_is_degenerate(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+                                          const RefinementOptions& options = {});
+
 // kappa4 for the Voronoi edge dual to the Delaunay edge (infinity, E2), whose
 // neighbours on the convex hull are E3 (before) and E4 (after) (CGAL
 // Infinite_edge_interior_conflict_2). The edge is made of the tangent lines of

@@ -131,4 +131,19 @@ bool EllipseDelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId 
                    "infinite edge interior conflict", {p2, p3, p4, q});
 }
 
+bool EllipseDelaunayTraits::is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) {
+    ++stats_.degenerate_edge.calls;
+    const bool circles = site(p1).is_circle() && site(p2).is_circle() && site(p3).is_circle() && site(p4).is_circle();
+    if (!circles) {
+        const DoubleVoronoiCircle* a = cache_.at(p1, site(p1), p2, site(p2), p3, site(p3)).circle.in_doubles();
+        const DoubleVoronoiCircle* b = cache_.at(p1, site(p1), p4, site(p4), p2, site(p2)).circle.in_doubles();
+        const auto apart = [](const Interval& x, const Interval& y) { return x.hi < y.lo || y.hi < x.lo; };
+        if (a && b && (apart(a->center_x, b->center_x) || apart(a->center_y, b->center_y) || apart(a->radius, b->radius)))
+            return counted(stats_.degenerate_edge, Decision<bool>::decided(false, Stage::filter), "degenerate edge",
+                           {p1, p2, p3, p4});
+    }
+    return counted(stats_.degenerate_edge, voronoi_edge_is_degenerate(site(p1), site(p2), site(p3), site(p4)),
+                   "degenerate edge", {p1, p2, p3, p4});
+}
+
 }  // namespace ellvor

@@ -36,6 +36,9 @@ public:
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override;
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override;
     bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
+    // The faces' cached circles, certified in doubles, apart: no (filter);
+    // else voronoi_edge_is_degenerate.
+    bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override;
 
     // Drops the face's cached solver: the cache holds live faces only.
     void forget_face(SiteId i, SiteId j, SiteId k) override { cache_.erase(i, j, k); }

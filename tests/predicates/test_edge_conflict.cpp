@@ -12,6 +12,7 @@
 // only about edges whose ends agree). CGAL's infinite-edge function does
 // not depend on the ends' status in that way, so both values of b are tried.
 #include "predicates/edge_conflict.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/voronoi_circle_count.hpp"
@@ -680,4 +681,43 @@ TEST_CASE("kappa4 infinite edge on a symmetric ellipse configuration", "[predica
     // A big circle above reaching both end lines but not the bottom line:
     // the ends are in conflict, the middle (y < -1) is not.
     expect(Ellipse::circle(0, 50, 30), true, false);
+}
+
+TEST_CASE("degenerate edge: the two Voronoi vertices of an edge are one circle", "[predicates][kappa4][degenerate-edge]") {
+    // Four equal circles at the corners of a square: one circle about the
+    // square's center touches all four, so the diagonal (E1, E2) = (0, 2)
+    // has length 0. Moving E4 out by 1/1000 separates the two vertices.
+    const Ellipse c0 = Ellipse::circle(Rational(0), Rational(0), Rational(1));
+    const Ellipse c1 = Ellipse::circle(Rational(10), Rational(0), Rational(1));
+    const Ellipse c2 = Ellipse::circle(Rational(10), Rational(10), Rational(1));
+    const Ellipse c3 = Ellipse::circle(Rational(0), Rational(10), Rational(1));
+    const Ellipse c3_out = Ellipse::circle(Rational(-1, 1000), Rational(10), Rational(1));
+    // Edge (c0, c2): faces (c0, c2, c3) and (c0, c1, c2).
+    Decision<bool> d = voronoi_edge_is_degenerate(c0, c2, c3, c1);
+    CHECK(*d);
+    CHECK(d.stage == Stage::exact);
+    d = voronoi_edge_is_degenerate(c0, c2, c3_out, c1);
+    CHECK_FALSE(*d);
+    // The same square of identical ellipses (axis-aligned, so the reflections
+    // of the square map each onto the others): equal only by the exact stage.
+    auto e = [](long x, long y) { return Ellipse(Rational(3), Rational(2), Rational(0), Rational(x), Rational(y)); };
+    d = voronoi_edge_is_degenerate(e(0, 0), e(20, 20), e(0, 20), e(20, 0));
+    CHECK(*d);
+    CHECK(d.stage == Stage::exact);
+    // Rotated by 1/7 (w): no symmetry left, the enclosures separate.
+    const Ellipse tilted(Rational(3), Rational(2), Rational(1, 7), Rational(0), Rational(20));
+    d = voronoi_edge_is_degenerate(e(0, 0), e(20, 20), tilted, e(20, 0));
+    CHECK_FALSE(*d);
+    CHECK(d.stage == Stage::subdivision);
+}
+
+TEST_CASE("degenerate edge in the traits: apart in doubles is the filter's no", "[predicates][kappa4][degenerate-edge]") {
+    auto e = [](long x, long y, long w_num) { return Ellipse(Rational(3), Rational(2), Rational(w_num, 7), Rational(x), Rational(y)); };
+    // 0..3: the symmetric square (one circle); 4: site 3 tilted.
+    EllipseDelaunayTraits traits({e(0, 0, 0), e(20, 0, 0), e(20, 20, 0), e(0, 20, 0), e(0, 20, 1)});
+    CHECK_FALSE(traits.is_degenerate_edge(0, 2, 4, 1));
+    CHECK(traits.stats().degenerate_edge.stages[Stage::filter] == 1);
+    CHECK(traits.is_degenerate_edge(0, 2, 3, 1));
+    CHECK(traits.stats().degenerate_edge.stages[Stage::exact] == 1);
+    CHECK(traits.stats().degenerate_edge.calls == 2);
 }
