@@ -1,6 +1,7 @@
 // ellvor build FILE: the Delaunay graph of the sites (incremental insertion).
 #include "cli/command_list.hpp"
 
+#include "cli/removal_list.hpp"
 #include "cli/site_arguments.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "output/graph_json.hpp"
@@ -20,7 +21,7 @@ namespace ellvor::cli {
 namespace {
 
 const char* const kHelp =
-    "usage: ellvor build FILE [--cin] [--json OUT] [--svg OUT [--svg-ids]] [--validate] [--stats]\n"
+    "usage: ellvor build FILE [--cin] [--remove IDS] [--json OUT] [--svg OUT [--svg-ids]] [--validate] [--stats]\n"
     "\n"
     "Builds the Delaunay graph (the dual of the Voronoi diagram) of the sites of FILE by\n"
     "incremental insertion (Karavelas-Yvinec, as CGAL's Apollonius graph), every predicate\n"
@@ -28,12 +29,16 @@ const char* const kHelp =
     "\n"
     "options:\n"
     "  --cin         read CGAL's circle format 'x y r' instead of .ell\n"
-    "  --json OUT    write {\"sites\", \"hidden\": [[hidden, hiding], ...], \"edges\": [[i, j], ...],\n"
+    "  --remove IDS  after building, remove these sites, in this order (as CGAL's remove; the\n"
+    "                sites a removed site hid come back): 0-based ids separated by commas\n"
+    "                (3,17,4), or @FILE with one id a line ('#' comments); each id once\n"
+    "  --json OUT    write {\"sites\", \"removed\", \"hidden\": [[hidden, hiding], ...], \"edges\": [[i, j], ...],\n"
     "                \"faces\": [[i, j, k], ...], \"voronoi_vertices\": [{\"face\", \"center\",\n"
     "                \"radius\", \"error\"}, ...], \"stats\"} ('-' for standard output); finite\n"
     "                edges and faces by site id (0-based, file order); an edge appears twice when\n"
     "                two Voronoi edges separate the same two sites; a Voronoi vertex is the center\n"
-    "                and radius (approx.) of the face's Voronoi circle, each within `error`\n"
+    "                and radius (approx.) of the face's Voronoi circle, each within `error`;\n"
+    "                removed sites are null in \"sites\" and appear nowhere else\n"
     "  --svg OUT     draw the diagram as SVG: the sites (hidden ones dashed), the Delaunay\n"
     "                edges, the Voronoi vertices and every Voronoi edge traced along the\n"
     "                bisector of its two sites (floating point, for the eye: consecutive points\n"
@@ -45,6 +50,7 @@ const char* const kHelp =
     "  --validate    check the graph: combinatorics, every edge against the local conflict\n"
     "                tests, and for up to 300 sites every Voronoi circle empty of all sites\n"
     "  --stats       print the predicate calls per deciding stage and the time per insertion\n"
+    "                (and per removal)\n"
     "\n"
     "exit status: 0 built (and valid); 1 the validation failed, or an undecided predicate;\n"
     "2 bad input (intersecting sites are named).\n";
@@ -52,10 +58,13 @@ const char* const kHelp =
 constexpr std::size_t kBruteForceLimit = 300;
 
 int run(const std::vector<std::string>& args) {
-    Arguments parsed(args, {{"--cin", false}, {"--json", true}, {"--svg", true}, {"--svg-ids", false}, {"--validate", false}, {"--stats", false}});
+    Arguments parsed(args, {{"--cin", false}, {"--remove", true}, {"--json", true}, {"--svg", true}, {"--svg-ids", false},
+                            {"--validate", false}, {"--stats", false}});
     parsed.expect_positional(1, 1, "FILE");
     if (parsed.has("--svg-ids") && !parsed.has("--svg")) throw UsageError("option --svg-ids needs --svg OUT");
     SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
+    const std::vector<SiteId> removals =
+        parsed.has("--remove") ? parse_removal_list(parsed.value("--remove"), file.sites.size()) : std::vector<SiteId>{};
     // The traits own the sites (one copy: ~840 bytes a site); the output reads them there.
     auto traits = std::make_unique<EllipseDelaunayTraits>(std::move(file.sites));
     const std::vector<Ellipse>& sites = traits->sites();
@@ -73,11 +82,27 @@ int run(const std::vector<std::string>& args) {
     }
     if (progress) std::fprintf(stderr, "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto removal_start = std::chrono::steady_clock::now();
+    const bool removal_progress = ::isatty(2) && removals.size() > 1000;
+    for (std::size_t k = 0; k < removals.size(); ++k) {
+        graph.remove(removals[k]);
+        if (removal_progress && ((k + 1) % 200 == 0 || k + 1 == removals.size()))
+            std::fprintf(stderr, "\rremoved %zu of %zu", k + 1, removals.size());
+    }
+    if (removal_progress) std::fprintf(stderr, "\n");
+    const double removal_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - removal_start).count();
 
     // The build's statistics, before validation asks predicates of its own.
-    const nlohmann::json stats = build_stats_json(graph, seconds);
+    nlohmann::json stats = build_stats_json(graph, seconds);
+    if (!removals.empty()) {
+        stats["removed"] = removals.size();
+        stats["removal_seconds"] = removal_seconds;
+    }
     std::cout << sites.size() << " sites (" << graph.hidden().size() << " hidden), " << graph.edges().size()
               << " Delaunay edges, " << graph.faces().size() << " faces, built in " << seconds << " s\n";
+    if (!removals.empty())
+        std::cout << removals.size() << " sites removed in " << removal_seconds << " s\n";
 
     int status = kExitOk;
     if (parsed.has("--validate")) {
@@ -88,6 +113,8 @@ int run(const std::vector<std::string>& args) {
     }
     if (parsed.has("--stats")) {
         std::cout << "time per insertion: " << 1e6 * seconds / std::max<std::size_t>(1, sites.size()) << " us\n";
+        if (!removals.empty())
+            std::cout << "time per removal: " << 1e6 * removal_seconds / static_cast<double>(removals.size()) << " us\n";
         std::cout << "predicate calls (decided by filter / subdivision / exact):\n";
         for (const auto& [name, row] : stats["predicates"].items())
             std::cout << "  " << name << ": " << row["calls"] << " (" << row["filter"] << " / " << row["subdivision"]

@@ -21,7 +21,7 @@ DelaunayGraph::DelaunayGraph(std::unique_ptr<DelaunayTraits> traits) : traits_(s
     if (!traits_) throw Error("DelaunayGraph: no traits");
     hidden_in_.resize(traits_->size());
     host_.assign(traits_->size(), kNoHost);
-    inserted_.assign(traits_->size(), 0);
+    inserted_.assign(traits_->size(), kOut);
     vertex_of_site_.resize(traits_->size());
 }
 
@@ -44,8 +44,9 @@ void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::s
 
 void DelaunayGraph::insert(SiteId p) {
     if (p >= traits_->size()) throw Error("DelaunayGraph::insert: no site " + str(p));
-    if (inserted_[p]) throw Error("DelaunayGraph::insert: site " + str(p) + " inserted twice");
-    inserted_[p] = 1;
+    if (inserted_[p] == kIn) throw Error("DelaunayGraph::insert: site " + str(p) + " inserted twice");
+    if (inserted_[p] == kRemoved) removed_.erase(std::find(removed_.begin(), removed_.end(), p));
+    inserted_[p] = kIn;
     ++stats_.inserted;
     if (tds_.empty())
         insert_small(p);
@@ -291,9 +292,10 @@ void DelaunayGraph::record_vertex(SiteId p, VertexIndex v) {
 
 void DelaunayGraph::remove(SiteId s) {
     if (s >= traits_->size()) throw Error("DelaunayGraph::remove: no site " + str(s));
-    if (!inserted_[s]) throw Error("DelaunayGraph::remove: site " + str(s) + " is not in the graph");
-    inserted_[s] = 0;
+    if (inserted_[s] != kIn) throw Error("DelaunayGraph::remove: site " + str(s) + " is not in the graph");
+    inserted_[s] = kRemoved;
     ++stats_.removed;
+    removed_.push_back(s);
     if (host_[s] != kNoHost) {
         auto& list = hidden_in_[host_[s]];
         list.erase(std::find(list.begin(), list.end(), s));
@@ -322,7 +324,7 @@ void DelaunayGraph::remove(SiteId s) {
                      [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
     for (SiteId h : orphans) {
         host_[h] = kNoHost;
-        inserted_[h] = 0;
+        inserted_[h] = kOut;
         --stats_.inserted;  // counted again by insert
         insert(h);
     }
@@ -511,7 +513,7 @@ void DelaunayGraph::rebuild_without(VertexIndex v) {
     std::stable_sort(rest.begin(), rest.end(),
                      [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
     for (SiteId r : rest) {
-        inserted_[r] = 0;
+        inserted_[r] = kOut;
         --stats_.inserted;
         insert(r);
     }
@@ -587,7 +589,7 @@ std::string DelaunayGraph::validate() {
             return "site " + str(h) + " is hidden by site " + str(by) + ", which is not visible";
     }
     for (SiteId s = 0; s < traits_->size(); ++s)
-        if (seen[s] != (inserted_[s] ? 1 : 0))
+        if (seen[s] != (inserted_[s] == kIn ? 1 : 0))
             return "site " + str(s) + " is " + (seen[s] ? "recorded " + std::to_string(seen[s]) + " times" : "lost");
     if (tds_.empty()) return small_.size() <= 2 ? "" : "more than two sites without a triangulation";
     if (!small_.empty()) return "sites outside the triangulation";
@@ -618,7 +620,7 @@ std::string DelaunayGraph::brute_force_check() {
         const Triangulation::Face& F = tds_.face(f);
         const int k = tds_.index(f, Triangulation::kInfiniteVertex);
         for (SiteId q = 0; q < traits_->size(); ++q) {
-            if (!inserted_[q]) continue;
+            if (inserted_[q] != kIn) continue;
             bool own = false;
             for (VertexIndex x : F.v) own = own || (x != Triangulation::kInfiniteVertex && site_of(x) == q);
             if (own) continue;

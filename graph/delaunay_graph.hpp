@@ -61,7 +61,9 @@ public:
     // site conflicts with -- and then the sites it hid are inserted again,
     // largest first.
     void remove(SiteId id);
-    bool contains(SiteId id) const { return id < inserted_.size() && inserted_[id]; }
+    bool contains(SiteId id) const { return id < inserted_.size() && inserted_[id] == kIn; }
+    // The sites removed and not inserted again, in the order of removal.
+    const std::vector<SiteId>& removed() const { return removed_; }
 
     std::size_t number_of_sites() const { return traits_->size(); }
     // Visible sites (those with a vertex), increasing ids.
@@ -140,7 +142,9 @@ private:
     std::vector<SiteId> small_;                  // the visible sites while tds_ is empty (< 3)
     std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
     std::vector<SiteId> host_;                   // per hidden site: the visible site that hides it
+    enum : char { kOut, kIn, kRemoved };  // per site: not inserted, in the graph, removed
     std::vector<char> inserted_;
+    std::vector<SiteId> removed_;
     VertexIndex last_vertex_;
     std::unique_ptr<SiteGrid> grid_;   // insert_all only: sites with a vertex, by location hint
     std::vector<VertexIndex> vertex_of_site_;  // the vertex a site got (checked before use: vertices die)

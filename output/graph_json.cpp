@@ -45,6 +45,9 @@ nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>
     nlohmann::json j;
     j["sites"] = nlohmann::json::array();
     for (const Ellipse& e : sites) j["sites"].push_back(e.str());
+    // Removed sites keep their ids and appear nowhere else: null here.
+    for (SiteId r : graph.removed()) j["sites"][r] = nullptr;
+    j["removed"] = graph.removed();
     j["hidden"] = nlohmann::json::array();
     for (const auto& [h, by] : graph.hidden()) j["hidden"].push_back({h, by});
     j["edges"] = nlohmann::json::array();

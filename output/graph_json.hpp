@@ -1,4 +1,5 @@
-// The JSON document of `ellvor build --json`: the sites, the [hidden, hiding]
+// The JSON document of `ellvor build --json`: the sites (null for removed
+// ones), the removed ids in the order of removal, the [hidden, hiding]
 // pairs, the finite edges and faces by site id, the Voronoi vertex of every
 // face (center and radius of its certified Voronoi circle, in doubles, each
 // within `error`) and the build statistics.

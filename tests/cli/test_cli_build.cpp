@@ -3,8 +3,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <fstream>
 #include <set>
+#include <sstream>
+#include <string>
 #include <utility>
+#include <vector>
 
 using ellvor::test::contains;
 using ellvor::test::ScratchDirectory;
@@ -72,4 +77,75 @@ TEST_CASE("build --help", "[cli][build]") {
     const auto r = dir.ellvor("build --help");
     CHECK(r.status == 0);
     CHECK(r.out.rfind("usage: ellvor build", 0) == 0);
+}
+
+TEST_CASE("build --remove: the graph of the other sites, removed ids nowhere in the JSON", "[cli][build][removal]") {
+    // data/example.ell: 20 sites, 6 hosts 7 (hidden by 6): removing 6 brings 7 back.
+    ScratchDirectory dir;
+    const std::string example = std::string(ELLVOR_SOURCE_DIR) + "/data/example.ell";
+    const std::string ids = dir.write("ids.txt", "# removal order\n6\n  3\n\n11  # a comment\n");
+    const auto r = dir.ellvor("build '" + example + "' --remove @'" + ids + "' --validate --stats --json '" + dir.path() +
+                              "/g.json'");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(contains(r.out, "3 sites removed in"));
+    CHECK(contains(r.out, "\nvalid\n"));
+    CHECK(contains(r.out, "time per removal:"));
+    const auto j = nlohmann::json::parse(ellvor::test::read_file(dir.path() + "/g.json"));
+    CHECK(j["removed"] == nlohmann::json({6, 3, 11}));
+    CHECK(j["stats"]["removed"].get<int>() == 3);
+    const std::set<int> gone = {6, 3, 11};
+    for (int s : gone) CHECK(j["sites"][s].is_null());
+    for (const auto& e : j["edges"])
+        for (const auto& id : e) CHECK(gone.count(id.get<int>()) == 0);
+    for (const auto& f : j["faces"])
+        for (const auto& id : f) CHECK(gone.count(id.get<int>()) == 0);
+    std::set<std::pair<int, int>> hidden;
+    for (const auto& h : j["hidden"]) hidden.insert({h[0].get<int>(), h[1].get<int>()});
+    CHECK(hidden == std::set<std::pair<int, int>>{{9, 8}, {13, 12}, {19, 18}});  // 7 is visible again
+
+    // The same graph as the file without those lines (ids shift: compare by site text).
+    std::istringstream lines(ellvor::test::read_file(example));
+    std::string line, kept;
+    for (int id = 0; std::getline(lines, line);) {
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line[first] == '#') continue;
+        if (!gone.count(id++)) kept += line + "\n";
+    }
+    const std::string smaller = dir.write("smaller.ell", kept);
+    REQUIRE(dir.ellvor("build '" + smaller + "' --json '" + dir.path() + "/h.json'").status == 0);
+    const auto k = nlohmann::json::parse(ellvor::test::read_file(dir.path() + "/h.json"));
+    auto edges_by_text = [](const nlohmann::json& doc) {
+        std::multiset<std::pair<std::string, std::string>> out;
+        for (const auto& e : doc["edges"]) {
+            std::string a = doc["sites"][e[0].get<int>()], b = doc["sites"][e[1].get<int>()];
+            out.insert({std::min(a, b), std::max(a, b)});
+        }
+        return out;
+    };
+    CHECK(edges_by_text(j) == edges_by_text(k));
+    CHECK(j["faces"].size() == k["faces"].size());
+}
+
+TEST_CASE("build --remove: bad id lists exit 2 with a clear message", "[cli][build][removal]") {
+    ScratchDirectory dir;
+    const std::string example = std::string(ELLVOR_SOURCE_DIR) + "/data/example.ell";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"--remove 3,3", "item 2: site id 3 is listed twice (first at item 1)"},
+        {"--remove 20", "site id 20 is out of range (the file has 20 sites, ids 0 to 19)"},
+        {"--remove 1,x", "item 2: expected a site id (a 0-based integer), found 'x'"},
+        {"--remove 1,", "expected site ids separated by commas"},
+        {"--remove -1", "found '-1'"},
+        {"--remove @" + dir.write("bad.txt", "4\n\n  17x\n"), "bad.txt:3:3: expected a site id"},
+        {"--remove @" + dir.write("twice.txt", "4\n5\n4\n"), "twice.txt:3:1: site id 4 is listed twice (first at"},
+        {"--remove @" + dir.write("empty.txt", "# nothing\n"), "empty.txt: no site ids to remove"},
+        {"--remove @" + dir.path() + "/missing.txt", "missing.txt: cannot read"},
+    };
+    for (const auto& [option, message] : cases) {
+        const auto r = dir.ellvor("build '" + example + "' " + option + " --json '" + dir.path() + "/never.json'");
+        INFO(option << "\n" << r.out << r.err);
+        CHECK(r.status == 2);
+        CHECK(contains(r.err, message));
+        CHECK_FALSE(std::ifstream(dir.path() + "/never.json").good());  // nothing half-written
+    }
 }
