@@ -92,19 +92,22 @@ Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
     return s;
 }
 
-Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
-    ++stats_.vertex_conflict4.calls;
+Decision<InCircle> EllipseDelaunayTraits::incircle_of_face(SiteId i, SiteId j, SiteId k, SiteId q) {
     // Four circles take the closed form: no solver to cache.
     if (site(i).is_circle() && site(j).is_circle() && site(k).is_circle() && site(q).is_circle())
-        return incircle_sign(
-            counted(stats_.vertex_conflict4, incircle(site(i), site(j), site(k), site(q)), "incircle", {i, j, k, q}));
+        return incircle(site(i), site(j), site(k), site(q));
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached circle is that of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
                                           &entry.circle);
     // Later calls on this face read the enclosures; the charts can go.
     entry.circle.release_charts();
-    return incircle_sign(counted(stats_.vertex_conflict4, d, "incircle", {i, j, k, q}));
+    return d;
+}
+
+Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
+    ++stats_.vertex_conflict4.calls;
+    return incircle_sign(counted(stats_.vertex_conflict4, incircle_of_face(i, j, k, q), "incircle", {i, j, k, q}));
 }
 
 bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
@@ -133,15 +136,11 @@ bool EllipseDelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId 
 
 bool EllipseDelaunayTraits::is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) {
     ++stats_.degenerate_edge.calls;
-    const bool circles = site(p1).is_circle() && site(p2).is_circle() && site(p3).is_circle() && site(p4).is_circle();
-    if (!circles) {
-        const DoubleVoronoiCircle* a = cache_.at(p1, site(p1), p2, site(p2), p3, site(p3)).circle.in_doubles();
-        const DoubleVoronoiCircle* b = cache_.at(p1, site(p1), p4, site(p4), p2, site(p2)).circle.in_doubles();
-        const auto apart = [](const Interval& x, const Interval& y) { return x.hi < y.lo || y.hi < x.lo; };
-        if (a && b && (apart(a->center_x, b->center_x) || apart(a->center_y, b->center_y) || apart(a->radius, b->radius)))
-            return counted(stats_.degenerate_edge, Decision<bool>::decided(false, Stage::filter), "degenerate edge",
-                           {p1, p2, p3, p4});
-    }
+    // One circle touches p4; so unless p4 is tangent to VC(p1, p2, p3) they
+    // differ: kappa3 on the face's cached circle proves most edges regular.
+    const Decision<InCircle> touch = incircle_of_face(p1, p2, p3, p4);
+    if (touch.is_decided() && *touch != InCircle::tangent)
+        return counted(stats_.degenerate_edge, touch.with(false), "degenerate edge", {p1, p2, p3, p4});
     return counted(stats_.degenerate_edge, voronoi_edge_is_degenerate(site(p1), site(p2), site(p3), site(p4)),
                    "degenerate edge", {p1, p2, p3, p4});
 }

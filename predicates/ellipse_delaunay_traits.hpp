@@ -5,6 +5,7 @@
 #pragma once
 
 #include "predicates/delaunay_traits.hpp"
+#include "predicates/incircle.hpp"
 #include "predicates/voronoi_circle_cache.hpp"
 #include "sites/ellipse.hpp"
 
@@ -36,8 +37,8 @@ public:
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override;
     bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override;
     bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
-    // The faces' cached circles, certified in doubles, apart: no (filter);
-    // else voronoi_edge_is_degenerate.
+    // kappa3 of (p1, p2, p3) against p4 not tangent: no; else
+    // voronoi_edge_is_degenerate.
     bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override;
 
     // Drops the face's cached solver: the cache holds live faces only.
@@ -47,6 +48,9 @@ public:
     std::size_t cached_circles() const { return cache_.size(); }
 
 private:
+    // kappa3 on the face's cached Voronoi circle (the closed form for circles).
+    Decision<InCircle> incircle_of_face(SiteId i, SiteId j, SiteId k, SiteId q);
+
     std::vector<Ellipse> sites_;
     std::vector<Rational> area_;  // a b per site
     VoronoiCircleCache cache_;

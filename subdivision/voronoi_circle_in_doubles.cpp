@@ -244,11 +244,16 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
                                                        double length_scale) {
     constexpr int kSteps = 12;
     constexpr double kConverged = 1e-13;  // relative step size
+    // An ill-conditioned root (a circle 10^4 times the sites' size or more)
+    // stops Newton at the rounding noise, far above kConverged: a step that
+    // no longer shrinks, below kStalled, is offered to Krawczyk (which decides).
+    constexpr double kStalled = 1e-6;
     std::array<double, 6> F;
     std::array<std::array<double, 6>, 6> J;
     std::array<BoundaryPoint<double>, 3> at;
     Matrix6 Y;
     bool converged = false;
+    double previous = HUGE_VAL;  // the last relative step size
     for (int step = 0; step < kSteps && !converged; ++step) {
         for (int i = 0; i < 3; ++i)
             if (std::fabs(x[i]) > 1) x[i] = -1 / x[i], flipped[i] = !flipped[i];
@@ -257,12 +262,14 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         if (!newton.usable()) return std::nullopt;
         const Vector6 correction = newton.solve(F);
         if (!correction.allFinite()) return std::nullopt;
-        converged = true;
+        double relative = 0;
         for (int i = 0; i < 6; ++i) {
             x[i] -= correction[i];
             const double unit = i < 3 ? 1.0 : length_scale;
-            converged = converged && std::fabs(correction[i]) <= kConverged * (std::fabs(x[i]) + unit);
+            relative = std::fmax(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
+        converged = relative <= kConverged || (relative <= kStalled && relative > previous / 4);
+        previous = relative;
         // Y: the inverse Jacobian one tiny step before the midpoint (any
         // nonsingular Y is sound; a close one contracts).
         if (converged) Y = newton.inverse();
