@@ -410,13 +410,15 @@ bool DelaunayGraph::replace_star_by_small_graph(VertexIndex v) {
     const std::vector<FaceIndex> star = tds_.incident_faces(v);
     const std::size_t m = star.size();
     std::vector<VertexIndex> link(m);  // start of link edge k
+    // The neighbours in the order of the link: each inserted next to the
+    // last, the small graph's walks stay short.
     std::vector<SiteId> neighbours;
     for (std::size_t k = 0; k < m; ++k) {
         link[k] = tds_.face(star[k]).v[ccw(tds_.index(star[k], v))];
-        if (link[k] != Triangulation::kInfiniteVertex) neighbours.push_back(site_of(link[k]));
+        if (link[k] != Triangulation::kInfiniteVertex &&
+            std::find(neighbours.begin(), neighbours.end(), site_of(link[k])) == neighbours.end())
+            neighbours.push_back(site_of(link[k]));
     }
-    std::sort(neighbours.begin(), neighbours.end());
-    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
     const SiteId removed_local = neighbours.size();
     std::vector<SiteId> ids = neighbours;
     ids.push_back(site_of(v));

@@ -3,6 +3,7 @@
 #include "predicates/bisector_order.hpp"
 #include "predicates/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
+#include "predicates/support_function.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
@@ -192,9 +193,18 @@ Decision<bool> voronoi_edge_is_degenerate(const Ellipse& e1, const Ellipse& e2, 
 }
 
 Decision<bool> infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
-                                               const Ellipse& q, bool b, bool use_circle_closed_form) {
+                                               const Ellipse& q, bool b, bool use_circle_closed_form, bool use_filter) {
     if (use_circle_closed_form && e2.is_circle() && e3.is_circle() && e4.is_circle() && q.is_circle())
         return Decision<bool>::decided(circle_infinite_edge_interior_conflict(e2, e3, e4, q, b), Stage::exact);
+    if (use_filter) {
+        // The same order, on the tangents' normals proven in intervals; a
+        // coincidence (Q's line through an end) is left to the exact stage.
+        const auto from = certified_bitangent_normal(e2, e3, true), to = certified_bitangent_normal(e2, e4, false),
+                   start = certified_bitangent_normal(e2, q, false);
+        if (from && to && start)
+            if (const std::optional<int> inside = normal_in_arc(*from, *to, *start))
+                return Decision<bool>::decided(b ? *inside < 0 : *inside > 0, Stage::filter);
+    }
     // Contact points on E2 of the edge's ends and of Q's boundary lines.
     BoundaryParameter from = external_bitangent_on(e2, e3, HullSide::arrival);   // vertex (E2, E3, inf)
     BoundaryParameter to = external_bitangent_on(e2, e4, HullSide::departure);   // vertex (E4, E2, inf)

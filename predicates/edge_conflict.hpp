@@ -50,11 +50,13 @@ Decision<bool> voronoi_edge_is_degenerate(const Ellipse& e1, const Ellipse& e2, 
 // E2 turning counter-clockwise from the infinite vertex of the hull face
 // (E2, E3, inf) to that of (E4, E2, inf); Q's conflict region on it is bounded
 // by the tangent lines of the infinite vertices (Q, E2, inf) and (E2, Q, inf).
-// Everything is an exact comparison of tangency parameters on E2 (degree 4;
-// for four circles the closed form of circle_predicates.hpp, unless
+// Everything is a comparison of tangency points on E2, in the order of their
+// normals: first proven in double intervals (support_function.hpp; unless
+// use_filter is false), else exactly (tangency parameters of degree 4; for
+// four circles the closed form of circle_predicates.hpp, unless
 // use_circle_closed_form is false), so the answer is always decided.
 Decision<bool> infinite_edge_interior_conflict(const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
                                                const Ellipse& q, bool endpoints_in_conflict,
-                                               bool use_circle_closed_form = true);
+                                               bool use_circle_closed_form = true, bool use_filter = true);
 
 }  // namespace ellvor

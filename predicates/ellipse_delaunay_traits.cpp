@@ -80,7 +80,7 @@ bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
 
 Sign EllipseDelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
     ++stats_.side_of_bisector.calls;
-    return counted(stats_.side_of_bisector, ellvor::side_of_bisector(site(i), site(j), site(k).center()),
+    return counted(stats_.side_of_bisector, side_of_bisector_at_center(site(i), site(j), site(k)),
                    "side of bisector", {i, j, k});
 }
 

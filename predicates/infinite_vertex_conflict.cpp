@@ -3,6 +3,7 @@
 #include "predicates/circle_predicates.hpp"
 #include "predicates/circle_semi_static.hpp"
 #include "predicates/external_bitangent.hpp"
+#include "predicates/support_function.hpp"
 #include "sites/ellipse_polynomials.hpp"
 #include "util/error.hpp"
 #include "util/interval.hpp"
@@ -22,137 +23,18 @@ constexpr long kIntersectionFormalDegree = 4;
 
 // ---------------------------------------------------------------- filter --
 //
-// With a direction n (not necessarily unit), the support function of an
-// ellipse is h(n) = n.C + sqrt(a^2 (n.u)^2 + b^2 (n.v)^2): the sites' common
-// external tangent lines are the directions where h1 = h2, and Q meets the
-// open half-plane beyond L iff h_Q(n) > h_1(n). The filter finds the right
-// root in floating point, then proves with interval arithmetic that a tiny
-// parameter interval holds exactly one root (a sign change: there are only two
-// external tangents), that it is the tangent with the sites on the right, and
-// the sign of h_Q - h_1 over the whole interval.
-
-// Support value h(n) and its derivative along the unit circle, h'(phi) =
-// S(phi) . (-sin phi, cos phi) with S the support point, in plain doubles.
-struct SupportDouble {
-    double value, slope;
-};
-SupportDouble support_double(const Ellipse::Enclosure& k, double c, double s) {
-    const double cw = k.cos.mid(), sw = k.sin.mid(), a2 = k.a.mid() * k.a.mid(), b2 = k.b.mid() * k.b.mid();
-    const double nu = c * cw + s * sw, nv = s * cw - c * sw;
-    const double norm = std::sqrt(a2 * nu * nu + b2 * nv * nv);
-    const double lu = a2 * nu / norm, lv = b2 * nv / norm;
-    const double x = k.xc.mid() + cw * lu - sw * lv, y = k.yc.mid() + sw * lu + cw * lv;
-    return {c * k.xc.mid() + s * k.yc.mid() + norm, -x * s + y * c};
-}
-
-// Support value and support point of an ellipse, enclosed, for an enclosed
-// direction n.
-struct SupportEnclosure {
-    Interval value, x, y;
-};
-SupportEnclosure support_enclosure(const Ellipse::Enclosure& k, Interval nx, Interval ny) {
-    const Interval nu = nx * k.cos + ny * k.sin, nv = ny * k.cos - nx * k.sin;
-    const Interval a2 = k.a.square(), b2 = k.b.square();
-    const Interval norm = (a2 * nu.square() + b2 * nv.square()).sqrt();
-    const Interval lu = a2 * nu / norm, lv = b2 * nv / norm;  // local support point
-    const Interval x = k.xc + k.cos * lu - k.sin * lv, y = k.yc + k.sin * lu + k.cos * lv;
-    return {nx * k.xc + ny * k.yc + norm, x, y};
-}
-
-// The direction of angle phi in the rational chart n = +-(1 - tau^2, 2 tau),
-// |tau| <= 1, evaluated for an enclosed tau.
-struct Chart {
-    double sign;
-    Interval nx(Interval tau) const { return (Interval(1.0) - tau.square()) * Interval(sign); }
-    Interval ny(Interval tau) const { return Interval(2.0) * tau * Interval(sign); }
-};
-
-// +1 / -1 when proved, 0 when undecided.
-// Certifies a floating-point root phi of h1 - h2 (see above): +1 / -1 when it
-// is the tangent L and Q's side of it is proven, 0 when undecided, and
-// kOtherTangent when phi is proven to be the other external tangent.
-constexpr int kOtherTangent = 2;
-int certify_tangent(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2, const Ellipse::Enclosure& kq,
-                    double phi) {
-    double sign = 1.0;
-    if (std::cos(phi) < 0) {
-        phi = phi > 0 ? phi - M_PI : phi + M_PI;
-        sign = -1.0;
-    }
-    const Chart chart{sign};
-    for (double width : {1e-13, 1e-10, 1e-7}) {
-        const double tau_lo = std::tan(0.5 * (phi - width)), tau_hi = std::tan(0.5 * (phi + width));
-        auto difference = [&](Interval tau) {
-            const Interval nx = chart.nx(tau), ny = chart.ny(tau);
-            return support_enclosure(k1, nx, ny).value - support_enclosure(k2, nx, ny).value;
-        };
-        const Interval at_lo = difference(Interval(tau_lo)), at_hi = difference(Interval(tau_hi));
-        const bool sign_change = (at_lo.negative() && at_hi.positive()) || (at_lo.positive() && at_hi.negative());
-        if (!sign_change) continue;
-        // Exactly one external tangent in the interval: is it L?
-        const Interval tau(tau_lo, tau_hi);
-        const Interval nx = chart.nx(tau), ny = chart.ny(tau);
-        const SupportEnclosure s1 = support_enclosure(k1, nx, ny), s2 = support_enclosure(k2, nx, ny);
-        // d = n turned clockwise; L has E1's contact before E2's along d.
-        const Interval along = (s2.x - s1.x) * ny - (s2.y - s1.y) * nx;
-        if (along.negative()) return kOtherTangent;
-        if (!along.positive()) return 0;
-        const Interval beyond = support_enclosure(kq, nx, ny).value - s1.value;
-        return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
-    }
-    return 0;
-}
-
+// L is the common external tangent where the hull arrives on E1, proven in a
+// tiny interval of normals (support_function.hpp); Q meets the open
+// half-plane beyond L iff h_Q(n) > h_1(n), proven over that whole interval.
 // +1 / -1 when proved, 0 when undecided.
 int filter_stage(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
-    const auto &k1 = e1.enclosure(), &k2 = e2.enclosure(), &kq = q.enclosure();
-    if (!(k1.a.finite() && k1.xc.finite() && k2.a.finite() && k2.xc.finite() && kq.a.finite() && kq.xc.finite()))
-        return 0;
-    auto f = [&](double phi) {
-        const double c = std::cos(phi), s = std::sin(phi);
-        const SupportDouble h1 = support_double(k1, c, s), h2 = support_double(k2, c, s);
-        return SupportDouble{h1.value - h2.value, h1.slope - h2.slope};
-    };
-    // Newton refinement of a root of h1 - h2 inside [lo, hi] (bisection when a
-    // step leaves the bracket; plain Newton when there is none).
-    auto refine = [&](double x, double lo, double hi, bool bracketed, bool rising) {
-        for (int it = 0; it < 40; ++it) {
-            const SupportDouble v = f(x);
-            if (bracketed) ((v.value < 0) == rising ? lo : hi) = x;
-            double next = x - v.value / v.slope;
-            if (bracketed && !(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            if (!std::isfinite(next)) return x;
-            if (std::fabs(next - x) <= 1e-15 * (1 + std::fabs(x))) return next;
-            x = next;
-        }
-        return x;
-    };
-    // First guess: the same tangent of the circles with the sites' centers and
-    // mean radii, in closed form: n.(C2 - C1) = r1 - r2 with d = n turned
-    // clockwise pointing from E1 to E2.
-    {
-        const double dx = k2.xc.mid() - k1.xc.mid(), dy = k2.yc.mid() - k1.yc.mid(), length = std::hypot(dx, dy);
-        const double r1 = 0.5 * (k1.a.mid() + k1.b.mid()), r2 = 0.5 * (k2.a.mid() + k2.b.mid());
-        const double c = (r1 - r2) / length;
-        if (length > 0 && std::fabs(c) < 1) {
-            const double ex = dx / length, ey = dy / length, root = std::sqrt(1 - c * c);
-            const double phi = refine(std::atan2(c * ey + root * ex, c * ex - root * ey), 0, 0, false, false);
-            const int s = certify_tangent(k1, k2, kq, phi);
-            if (s == 1 || s == -1) return s;
-        }
-    }
-    // Otherwise bracket the roots of h1 - h2 by sampling.
-    constexpr int kSamples = 16;
-    double prev_phi = -M_PI, prev = f(prev_phi).value;
-    for (int i = 1; i <= kSamples; ++i) {
-        const double phi = -M_PI + 2 * M_PI * i / kSamples, value = f(phi).value;
-        if ((prev < 0) != (value < 0)) {
-            const int s = certify_tangent(k1, k2, kq, refine(0.5 * (prev_phi + phi), prev_phi, phi, true, prev < 0));
-            if (s == 1 || s == -1) return s;
-        }
-        prev_phi = phi, prev = value;
-    }
-    return 0;
+    const Ellipse::Enclosure& kq = q.enclosure();
+    if (!(kq.a.finite() && kq.b.finite() && kq.xc.finite() && kq.yc.finite())) return 0;
+    const std::optional<NormalInterval> n = certified_bitangent_normal(e1, e2, true);
+    if (!n) return 0;
+    const Interval beyond =
+        support_enclosure(kq, n->nx(), n->ny()).value - support_enclosure(e1.enclosure(), n->nx(), n->ny()).value;
+    return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
 }
 
 // ------------------------------------------------------------- exact --

@@ -121,26 +121,25 @@ int circle_exact(const Ellipse& e1, const Ellipse& e2, const Point& p) {
     return sign_of_root_difference(squared(e2), squared(e1), e2.a() - e1.a());
 }
 
-}  // namespace
-
-Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
-                                const SideOfBisectorOptions& options) {
+// The point p = (x, y), enclosed in (px, py); p itself is made only for the
+// exact stages.
+Decision<Sign> decide_side(const Ellipse& e1, const Ellipse& e2, const Rational& x, const Rational& y,
+                           const Interval& px, const Interval& py, const SideOfBisectorOptions& options) {
     auto decided = [](int s, Stage stage, long prec = 0) { return Decision<Sign>::decided(sign_of(s), stage, prec); };
     if (e1.is_circle() && e2.is_circle()) {
         if (options.use_filter)
-            if (int s = circle_filter(e1, e2, enclose(p.x), enclose(p.y))) return decided(s, Stage::filter);
-        return decided(circle_exact(e1, e2, p), Stage::exact);
+            if (int s = circle_filter(e1, e2, px, py)) return decided(s, Stage::filter);
+        return decided(circle_exact(e1, e2, Point{x, y}), Stage::exact);
     }
     // Which side of each boundary p is on: inside one and outside the other
     // decides at once (signed distances).
-    const Interval px = enclose(p.x), py = enclose(p.y);
     const LocalPoint q1 = to_local(e1, px, py), q2 = to_local(e2, px, py);
     int side1 = filtered_side(q1), side2 = filtered_side(q2);
     Stage side_stage = Stage::filter;
     if (side1 == 0 || side2 == 0) {
         side_stage = Stage::exact;
-        side1 = e1.side_of_point(p.x, p.y);
-        side2 = e2.side_of_point(p.x, p.y);
+        side1 = e1.side_of_point(x, y);
+        side2 = e2.side_of_point(x, y);
     }
     if (side1 != side2) return decided(side1 < side2 ? 1 : -1, side_stage);
     if (side1 == 0) return decided(0, Stage::exact);  // on both boundaries
@@ -150,6 +149,7 @@ Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Poin
 
     // Both outside: nearer means smaller squared distance; both inside: the
     // signed distance is -d, so nearer means larger d.
+    const Point p{x, y};
     const int orientation = side1 > 0 ? 1 : -1;
     FootPoints feet1 = foot_points(e1, p), feet2 = foot_points(e2, p);
     long prec = precision::kStart;
@@ -170,6 +170,19 @@ Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Poin
         if (d1 && d2) return decided(orientation * compare(*d2, *d1), Stage::exact, prec);
     }
     throw Error("side_of_bisector: no squared-distance root isolated (internal error)");
+}
+
+}  // namespace
+
+Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
+                                const SideOfBisectorOptions& options) {
+    return decide_side(e1, e2, p.x, p.y, enclose(p.x), enclose(p.y), options);
+}
+
+Decision<Sign> side_of_bisector_at_center(const Ellipse& e1, const Ellipse& e2, const Ellipse& site,
+                                          const SideOfBisectorOptions& options) {
+    const Ellipse::Enclosure& k = site.enclosure();
+    return decide_side(e1, e2, site.xc(), site.yc(), k.xc, k.yc, options);
 }
 
 }  // namespace ellvor

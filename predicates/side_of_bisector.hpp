@@ -21,5 +21,9 @@ struct SideOfBisectorOptions {
 // degree <= 4.
 Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Point& p,
                                 const SideOfBisectorOptions& options = {});
+// The same at the center of `site`, whose cached enclosure saves converting
+// the center (the graph's nearest-site walk asks this).
+Decision<Sign> side_of_bisector_at_center(const Ellipse& e1, const Ellipse& e2, const Ellipse& site,
+                                          const SideOfBisectorOptions& options = {});
 
 }  // namespace ellvor

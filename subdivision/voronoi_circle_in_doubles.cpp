@@ -1,5 +1,6 @@
 #include "subdivision/voronoi_circle_in_doubles.hpp"
 
+#include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 
 #include <Eigen/Core>
@@ -9,6 +10,10 @@
 
 namespace ellvor {
 namespace {
+
+// Circles beyond 2^10 times the sites' size get tangent-line starts (as in
+// voronoi_circle_enclosure.cpp).
+constexpr long kHugeCircleBits = 10;
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -321,7 +326,22 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
             if (auto certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, circle[0])))
                 return certified;
         }
-    return std::nullopt;
+    // Circles far larger than the sites (three sites nearly on a line): the
+    // models' circles may lead Newton to the clockwise one; the tangent-line
+    // starts of huge_circle_start.hpp lead to the right one.
+    std::optional<DoubleVoronoiCircle> certified;
+    for_each_huge_circle_start(e1, e2, e3, kHugeCircleBits, [&](const VoronoiCircleStart& start) {
+        std::array<double, 6> x;
+        for (int i = 0; i < 3; ++i) x[i] = arf_get_d(arb_midref(start.parameter[i].get()), ARF_RND_NEAR);
+        x[3] = arf_get_d(arb_midref(start.radius.get()), ARF_RND_NEAR);
+        x[4] = arf_get_d(arb_midref(start.center_x.get()), ARF_RND_NEAR);
+        x[5] = arf_get_d(arb_midref(start.center_y.get()), ARF_RND_NEAR);
+        if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) return false;
+        certified = newton_then_certify(shape, enclosed, start.flipped, x, std::max(size, x[3]));
+        if (certified) certified->from_tangent_line = true;
+        return certified.has_value();
+    });
+    return certified;
 }
 
 }  // namespace ellvor

@@ -31,6 +31,7 @@ struct DoubleVoronoiCircle {
     // t_i, or u_i = -1/t_i when flipped (the chart in which |parameter| <= 1).
     std::array<Interval, 3> parameter;
     std::array<bool, 3> flipped{};
+    bool from_tangent_line = false;  // certified from a huge circle's tangent-line start
 };
 
 // Starts from the Apollonius circles of circle models of the sites

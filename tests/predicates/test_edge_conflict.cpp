@@ -656,7 +656,8 @@ TEST_CASE("kappa4 infinite edge on a symmetric ellipse configuration", "[predica
     // the unit circles E3 = (-10, 20) (before) and E4 = (10, 20) (after): the
     // edge is made of E2's tangent lines turning counter-clockwise from the
     // bitangent with E3 (lower left) through the bottom line y = -1 to the
-    // bitangent with E4 (lower right). Always decided by the exact stage.
+    // bitangent with E4 (lower right). Decided by the interval filter, and
+    // again by the exact stage alone.
     const Ellipse e2(3, 1, 0, 0, 0), e3 = Ellipse::circle(-10, 20, 1), e4 = Ellipse::circle(10, 20, 1);
     auto expect = [&](const Ellipse& q, bool b, bool want) {
         // b is Q's status at both ends here.
@@ -667,7 +668,11 @@ TEST_CASE("kappa4 infinite edge on a symmetric ellipse configuration", "[predica
         INFO(show(got));
         REQUIRE(got.is_decided());
         CHECK(*got == want);
-        CHECK(got.stage == Stage::exact);
+        CHECK(got.stage == Stage::filter);
+        const Decision<bool> exact = infinite_edge_interior_conflict(e2, e3, e4, q, b, true, false);
+        REQUIRE(exact.is_decided());
+        CHECK(*exact == want);
+        CHECK(exact.stage == Stage::exact);
     };
     // Far below: beyond every bottom tangent line -> the whole edge.
     expect(Ellipse::circle(0, -100, 1), true, true);

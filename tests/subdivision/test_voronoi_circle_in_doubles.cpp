@@ -80,9 +80,15 @@ void compare_with_arb(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, T
     }
     // The enclosure is tight: in doubles the plane's coordinates, not the
     // circle's size, set the rounding (a triple 10^12 from the origin gets
-    // a radius to about 10^-3), and nearly collinear triples are ill-conditioned.
+    // a radius to about 10^-3), and nearly collinear triples are ill-conditioned:
+    // a circle R times its smallest site loses about log2(R / size) more bits
+    // (10^7 times: ten times wider).
     const double size = d->radius.hi + std::fabs(d->center_x.hi) + std::fabs(d->center_y.hi);
-    CHECK(d->radius.hi - d->radius.lo <= 1e-6 * size);
+    double smallest = HUGE_VAL;
+    for (const Ellipse* e : {&e1, &e2, &e3}) smallest = std::min({smallest, e->enclosure().a.lo, e->enclosure().b.lo});
+    const double condition = std::fmax(1.0, d->radius.lo / smallest / 1e6);
+    INFO("radius / smallest semi-axis " << d->radius.lo / smallest);
+    CHECK(d->radius.hi - d->radius.lo <= 1e-6 * condition * size);
 }
 
 Ellipse random_site(Rng& rng, long half_box, long max_axis_tenths, long min_axis_tenths = 2) {
@@ -184,4 +190,21 @@ TEST_CASE("VoronoiCircle: the double certificate once, the solver only on demand
     CHECK(reversed.in_doubles() == nullptr);
     REQUIRE(!reversed.solver().certify());
     CHECK(reversed.has_solver());
+}
+
+TEST_CASE("doubles: a huge circle of nearly collinear sites, from the tangent-line starts", "[subdivision][voronoi_circle_in_doubles]") {
+    // Three ellipses ~0.3 wide, ~50 apart, nearly on a line (from a random
+    // set of 3000): the counter-clockwise circle has radius ~27027; the
+    // circle models' starts lead Newton to the clockwise one, the tangent
+    // line of a pair leads it to the right one.
+    const Ellipse e1(Rational(77, 201), Rational(15, 43), Rational(75, 158), Rational(382, 29), Rational(-1241, 13));
+    const Ellipse e2(Rational(36, 121), Rational(104, 253), Rational(-2, 3), Rational(4034, 189), Rational(-3657, 38));
+    const Ellipse e3(Rational(20, 53), Rational(31, 232), Rational(-122, 247), Rational(4733, 87), Rational(-199, 2));
+    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(e1, e2, e3);
+    REQUIRE(d.has_value());
+    CHECK(d->from_tangent_line);
+    CHECK(d->radius.lo > 27000);
+    Tally tally;
+    compare_with_arb(e1, e2, e3, tally);  // agrees with Arb
+    CHECK(tally.by_doubles == 1);
 }

@@ -1,0 +1,131 @@
+#include "predicates/support_function.hpp"
+
+#include <cmath>
+
+namespace ellvor {
+
+SupportDouble support_double(const Ellipse::Enclosure& k, double c, double s) {
+    const double cw = k.cos.mid(), sw = k.sin.mid(), a2 = k.a.mid() * k.a.mid(), b2 = k.b.mid() * k.b.mid();
+    const double nu = c * cw + s * sw, nv = s * cw - c * sw;
+    const double norm = std::sqrt(a2 * nu * nu + b2 * nv * nv);
+    const double lu = a2 * nu / norm, lv = b2 * nv / norm;
+    const double x = k.xc.mid() + cw * lu - sw * lv, y = k.yc.mid() + sw * lu + cw * lv;
+    return {c * k.xc.mid() + s * k.yc.mid() + norm, -x * s + y * c};
+}
+
+SupportEnclosure support_enclosure(const Ellipse::Enclosure& k, Interval nx, Interval ny) {
+    const Interval nu = nx * k.cos + ny * k.sin, nv = ny * k.cos - nx * k.sin;
+    const Interval a2 = k.a.square(), b2 = k.b.square();
+    const Interval norm = (a2 * nu.square() + b2 * nv.square()).sqrt();
+    const Interval lu = a2 * nu / norm, lv = b2 * nv / norm;  // local support point
+    const Interval x = k.xc + k.cos * lu - k.sin * lv, y = k.yc + k.sin * lu + k.cos * lv;
+    return {nx * k.xc + ny * k.yc + norm, x, y};
+}
+
+namespace {
+
+bool finite(const Ellipse::Enclosure& k) { return k.a.finite() && k.b.finite() && k.xc.finite() && k.yc.finite(); }
+
+// A proven sign change of h1 - h2 over a tiny interval of directions around phi.
+std::optional<BitangentNormal> certify(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2, double phi) {
+    NormalInterval n;
+    if (std::cos(phi) < 0) {
+        phi = phi > 0 ? phi - M_PI : phi + M_PI;
+        n.sign = -1;
+    }
+    for (double width : {1e-13, 1e-10, 1e-7}) {
+        n.tau_lo = std::tan(0.5 * (phi - width)), n.tau_hi = std::tan(0.5 * (phi + width));
+        if (!(n.tau_lo < n.tau_hi)) continue;
+        auto difference = [&](double tau) {
+            NormalInterval at{n.sign, tau, tau};
+            return support_enclosure(k1, at.nx(), at.ny()).value - support_enclosure(k2, at.nx(), at.ny()).value;
+        };
+        const Interval lo = difference(n.tau_lo), hi = difference(n.tau_hi);
+        if (lo.negative() && hi.positive()) return BitangentNormal{n, true};
+        if (lo.positive() && hi.negative()) return BitangentNormal{n, false};
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
+    std::vector<BitangentNormal> out;
+    if (!finite(k1) || !finite(k2)) return out;
+    auto f = [&](double phi) {
+        const double c = std::cos(phi), s = std::sin(phi);
+        const SupportDouble h1 = support_double(k1, c, s), h2 = support_double(k2, c, s);
+        return SupportDouble{h1.value - h2.value, h1.slope - h2.slope};
+    };
+    // Newton refinement of a root of h1 - h2 inside [lo, hi] (bisection when a
+    // step leaves the bracket; plain Newton when there is none).
+    auto refine = [&](double x, double lo, double hi, bool bracketed, bool rising) {
+        for (int it = 0; it < 40; ++it) {
+            const SupportDouble v = f(x);
+            if (bracketed) ((v.value < 0) == rising ? lo : hi) = x;
+            double next = x - v.value / v.slope;
+            if (bracketed && !(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (!std::isfinite(next)) return x;
+            if (std::fabs(next - x) <= 1e-15 * (1 + std::fabs(x))) return next;
+            x = next;
+        }
+        return x;
+    };
+    auto add = [&](double phi) {
+        if (const auto b = certify(k1, k2, phi))
+            if (out.empty() || out[0].arrival != b->arrival) out.push_back(*b);
+    };
+    // First guesses: the common tangents of the circles with the sites'
+    // centers and mean radii, n.(C2 - C1) = r1 - r2, in closed form.
+    const double dx = k2.xc.mid() - k1.xc.mid(), dy = k2.yc.mid() - k1.yc.mid(), length = std::hypot(dx, dy);
+    const double r1 = 0.5 * (k1.a.mid() + k1.b.mid()), r2 = 0.5 * (k2.a.mid() + k2.b.mid());
+    const double c = (r1 - r2) / length;
+    if (length > 0 && std::fabs(c) < 1) {
+        const double ex = dx / length, ey = dy / length, root = std::sqrt(1 - c * c);
+        for (double side : {1.0, -1.0})
+            add(refine(std::atan2(c * ey + side * root * ex, c * ex - side * root * ey), 0, 0, false, false));
+    }
+    if (out.size() == 2) return out;
+    // Otherwise bracket the roots of h1 - h2 by sampling.
+    constexpr int kSamples = 16;
+    double prev_phi = -M_PI, prev = f(prev_phi).value;
+    for (int i = 1; i <= kSamples && out.size() < 2; ++i) {
+        const double phi = -M_PI + 2 * M_PI * i / kSamples, value = f(phi).value;
+        if ((prev < 0) != (value < 0)) add(refine(0.5 * (prev_phi + phi), prev_phi, phi, true, prev < 0));
+        prev_phi = phi, prev = value;
+    }
+    return out;
+}
+
+std::optional<NormalInterval> certified_bitangent_normal(const Ellipse& e1, const Ellipse& e2, bool arrival) {
+    for (const BitangentNormal& b : certified_bitangent_normals(e1.enclosure(), e2.enclosure()))
+        if (b.arrival == arrival) return b.normal;
+    return std::nullopt;
+}
+
+std::optional<int> compare_normals(const NormalInterval& a, const NormalInterval& b) {
+    if (a.sign == b.sign) {
+        if (a.tau_hi < b.tau_lo) return -1;
+        if (b.tau_hi < a.tau_lo) return 1;
+        return std::nullopt;
+    }
+    // Different half circles: the +1 chart (phi in [-pi/2, pi/2]) comes first,
+    // unless both touch a seam they share (phi = pi/2: tau = 1 in the +1
+    // chart, -1 in the other; phi = -pi/2: tau = -1, +1).
+    constexpr double kSeam = 1e-6;
+    const NormalInterval& plus = a.sign > 0 ? a : b;
+    const NormalInterval& minus = a.sign > 0 ? b : a;
+    auto near = [](const NormalInterval& n, double end) { return n.tau_lo <= end + kSeam && n.tau_hi >= end - kSeam; };
+    if ((near(plus, 1) && near(minus, -1)) || (near(plus, -1) && near(minus, 1))) return std::nullopt;
+    return a.sign > 0 ? -1 : 1;
+}
+
+std::optional<int> normal_in_arc(const NormalInterval& from, const NormalInterval& to, const NormalInterval& x) {
+    const auto from_to = compare_normals(from, to), after_from = compare_normals(x, from), before_to = compare_normals(to, x);
+    if (!from_to || !after_from || !before_to) return std::nullopt;
+    const bool inside = *from_to < 0 ? (*after_from > 0 && *before_to > 0)   // from < x < to
+                                     : (*after_from > 0 || *before_to > 0);  // wraps through the cut
+    return inside ? 1 : -1;
+}
+
+}  // namespace ellvor

@@ -1,0 +1,115 @@
+// support_function.hpp: the external common tangents of two ellipses proven in
+// double intervals, against long-double numerics (circle_oracles.hpp), and the
+// interval filter of kappa4 on infinite edges built on them, against the exact
+// stage, on random and on nearly coincident tangents.
+#include "predicates/edge_conflict.hpp"
+#include "predicates/relative_position.hpp"
+#include "predicates/support_function.hpp"
+#include "tests/predicates/circle_oracles.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace ellvor;
+
+namespace {
+
+using oracle::rnd;
+using oracle::rnd_pos;
+using oracle::Rng;
+
+Ellipse random_ellipse(Rng& rng) {
+    return Ellipse(rnd_pos(rng, 3, 17), rnd_pos(rng, 3, 13), rnd(rng, -4, 4, 19), rnd(rng, -12, 12, 7), rnd(rng, -12, 12, 9));
+}
+
+bool separated(std::initializer_list<const Ellipse*> sites) {
+    for (auto i = sites.begin(); i != sites.end(); ++i)
+        for (auto j = i + 1; j != sites.end(); ++j)
+            if (*relative_position(**i, **j) != RelativePosition::separated) return false;
+    return true;
+}
+
+// The angle range of a normal interval (phi = 2 atan(tau), + pi in the -1 chart).
+std::pair<double, double> angles(const NormalInterval& n) {
+    const double offset = n.sign > 0 ? 0 : M_PI;
+    return {offset + 2 * std::atan(n.tau_lo), offset + 2 * std::atan(n.tau_hi)};
+}
+
+bool angle_inside(double phi, std::pair<double, double> range, double slack) {
+    for (double turn : {-2 * M_PI, 0.0, 2 * M_PI})
+        if (phi + turn >= range.first - slack && phi + turn <= range.second + slack) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("support function: both external tangents proven, where long-double numerics put them", "[predicates][support-function]") {
+    Rng rng(9090);
+    int pairs = 0, proven = 0;
+    while (pairs < 1000) {
+        const Ellipse e1 = random_ellipse(rng), e2 = random_ellipse(rng);
+        if (!separated({&e1, &e2})) continue;
+        ++pairs;
+        const std::vector<BitangentNormal> normals = certified_bitangent_normals(e1.enclosure(), e2.enclosure());
+        INFO(oracle::ell({&e1, &e2}));
+        REQUIRE(normals.size() <= 2);
+        if (normals.size() == 2) ++proven;
+        for (const BitangentNormal& b : normals) {
+            // The hull arrives on E1 along the tangent L of (E1, E2), departs along that of (E2, E1).
+            oracle::LD phi = 0;
+            const bool found = b.arrival ? oracle::bitangent_normal(oracle::num(e1), oracle::num(e2), phi)
+                                         : oracle::bitangent_normal(oracle::num(e2), oracle::num(e1), phi);
+            REQUIRE(found);
+            INFO("numeric angle " << static_cast<double>(phi) << (b.arrival ? " (arrival)" : " (departure)"));
+            CHECK(angle_inside(static_cast<double>(phi), angles(b.normal), 1e-12));
+        }
+    }
+    CHECK(proven >= 990);
+}
+
+TEST_CASE("kappa4 infinite edge: the interval filter agrees with the exact stage", "[predicates][kappa4][support-function]") {
+    Rng rng(9191);
+    int quadruples = 0, ties = 0, by_filter = 0, calls = 0, tries = 0;
+    auto check = [&](const Ellipse& e2, const Ellipse& e3, const Ellipse& e4, const Ellipse& q) {
+        for (bool b : {false, true}) {
+            INFO(oracle::ell({&e2, &e3, &e4, &q}) << " b " << b);
+            const Decision<bool> fast = infinite_edge_interior_conflict(e2, e3, e4, q, b);
+            const Decision<bool> exact = infinite_edge_interior_conflict(e2, e3, e4, q, b, true, false);
+            REQUIRE(exact.stage == Stage::exact);
+            CHECK(*fast == *exact);
+            ++calls;
+            by_filter += fast.stage == Stage::filter;
+        }
+    };
+    while (quadruples < 300 && ++tries < 100000) {
+        const Ellipse e2 = random_ellipse(rng), e3 = random_ellipse(rng), e4 = random_ellipse(rng), q = random_ellipse(rng);
+        if (!separated({&e2, &e3, &e4, &q})) continue;
+        ++quadruples;
+        check(e2, e3, e4, q);
+    }
+    CHECK(quadruples == 300);
+    INFO(by_filter << " of " << calls << " random calls decided by the filter");
+    CHECK(by_filter >= calls * 9 / 10);
+    // Ties: E2 and E4 equal circles, Q = E4 moved along their center line, so
+    // Q's departure tangent from E2 is E4's (then the exact stage decides), or
+    // moved off it by 2^-40 (nearly the same tangent).
+    for (int k = 0; k < 40; ++k) {
+        const Rational r = rnd_pos(rng, 2, 7);
+        const Ellipse e2 = Ellipse::circle(rnd(rng, -3, 3, 5), rnd(rng, -3, 3, 5), r);
+        const Ellipse e4 = Ellipse::circle(e2.xc() + rnd(rng, 8, 12, 3), e2.yc() + rnd(rng, -4, 4, 3), r);
+        const Ellipse e3(rnd_pos(rng, 2, 5) + Rational(1), Rational(1, 2), rnd(rng, -1, 1, 4), e2.xc() - Rational(9),
+                         e2.yc() + rnd(rng, 6, 9, 2));
+        const Rational off = k % 2 ? Rational(1, 1UL << 40) : Rational(0);
+        const Ellipse q = Ellipse::circle(e4.xc() + Rational(3) * (e4.xc() - e2.xc()),
+                                          e4.yc() + Rational(3) * (e4.yc() - e2.yc()) + off, r);
+        if (!separated({&e2, &e3, &e4, &q})) continue;
+        ++ties;
+        const int filtered = by_filter;
+        check(e2, e3, e4, q);
+        // The same tangent: the filter cannot separate the normals.
+        if (off == 0) CHECK(by_filter == filtered);
+    }
+    CHECK(ties >= 30);
+}
