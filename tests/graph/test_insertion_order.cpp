@@ -22,6 +22,7 @@
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
 #include "tests/support/ellipse_graph.hpp"
+#include "tests/support/graph_shape.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -35,38 +36,11 @@
 #include <vector>
 
 using namespace ellvor;
+using test::GraphShape;
+using test::random_order;
+using test::shape_of;
 
 namespace {
-
-using Pairs = std::vector<std::pair<SiteId, SiteId>>;
-
-struct GraphShape {
-    std::vector<SiteId> visible;
-    Pairs hidden, edges, hull;
-    std::vector<std::array<SiteId, 3>> faces;
-};
-
-GraphShape shape_of(const DelaunayGraph& g) {
-    return {g.visible_sites(), g.hidden(), g.edges(), g.hull(), g.faces()};
-}
-
-std::string replay(const std::vector<Ellipse>& sites, const std::vector<SiteId>& order) {
-    std::ostringstream s;
-    s << "sites (a b w xc yc):\n";
-    for (const Ellipse& e : sites) s << e.str() << "\n";
-    s << "order:";
-    for (SiteId i : order) s << " " << i;
-    return s.str();
-}
-
-// Our own shuffle (std::shuffle's algorithm is implementation-defined), so
-// that a seed means the same orders everywhere.
-std::vector<SiteId> random_order(std::size_t n, std::mt19937_64& rng) {
-    std::vector<SiteId> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
-    return order;
-}
 
 // The graph of `sites` inserted in `order`, checked by validate() and, with
 // `brute_force`, by brute_force_check().
@@ -74,7 +48,7 @@ GraphShape build_in_order(const std::vector<Ellipse>& sites, const std::vector<S
     DelaunayGraph g = test::ellipse_graph(sites);
     for (SiteId i : order) g.insert(i);
     const std::string problem = brute_force ? g.brute_force_check() : g.validate();
-    INFO(replay(sites, order));
+    INFO(test::replay(sites, "order", order));
     CHECK(problem == "");
     return shape_of(g);
 }
@@ -110,7 +84,7 @@ GraphShape check_order_independence(const std::vector<Ellipse>& sites, std::mt19
     for (int k = 0; k < orders; ++k) {
         const std::vector<SiteId> order = random_order(sites.size(), rng);
         const GraphShape got = build_in_order(sites, order, false);
-        INFO(replay(sites, order));
+        INFO(test::replay(sites, "order", order));
         CHECK(got.visible == want.visible);
         CHECK(got.hidden == want.hidden);
         CHECK(got.edges == want.edges);

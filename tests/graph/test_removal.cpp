@@ -14,6 +14,7 @@
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
 #include "tests/support/ellipse_graph.hpp"
+#include "tests/support/graph_shape.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -27,34 +28,12 @@
 #include <vector>
 
 using namespace ellvor;
+using test::GraphShape;
+using test::Pairs;
+using test::random_order;
+using test::shape_of;
 
 namespace {
-
-using Pairs = std::vector<std::pair<SiteId, SiteId>>;
-
-struct GraphShape {
-    std::vector<SiteId> visible;
-    Pairs hidden, edges, hull;
-    std::vector<std::array<SiteId, 3>> faces;
-};
-
-GraphShape shape_of(const DelaunayGraph& g) { return {g.visible_sites(), g.hidden(), g.edges(), g.hull(), g.faces()}; }
-
-std::string replay(const std::vector<Ellipse>& sites, const std::vector<SiteId>& removed) {
-    std::ostringstream s;
-    s << "sites (a b w xc yc):\n";
-    for (const Ellipse& e : sites) s << e.str() << "\n";
-    s << "removed, in order:";
-    for (SiteId i : removed) s << " " << i;
-    return s.str();
-}
-
-std::vector<SiteId> random_order(std::size_t n, std::mt19937_64& rng) {
-    std::vector<SiteId> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
-    return order;
-}
 
 // The graph of the sites not in `removed`, inserted largest first.
 GraphShape rebuilt_without(const std::vector<Ellipse>& sites, const std::vector<SiteId>& removed) {
@@ -76,7 +55,7 @@ GraphStats check_removals(const std::vector<Ellipse>& sites, const std::vector<S
     DelaunayGraph g = test::ellipse_graph(sites);
     g.insert_all();
     for (SiteId r : removed) g.remove(r);
-    INFO(replay(sites, removed));
+    INFO(test::replay(sites, "removed, in order", removed));
     const std::string problem = sites.size() <= 150 ? g.brute_force_check() : g.validate();
     CHECK(problem == "");
     for (SiteId r : removed) CHECK_FALSE(g.contains(r));
