@@ -1,4 +1,5 @@
-// libFuzzer target: small .ell files through what `ellvor build --validate` does.
+// libFuzzer target: small .ell files through what `ellvor build --validate` does,
+// then every site removed again (`build --remove`), the graph valid after each.
 //
 // An InputError (a parse error, a duplicate, intersecting sites) is fine; any
 // other exception, an invalid graph, a crash, a hang or a sanitizer report is
