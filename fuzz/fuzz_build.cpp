@@ -1,5 +1,5 @@
 // libFuzzer target: small .ell files through what `ellvor build --validate` does,
-// then every site removed again (`build --remove`), the graph valid after each.
+// then its odd sites removed again (`build --remove`) and the graph checked again.
 //
 // An InputError (a parse error, a duplicate, intersecting sites) is fine; any
 // other exception, an invalid graph, a crash, a hang or a sanitizer report is
