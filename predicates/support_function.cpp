@@ -49,9 +49,14 @@ std::optional<BitangentNormal> certify(const Ellipse::Enclosure& k1, const Ellip
 
 }  // namespace
 
-std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
+namespace {
+
+// The proven tangents, stopping at the one `wanted` (arrival or not) if given.
+std::vector<BitangentNormal> find_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2,
+                                                    std::optional<bool> wanted) {
     std::vector<BitangentNormal> out;
     if (!finite(k1) || !finite(k2)) return out;
+    auto done = [&] { return out.size() == 2 || (wanted && !out.empty() && out.back().arrival == *wanted); };
     auto f = [&](double phi) {
         const double c = std::cos(phi), s = std::sin(phi);
         const SupportDouble h1 = support_double(k1, c, s), h2 = support_double(k2, c, s);
@@ -76,20 +81,23 @@ std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosur
             if (out.empty() || out[0].arrival != b->arrival) out.push_back(*b);
     };
     // First guesses: the common tangents of the circles with the sites'
-    // centers and mean radii, n.(C2 - C1) = r1 - r2, in closed form.
+    // centers and mean radii, n.(C2 - C1) = r1 - r2, in closed form (side +1:
+    // where the hull arrives on E1).
     const double dx = k2.xc.mid() - k1.xc.mid(), dy = k2.yc.mid() - k1.yc.mid(), length = std::hypot(dx, dy);
     const double r1 = 0.5 * (k1.a.mid() + k1.b.mid()), r2 = 0.5 * (k2.a.mid() + k2.b.mid());
     const double c = (r1 - r2) / length;
     if (length > 0 && std::fabs(c) < 1) {
         const double ex = dx / length, ey = dy / length, root = std::sqrt(1 - c * c);
-        for (double side : {1.0, -1.0})
+        const bool departure_first = wanted && !*wanted;
+        for (double side : {departure_first ? -1.0 : 1.0, departure_first ? 1.0 : -1.0}) {
             add(refine(std::atan2(c * ey + side * root * ex, c * ex - side * root * ey), 0, 0, false, false));
+            if (done()) return out;
+        }
     }
-    if (out.size() == 2) return out;
     // Otherwise bracket the roots of h1 - h2 by sampling.
     constexpr int kSamples = 16;
     double prev_phi = -M_PI, prev = f(prev_phi).value;
-    for (int i = 1; i <= kSamples && out.size() < 2; ++i) {
+    for (int i = 1; i <= kSamples && !done(); ++i) {
         const double phi = -M_PI + 2 * M_PI * i / kSamples, value = f(phi).value;
         if ((prev < 0) != (value < 0)) add(refine(0.5 * (prev_phi + phi), prev_phi, phi, true, prev < 0));
         prev_phi = phi, prev = value;
@@ -97,8 +105,14 @@ std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosur
     return out;
 }
 
+}  // namespace
+
+std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
+    return find_bitangent_normals(k1, k2, std::nullopt);
+}
+
 std::optional<NormalInterval> certified_bitangent_normal(const Ellipse& e1, const Ellipse& e2, bool arrival) {
-    for (const BitangentNormal& b : certified_bitangent_normals(e1.enclosure(), e2.enclosure()))
+    for (const BitangentNormal& b : find_bitangent_normals(e1.enclosure(), e2.enclosure(), arrival))
         if (b.arrival == arrival) return b.normal;
     return std::nullopt;
 }

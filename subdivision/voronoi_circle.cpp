@@ -12,7 +12,14 @@ const DoubleVoronoiCircle* VoronoiCircle::in_doubles() {
 }
 
 VoronoiCircleSolver& VoronoiCircle::solver() {
-    if (!solver_) solver_ = std::make_unique<VoronoiCircleSolver>(*sites_[0], *sites_[1], *sites_[2]);
+    if (!solver_) {
+        solver_ = std::make_unique<VoronoiCircleSolver>(*sites_[0], *sites_[1], *sites_[2]);
+        // A certified double circle is a start right at the root.
+        if (doubles_tried_ == Tried::certified)
+            solver_->certify_near(doubles_.flipped, {doubles_.parameter[0].mid(), doubles_.parameter[1].mid(),
+                                                     doubles_.parameter[2].mid(), doubles_.radius.mid(),
+                                                     doubles_.center_x.mid(), doubles_.center_y.mid()});
+    }
     return *solver_;
 }
 

@@ -282,6 +282,24 @@ bool VoronoiCircleSolver::certify() {
     return certify_by_search();
 }
 
+bool VoronoiCircleSolver::certify_near(const std::array<bool, 3>& flipped, const std::array<double, 6>& x) {
+    if (certified_) return true;
+    set_frame();
+    // In a similarity frame the point would have to be mapped: rare, the
+    // guesses do it then.
+    if (frame_.is_identity()) {
+        std::array<Ball, 3> parameter;
+        for (int i = 0; i < 3; ++i) arb_set_d(parameter[i].get(), x[i]);
+        Ball radius, center_x, center_y;
+        arb_set_d(radius.get(), x[3]);
+        arb_set_d(center_x.get(), x[4]);
+        arb_set_d(center_y.get(), x[5]);
+        start_at(flipped, parameter, radius, center_x, center_y);
+        if ((certified_ = certify_here(start_precision(), kGuessLevels, kGuessSteps))) return true;
+    }
+    return certify();
+}
+
 bool VoronoiCircleSolver::certify_by_search(const VoronoiCircleSearchOptions& options) {
     set_frame();
     const VoronoiCircleSearchResult result = search_voronoi_circle(

@@ -71,6 +71,12 @@ public:
     // counter-clockwise Voronoi circle. Throws Error only for a degenerate
     // triple on which the search hits its cap.
     bool certify();
+    // certify() from an approximation known to be close to the circle (the
+    // midpoint of its certified double enclosure, voronoi_circle_in_doubles.hpp:
+    // chart flags and t1, t2, t3, rho, x, y in the sites' coordinates): Newton
+    // and Krawczyk from there first, which spares the guesses and the
+    // tangent-line starts (milliseconds for a huge circle). The same contract.
+    bool certify_near(const std::array<bool, 3>& flipped, const std::array<double, 6>& x);
     // The exhaustive search alone (tests and experiments force this path);
     // the same contract as certify().
     bool certify_by_search(const VoronoiCircleSearchOptions& options = {});
