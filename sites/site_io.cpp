@@ -124,10 +124,31 @@ void require_dynamic_range(const SiteFile& file) {
                       static_cast<long>(fmpz_bits(fmpq_denref(span.get()))) -
                       static_cast<long>(fmpz_bits(fmpq_numref(least.get()))) +
                       static_cast<long>(fmpz_bits(fmpq_denref(least.get())));
-    throw InputError(file.name, file.lines[tiniest], 1,
-                     "the site set spans about 2^" + std::to_string(bits) +
-                         " times the smallest semi-axis, this site's; ellvor supports extents up to 2^" +
-                         std::to_string(kMaxDynamicRangeBits) + " times the smallest semi-axis");
+    const std::string reason = "the site set spans about 2^" + std::to_string(bits) + " times the smallest semi-axis, " +
+                               (file.lines.empty() ? "site " + std::to_string(tiniest) + "'s" : std::string("this site's")) +
+                               "; ellvor supports extents up to 2^" + std::to_string(kMaxDynamicRangeBits) +
+                               " times the smallest semi-axis";
+    if (file.lines.empty()) throw InputError(reason);
+    throw InputError(file.name, file.lines[tiniest], 1, reason);
+}
+
+// Throws unless site `id` of the file is a point set that no earlier site is
+// (`seen`: the first site of each point set so far, a lookup rather than a
+// comparison with every earlier site: n concentric nested sites would cost
+// O(n^2)). The error is at the later site's line when the file has lines.
+void require_new_point_set(std::map<Ellipse::PointSetKey, std::size_t>& seen, const SiteFile& file, std::size_t id) {
+    const Ellipse& e = file.sites[id];
+    const auto [first, inserted] = seen.emplace(e.point_set_key(), id);
+    if (inserted) return;
+    const std::size_t other = first->second;
+    const bool lines = !file.lines.empty();
+    auto line_of = [&](std::size_t k) { return lines ? " (line " + std::to_string(file.lines[k]) + ")" : std::string(); };
+    const std::string reason = "duplicate site: site " + std::to_string(id) + line_of(id) + " is the same " +
+                               (file.sites[other] == e ? "ellipse" : "point set") + " as site " +
+                               std::to_string(other) + line_of(other) + "; sites must be distinct";
+    const InputError::SitePair pair{other, id};
+    if (!lines) throw InputError(reason, pair);
+    throw InputError(file.name, file.lines[id], 1, reason, pair);
 }
 
 }  // namespace
@@ -142,9 +163,8 @@ SiteFile read_site_file(std::istream& in, const std::string& name, SiteFormat fo
     static const char* cin_names[] = {"x", "y", "r"};
     const char** names = cin_format ? cin_names : ell_names;
 
-    // The first site of each point set, for the duplicate test: a lookup, not a
-    // comparison with every earlier site at the same center, which made n
-    // concentric (nested, valid) sites cost O(n^2) (8000 took 7.6 s to read).
+    // The first site of each point set, for the duplicate test (8000
+    // concentric sites took 7.6 s to read when each was compared with all).
     std::map<Ellipse::PointSetKey, std::size_t> by_point_set;
 
     std::streambuf* buf = in.rdbuf();
@@ -196,19 +216,9 @@ SiteFile read_site_file(std::istream& in, const std::string& name, SiteFormat fo
             throw InputError(name, line_number, 1, "too many sites: at most " + std::to_string(kMaxSites));
         Ellipse e = cin_format ? Ellipse::circle(values[0], values[1], values[2])
                                : Ellipse(values[0], values[1], values[2], values[3], values[4]);
-        const std::size_t id = file.sites.size();
-        const auto [first, inserted] = by_point_set.emplace(e.point_set_key(), id);
-        if (!inserted) {
-            const std::size_t other = first->second;
-            const Ellipse& o = file.sites[other];
-            throw InputError(name, line_number, 1,
-                             "duplicate site: site " + std::to_string(id) + " (line " + std::to_string(line_number) +
-                                 ") is the same " + (o == e ? "ellipse" : "point set") + " as site " +
-                                 std::to_string(other) + " (line " + std::to_string(file.lines[other]) +
-                                 "); sites must be distinct");
-        }
         file.sites.push_back(std::move(e));
         file.lines.push_back(line_number);
+        require_new_point_set(by_point_set, file, file.sites.size() - 1);
     }
     if (in.bad()) throw InputError(name, line_number + 1, 1, "read error");
     require_dynamic_range(file);
@@ -226,6 +236,12 @@ SiteFile read_site_file(const std::string& path, SiteFormat format) {
         throw InputError(path, 1, 1, std::string("cannot open file: ") + std::strerror(err));
     }
     return read_site_file(in, path, format);
+}
+
+void check_site_set(const SiteFile& file) {
+    std::map<Ellipse::PointSetKey, std::size_t> by_point_set;
+    for (std::size_t id = 0; id < file.sites.size(); ++id) require_new_point_set(by_point_set, file, id);
+    require_dynamic_range(file);
 }
 
 std::vector<Ellipse> read_sites(std::istream& in, const std::string& name, SiteFormat format) {
@@ -301,7 +317,8 @@ InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::si
     if (first > second) std::swap(first, second);
     return InputError(file.name, file.lines[second], 1,
                       "site " + std::to_string(second) + " intersects site " + std::to_string(first) + " (line " +
-                          std::to_string(file.lines[first]) + "); sites must be disjoint or nested");
+                          std::to_string(file.lines[first]) + "); sites must be disjoint or nested",
+                      InputError::SitePair{first, second});
 }
 
 }  // namespace ellvor

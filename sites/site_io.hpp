@@ -52,13 +52,19 @@ constexpr long kMaxDynamicRangeBits = 256;
 struct SiteFile {
     std::string name;             // the display name used in messages
     std::vector<Ellipse> sites;   // id = index
-    std::vector<long> lines;      // 1-based line of each site
+    std::vector<long> lines;      // 1-based line of each site; empty for sites that come from no file
 };
 
 // Read from a stream; `display_name` names it in messages.
 SiteFile read_site_file(std::istream& in, const std::string& display_name, SiteFormat format = SiteFormat::ell);
 // Read from a path ("-" is standard input). Throws InputError "PATH:1:1: cannot open ..." when unreadable.
 SiteFile read_site_file(const std::string& path, SiteFormat format = SiteFormat::ell);
+
+// The checks of a whole site set that the reader makes (no two sites the
+// same point set, the dynamic range), for sites made otherwise (the Python
+// module); without lines the errors name site ids and carry no location.
+// Each site's own checks (a, b > 0, the aspect ratio) are the maker's.
+void check_site_set(const SiteFile& file);
 
 std::vector<Ellipse> read_sites(std::istream& in, const std::string& display_name, SiteFormat format = SiteFormat::ell);
 std::vector<Ellipse> read_sites(const std::string& path, SiteFormat format = SiteFormat::ell);

@@ -1,10 +1,14 @@
 // The one exception type of ellvor. Input errors carry a location
-// ("file:line:column") so that the CLI can print them and exit with status 2.
+// ("file:line:column") so that the CLI can print them and exit with status 2;
+// the location's parts are kept as fields too, so that other callers (the
+// Python module) need not parse the message.
 #pragma once
 
 #include <stdexcept>
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace ellvor {
 
@@ -13,12 +17,37 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// A malformed input: the message already names file, line and column.
+// A malformed input. With a location, what() is "FILE:LINE:COLUMN: reason".
+// A pair of sites that cannot stand together (crossing or duplicate sites)
+// also names the two ids, smaller first.
 class InputError : public Error {
 public:
-    InputError(const std::string& file, long line, long column, const std::string& what)
-        : Error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what) {}
-    explicit InputError(const std::string& message) : Error(message) {}
+    using SitePair = std::pair<std::size_t, std::size_t>;
+
+    InputError(const std::string& file, long line, long column, const std::string& reason,
+               std::optional<SitePair> sites = std::nullopt)
+        : Error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + reason),
+          file_(file),
+          line_(line),
+          column_(column),
+          reason_(reason),
+          sites_(sites) {}
+    // No location: what() is the message as given.
+    explicit InputError(const std::string& message, std::optional<SitePair> sites = std::nullopt)
+        : Error(message), reason_(message), sites_(sites) {}
+
+    bool has_location() const { return line_ > 0; }
+    const std::string& file() const { return file_; }  // "" without a location
+    long line() const { return line_; }                // 1-based; 0 without a location
+    long column() const { return column_; }            // 1-based; 0 without a location
+    const std::string& reason() const { return reason_; }  // what() without the location
+    const std::optional<SitePair>& sites() const { return sites_; }
+
+private:
+    std::string file_;
+    long line_ = 0, column_ = 0;
+    std::string reason_;
+    std::optional<SitePair> sites_;
 };
 
 // Two input sites whose boundaries cross (not a valid pair of sites): thrown
@@ -28,7 +57,8 @@ class IntersectingSites : public InputError {
 public:
     IntersectingSites(std::size_t first, std::size_t second)
         : InputError("invalid input: sites " + std::to_string(first) + " and " + std::to_string(second) +
-                     " intersect (sites must be disjoint or nested)"),
+                         " intersect (sites must be disjoint or nested)",
+                     SitePair{first, second}),
           first_(first),
           second_(second) {}
     std::size_t first() const { return first_; }
