@@ -397,6 +397,8 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
             VoronoiEdgeArc arc;
             arc.p = tds.vertex(F.v[ccw(i)]).site;
             arc.q = tds.vertex(F.v[cw(i)]).site;
+            arc.left_face = f;
+            arc.right_face = g;
             const EllipseShape& P = shapes[arc.p];
             // The left face (f) gives the start, the right face (g) the end.
             std::optional<double> from, to;

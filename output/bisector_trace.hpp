@@ -93,6 +93,9 @@ std::vector<BisectorPoint> trace_bisector(const EllipseShape& p, const EllipseSh
 struct VoronoiEdgeArc {
     SiteId p = 0, q = 0;                  // the Delaunay edge p -> q (the left face's vertex first)
     bool from_infinity = false, to_infinity = false;
+    // The triangulation's faces on the left and right of p -> q (none when
+    // the graph has fewer than three visible sites), to name the ends.
+    FaceIndex left_face, right_face;
     std::vector<BisectorPoint> points;    // equidistant from p and q, in order
 };
 

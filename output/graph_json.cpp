@@ -3,26 +3,21 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <algorithm>
-#include <array>
 #include <utility>
 
 namespace ellvor {
-namespace {
 
-nlohmann::json voronoi_vertex(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& f) {
+VoronoiVertexValue voronoi_vertex_value(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& f) {
     VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]]);
-    nlohmann::json v = {{"face", f}};
     solver.refine_existing(53);  // a face of the graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& c = solver.enclosure();
-    double error = 0;
-    for (const Ball* b : {&c.center_x, &c.center_y, &c.radius}) error = std::max(error, b->radius_double());
-    v["center"] = {c.center_x.mid_double(), c.center_y.mid_double()};
-    v["radius"] = c.radius.mid_double();
-    v["error"] = error;
+    VoronoiVertexValue v;
+    for (const Ball* b : {&c.center_x, &c.center_y, &c.radius}) v.error = std::max(v.error, b->radius_double());
+    v.x = c.center_x.mid_double();
+    v.y = c.center_y.mid_double();
+    v.radius = c.radius.mid_double();
     return v;
 }
-
-}  // namespace
 
 nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds) {
     nlohmann::json s = {{"seconds", seconds}, {"inserted", graph.stats().inserted}};
@@ -41,7 +36,15 @@ nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds) {
 }
 
 nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats) {
+    std::vector<VoronoiVertexValue> vertices;
+    for (const auto& f : graph.faces()) vertices.push_back(voronoi_vertex_value(sites, f));
+    return graph_json(graph, sites, stats, vertices);
+}
+
+nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats,
+                          const std::vector<VoronoiVertexValue>& vertices) {
     const auto faces = graph.faces();
+    if (vertices.size() != faces.size()) throw Error("graph_json: one Voronoi vertex per face expected");
     nlohmann::json j;
     j["sites"] = nlohmann::json::array();
     for (const Ellipse& e : sites) j["sites"].push_back(e.str());
@@ -54,7 +57,11 @@ nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>
     for (const auto& [a, b] : graph.edges()) j["edges"].push_back({a, b});
     j["faces"] = faces;
     j["voronoi_vertices"] = nlohmann::json::array();
-    for (const auto& f : faces) j["voronoi_vertices"].push_back(voronoi_vertex(sites, f));
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        const VoronoiVertexValue& v = vertices[k];
+        j["voronoi_vertices"].push_back(
+            {{"face", faces[k]}, {"center", {v.x, v.y}}, {"radius", v.radius}, {"error", v.error}});
+    }
     j["stats"] = stats;
     return j;
 }

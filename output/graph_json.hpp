@@ -10,9 +10,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <vector>
 
 namespace ellvor {
+
+// The Voronoi vertex of a finite face (i, j, k) as the JSON gives it: the
+// center and radius of its certified Voronoi circle at 53 correct bits, as
+// the doubles nearest the balls' midpoints, and `error`, the largest of the
+// three balls' radii.
+struct VoronoiVertexValue {
+    double x = 0, y = 0, radius = 0, error = 0;
+};
+VoronoiVertexValue voronoi_vertex_value(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face);
 
 // {"seconds", "inserted", "predicates": {name: {"calls", one count per stage}}}.
 nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds);
@@ -21,5 +31,9 @@ nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds);
 // statistics (build_stats_json taken right after the build: validation asks
 // predicates too).
 nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats);
+// The same with the Voronoi vertices already computed, one per face of
+// graph.faces(), in that order (the Python module keeps them as arrays too).
+nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats,
+                          const std::vector<VoronoiVertexValue>& vertices);
 
 }  // namespace ellvor
