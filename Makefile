@@ -6,20 +6,26 @@
 #   make bench     build and run the benchmark programs under experiments/
 #   make fuzz      the libFuzzer targets under fuzz/ (clang, ASan + UBSan), FUZZ_SECONDS each;
 #                  findings in build-fuzz/findings/
+#   make python    the Python module in-tree: build/python/ellvor (PYTHONPATH=build/python)
 
 BUILD    ?= build
 CXX      ?= g++
 OPT      ?= -O2 -g
 SANITIZE ?=
-CXXFLAGS := -std=c++17 $(OPT) $(SANITIZE) -Wall -Wextra -Wno-unused-parameter -I. -I/usr/include/eigen3 -MMD -MP
+CXXFLAGS := -std=c++17 $(OPT) $(SANITIZE) -fPIC -Wall -Wextra -Wno-unused-parameter -I. -I/usr/include/eigen3 -MMD -MP
 LDLIBS   := -lflint-arb -lflint -lmpfr -lgmp
 JOBS     ?= 2
+# Debian's interpreter: a python3 earlier on PATH (pyenv) may not see Debian's numpy and pytest.
+PYTHON   ?= /usr/bin/python3
+# PYTHON_TESTS=no leaves the Python suite out of `make test` (`make sanitize` does).
+PYTHON_TESTS ?= yes
 
 LIB_SRC   := $(wildcard util/*.cpp sites/*.cpp subdivision/*.cpp exact/*.cpp predicates/*.cpp graph/*.cpp output/*.cpp)
 CLI_SRC   := $(wildcard cli/*.cpp)
 TEST_SRC  := $(wildcard tests/*.cpp tests/*/*.cpp)
 BENCH_SRC := $(wildcard experiments/*.cpp)
 FUZZ_SRC  := $(wildcard fuzz/*.cpp)
+PY_SRC    := $(wildcard python/src/*.cpp)
 
 LIB_OBJ   := $(LIB_SRC:%.cpp=$(BUILD)/obj/%.o)
 CLI_OBJ   := $(CLI_SRC:%.cpp=$(BUILD)/obj/%.o)
@@ -29,9 +35,14 @@ ELLVOR    := $(BUILD)/ellvor
 TESTS     := $(BUILD)/ellvor_tests
 BENCHES   := $(BENCH_SRC:experiments/%.cpp=$(BUILD)/experiments/%)
 FUZZERS   := $(FUZZ_SRC:fuzz/%.cpp=$(BUILD)/%)
+PY_OBJ    := $(PY_SRC:%.cpp=$(BUILD)/obj/%.o)
+# The package: the pure-Python half copied next to the extension module.
+PY_EXT    := $(or $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_config_var('EXT_SUFFIX'))" 2>/dev/null),.so)
+PY_MODULE := $(BUILD)/python/ellvor/_ellvor$(PY_EXT)
+PY_FILES  := $(patsubst python/%,$(BUILD)/python/%,$(wildcard python/ellvor/*.py))
 DEPS_STAMP := $(BUILD)/.deps-installed
 
-.PHONY: all deps run test check-tests sanitize bench fuzz fuzzers clean
+.PHONY: all deps run test check-tests sanitize bench fuzz fuzzers python clean
 .DEFAULT_GOAL := all
 
 all: $(ELLVOR) $(TESTS)
@@ -59,6 +70,21 @@ $(ELLVOR): $(CLI_OBJ) $(LIBRARY)
 $(TESTS): $(TEST_OBJ) $(LIBRARY)
 	$(CXX) $(CXXFLAGS) $^ -o $@ $(LDLIBS)
 
+# The extension module: pybind11 (header-only) over the library. Every
+# object is compiled with -fPIC, so the library links into it as it is.
+$(PY_OBJ): CXXFLAGS += -fvisibility=hidden $(shell $(PYTHON) -c "import sysconfig; print('-I' + sysconfig.get_paths()['include'])" 2>/dev/null)
+
+$(PY_MODULE): $(PY_OBJ) $(LIBRARY)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -shared $^ -o $@ $(LDLIBS)
+
+$(BUILD)/python/ellvor/%.py: python/ellvor/%.py
+	@mkdir -p $(dir $@)
+	cp $< $@
+
+python: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(PY_MODULE) $(PY_FILES)
+
 $(BUILD)/experiments/%: experiments/%.cpp $(LIBRARY)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -DNDEBUG -frounding-math $< $(LIBRARY) -o $@ $(LDLIBS)
@@ -76,15 +102,23 @@ run: $(DEPS_STAMP)
 	$(ELLVOR) build data/example-300.ell --validate --stats --json $(BUILD)/example-graph.json --svg $(BUILD)/example-graph.svg
 	@echo "Delaunay graph written to $(BUILD)/example-graph.json, drawing to $(BUILD)/example-graph.svg"
 
+# The Catch2 suite, then the Python suite (tests/python, against the CLI of
+# this build); one closing line "N passed, M failed" for both.
 test: $(DEPS_STAMP)
+ifeq ($(PYTHON_TESTS),no)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS)
 	@bash tests/run_suite.sh $(TESTS)
+else
+	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS) $(PY_MODULE) $(PY_FILES)
+	@PYTHON=$(PYTHON) PYTHONPATH=$(abspath $(BUILD)/python) ELLVOR_BINARY=$(abspath $(ELLVOR)) \
+	    bash tests/run_suite.sh $(TESTS) --pytest tests/python
+endif
 
 # shift-base is left out: CGAL's MP_Float (used by the tests that compare with
 # CGAL) left-shifts negative numbers, which C++20 defines and every compiler
 # does as expected; all other undefined behaviour aborts the run.
 sanitize: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory BUILD=build-sanitize OPT="-O1 -g" \
+	@$(MAKE) --no-print-directory BUILD=build-sanitize OPT="-O1 -g" PYTHON_TESTS=no \
 	    SANITIZE="-fsanitize=address,undefined -fno-sanitize=shift-base -fno-sanitize-recover=undefined -fno-omit-frame-pointer" test
 
 bench: $(DEPS_STAMP)
@@ -111,4 +145,4 @@ fuzz: $(FUZZ_STAMP)
 clean:
 	rm -rf build build-sanitize build-fuzz
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BENCHES:=.d) $(FUZZ_SRC:%.cpp=$(BUILD)/obj/%.d)
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(PY_OBJ:.o=.d) $(BENCHES:=.d) $(FUZZ_SRC:%.cpp=$(BUILD)/obj/%.d)

@@ -1,0 +1,267 @@
+"""ellvor.build and the Diagram it returns."""
+
+import functools
+import json
+import os
+import sys
+from fractions import Fraction
+
+import numpy as np
+
+from . import _ellvor
+
+
+class Ball:
+    """A certified enclosure ``[lo, hi]`` of a real number.
+
+    ``lo`` and ``hi`` are exact Fractions (Arb's dyadic endpoints); ``text`` is
+    Arb's ``[mid +/- rad]`` as the CLI prints it.
+    """
+
+    __slots__ = ("lo", "hi", "text")
+
+    def __init__(self, lo, hi, text=None):
+        self.lo, self.hi, self.text = lo, hi, text
+
+    @property
+    def mid(self):
+        return (self.lo + self.hi) / 2
+
+    @property
+    def rad(self):
+        return (self.hi - self.lo) / 2
+
+    def __contains__(self, x):
+        return self.lo <= Fraction(x) <= self.hi
+
+    def __float__(self):
+        return float(self.mid)
+
+    def __repr__(self):
+        return f"Ball({float(self.mid)!r} +/- {float(self.rad):.3g})"
+
+    def __str__(self):
+        return self.text if self.text is not None else repr(self)
+
+
+def _ball(t):
+    return None if t is None else Ball(*t)
+
+
+class VoronoiCircle:
+    """A certified Voronoi circle: the circle externally tangent to three sites,
+    tangency points counter-clockwise in their order.
+
+    ``center`` (Ball, Ball), ``radius`` (Ball); ``tangency``: per site a dict
+    with ``t`` (Ball, or None at the site's point t = infinity), ``chart``
+    (``"t"`` or ``"-1/t"``) and ``chart_parameter`` (Ball); ``correct_bits``
+    (of the least accurate of them), ``precision``, ``newton_steps``,
+    ``found_by`` (``"guess"``, ``"tangent-line"`` or ``"search"``),
+    ``search_boxes``; ``face`` for a vertex of a diagram.
+    """
+
+    def __init__(self, d):
+        self.center = tuple(_ball(b) for b in d["center"])
+        self.radius = _ball(d["radius"])
+        self.tangency = [{"t": _ball(t["t"]), "chart": t["chart"], "chart_parameter": _ball(t["chart_parameter"])}
+                         for t in d["tangency"]]
+        for key in ("correct_bits", "precision", "newton_steps", "found_by", "search_boxes"):
+            setattr(self, key, d[key])
+        self.face = d.get("face")
+
+    def __repr__(self):
+        x, y = self.center
+        return (f"VoronoiCircle(center=({float(x)!r}, {float(y)!r}), radius={float(self.radius)!r}, "
+                f"correct_bits={self.correct_bits})")
+
+
+def _frozen(a):
+    a.flags.writeable = False
+    return a
+
+
+class Trace:
+    """The Voronoi edges of a diagram traced as polylines (floating point, for
+    drawing: nothing here decides anything).
+
+    All arcs' points are in one array: arc ``k`` is ``points[offsets[k]:offsets[k+1]]``
+    (``polylines`` lists them), each point equidistant from the arc's two sites
+    (``rho``: that distance). Per arc: ``sites[k] = (p, q)``, the Delaunay edge
+    p -> q; ``faces[k]``, the Voronoi vertices at its start and end (indices
+    into ``Diagram.vertices``, -1 at infinity; ``infinite[k]`` says the same
+    as booleans). Unbounded arcs are traced until well outside ``box``
+    (xmin, ymin, xmax, ymax), the sites' bounding box plus a margin.
+    ``tolerance``: the largest gap between consecutive points inside the box.
+    """
+
+    def __init__(self, d):
+        for key in ("points", "rho", "offsets", "sites", "faces", "infinite"):
+            setattr(self, key, _frozen(d[key]))
+        self.box = d["box"]
+        self.tolerance = d["tolerance"]
+        self.failed_edges = d["failed_edges"]
+        self.misordered_edges = d["misordered_edges"]
+
+    def __len__(self):
+        return len(self.sites)
+
+    def __getitem__(self, k):
+        return self.points[self.offsets[k]:self.offsets[k + 1]]
+
+    @property
+    def polylines(self):
+        """One (k, 2) view of ``points`` per arc."""
+        return np.split(self.points, self.offsets[1:-1])
+
+    def __repr__(self):
+        return f"<ellvor.Trace: {len(self)} Voronoi edges, {len(self.points)} points>"
+
+
+class Diagram:
+    """The Delaunay graph of a site set and its Voronoi diagram (see ``build``).
+
+    Integer arrays (int64, read-only), site ids 0-based in input order:
+        hidden (k, 2)          [hidden, hiding]: sites inside another, without a cell
+        edges (m, 2)           finite Delaunay edges (i < j), sorted; listed twice when two
+                               Voronoi edges separate the same two sites
+        faces (f, 3)           finite faces, counter-clockwise, smallest id first, sorted;
+                               face k is Voronoi vertex k
+        hull (h, 2)            the infinite faces (i, j, infinity), counter-clockwise pairs
+        ridge_points (m, 2)    per Voronoi edge, the two sites it separates (scipy's meaning),
+                               in the order of ``edges``
+        ridge_vertices (m, 2)  its two Voronoi vertices (indices into ``vertices``, -1 at
+                               infinity); it runs from the first to the second with site
+                               ridge_points[k][0] on its left
+    Voronoi vertices, as the JSON gives them (computed on first use):
+        vertices (f, 2), vertex_radii (f,)   centers and radii of the Voronoi circles, the doubles
+                                             nearest the midpoints of their certified balls
+        vertex_errors (f,)                   every exact value is within this of the midpoint of its
+                                             ball, whose nearest double is given (so within this plus
+                                             half an ulp of the double)
+    ``vertex(i, bits)`` refines one circle to exact bounds; ``trace()`` draws the
+    Voronoi edges; ``to_json()`` is ``ellvor build --json``'s document; ``stats``
+    the build's figures.
+    """
+
+    def __init__(self, core):
+        self._core = core
+
+    @functools.cached_property
+    def sites(self):
+        """The sites (an ellvor.Sites)."""
+        return self._core.sites
+
+    @functools.cached_property
+    def points(self):
+        """The sites' centers, (n, 2) float64 (scipy's ``points``)."""
+        return _frozen(np.ascontiguousarray(self.sites.to_array()[:, 3:5]))
+
+    @functools.cached_property
+    def hidden(self):
+        return _frozen(self._core.hidden())
+
+    @functools.cached_property
+    def edges(self):
+        return _frozen(self._core.edges())
+
+    @functools.cached_property
+    def faces(self):
+        return _frozen(self._core.faces())
+
+    @functools.cached_property
+    def hull(self):
+        return _frozen(self._core.hull())
+
+    @functools.cached_property
+    def _ridges(self):
+        return tuple(_frozen(a) for a in self._core.ridges())
+
+    @property
+    def ridge_points(self):
+        return self._ridges[0]
+
+    @property
+    def ridge_vertices(self):
+        return self._ridges[1]
+
+    @functools.cached_property
+    def _vertices(self):
+        return tuple(_frozen(a) for a in self._core.vertices())
+
+    @property
+    def vertices(self):
+        return self._vertices[0]
+
+    @property
+    def vertex_radii(self):
+        return self._vertices[1]
+
+    @property
+    def vertex_errors(self):
+        return self._vertices[2]
+
+    @functools.cached_property
+    def stats(self):
+        """The build's figures, as in the JSON: seconds (wall time of the insertions),
+        inserted, and per predicate its calls and the calls each stage decided."""
+        return json.loads(self._core.stats_json())
+
+    def vertex(self, i, bits=53):
+        """The Voronoi circle of face ``i`` refined to ``bits`` correct bits (a VoronoiCircle
+        with exact Fraction bounds)."""
+        return VoronoiCircle(self._core.vertex(i, bits))
+
+    def trace(self, tolerance=0.005, margin=0.08):
+        """The Voronoi edges as polylines (a Trace). ``tolerance`` and ``margin`` are fractions
+        of the larger side of the sites' bounding box (as for ``ellvor build --svg``)."""
+        return Trace(self._core.trace(tolerance, margin))
+
+    def to_json(self, path=None):
+        """The document of ``ellvor build --json``, byte for byte (its stats are this
+        build's). With ``path``, also writes it there."""
+        text = self._core.json()
+        if path is not None:
+            with open(os.fspath(path), "w", encoding="utf-8") as f:
+                f.write(text)
+        return text
+
+    def validate(self, brute_force=None):
+        """``ellvor build --validate``: "" when the graph is valid, else the problem.
+        ``brute_force`` (default: at most 300 sites, as the CLI) also tests every Voronoi
+        circle against every site."""
+        if brute_force is None:
+            brute_force = self._core.number_of_sites <= 300
+        return self._core.validate(bool(brute_force))
+
+    def __len__(self):
+        return self._core.number_of_sites
+
+    def __repr__(self):
+        return (f"<ellvor.Diagram: {len(self)} sites ({len(self.hidden)} hidden), {len(self.edges)} Delaunay "
+                f"edges, {len(self.faces)} faces, built in {self.stats['seconds']:.3g} s>")
+
+
+class _StderrProgress:
+    """progress=True: the CLI's "inserted N of M" line on standard error."""
+
+    def __call__(self, done, total):
+        sys.stderr.write(f"\rinserted {done} of {total}" + ("\n" if done == total else ""))
+        sys.stderr.flush()
+
+
+def build(sites, progress=False, *, fmt="ell", progress_interval=0.1):
+    """The Delaunay graph of ``sites``: a path (read as ``fmt``, "ell" or "cin"), an
+    ellvor.Sites, or an iterable of ellvor.Ellipse. Returns a Diagram.
+
+    The build runs without the GIL. Ctrl-C stops it between two insertions
+    (KeyboardInterrupt). ``progress``: False; True for a line on standard error;
+    or a callable ``progress(done, total)``, called after the first and the last
+    insertion and every ``progress_interval`` seconds between; an exception it
+    raises stops the build and propagates.
+    Raises InputError for bad input (crossing sites carry ``sites=(i, j)``).
+    """
+    if progress is True:
+        progress = _StderrProgress()
+    elif progress is False:
+        progress = None
+    return Diagram(_ellvor._build(sites, fmt, progress, float(progress_interval)))

@@ -1,0 +1,305 @@
+// ellvor.build and the diagram it returns (python/ellvor/_diagram.py wraps it).
+#include "python/src/bindings.hpp"
+
+#include "graph/delaunay_graph.hpp"
+#include "output/bisector_trace.hpp"
+#include "output/graph_json.hpp"
+#include "output/voronoi_ridges.hpp"
+#include "predicates/ellipse_delaunay_traits.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "util/error.hpp"
+
+#include <chrono>
+#include <memory>
+#include <mutex>
+
+namespace ellvor::python {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Thrown through DelaunayGraph::insert_all when Python asked to stop (Ctrl-C
+// or an exception of the progress callback); the Python error itself waits
+// in the hook until the GIL is back.
+struct Interrupted {};
+
+// Called after every insertion with the GIL released. Every 50 ms it takes
+// the GIL to run Python's signal handlers (so Ctrl-C stops the build between
+// two insertions), and it calls the progress callback on the first
+// insertion, the last, and every `interval` seconds between. Taking the GIL
+// only that often keeps its cost out of the build, and other Python threads
+// run meanwhile.
+class ProgressHook {
+public:
+    ProgressHook(py::object callback, double interval)
+        : callback_(std::move(callback)),
+          interval_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(interval))) {}
+
+    void operator()(std::size_t done, std::size_t total) {
+        const Clock::time_point now = Clock::now();
+        const bool signals_due = now >= next_signal_check_;
+        const bool callback_due = !callback_.is_none() && (done == 1 || done == total || now >= next_callback_);
+        if (!signals_due && !callback_due) return;
+        py::gil_scoped_acquire gil;
+        try {
+            if (signals_due) {
+                next_signal_check_ = now + std::chrono::milliseconds(50);
+                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            }
+            if (callback_due) {
+                next_callback_ = now + interval_;
+                callback_(done, total);
+            }
+        } catch (py::error_already_set& e) {
+            error_ = std::move(e);
+            throw Interrupted{};
+        }
+    }
+
+    // Raises the stored Python error, if any (with the GIL held).
+    void rethrow() {
+        if (error_) {
+            py::error_already_set e = std::move(*error_);
+            error_.reset();
+            throw e;
+        }
+    }
+
+private:
+    py::object callback_;
+    Clock::duration interval_;
+    Clock::time_point next_signal_check_ = Clock::now() + std::chrono::milliseconds(50), next_callback_{};
+    std::optional<py::error_already_set> error_;
+};
+
+// A built graph and what Python reads of it. The methods that compute
+// release the GIL and take `mutex_`, so two Python threads may share one
+// diagram (the graph's predicate caches are not thread-safe); different
+// diagrams build and compute in parallel.
+class Diagram {
+public:
+    std::unique_ptr<DelaunayGraph> graph;
+    const std::vector<Ellipse>* sites = nullptr;  // owned by the graph's traits
+    SiteFile names;                               // the file's name and lines (no sites)
+    bool from_file = false;
+    std::string stats;                            // build_stats_json, taken right after the build
+    std::vector<std::array<SiteId, 3>> faces;
+    std::map<FaceIndex, long> face_number;
+
+    // The Voronoi vertex of every face, as the JSON gives them; computed once.
+    const std::vector<VoronoiVertexValue>& vertex_values() {
+        if (!vertices_) {
+            std::vector<VoronoiVertexValue> v;
+            v.reserve(faces.size());
+            for (const auto& f : faces) v.push_back(voronoi_vertex_value(*sites, f));
+            vertices_ = std::move(v);
+        }
+        return *vertices_;
+    }
+
+    std::mutex mutex;
+
+private:
+    std::optional<std::vector<VoronoiVertexValue>> vertices_;
+};
+
+std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& format, py::object progress,
+                               double interval) {
+    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+        throw py::type_error("progress: expected None or a callable(done, total)");
+    if (!(interval >= 0)) throw py::value_error("progress_interval: expected a number of seconds >= 0");
+    Sites input = sites_argument(sites_or_path, format);
+    auto d = std::make_unique<Diagram>();
+    d->names.name = input.file.name;
+    d->names.lines = input.file.lines;
+    d->from_file = input.from_file;
+    ProgressHook hook(std::move(progress), interval);
+    bool interrupted = false;
+    {
+        py::gil_scoped_release release;
+        // As `ellvor build` does (cli/command_build.cpp): the traits own the sites.
+        auto traits = std::make_unique<EllipseDelaunayTraits>(std::move(input.file.sites));
+        d->sites = &traits->sites();
+        const Clock::time_point start = Clock::now();
+        d->graph = std::make_unique<DelaunayGraph>(std::move(traits));
+        try {
+            d->graph->insert_all([&](std::size_t done, std::size_t total) { hook(done, total); });
+        } catch (const Interrupted&) {
+            interrupted = true;
+        } catch (const IntersectingSites& e) {
+            if (d->from_file) throw crossing_sites_error(d->names, e.first(), e.second());
+            throw;
+        }
+        if (!interrupted) {
+            const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            d->stats = build_stats_json(*d->graph, seconds).dump();
+            d->faces = d->graph->faces();
+            d->face_number = face_numbers(*d->graph);
+        }
+    }
+    hook.rethrow();
+    return d;
+}
+
+py::array_t<std::int64_t> faces_array(const std::vector<std::array<SiteId, 3>>& faces) {
+    auto out = new_array<std::int64_t>({static_cast<py::ssize_t>(faces.size()), 3});
+    auto w = out.mutable_unchecked<2>();
+    for (std::size_t k = 0; k < faces.size(); ++k)
+        for (int i = 0; i < 3; ++i) w(static_cast<py::ssize_t>(k), i) = static_cast<std::int64_t>(faces[k][i]);
+    return out;
+}
+
+py::tuple ridges(Diagram& d) {
+    std::vector<VoronoiRidge> r;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard<std::mutex> lock(d.mutex);
+        r = voronoi_ridges(*d.graph, d.face_number);
+    }
+    std::vector<std::pair<SiteId, SiteId>> points;
+    std::vector<std::pair<long, long>> ends;
+    for (const VoronoiRidge& x : r) {
+        points.push_back({x.p, x.q});
+        ends.push_back({x.from, x.to});
+    }
+    return py::make_tuple(pairs_array(points), pairs_array(ends));
+}
+
+py::tuple vertices(Diagram& d) {
+    std::vector<VoronoiVertexValue> v;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard<std::mutex> lock(d.mutex);
+        v = d.vertex_values();
+    }
+    const auto n = static_cast<py::ssize_t>(v.size());
+    auto centers = new_array<double>({n, 2});
+    auto radii = new_array<double>({n}), errors = new_array<double>({n});
+    auto c = centers.mutable_unchecked<2>();
+    auto r = radii.mutable_unchecked<1>();
+    auto e = errors.mutable_unchecked<1>();
+    for (py::ssize_t k = 0; k < n; ++k) {
+        c(k, 0) = v[k].x, c(k, 1) = v[k].y;
+        r(k) = v[k].radius;
+        e(k) = v[k].error;
+    }
+    return py::make_tuple(centers, radii, errors);
+}
+
+std::string json(Diagram& d) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(d.mutex);
+    const nlohmann::json stats = nlohmann::json::parse(d.stats);
+    // The bytes `ellvor build --json` writes.
+    return graph_json(*d.graph, *d.sites, stats, d.vertex_values()).dump() + "\n";
+}
+
+py::dict vertex(Diagram& d, long i, long bits) {
+    const long n = static_cast<long>(d.faces.size());
+    if (i < 0) i += n;
+    if (i < 0 || i >= n) throw py::index_error("vertex index out of range");
+    if (bits < 1 || bits > 10'000'000) throw py::value_error("bits: expected an integer in [1, 10^7]");
+    const std::array<SiteId, 3> f = d.faces[static_cast<std::size_t>(i)];
+    const std::vector<Ellipse>& s = *d.sites;
+    VoronoiCircleSolver solver(s[f[0]], s[f[1]], s[f[2]]);
+    {
+        py::gil_scoped_release release;  // the sites are immutable: no lock needed
+        solver.refine_existing(bits);    // a face has its counter-clockwise circle
+    }
+    py::dict out = enclosure_dict(solver.enclosure(), bits);
+    out["face"] = py::make_tuple(f[0], f[1], f[2]);
+    return out;
+}
+
+py::dict trace(Diagram& d, double tolerance, double margin) {
+    if (!(tolerance > 0 && tolerance <= 1)) throw py::value_error("tolerance: expected a fraction in (0, 1]");
+    if (!(margin >= 0 && margin <= 10)) throw py::value_error("margin: expected a fraction in [0, 10]");
+    TracedDiagram t;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard<std::mutex> lock(d.mutex);
+        t = trace_voronoi_diagram(*d.graph, *d.sites, tolerance, margin);
+    }
+    std::size_t total = 0;
+    for (const VoronoiEdgeArc& a : t.arcs) total += a.points.size();
+    const auto m = static_cast<py::ssize_t>(t.arcs.size());
+    auto points = new_array<double>({static_cast<py::ssize_t>(total), 2});
+    auto rho = new_array<double>({static_cast<py::ssize_t>(total)});
+    auto offsets = new_array<std::int64_t>({m + 1});
+    auto infinite = new_array<bool>({m, 2});
+    std::vector<std::pair<SiteId, SiteId>> arc_sites;
+    std::vector<std::pair<long, long>> arc_faces;
+    auto p = points.mutable_unchecked<2>();
+    auto r = rho.mutable_unchecked<1>();
+    auto o = offsets.mutable_unchecked<1>();
+    auto inf = infinite.mutable_unchecked<2>();
+    auto number = [&](FaceIndex f) {
+        const auto it = d.face_number.find(f);
+        return it == d.face_number.end() ? -1L : it->second;
+    };
+    py::ssize_t k = 0;
+    for (py::ssize_t a = 0; a < m; ++a) {
+        const VoronoiEdgeArc& arc = t.arcs[static_cast<std::size_t>(a)];
+        o(a) = k;
+        for (const BisectorPoint& b : arc.points) {
+            p(k, 0) = b.x, p(k, 1) = b.y;
+            r(k) = b.rho;
+            ++k;
+        }
+        inf(a, 0) = arc.from_infinity, inf(a, 1) = arc.to_infinity;
+        arc_sites.push_back({arc.p, arc.q});
+        arc_faces.push_back({arc.from_infinity ? -1 : number(arc.left_face), arc.to_infinity ? -1 : number(arc.right_face)});
+    }
+    o(m) = k;
+    py::dict out;
+    out["points"] = points;
+    out["rho"] = rho;
+    out["offsets"] = offsets;
+    out["sites"] = pairs_array(arc_sites);
+    out["faces"] = pairs_array(arc_faces);
+    out["infinite"] = infinite;
+    out["box"] = py::make_tuple(t.box.xmin, t.box.ymin, t.box.xmax, t.box.ymax);
+    out["tolerance"] = t.tolerance;
+    out["failed_edges"] = t.failed_edges;
+    out["misordered_edges"] = t.misordered_edges;
+    return out;
+}
+
+std::string validate(Diagram& d, bool brute_force) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(d.mutex);
+    std::string problem = d.graph->validate();
+    if (problem.empty() && brute_force) problem = d.graph->brute_force_check();
+    return problem;
+}
+
+Sites diagram_sites(const Diagram& d) {
+    Sites s;
+    s.file = d.names;
+    s.file.sites = *d.sites;
+    s.from_file = d.from_file;
+    return s;
+}
+
+}  // namespace
+
+void bind_diagram(py::module_& m) {
+    py::class_<Diagram, std::unique_ptr<Diagram>>(m, "_Diagram")
+        .def_property_readonly("sites", &diagram_sites)
+        .def_property_readonly("number_of_sites", [](const Diagram& d) { return d.sites->size(); })
+        .def("hidden", [](const Diagram& d) { return pairs_array(d.graph->hidden()); })
+        .def("edges", [](const Diagram& d) { return pairs_array(d.graph->edges()); })
+        .def("faces", [](const Diagram& d) { return faces_array(d.faces); })
+        .def("hull", [](const Diagram& d) { return pairs_array(d.graph->hull()); })
+        .def("ridges", &ridges)
+        .def("vertices", &vertices)
+        .def("json", &json)
+        .def("stats_json", [](const Diagram& d) { return d.stats; })
+        .def("vertex", &vertex, py::arg("i"), py::arg("bits"))
+        .def("trace", &trace, py::arg("tolerance"), py::arg("margin"))
+        .def("validate", &validate, py::arg("brute_force"));
+
+    m.def("_build", &build, py::arg("sites"), py::arg("fmt"), py::arg("progress"), py::arg("progress_interval"));
+}
+
+}  // namespace ellvor::python

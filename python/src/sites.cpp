@@ -1,0 +1,203 @@
+// ellvor.Ellipse, ellvor.Sites, read_sites and generate.
+#include "python/src/bindings.hpp"
+
+#include "sites/site_generators.hpp"
+#include "util/error.hpp"
+
+#include <pybind11/stl.h>
+
+#include <sstream>
+
+namespace ellvor::python {
+namespace {
+
+SiteFormat site_format(const std::string& format) {
+    if (format == "ell") return SiteFormat::ell;
+    if (format == "cin") return SiteFormat::cin;
+    throw py::value_error("fmt: expected 'ell' or 'cin', got '" + format + "'");
+}
+
+// The reader's per-site checks (sites/site_io.cpp), for an ellipse made from values.
+Ellipse checked_ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc) {
+    if (a.sign() <= 0) throw InputError("semi-axis a must be positive, found " + a.str());
+    if (b.sign() <= 0) throw InputError("semi-axis b must be positive, found " + b.str());
+    Rational smaller = a < b ? a : b;
+    fmpq_mul_2exp(smaller.get(), smaller.get(), kMaxAspectBits);
+    if ((a < b ? b : a) > smaller)
+        throw InputError("semi-axes " + a.str() + " and " + b.str() + " differ by more than a factor 2^" +
+                         std::to_string(kMaxAspectBits) + ", the largest ratio ellvor supports");
+    return Ellipse(std::move(a), std::move(b), std::move(w), std::move(xc), std::move(yc));
+}
+
+Ellipse make_ellipse(py::handle a, py::handle b, py::handle w, py::handle xc, py::handle yc) {
+    return checked_ellipse(to_rational(a, "a"), to_rational(b, "b"), to_rational(w, "w"), to_rational(xc, "xc"),
+                           to_rational(yc, "yc"));
+}
+
+std::string repr(const Ellipse& e) {
+    std::string s = "Ellipse(";
+    const Rational* values[] = {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()};
+    for (int k = 0; k < 5; ++k) s += (k ? ", '" : "'") + values[k]->str() + "'";
+    return s + ")";
+}
+
+std::string path_string(py::handle path) {
+    return py::cast<std::string>(py::module_::import("os").attr("fsdecode")(path));
+}
+
+bool is_path(py::handle value) {
+    return PyUnicode_Check(value.ptr()) || PyBytes_Check(value.ptr()) || py::hasattr(value, "__fspath__");
+}
+
+Sites read_site_path(py::handle path, const std::string& format) {
+    const SiteFormat f = site_format(format);
+    const std::string p = path_string(path);
+    Sites s;
+    {
+        py::gil_scoped_release release;
+        s.file = read_site_file(p, f);
+    }
+    s.from_file = true;
+    return s;
+}
+
+Sites list_of_sites(py::iterable sites) {
+    Sites s;
+    for (py::handle item : sites) {
+        if (!py::isinstance<Ellipse>(item))
+            throw py::type_error("sites: expected Ellipse objects, got " +
+                                 py::cast<std::string>(py::type::handle_of(item).attr("__name__")));
+        s.file.sites.push_back(py::cast<const Ellipse&>(item));
+    }
+    check_site_set(s.file);
+    return s;
+}
+
+// The nearest doubles, (n, 5): a b w xc yc.
+py::array_t<double> sites_array(const Sites& s) {
+    auto out = new_array<double>({static_cast<py::ssize_t>(s.file.sites.size()), 5});
+    auto w = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < s.file.sites.size(); ++i) {
+        const Ellipse& e = s.file.sites[i];
+        const Rational* values[] = {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()};
+        for (int k = 0; k < 5; ++k) w(static_cast<py::ssize_t>(i), k) = values[k]->to_double();
+    }
+    return out;
+}
+
+Sites generate(const std::string& kind, long count, std::uint64_t seed, long bits, py::handle box,
+               py::handle nested_fraction) {
+    // The checks of `ellvor generate` (cli/command_generate.cpp), as ValueErrors.
+    if (kind != "ellipses" && kind != "circles" && kind != "nested")
+        throw py::value_error("kind: expected 'ellipses', 'circles' or 'nested', got '" + kind + "'");
+    if (count < 0 || count > 1'000'000) throw py::value_error("count: expected an integer in [0, 1000000]");
+    if (bits < 1 || bits > kMaxGeneratorBits)
+        throw py::value_error("bits: expected an integer in [1, " + std::to_string(kMaxGeneratorBits) + "]");
+    GeneratorOptions o;
+    o.kind = kind == "circles" ? SiteKind::circles : SiteKind::ellipses;
+    o.count = count;
+    o.seed = seed;
+    o.bits = bits;
+    o.box = to_rational(box, "box");
+    if (o.box.sign() <= 0 || o.box.bits() > 64)
+        throw py::value_error("box: expected a positive rational with at most 64-bit numerator and denominator");
+    o.nested_fraction = nested_fraction.is_none() ? (kind == "nested" ? Rational(1, 4) : Rational(0))
+                                                  : to_rational(nested_fraction, "nested_fraction");
+    if (o.nested_fraction.sign() < 0 || o.nested_fraction >= Rational(1))
+        throw py::value_error("nested_fraction: expected a rational in [0, 1), got " + o.nested_fraction.str());
+    Sites s;
+    {
+        py::gil_scoped_release release;
+        try {
+            s.file.sites = generate_sites(o);
+        } catch (const Error& e) {
+            throw py::value_error(e.what());  // too many sites for the box: bad arguments, as for the CLI
+        }
+    }
+    return s;
+}
+
+void write_sites(const Sites& s, py::handle path, const std::string& format) {
+    const SiteFormat f = site_format(format);
+    const std::string p = path_string(path);
+    py::gil_scoped_release release;
+    write_file_atomically(p, [&](std::ostream& out) {
+        if (f == SiteFormat::cin) write_cin(out, s.file.sites);
+        else write_ell(out, s.file.sites);
+    });
+}
+
+}  // namespace
+
+Sites sites_argument(py::handle value, const std::string& format) {
+    if (py::isinstance<Sites>(value)) return py::cast<const Sites&>(value);
+    if (is_path(value)) return read_site_path(value, format);
+    if (!py::isinstance<py::iterable>(value))
+        throw py::type_error("expected a path, a Sites object or an iterable of Ellipse");
+    return list_of_sites(py::reinterpret_borrow<py::iterable>(value));
+}
+
+void bind_sites(py::module_& m) {
+    py::class_<Ellipse>(m, "Ellipse")
+        .def(py::init(&make_ellipse), py::arg("a"), py::arg("b"), py::arg("w") = 0, py::arg("xc") = 0,
+             py::arg("yc") = 0)
+        .def_static(
+            "circle",
+            [](py::handle x, py::handle y, py::handle r) {
+                const Rational radius = to_rational(r, "r");
+                return checked_ellipse(radius, radius, Rational(0), to_rational(x, "x"), to_rational(y, "y"));
+            },
+            py::arg("x"), py::arg("y"), py::arg("r"))
+        .def_property_readonly("a", [](const Ellipse& e) { return to_fraction(e.a()); })
+        .def_property_readonly("b", [](const Ellipse& e) { return to_fraction(e.b()); })
+        .def_property_readonly("w", [](const Ellipse& e) { return to_fraction(e.w()); })
+        .def_property_readonly("xc", [](const Ellipse& e) { return to_fraction(e.xc()); })
+        .def_property_readonly("yc", [](const Ellipse& e) { return to_fraction(e.yc()); })
+        .def_property_readonly("is_circle", &Ellipse::is_circle)
+        .def("same_point_set", [](const Ellipse& e, const Ellipse& o) { return e.point_set_key() == o.point_set_key(); })
+        .def("__str__", &Ellipse::str)
+        .def("__repr__", &repr)
+        .def("__eq__", [](const Ellipse& e, const Ellipse& o) { return e == o; })
+        .def("__hash__", [](const Ellipse& e) { return py::hash(py::str(e.str())); })
+        .def(py::pickle([](const Ellipse& e) { return py::make_tuple(e.str()); },
+                        [](py::tuple t) {
+                            const std::string text = py::cast<std::string>(t[0]);
+                            std::istringstream in(text);
+                            return read_sites(in, "<pickle>").at(0);
+                        }));
+
+    py::class_<Sites>(m, "Sites")
+        .def(py::init([](py::iterable sites) { return list_of_sites(sites); }), py::arg("sites"))
+        .def("__len__", [](const Sites& s) { return s.file.sites.size(); })
+        .def("__getitem__",
+             [](const Sites& s, long i) {
+                 const long n = static_cast<long>(s.file.sites.size());
+                 if (i < 0) i += n;
+                 if (i < 0 || i >= n) throw py::index_error("site index out of range");
+                 return s.file.sites[static_cast<std::size_t>(i)];
+             })
+        .def_property_readonly("filename",
+                               [](const Sites& s) -> py::object {
+                                   if (!s.from_file) return py::none();
+                                   return py::str(s.file.name);
+                               })
+        .def_property_readonly("lines",
+                               [](const Sites& s) -> py::object {
+                                   if (!s.from_file) return py::none();
+                                   auto out = new_array<std::int64_t>({static_cast<py::ssize_t>(s.file.lines.size())});
+                                   std::copy(s.file.lines.begin(), s.file.lines.end(), out.mutable_data());
+                                   return std::move(out);
+                               })
+        .def("to_array", &sites_array)
+        .def("write", &write_sites, py::arg("path"), py::arg("fmt") = "ell")
+        .def("__repr__", [](const Sites& s) {
+            return "<ellvor.Sites: " + std::to_string(s.file.sites.size()) + " sites" +
+                   (s.from_file ? " from " + s.file.name : std::string()) + ">";
+        });
+
+    m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");
+    m.def("generate", &generate, py::arg("kind") = "ellipses", py::arg("count") = 10, py::arg("seed") = 1,
+          py::arg("bits") = 8, py::arg("box") = 100, py::arg("nested_fraction") = py::none());
+}
+
+}  // namespace ellvor::python
