@@ -24,7 +24,7 @@
 //
 //   build/experiments/build_scaling                       # default (make bench): n <= 1000, stdout only
 //   build/experiments/build_scaling --full --out experiments/results
-//       # adds n = 10^4, 10^5 and 10^6 (about 20 minutes); writes build_scaling.csv, .md and .svg
+//       # adds n = 10^4, 10^5 and 10^6 (about 20 minutes); writes build_scaling.csv, .md and .png
 // At 10^6 the nested set and CGAL's plain graph (whose nearest-neighbour walk
 // is linear: 4 s at 10^5) are left out.
 //
@@ -230,7 +230,7 @@ int main(int argc, char** argv) {
     if (!ellvor::experiments::parse_bench_arguments(argc, argv, "build_scaling",
                                                     "usage: build_scaling [--full] [--out DIR]\n"
                          "  --full     also n = 10^4, 10^5 and 10^6 (about 20 minutes)\n"
-                         "  --out DIR  write DIR/build_scaling.csv, .md and .svg\n",
+                         "  --out DIR  write DIR/build_scaling.csv, .md and .png\n",
                                                     args))
         return 2;
     const bool full = args.full;
@@ -371,11 +371,8 @@ int main(int argc, char** argv) {
        << "- Machine: " << cpu_model() << " (shared with other jobs: compare CPU seconds)\n"
        << "- Load average before / after: " << load_before << " / " << load_after << "\n"
        << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/build_scaling && " << command << "`; plot: `python3 "
-          "experiments/plot_svg.py experiments/results/build_scaling.csv experiments/results/build_scaling.svg "
-          "--x n --y cpu_seconds --series set --title \"Delaunay graph build time\" --xlabel \"n (sites)\" "
-          "--ylabel \"CPU time (s)\" --points \"paper (Table 1, insertion)\" "
-          "5:0.752,10:5.916,15:13.000,20:19.200,25:25.602`\n"
+       << "- Command: `make build/experiments/build_scaling && " << command << "`; plot (`build_scaling.png`): `/usr/bin/python3 "
+          "experiments/plot_results.py build_scaling`\n"
        << "- By default (`make bench`) n ≤ 1000 and nothing is written; `--full` adds n = 10^4, 10^5 and 10^6 (at "
           "10^6 without the nested set and CGAL's plain graph), `--out DIR` writes the CSV and this file.\n\n"
        << "Site sets:\n\n";
@@ -504,12 +501,10 @@ int main(int argc, char** argv) {
     if (!out_dir.empty()) {
         std::ofstream(out_dir + "/build_scaling.csv") << csv.str();
         std::ofstream(out_dir + "/build_scaling.md") << md.str();
-        const std::string plot = "python3 experiments/plot_svg.py '" + out_dir + "/build_scaling.csv' '" + out_dir +
-                                 "/build_scaling.svg' --x n --y cpu_seconds --series set --title 'Delaunay graph build "
-                                 "time' --xlabel 'n (sites)' --ylabel 'CPU time (s)' --points 'paper (Table 1, "
-                                 "insertion)' 5:0.752,10:5.916,15:13.000,20:19.200,25:25.602";
+        // matplotlib is Debian's: its python3, not one earlier on PATH.
+        const std::string plot = "/usr/bin/python3 experiments/plot_results.py --dir '" + out_dir + "' build_scaling";
         if (std::system(plot.c_str()) != 0) std::cerr << "[build_scaling] plot failed: " << plot << "\n";
-        std::cerr << "[build_scaling] wrote " << out_dir << "/build_scaling.{csv,md,svg}\n";
+        std::cerr << "[build_scaling] wrote " << out_dir << "/build_scaling.{csv,md,png}\n";
     }
     return anomalies ? 1 : 0;
 }

@@ -25,7 +25,7 @@
 //   build/experiments/degeneracy_stress          # default (make bench): < 1 min, stdout only
 //   build/experiments/degeneracy_stress --full --out experiments/results
 //       # more bit sizes and exponents (a few minutes); writes degeneracy_stress.csv,
-//       # .md, and .svg (via experiments/plot_svg.py) into the folder
+//       # .md, and .png (via experiments/plot_results.py) into the folder
 // Options: --reps N, --seed S, --out DIR, --full.
 #include "experiments/run_environment.hpp"
 #include "exact/incircle_resultant.hpp"
@@ -269,7 +269,8 @@ void write_md(const std::string& path, const std::vector<Row>& rows, const std::
         << "Machine: " << cpu_model() << " (shared; medians of " << reps
         << " calls, one call for the exact stage on perturbed inputs)\n\n"
         << "Command: `" << command << "`" << (full ? " (full run)" : "") << "\n\n"
-        << "Plot: `degeneracy_stress.svg` (seconds against e, log-log; the paper's Table 1 row as markers).\n\n"
+        << "Plot: `degeneracy_stress.png` (seconds against e, log-log; the paper's Table 1 row as markers; "
+           "`/usr/bin/python3 experiments/plot_results.py degeneracy_stress`).\n\n"
         << "## (i) InCircle resultant, generic ellipse triple with every parameter perturbed by +-10^-e\n\n"
         << "Sites before perturbation: `2 1 1/3 0 0`, `3/2 1 2 9 1`, `1 5/2 -1/2 2 10`; signs from a seeded "
            "generator. Paper (seed Table 1, P4 2.6 GHz): 25.12 / 57.24 / 102.63 / 160.44 / "
@@ -345,14 +346,11 @@ int main(int argc, char** argv) {
             const std::string base = out_dir + "/degeneracy_stress";
             write_csv(base + ".csv", rows);
             write_md(base + ".md", rows, command, full, reps);
-            const std::string plot = "python3 experiments/plot_svg.py '" + base + ".csv' '" + base +
-                                     ".svg' --x e --y seconds --series series"
-                                     " --title 'Degenerate InCircle inputs: time vs perturbation 10^-e'"
-                                     " --xlabel 'e (perturbation 10^-e)' --ylabel 'wall time (s)'"
-                                     " --points 'paper Table 1 (resultant)' "
-                                     "4:25.12,8:57.24,12:102.63,16:160.44,20:231.19";
+            // matplotlib is Debian's: its python3, not one earlier on PATH.
+            const std::string plot =
+                "/usr/bin/python3 experiments/plot_results.py --dir '" + out_dir + "' degeneracy_stress";
             if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "degeneracy_stress: plot failed\n");
-            std::printf("wrote %s.{csv,md,svg}\n", base.c_str());
+            std::printf("wrote %s.{csv,md,png}\n", base.c_str());
         }
     } catch (const std::exception& ex) {
         std::fprintf(stderr, "degeneracy_stress: %s\n", ex.what());

@@ -249,9 +249,7 @@ int main(int argc, char** argv) {
        << "- Load average before / after: " << load_before << " / " << load_after << "\n"
        << "- Source: " << source_state() << "\n"
        << "- Command: `make build/experiments/precision_vs_time && " << command << "`"
-       << "; plot: `python3 experiments/plot_svg.py experiments/results/precision_vs_time.csv "
-          "experiments/results/precision_vs_time.svg --points \"paper (Table 1, s)\" "
-          "53:0.20,900:0.58,2000:1.06,12000:10.65,24000:31.61`\n"
+       << "; plot (`precision_vs_time.png`): `/usr/bin/python3 experiments/plot_results.py precision_vs_time`\n"
        << "- By default (`make bench`) b = 10^6 is skipped and nothing is written; `--full` adds it, `--out DIR` "
           "writes the CSV and this file.\n\n"
        << "Triples (ordered E1 E2 E3 with a counter-clockwise Voronoi circle; ellipse = `a b w xc yc`):\n\n";

@@ -27,3 +27,7 @@ class InputError(Error, ValueError):
         self.column = column
         self.sites = sites
         self.reason = message if reason is None else reason
+
+
+# Shown as ellvor.Error and ellvor.InputError in tracebacks.
+Error.__module__ = InputError.__module__ = "ellvor"
