@@ -122,8 +122,10 @@ sanitize: $(DEPS_STAMP)
 	    SANITIZE="-fsanitize=address,undefined -fno-sanitize=shift-base -fno-sanitize-recover=undefined -fno-omit-frame-pointer" test
 
 bench: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES) $(ELLVOR) $(PY_MODULE) $(PY_FILES)
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
+	@echo "== experiments/python_build.py"
+	@PYTHONPATH=$(BUILD)/python ELLVOR_BINARY=$(abspath $(ELLVOR)) $(PYTHON) experiments/python_build.py --count 3000 --reps 3
 
 # libFuzzer needs clang; its packages are installed here only, so that `make
 # test` and CI never depend on clang. The build gets its own directory.

@@ -6,7 +6,7 @@
 
 namespace ellvor {
 
-std::map<FaceIndex, long> face_numbers(const DelaunayGraph& graph) {
+std::vector<long> face_numbers(const DelaunayGraph& graph) {
     const Triangulation& tds = graph.triangulation();
     // The rotated triple of every finite face, sorted as faces() sorts them.
     std::vector<std::pair<std::array<SiteId, 3>, FaceIndex>> keyed;
@@ -18,12 +18,16 @@ std::map<FaceIndex, long> face_numbers(const DelaunayGraph& graph) {
         keyed.push_back({t, f});
     }
     std::sort(keyed.begin(), keyed.end());
-    std::map<FaceIndex, long> numbers;
-    for (std::size_t k = 0; k < keyed.size(); ++k) numbers[keyed[k].second] = static_cast<long>(k);
+    std::vector<long> numbers;
+    for (std::size_t k = 0; k < keyed.size(); ++k) {
+        const auto f = static_cast<std::size_t>(keyed[k].second.value());
+        if (f >= numbers.size()) numbers.resize(f + 1, -1);
+        numbers[f] = static_cast<long>(k);
+    }
     return numbers;
 }
 
-std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::map<FaceIndex, long>& numbers) {
+std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::vector<long>& numbers) {
     std::vector<VoronoiRidge> ridges;
     const Triangulation& tds = graph.triangulation();
     if (tds.empty()) {
@@ -31,10 +35,7 @@ std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::
         if (visible.size() == 2) ridges.push_back({visible[0], visible[1], -1, -1});
         return ridges;
     }
-    auto number = [&](FaceIndex f) {
-        const auto it = numbers.find(f);
-        return it == numbers.end() ? -1L : it->second;
-    };
+    auto number = [&](FaceIndex f) { return face_number(numbers, f); };
     for (FaceIndex f : tds.faces())
         for (int i = 0; i < 3; ++i) {
             const Edge e{f, i};
@@ -46,6 +47,11 @@ std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::
     std::stable_sort(ridges.begin(), ridges.end(),
                      [&](const VoronoiRidge& a, const VoronoiRidge& b) { return key(a) < key(b); });
     return ridges;
+}
+
+long face_number(const std::vector<long>& numbers, FaceIndex f) {
+    const auto k = static_cast<std::size_t>(f.value());
+    return f.is_none() || k >= numbers.size() ? -1 : numbers[k];
 }
 
 }  // namespace ellvor

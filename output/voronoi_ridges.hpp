@@ -6,7 +6,6 @@
 
 #include "graph/delaunay_graph.hpp"
 
-#include <map>
 #include <vector>
 
 namespace ellvor {
@@ -18,15 +17,18 @@ struct VoronoiRidge {
     long from = -1, to = -1;
 };
 
-// The number of every finite face of the triangulation: its position in
-// DelaunayGraph::faces() (faces listing the same triple, which have one
-// Voronoi circle, are numbered in the triangulation's order).
-std::map<FaceIndex, long> face_numbers(const DelaunayGraph& graph);
+// The number of every finite face of the triangulation, indexed by
+// FaceIndex::value(): its position in DelaunayGraph::faces() (faces listing
+// the same triple, which have one Voronoi circle, are numbered in the
+// triangulation's order); -1 for infinite faces and unused indices.
+std::vector<long> face_numbers(const DelaunayGraph& graph);
+// numbers[f], or -1 (an infinite face, or none).
+long face_number(const std::vector<long>& numbers, FaceIndex f);
 
 // One ridge per Voronoi edge (per finite Delaunay edge, so as many as
 // DelaunayGraph::edges() lists), sorted by the pair (min(p, q), max(p, q)) as
 // edges() is. Two visible sites alone give one ridge with both ends at
 // infinity.
-std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::map<FaceIndex, long>& numbers);
+std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::vector<long>& numbers);
 
 }  // namespace ellvor

@@ -84,7 +84,7 @@ public:
     bool from_file = false;
     std::string stats;                            // build_stats_json, taken right after the build
     std::vector<std::array<SiteId, 3>> faces;
-    std::map<FaceIndex, long> face_number;
+    std::vector<long> numbers;                    // face_numbers(): by FaceIndex
 
     // The Voronoi vertex of every face, as the JSON gives them; computed once.
     const std::vector<VoronoiVertexValue>& vertex_values() {
@@ -134,7 +134,7 @@ std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& form
             const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
             d->stats = build_stats_json(*d->graph, seconds).dump();
             d->faces = d->graph->faces();
-            d->face_number = face_numbers(*d->graph);
+            d->numbers = face_numbers(*d->graph);
         }
     }
     hook.rethrow();
@@ -154,7 +154,7 @@ py::tuple ridges(Diagram& d) {
     {
         py::gil_scoped_release release;
         std::lock_guard<std::mutex> lock(d.mutex);
-        r = voronoi_ridges(*d.graph, d.face_number);
+        r = voronoi_ridges(*d.graph, d.numbers);
     }
     std::vector<std::pair<SiteId, SiteId>> points;
     std::vector<std::pair<long, long>> ends;
@@ -233,10 +233,7 @@ py::dict trace(Diagram& d, double tolerance, double margin) {
     auto r = rho.mutable_unchecked<1>();
     auto o = offsets.mutable_unchecked<1>();
     auto inf = infinite.mutable_unchecked<2>();
-    auto number = [&](FaceIndex f) {
-        const auto it = d.face_number.find(f);
-        return it == d.face_number.end() ? -1L : it->second;
-    };
+    auto number = [&](FaceIndex f) { return face_number(d.numbers, f); };
     py::ssize_t k = 0;
     for (py::ssize_t a = 0; a < m; ++a) {
         const VoronoiEdgeArc& arc = t.arcs[static_cast<std::size_t>(a)];

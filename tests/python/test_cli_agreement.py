@@ -29,7 +29,7 @@ def test_build_json_of_the_bundled_data(cli, root, name):
 
 
 GENERATED = [("ellipses", 60, 1, 8), ("ellipses", 200, 7, 20), ("circles", 150, 3, 4), ("nested", 120, 11, 8),
-             ("circles", 40, 5, 1)]
+             ("circles", 40, 5, 1), ("ellipses", 1500, 21, 8), ("nested", 800, 5, 12), ("circles", 1000, 9, 2)]
 
 
 @pytest.mark.parametrize("kind, count, seed, bits", GENERATED)
