@@ -117,6 +117,20 @@ class Trace:
         return f"<ellvor.Trace: {len(self)} Voronoi edges, {len(self.points)} points>"
 
 
+def _core_arrays(method, k=None):
+    """A read-only property: the array the core's ``method`` returns (its ``k``-th one
+    when it returns several), computed once per diagram and shared by its siblings."""
+
+    def get(self):
+        cache = self.__dict__.setdefault("_arrays", {})
+        if method not in cache:
+            made = getattr(self._core, method)()
+            cache[method] = tuple(map(_frozen, made)) if isinstance(made, tuple) else _frozen(made)
+        return cache[method] if k is None else cache[method][k]
+
+    return property(get)
+
+
 class Diagram:
     """The Delaunay graph of a site set and its Voronoi diagram (see ``build``).
 
@@ -156,49 +170,16 @@ class Diagram:
         """The sites' centers, (n, 2) float64 (scipy's ``points``)."""
         return _frozen(np.ascontiguousarray(self.sites.to_array()[:, 3:5]))
 
-    @functools.cached_property
-    def hidden(self):
-        return _frozen(self._core.hidden())
-
-    @functools.cached_property
-    def edges(self):
-        return _frozen(self._core.edges())
-
-    @functools.cached_property
-    def faces(self):
-        return _frozen(self._core.faces())
-
-    @functools.cached_property
-    def hull(self):
-        return _frozen(self._core.hull())
-
-    @functools.cached_property
-    def _ridges(self):
-        return tuple(_frozen(a) for a in self._core.ridges())
-
-    @property
-    def ridge_points(self):
-        return self._ridges[0]
-
-    @property
-    def ridge_vertices(self):
-        return self._ridges[1]
-
-    @functools.cached_property
-    def _vertices(self):
-        return tuple(_frozen(a) for a in self._core.vertices())
-
-    @property
-    def vertices(self):
-        return self._vertices[0]
-
-    @property
-    def vertex_radii(self):
-        return self._vertices[1]
-
-    @property
-    def vertex_errors(self):
-        return self._vertices[2]
+    # The arrays, made in C++ on first use and kept (read-only); see the class's docstring.
+    hidden = _core_arrays("hidden")
+    edges = _core_arrays("edges")
+    faces = _core_arrays("faces")
+    hull = _core_arrays("hull")
+    ridge_points = _core_arrays("ridges", 0)
+    ridge_vertices = _core_arrays("ridges", 1)
+    vertices = _core_arrays("vertices", 0)
+    vertex_radii = _core_arrays("vertices", 1)
+    vertex_errors = _core_arrays("vertices", 2)
 
     @functools.cached_property
     def stats(self):
