@@ -39,11 +39,19 @@ Rational from_double(double d, const std::string& what) {
     return r;
 }
 
-// numerator / denominator, both Python ints.
-Rational from_ratio(py::handle num, py::handle den, const std::string& what) {
-    if (!PyLong_Check(num.ptr()) || !PyLong_Check(den.ptr()))
+// An integer-like object (int, NumPy integers: anything with __index__) as a Python int.
+py::object as_int(py::handle value, const std::string& what) {
+    PyObject* n = PyNumber_Index(value.ptr());
+    if (!n) {
+        PyErr_Clear();
         throw py::type_error(what + ": numerator and denominator must be integers");
-    Integer p = to_integer(num, what), q = to_integer(den, what);
+    }
+    return py::reinterpret_steal<py::object>(n);
+}
+
+// numerator / denominator, both integers.
+Rational from_ratio(py::handle num, py::handle den, const std::string& what) {
+    Integer p = to_integer(as_int(num, what), what), q = to_integer(as_int(den, what), what);
     if (q.is_zero()) throw InputError(what + ": zero denominator");
     if (q.sign() < 0) p = -p, q = -q;
     return Rational(p, q);  // canonical: FLINT divides out the gcd
@@ -54,10 +62,12 @@ Rational from_ratio(py::handle num, py::handle den, const std::string& what) {
 Rational to_rational(py::handle value, const std::string& what) {
     PyObject* v = value.ptr();
     Rational r;
-    if (PyBool_Check(v)) {
-        throw py::type_error(what + ": expected a number, got bool");
+    if (PyBool_Check(v) || type_name(value) == "bool_") {  // NumPy's bool_ has __index__ too
+        throw py::type_error(what + ": expected a number, got " + type_name(value));
     } else if (PyLong_Check(v)) {
         r = Rational(to_integer(value, what));
+    } else if (PyIndex_Check(v) && !PyFloat_Check(v)) {
+        r = Rational(to_integer(as_int(value, what), what));  // NumPy integers
     } else if (PyFloat_Check(v)) {
         r = from_double(PyFloat_AsDouble(v), what);
     } else if (PyUnicode_Check(v)) {

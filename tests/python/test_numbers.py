@@ -83,7 +83,12 @@ def test_numbers_beyond_4096_bits():
         ellvor.Ellipse(1, 1, 0, Fraction(1, 3**3000), 0)
 
 
-@pytest.mark.parametrize("bad", [True, None, [1], object()])
+def test_numpy_scalars():
+    assert [ellvor.Ellipse(1, 1, 0, x, 0).xc for x in (np.int64(-5), np.uint8(7), np.float32(0.1))] == \
+        [-5, 7, Fraction(float(np.float32(0.1)))]
+
+
+@pytest.mark.parametrize("bad", [True, np.bool_(True), None, [1], object()])
 def test_other_types_are_type_errors(bad):
     with pytest.raises(TypeError):
         ellvor.Ellipse(1, 1, 0, bad, 0)
