@@ -261,3 +261,61 @@ TEST_CASE("the bundled example is valid by the conservative tests", "[sites][io]
     CHECK(circles == 3);
     CHECK(nested == 4);
 }
+
+TEST_CASE("InputError keeps its location, reason and site pair as fields", "[sites][io]") {
+    std::istringstream in("1 1 0 0 0\n\n1 2 0 0 0/0\n");
+    try {
+        read_sites(in, "t.ell");
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(e.has_location());
+        CHECK(e.file() == "t.ell");
+        CHECK(e.line() == 3);
+        CHECK(e.column() == 9);
+        CHECK(std::string(e.what()) == "t.ell:3:9: " + e.reason());
+        CHECK(!e.sites());
+    }
+    std::istringstream dup("1 1 0 0 0\n2 1 0 9 0\n1 1 0 0 0\n");
+    try {
+        read_sites(dup, "d.ell");
+        FAIL("no error");
+    } catch (const InputError& e) {
+        REQUIRE(e.sites());
+        CHECK(*e.sites() == InputError::SitePair{0, 2});
+        CHECK(e.line() == 3);
+    }
+    const IntersectingSites crossing(3, 7);
+    CHECK(!crossing.has_location());
+    CHECK(crossing.file().empty());
+    CHECK(*crossing.sites() == InputError::SitePair{3, 7});
+    CHECK(crossing.reason() == crossing.what());
+    SiteFile file{"c.ell", {Ellipse::circle(0, 0, 1), Ellipse::circle(5, 0, 1)}, {2, 4}};
+    const InputError e = crossing_sites_error(file, 1, 0);
+    CHECK(std::string(e.what()) == "c.ell:4:1: site 1 intersects site 0 (line 2); sites must be disjoint or nested");
+    CHECK(*e.sites() == InputError::SitePair{0, 1});
+}
+
+TEST_CASE("check_site_set: the reader's set checks for sites without a file", "[sites][io]") {
+    SiteFile file;
+    file.sites = {Ellipse(q(2), q(1), q(0), q(0), q(0)), Ellipse::circle(q(9), q(0), q(1)),
+                  Ellipse(q(1), q(2), q(1), q(0), q(0))};
+    try {
+        check_site_set(file);
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()) == "duplicate site: site 2 is the same point set as site 0; sites must be distinct");
+        CHECK(!e.has_location());
+        CHECK(*e.sites() == InputError::SitePair{0, 2});
+    }
+    file.sites.pop_back();
+    CHECK_NOTHROW(check_site_set(file));
+    // The dynamic range: a site 2^260 times its size away.
+    Rational far(1);
+    fmpq_mul_2exp(far.get(), far.get(), 260);
+    file.sites.push_back(Ellipse::circle(far, q(0), q(1)));
+    CHECK_THROWS_WITH(check_site_set(file), Catch::Contains("times the smallest semi-axis, site 0's"));
+    // With lines, the same errors as the reader's.
+    file.name = "f.ell";
+    file.lines = {1, 2, 5};
+    CHECK_THROWS_WITH(check_site_set(file), Catch::StartsWith("f.ell:1:1: the site set spans about 2^"));
+}
