@@ -73,7 +73,7 @@ private:
 };
 
 // A built graph and what Python reads of it. The methods that compute
-// release the GIL and take `mutex_`, so two Python threads may share one
+// release the GIL and take `mutex`, so two Python threads may share one
 // diagram (the graph's predicate caches are not thread-safe); different
 // diagrams build and compute in parallel.
 class Diagram {

@@ -17,6 +17,15 @@ def big():
     return ellvor.generate("ellipses", count=10000, seed=3)
 
 
+@pytest.fixture
+def sigint():
+    """Python's own SIGINT handler (KeyboardInterrupt), also when the suite was started
+    with SIGINT ignored (a background job)."""
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, old)
+
+
 def test_callback_sees_every_insertion_with_interval_zero():
     sites = ellvor.generate("ellipses", count=120, seed=2)
     calls = []
@@ -49,7 +58,7 @@ def test_an_exception_in_the_callback_stops_the_build():
     assert len(ellvor.build(sites).faces) > 0  # and the module goes on
 
 
-def test_ctrl_c_interrupts_between_insertions(big):
+def test_ctrl_c_interrupts_between_insertions(big, sigint):
     # The callback's first call (after one insertion) has another thread send
     # SIGINT while the build runs without the GIL; the build's next check of
     # Python's signals raises KeyboardInterrupt.
@@ -76,7 +85,7 @@ def test_ctrl_c_interrupts_between_insertions(big):
     assert time.monotonic() - start < 0.5  # a check every 50 ms, one insertion
 
 
-def test_ctrl_c_without_a_callback(big):
+def test_ctrl_c_without_a_callback(big, sigint):
     timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
     try:
