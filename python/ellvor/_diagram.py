@@ -2,6 +2,8 @@
 
 import functools
 import json
+import numbers
+import operator
 import os
 import sys
 from fractions import Fraction
@@ -141,6 +143,7 @@ class Diagram:
         faces (f, 3)           finite faces, counter-clockwise, smallest id first, sorted;
                                face k is Voronoi vertex k
         hull (h, 2)            the infinite faces (i, j, infinity), counter-clockwise pairs
+        removed (r,)           the sites ``remove`` took out, in that order
         ridge_points (m, 2)    per Voronoi edge, the two sites it separates (scipy's meaning),
                                in the order of ``edges``
         ridge_vertices (m, 2)  its two Voronoi vertices (indices into ``vertices``, -1 at
@@ -154,7 +157,7 @@ class Diagram:
                                              half an ulp of the double)
     ``vertex(i, bits)`` refines one circle to exact bounds; ``trace()`` draws the
     Voronoi edges; ``to_json()`` is ``ellvor build --json``'s document; ``stats``
-    the build's figures.
+    the build's figures; ``remove(sites)`` takes sites out (``ellvor build --remove``).
     """
 
     def __init__(self, core):
@@ -175,6 +178,7 @@ class Diagram:
     edges = _core_arrays("edges")
     faces = _core_arrays("faces")
     hull = _core_arrays("hull")
+    removed = _core_arrays("removed")
     ridge_points = _core_arrays("ridges", 0)
     ridge_vertices = _core_arrays("ridges", 1)
     vertices = _core_arrays("vertices", 0)
@@ -184,7 +188,8 @@ class Diagram:
     @functools.cached_property
     def stats(self):
         """The build's figures, as in the JSON: seconds (wall time of the insertions),
-        inserted, and per predicate its calls and the calls each stage decided."""
+        inserted, per predicate its calls and the calls each stage decided; after
+        ``remove``, also removed and removal_seconds."""
         return json.loads(self._core.stats_json())
 
     def vertex(self, i, bits=53):
@@ -206,6 +211,21 @@ class Diagram:
                 f.write(text)
         return text
 
+    def remove(self, sites):
+        """Removes a site, or several in the given order, as ``ellvor build --remove IDS``
+        (CGAL's remove: the sites a removed site hid come back). Ids stay: a removed site
+        appears only in ``removed`` (and as null in the JSON's sites). Ctrl-C stops between
+        two removals. The arrays and ``stats`` are those of the graph afterwards; ``stats``
+        counts the removals' predicate calls, as the CLI's, and those of any ``validate()``
+        called before."""
+        ids = [sites] if isinstance(sites, numbers.Integral) else list(sites)
+        try:
+            self._core.remove([operator.index(i) for i in ids])
+        finally:
+            # Whatever was removed (all, or up to an interruption) is the diagram now.
+            self.__dict__.pop("_arrays", None)
+            self.__dict__.pop("stats", None)
+
     def validate(self, brute_force=None):
         """``ellvor build --validate``: "" when the graph is valid, else the problem.
         ``brute_force`` (default: at most 300 sites, as the CLI) also tests every Voronoi
@@ -218,8 +238,9 @@ class Diagram:
         return self._core.number_of_sites
 
     def __repr__(self):
-        return (f"<ellvor.Diagram: {len(self)} sites ({len(self.hidden)} hidden), {len(self.edges)} Delaunay "
-                f"edges, {len(self.faces)} faces, built in {self.stats['seconds']:.3g} s>")
+        removed = f", {len(self.removed)} removed" if len(self.removed) else ""
+        return (f"<ellvor.Diagram: {len(self)} sites ({len(self.hidden)} hidden{removed}), {len(self.edges)} "
+                f"Delaunay edges, {len(self.faces)} faces, built in {self.stats['seconds']:.3g} s>")
 
 
 class _StderrProgress:

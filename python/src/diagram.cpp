@@ -9,6 +9,8 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "util/error.hpp"
 
+#include <pybind11/stl.h>
+
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -72,19 +74,36 @@ private:
     std::optional<py::error_already_set> error_;
 };
 
-// A built graph and what Python reads of it. The methods that compute
-// release the GIL and take `mutex`, so two Python threads may share one
-// diagram (the graph's predicate caches are not thread-safe); different
-// diagrams build and compute in parallel.
+// A built graph and what Python reads of it. Every method that reads the
+// graph releases the GIL and takes `mutex` (see locked()), so two Python
+// threads may share one diagram: its predicate caches change when it is
+// validated, its graph when sites are removed. Different diagrams build and
+// compute in parallel.
 class Diagram {
 public:
     std::unique_ptr<DelaunayGraph> graph;
-    const std::vector<Ellipse>* sites = nullptr;  // owned by the graph's traits
+    const std::vector<Ellipse>* sites = nullptr;  // owned by the graph's traits; never changes
     SiteFile names;                               // the file's name and lines (no sites)
     bool from_file = false;
-    std::string stats;                            // build_stats_json, taken right after the build
+    double build_seconds = 0, removal_seconds = 0;
+    std::string stats;                            // as `ellvor build`'s JSON: after the build and removals
     std::vector<std::array<SiteId, 3>> faces;
     std::vector<long> numbers;                    // face_numbers(): by FaceIndex
+
+    // After the build and after removals: what is read of the graph's state.
+    void update() {
+        // As `ellvor build [--remove IDS]` (cli/command_build.cpp): the counters
+        // after the removals, their number and time.
+        nlohmann::json s = build_stats_json(*graph, build_seconds);
+        if (!graph->removed().empty()) {
+            s["removed"] = graph->removed().size();
+            s["removal_seconds"] = removal_seconds;
+        }
+        stats = s.dump();
+        faces = graph->faces();
+        numbers = face_numbers(*graph);
+        vertices_.reset();
+    }
 
     // The Voronoi vertex of every face, as the JSON gives them; computed once.
     const std::vector<VoronoiVertexValue>& vertex_values() {
@@ -131,14 +150,57 @@ std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& form
             throw;
         }
         if (!interrupted) {
-            const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-            d->stats = build_stats_json(*d->graph, seconds).dump();
-            d->faces = d->graph->faces();
-            d->numbers = face_numbers(*d->graph);
+            d->build_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            d->update();
         }
     }
     hook.rethrow();
     return d;
+}
+
+// f(d) with the GIL released and the diagram's mutex held. Every thread
+// lets the GIL go before it waits for the mutex, so a holder of the mutex
+// may take the GIL (a removal checks for Ctrl-C) without a deadlock.
+template <class F>
+auto locked(Diagram& d, F&& f) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(d.mutex);
+    return f(d);
+}
+
+// Removes `ids` in order, as `ellvor build --remove IDS`; Ctrl-C stops
+// between two removals (the sites removed until then stay removed).
+void remove(Diagram& d, const std::vector<long>& ids) {
+    const long n = static_cast<long>(d.sites->size());
+    std::vector<SiteId> order;
+    {
+        std::vector<char> chosen(d.sites->size(), 0);
+        for (SiteId r : locked(d, [](Diagram& g) { return g.graph->removed(); })) chosen[r] = 1;
+        for (long id : ids) {
+            if (id < 0 || id >= n) throw py::index_error("remove: no site " + std::to_string(id));
+            if (chosen[static_cast<std::size_t>(id)])
+                throw py::value_error("remove: site " + std::to_string(id) + " is removed already (or listed twice)");
+            chosen[static_cast<std::size_t>(id)] = 1;
+            order.push_back(static_cast<SiteId>(id));
+        }
+    }
+    ProgressHook hook(py::none(), 0);
+    const bool interrupted = locked(d, [&](Diagram& g) {
+        const Clock::time_point start = Clock::now();
+        bool stopped = false;
+        try {
+            for (std::size_t k = 0; k < order.size(); ++k) {
+                g.graph->remove(order[k]);
+                hook(k + 1, order.size());
+            }
+        } catch (const Interrupted&) {
+            stopped = true;
+        }
+        g.removal_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        g.update();
+        return stopped;
+    });
+    if (interrupted) hook.rethrow();
 }
 
 py::array_t<std::int64_t> faces_array(const std::vector<std::array<SiteId, 3>>& faces) {
@@ -150,12 +212,7 @@ py::array_t<std::int64_t> faces_array(const std::vector<std::array<SiteId, 3>>& 
 }
 
 py::tuple ridges(Diagram& d) {
-    std::vector<VoronoiRidge> r;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard<std::mutex> lock(d.mutex);
-        r = voronoi_ridges(*d.graph, d.numbers);
-    }
+    const std::vector<VoronoiRidge> r = locked(d, [](Diagram& g) { return voronoi_ridges(*g.graph, g.numbers); });
     std::vector<std::pair<SiteId, SiteId>> points;
     std::vector<std::pair<long, long>> ends;
     for (const VoronoiRidge& x : r) {
@@ -166,12 +223,7 @@ py::tuple ridges(Diagram& d) {
 }
 
 py::tuple vertices(Diagram& d) {
-    std::vector<VoronoiVertexValue> v;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard<std::mutex> lock(d.mutex);
-        v = d.vertex_values();
-    }
+    const std::vector<VoronoiVertexValue> v = locked(d, [](Diagram& g) { return g.vertex_values(); });
     const auto n = static_cast<py::ssize_t>(v.size());
     auto centers = new_array<double>({n, 2});
     auto radii = new_array<double>({n}), errors = new_array<double>({n});
@@ -187,23 +239,23 @@ py::tuple vertices(Diagram& d) {
 }
 
 std::string json(Diagram& d) {
-    py::gil_scoped_release release;
-    std::lock_guard<std::mutex> lock(d.mutex);
-    const nlohmann::json stats = nlohmann::json::parse(d.stats);
-    // The bytes `ellvor build --json` writes.
-    return graph_json(*d.graph, *d.sites, stats, d.vertex_values()).dump() + "\n";
+    return locked(d, [](Diagram& g) {
+        // The bytes `ellvor build --json` writes.
+        return graph_json(*g.graph, *g.sites, nlohmann::json::parse(g.stats), g.vertex_values()).dump() + "\n";
+    });
 }
 
 py::dict vertex(Diagram& d, long i, long bits) {
-    const long n = static_cast<long>(d.faces.size());
+    if (bits < 1 || bits > 10'000'000) throw py::value_error("bits: expected an integer in [1, 10^7]");
+    const auto faces = locked(d, [](Diagram& g) { return g.faces; });
+    const long n = static_cast<long>(faces.size());
     if (i < 0) i += n;
     if (i < 0 || i >= n) throw py::index_error("vertex index out of range");
-    if (bits < 1 || bits > 10'000'000) throw py::value_error("bits: expected an integer in [1, 10^7]");
-    const std::array<SiteId, 3> f = d.faces[static_cast<std::size_t>(i)];
+    const std::array<SiteId, 3> f = faces[static_cast<std::size_t>(i)];
     const std::vector<Ellipse>& s = *d.sites;
     VoronoiCircleSolver solver(s[f[0]], s[f[1]], s[f[2]]);
     {
-        py::gil_scoped_release release;  // the sites are immutable: no lock needed
+        py::gil_scoped_release release;  // the sites never change: no lock needed
         solver.refine_existing(bits);    // a face has its counter-clockwise circle
     }
     py::dict out = enclosure_dict(solver.enclosure(), bits);
@@ -214,12 +266,8 @@ py::dict vertex(Diagram& d, long i, long bits) {
 py::dict trace(Diagram& d, double tolerance, double margin) {
     if (!(tolerance > 0 && tolerance <= 1)) throw py::value_error("tolerance: expected a fraction in (0, 1]");
     if (!(margin >= 0 && margin <= 10)) throw py::value_error("margin: expected a fraction in [0, 10]");
-    TracedDiagram t;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard<std::mutex> lock(d.mutex);
-        t = trace_voronoi_diagram(*d.graph, *d.sites, tolerance, margin);
-    }
+    const TracedDiagram t =
+        locked(d, [&](Diagram& g) { return trace_voronoi_diagram(*g.graph, *g.sites, tolerance, margin); });
     std::size_t total = 0;
     for (const VoronoiEdgeArc& a : t.arcs) total += a.points.size();
     const auto m = static_cast<py::ssize_t>(t.arcs.size());
@@ -263,11 +311,11 @@ py::dict trace(Diagram& d, double tolerance, double margin) {
 }
 
 std::string validate(Diagram& d, bool brute_force) {
-    py::gil_scoped_release release;
-    std::lock_guard<std::mutex> lock(d.mutex);
-    std::string problem = d.graph->validate();
-    if (problem.empty() && brute_force) problem = d.graph->brute_force_check();
-    return problem;
+    return locked(d, [&](Diagram& g) {
+        std::string problem = g.graph->validate();
+        if (problem.empty() && brute_force) problem = g.graph->brute_force_check();
+        return problem;
+    });
 }
 
 Sites diagram_sites(const Diagram& d) {
@@ -284,14 +332,22 @@ void bind_diagram(py::module_& m) {
     py::class_<Diagram, std::unique_ptr<Diagram>>(m, "_Diagram")
         .def_property_readonly("sites", &diagram_sites)
         .def_property_readonly("number_of_sites", [](const Diagram& d) { return d.sites->size(); })
-        .def("hidden", [](const Diagram& d) { return pairs_array(d.graph->hidden()); })
-        .def("edges", [](const Diagram& d) { return pairs_array(d.graph->edges()); })
-        .def("faces", [](const Diagram& d) { return faces_array(d.faces); })
-        .def("hull", [](const Diagram& d) { return pairs_array(d.graph->hull()); })
+        .def("hidden", [](Diagram& d) { return pairs_array(locked(d, [](Diagram& g) { return g.graph->hidden(); })); })
+        .def("edges", [](Diagram& d) { return pairs_array(locked(d, [](Diagram& g) { return g.graph->edges(); })); })
+        .def("faces", [](Diagram& d) { return faces_array(locked(d, [](Diagram& g) { return g.faces; })); })
+        .def("hull", [](Diagram& d) { return pairs_array(locked(d, [](Diagram& g) { return g.graph->hull(); })); })
+        .def("removed",
+             [](Diagram& d) {
+                 const std::vector<SiteId> r = locked(d, [](Diagram& g) { return g.graph->removed(); });
+                 auto out = new_array<std::int64_t>({static_cast<py::ssize_t>(r.size())});
+                 std::copy(r.begin(), r.end(), out.mutable_data());
+                 return out;
+             })
+        .def("remove", &remove, py::arg("ids"))
         .def("ridges", &ridges)
         .def("vertices", &vertices)
         .def("json", &json)
-        .def("stats_json", [](const Diagram& d) { return d.stats; })
+        .def("stats_json", [](Diagram& d) { return locked(d, [](Diagram& g) { return g.stats; }); })
         .def("vertex", &vertex, py::arg("i"), py::arg("bits"))
         .def("trace", &trace, py::arg("tolerance"), py::arg("margin"))
         .def("validate", &validate, py::arg("brute_force"));

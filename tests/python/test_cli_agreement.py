@@ -8,7 +8,7 @@ import pytest
 
 import ellvor
 
-SECONDS = re.compile(r'"seconds":[-+0-9.eE]+')
+SECONDS = re.compile(r'"(removal_)?seconds":[-+0-9.eE]+')
 
 
 def same_document(python_json, cli_json):
@@ -18,7 +18,7 @@ def same_document(python_json, cli_json):
 
 
 def cli_build_json(cli, path, *extra):
-    return cli("build", path, "--json", "-", *extra)[1].split("\n", 1)[1]  # after the summary line
+    return cli("build", path, "--json", "-", *extra)[1].splitlines(keepends=True)[-1]  # after the summary
 
 
 @pytest.mark.parametrize("name", ["example.ell", "example-300.ell"])
@@ -43,6 +43,23 @@ def test_generate_and_build_of_random_sets(cli, tmp_path, kind, count, seed, bit
     expected = cli_build_json(cli, path)
     same_document(ellvor.build(sites).to_json(), expected)
     same_document(ellvor.build(path).to_json(), expected)
+
+
+@pytest.mark.parametrize("kind, count, seed", [("nested", 200, 4), ("circles", 150, 6)])
+def test_removals_as_the_cli(cli, tmp_path, kind, count, seed):
+    path = tmp_path / "sites.ell"
+    cli("generate", kind, "--count", count, "--seed", seed, "-o", path)
+    d = ellvor.build(path)
+    # Hidden sites, the sites hiding them, and others, in one order; removed in two calls.
+    ids = [int(x) for x in d.hidden[:3].ravel()] + [7, 0, count - 1]
+    ids = list(dict.fromkeys(ids))
+    d.remove(ids[:2])
+    d.remove(ids[2:])
+    assert d.removed.tolist() == ids
+    same_document(d.to_json(), cli_build_json(cli, path, "--remove", ",".join(map(str, ids))))
+    assert d.validate() == ""
+    removal = re.compile(r'"removal_seconds":[-+0-9.eE]+')
+    assert removal.search(d.to_json())
 
 
 def test_build_of_a_cin_file(cli, tmp_path):

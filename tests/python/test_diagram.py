@@ -42,7 +42,7 @@ def test_arrays_match_the_json(d300):
     assert d300.vertex_errors.tolist() == [v["error"] for v in j["voronoi_vertices"]]
     assert d300.stats == {**j["stats"], "seconds": d300.stats["seconds"]}
     assert set(d300.stats["predicates"]) == {"is_hidden", "side_of_bisector", "vertex_conflict_3", "incircle",
-                                             "finite_edge", "infinite_edge"}
+                                             "finite_edge", "infinite_edge", "degenerate_edge"}
 
 
 def test_hidden_and_faces_conventions(d300):
@@ -171,3 +171,28 @@ def test_one_diagram_shared_by_threads(d300):
         t.join()
     assert len(results) == 3 and all(r == results[0] for r in results)
     assert results[0][2] == ""
+
+
+def test_remove_updates_the_arrays_and_brings_hidden_sites_back():
+    host = ellvor.Ellipse.circle(0, 0, 5)
+    sites = [host, ellvor.Ellipse.circle(1, 0, 1), ellvor.Ellipse(2, 1, 0, 20, 0), ellvor.Ellipse.circle(0, 20, 2),
+             ellvor.Ellipse.circle(-15, -10, 3)]
+    d = ellvor.build(sites)
+    assert d.hidden.tolist() == [[1, 0]] and len(d.removed) == 0
+    before = d.edges.tolist()
+    assert [0, 2] in before
+    d.remove(0)  # the host goes; the site it hid comes back
+    assert d.removed.tolist() == [0] and d.removed.dtype == np.int64
+    assert len(d.hidden) == 0 and 0 not in d.edges.ravel() and 1 in d.edges.ravel()
+    assert d.stats["removed"] == 1 and d.stats["removal_seconds"] >= 0
+    assert d.validate() == "" and "1 removed" in repr(d)
+    assert len(d.vertices) == len(d.faces) and len(d.ridge_points) == len(d.edges)
+    with pytest.raises(ValueError, match="removed already"):
+        d.remove(0)
+    with pytest.raises(ValueError, match="listed twice"):
+        d.remove([2, 2])
+    with pytest.raises(IndexError):
+        d.remove(-1)
+    assert d.removed.tolist() == [0]  # a refused call removes nothing
+    d.remove(np.array([2, 3]))
+    assert d.removed.tolist() == [0, 2, 3] and len(d.faces) == 0 and d.edges.tolist() == [[1, 4]]

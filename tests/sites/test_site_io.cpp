@@ -262,28 +262,33 @@ TEST_CASE("the bundled example is valid by the conservative tests", "[sites][io]
     CHECK(nested == 4);
 }
 
-TEST_CASE("InputError keeps its location, reason and site pair as fields", "[sites][io]") {
-    std::istringstream in("1 1 0 0 0\n\n1 2 0 0 0/0\n");
+namespace {
+
+// The error that reading `text` as t.ell throws.
+InputError reading_error(const std::string& text) {
+    std::istringstream in(text);
     try {
         read_sites(in, "t.ell");
-        FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(e.has_location());
-        CHECK(e.file() == "t.ell");
-        CHECK(e.line() == 3);
-        CHECK(e.column() == 9);
-        CHECK(std::string(e.what()) == "t.ell:3:9: " + e.reason());
-        CHECK(!e.sites());
+        return e;
     }
-    std::istringstream dup("1 1 0 0 0\n2 1 0 9 0\n1 1 0 0 0\n");
-    try {
-        read_sites(dup, "d.ell");
-        FAIL("no error");
-    } catch (const InputError& e) {
-        REQUIRE(e.sites());
-        CHECK(*e.sites() == InputError::SitePair{0, 2});
-        CHECK(e.line() == 3);
-    }
+    throw std::logic_error("no error reading: " + text);
+}
+
+}  // namespace
+
+TEST_CASE("InputError keeps its location, reason and site pair as fields", "[sites][io]") {
+    const InputError zero = reading_error("1 1 0 0 0\n\n1 2 0 0 0/0\n");
+    CHECK(zero.has_location());
+    CHECK(zero.file() == "t.ell");
+    CHECK(zero.line() == 3);
+    CHECK(zero.column() == 9);
+    CHECK(std::string(zero.what()) == "t.ell:3:9: " + zero.reason());
+    CHECK(!zero.sites());
+    const InputError dup = reading_error("1 1 0 0 0\n2 1 0 9 0\n1 1 0 0 0\n");
+    REQUIRE(dup.sites());
+    CHECK(*dup.sites() == InputError::SitePair{0, 2});
+    CHECK(dup.line() == 3);
     const IntersectingSites crossing(3, 7);
     CHECK(!crossing.has_location());
     CHECK(crossing.file().empty());
