@@ -54,6 +54,13 @@ def machine():
     return f"{model}, {os.cpu_count()} logical CPUs, {mem_kb / 2**20:.0f} GiB, {distro}"
 
 
+def source_state():
+    def git(*args):
+        return subprocess.run(["git", "-C", str(ROOT), *args], capture_output=True, text=True).stdout.strip()
+    head = git("rev-parse", "--short", "HEAD") or "unknown"
+    return head + (" (uncommitted changes)" if git("status", "--porcelain", "--untracked-files=no") else "")
+
+
 def child_cpu():
     r = resource.getrusage(resource.RUSAGE_CHILDREN)
     return r.ru_utime + r.ru_stime
@@ -129,6 +136,7 @@ def main():
           "in this process (reading, building, freeing). Medians.", "",
           f"- Machine: {machine()}; Python {platform.python_version()}",
           f"- Load average before / after: {load_before:.2f} / {load_after:.2f}",
+          f"- Source: git {source_state()}",
           f"- Command: `make python && {command}`", "",
           "| | build (s), median | build, runs | CPU (s), median | CPU, runs |", "|---|---|---|---|---|"]
     for who, label in (("cli", "CLI `ellvor build`"), ("python", "Python `ellvor.build`")):
