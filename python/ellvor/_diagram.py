@@ -147,8 +147,8 @@ class Diagram:
         ridge_points (m, 2)    per Voronoi edge, the two sites it separates (scipy's meaning),
                                in the order of ``edges``
         ridge_vertices (m, 2)  its two Voronoi vertices (indices into ``vertices``, -1 at
-                               infinity); it runs from the first to the second with site
-                               ridge_points[k][0] on its left
+                               infinity): ridge_vertices[k][0] is the face on the left of
+                               the Delaunay edge ridge_points[k][0] -> ridge_points[k][1]
     Voronoi vertices, as the JSON gives them (computed on first use):
         vertices (f, 2), vertex_radii (f,)   centers and radii of the Voronoi circles, the doubles
                                              nearest the midpoints of their certified balls
