@@ -81,8 +81,10 @@ def test_ctrl_c_interrupts_between_insertions(big, sigint):
     finally:
         started.set()
         sender.join()
-    assert seen == [1]  # never the last insertion's call
-    assert time.monotonic() - start < 0.5  # a check every 50 ms, one insertion
+    assert seen == [1]  # stopped: the last insertion's call never came
+    # A check every 50 ms and one insertion; the full build takes about a second (the
+    # bound leaves room for a loaded machine, `seen` above is the proof).
+    assert time.monotonic() - start < 2
 
 
 def test_ctrl_c_without_a_callback(big, sigint):
