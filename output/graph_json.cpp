@@ -3,6 +3,7 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace ellvor {
@@ -12,10 +13,17 @@ VoronoiVertexValue voronoi_vertex_value(const std::vector<Ellipse>& sites, const
     solver.refine_existing(53);  // a face of the graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& c = solver.enclosure();
     VoronoiVertexValue v;
-    for (const Ball* b : {&c.center_x, &c.center_y, &c.radius}) v.error = std::max(v.error, b->radius_double());
     v.x = c.center_x.mid_double();
     v.y = c.center_y.mid_double();
     v.radius = c.radius.mid_double();
+    // `error` bounds the distance from each printed double to its exact value:
+    // the ball's radius plus the rounding of its midpoint to that double (half
+    // an ulp at most), rounded up.
+    const std::pair<const Ball*, double> printed[] = {{&c.center_x, v.x}, {&c.center_y, v.y}, {&c.radius, v.radius}};
+    for (const auto& [ball, value] : printed) {
+        const double half_ulp = 0.5 * (std::nextafter(std::fabs(value), HUGE_VAL) - std::fabs(value));
+        v.error = std::max(v.error, std::nextafter(ball->radius_double() + half_ulp, HUGE_VAL));
+    }
     return v;
 }
 

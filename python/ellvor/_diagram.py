@@ -152,9 +152,8 @@ class Diagram:
     Voronoi vertices, as the JSON gives them (computed on first use):
         vertices (f, 2), vertex_radii (f,)   centers and radii of the Voronoi circles, the doubles
                                              nearest the midpoints of their certified balls
-        vertex_errors (f,)                   every exact value is within this of the midpoint of its
-                                             ball, whose nearest double is given (so within this plus
-                                             half an ulp of the double)
+        vertex_errors (f,)                   every exact value is within this of the double given
+                                             (the ball's radius plus the midpoint's rounding)
     ``vertex(i, bits)`` refines one circle to exact bounds; ``trace()`` draws the
     Voronoi edges; ``to_json()`` is ``ellvor build --json``'s document; ``stats``
     the build's figures; ``remove(sites)`` takes sites out (``ellvor build --remove``).
