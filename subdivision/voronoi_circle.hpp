@@ -24,7 +24,8 @@ public:
     // when the doubles could not certify it (which proves nothing: the
     // solver decides).
     const DoubleVoronoiCircle* in_doubles();
-    // The Arb solver, made on first use.
+    // The Arb solver, made on first use; when the doubles certified the
+    // circle, already certified from their box (VoronoiCircleSolver::certify_near).
     VoronoiCircleSolver& solver();
     bool has_solver() const { return solver_ != nullptr; }
     // VoronoiCircleSolver::release_charts, if there is a solver.

@@ -207,4 +207,12 @@ TEST_CASE("doubles: a huge circle of nearly collinear sites, from the tangent-li
     Tally tally;
     compare_with_arb(e1, e2, e3, tally);  // agrees with Arb
     CHECK(tally.by_doubles == 1);
+    // VoronoiCircle hands the double box to its Arb solver, which starts
+    // certified there (certify_near) and holds the same circle.
+    VoronoiCircle circle(e1, e2, e3);
+    REQUIRE(circle.in_doubles() != nullptr);
+    VoronoiCircleSolver& solver = circle.solver();
+    CHECK(solver.certified());
+    CHECK(meets(circle.in_doubles()->radius, enclose(solver.enclosure().radius)));
+    CHECK(meets(circle.in_doubles()->center_x, enclose(solver.enclosure().center_x)));
 }
