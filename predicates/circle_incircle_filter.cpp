@@ -3,6 +3,7 @@
 #include "predicates/circle_semi_static.hpp"
 #include "util/interval.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace ellvor {
@@ -63,7 +64,10 @@ Decision<InCircle> circle_incircle_interval_filter(const Ellipse& e1, const Elli
     int counterclockwise = 0;
     Interval best_rho, best_x, best_y;
     for (const Interval& rho : {(-qb + root) / (two * qa), (-qb - root) / (two * qa)}) {
-        const int s = sign_of(rho);
+        // A circle of signed distances: rho + r_i > 0 for every site (rho < 0
+        // is an internal circle of overlapping sites).
+        int s = 1;
+        for (const Disk& site : c) s = std::min(s, sign_of(rho + site.r));
         if (s < 0) continue;
         if (s == 0) return undecided;
         const Interval vx = v0x + rho * v1x, vy = v0y + rho * v1y;
@@ -80,6 +84,7 @@ Decision<InCircle> circle_incircle_interval_filter(const Ellipse& e1, const Elli
     }
     if (counterclockwise == 0) return decided(InCircle::no_circle);
     if (counterclockwise > 1) return undecided;  // at most one exists: the intervals are too wide
+    // Q's signed distance at V against rho (never squared: it may be negative).
     const Interval gap = ((best_x - dq.x).square() + (best_y - dq.y).square()).sqrt() - best_rho - dq.r;
     const int s = sign_of(gap);
     if (s == 0 || !gap.finite()) return undecided;

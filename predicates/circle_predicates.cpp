@@ -77,6 +77,19 @@ void det2(Integer& r, const Integer& u, const Integer& v, const Integer& w, cons
     fmpz_submul(r.get(), w.get(), z.get());
 }
 
+// sign(s + rho / f) for the lifted circle s = (m_s + sqrt(radicand) n_s) /
+// denominator: the sign of R + r for a site of lifted radius rho = r - r1,
+// scaled like s times f (f > 0), i.e. whether V lies on that site's nappe of
+// the cone.
+int lifted_height_sign(const Lifted& m, const Lifted& n, const Integer& denominator, const Integer& radicand,
+                       const Integer& rho, const Integer& f) {
+    Integer base, root;
+    fmpz_mul(base.get(), rho.get(), denominator.get());
+    fmpz_addmul(base.get(), m[2].get(), f.get());
+    fmpz_mul(root.get(), n[2].get(), f.get());
+    return sign_of_quadratic(base, root, radicand) * denominator.sign();
+}
+
 // The lifted circles tangent to three sites, in the scaled frame of C1: the
 // points w of the line {a_2 . w = h_2, a_3 . w = h_3} on the cone <w, w> = 0
 // (circle_predicates.hpp), given as w = (m + sqrt(radicand) n) / denominator.
@@ -141,11 +154,11 @@ public:
         } else if (!on_tangent_line(orientation, m, n, denominator, radicand)) {
             return false;
         }
-        // R > 0: the lifted s exceeds the scaled r1.
-        Integer base;
-        fmpz_mul(base.get(), origin[2].get(), denominator.get());
-        fmpz_sub(base.get(), m[2].get(), base.get());
-        return sign_of_quadratic(base, n[2], radicand) * denominator.sign() > 0;
+        // A circle of signed distances: |V - C_i| = R + r_i needs R + r_i > 0
+        // for every site, i.e. for the smallest, s + min(0, rho_2, rho_3) > 0
+        // (for sites that do not overlap R > 0 follows: V outside all three).
+        const Integer& lowest = fmpz_cmp(a2_[2].get(), a3_[2].get()) < 0 ? a2_[2] : a3_[2];
+        return lifted_height_sign(m, n, denominator, radicand, lowest.sign() < 0 ? lowest : Integer(0), Integer(1)) > 0;
     }
 
     Integer scale;   // of the sites
@@ -249,6 +262,11 @@ int circle_vertex_conflict(const CircleVoronoiVertex& vertex, const Ellipse& q) 
     Lifted a;
     scale_circle(a, q, scale);
     for (int i = 0; i < 3; ++i) fmpz_submul(a[i].get(), f.get(), vertex.origin_[i].get());
+    // R + r_Q < 0 (an internal circle deeper than Q's radius): Q's signed
+    // distance at V is at least -r_Q > R, whatever the squares below say. In
+    // the frame scaled by f the lifted circle is f w, so the sign of R + r_Q
+    // is that of s + a_s / f.
+    if (lifted_height_sign(vertex.m_, vertex.n_, vertex.denominator_, vertex.radicand_, a[2], f) < 0) return 1;
     Integer rational_part, root_part, t;
     lorentz_of_sites(rational_part, a, a);
     fmpz_mul(rational_part.get(), rational_part.get(), vertex.denominator_.get());

@@ -2,6 +2,7 @@
 
 #include "predicates/semi_static.hpp"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -81,10 +82,24 @@ public:
         return t;
     }
 
-    // +1 when the circle of orientation o has R > 0, -1 when R < 0, 0 when
-    // unproven. R = (m_s + sqrt(rad) n_s) / (2 <k, k>) - r1.
+    // +1 when the circle of orientation o is one of signed distances, R +
+    // r_i > 0 for the three sites, -1 when not, 0 when unproven (as
+    // TangentCircles::circle in circle_predicates.cpp). The lifted s = R + r1
+    // is (m_s + sqrt(rad) n_s) / (2 <k, k>); R + r_i = s + rho_i. The site
+    // with the smallest radius decides; the doubles of rounded inputs keep the
+    // order of the radii except at ties, so every tied site is asked.
     int radius_sign(int o) const {
-        return certain_sign_with_root(m_s_ - twice(c1_.r * kk_), o > 0 ? -k_s_ : k_s_, rad_) * kk_sign_;
+        const double smallest = std::fmin(c1_.r.value, std::fmin(c2_r_, c3_r_));
+        int sign = 1;
+        auto require = [&](int s) {
+            if (s < 0) sign = -1;
+            else if (s == 0 && sign > 0) sign = 0;
+        };
+        const auto n_s = o > 0 ? -k_s_ : k_s_;
+        if (c1_.r.value == smallest) require(certain_sign_with_root(m_s_, n_s, rad_) * kk_sign_);
+        if (c2_r_ == smallest) require(height_sign(a2_.s, n_s));
+        if (c3_r_ == smallest) require(height_sign(a3_.s, n_s));
+        return sign;
     }
 
     // For the counter-clockwise circle: -1 when Q meets its open disk, +1
@@ -93,14 +108,26 @@ public:
     // (circle_vertex_conflict in circle_predicates.cpp, divided by 2).
     int conflict_sign(const Circle<K>& q) const {
         const Lifted<K> a = lift(q, c1_);
+        // R + r_Q < 0 (an internal circle deeper than Q's radius): no conflict
+        // whatever the squares say. R + r_Q > R + r_min > 0 unless Q is smaller.
+        if (q.r.value <= std::fmin(c1_.r.value, std::fmin(c2_r_, c3_r_))) {
+            const int height = height_sign(a.s, -k_s_);
+            if (height <= 0) return height < 0 ? 1 : 0;
+        }
         const auto rational_part = lorentz(a, a) * kk_ + (a.x * m_x_ + a.y * m_y_ - a.s * m_s_);
         const auto root_part = a.x * k_x_ + a.y * k_y_ + a.s * k_s_;
         return certain_sign_with_root(rational_part, root_part, rad_) * kk_sign_;
     }
 
 private:
+    // sign(s + rho) for a site of lifted radius rho, on the circle with root part n_s.
+    template <class Rho, class RootPart>
+    int height_sign(const Rho& rho, const RootPart& n_s) const {
+        return certain_sign_with_root(m_s_ + twice(rho * kk_), n_s, rad_) * kk_sign_;
+    }
+
     TangentCircles(const Circle<K>& c1, const Circle<K>& c2, const Circle<K>& c3)
-        : c1_(c1), a2_(lift(c2, c1)), a3_(lift(c3, c1)), p2_(lorentz(a2_, a2_)), p3_(lorentz(a3_, a3_)),
+        : c1_(c1), c2_r_(c2.r.value), c3_r_(c3.r.value), a2_(lift(c2, c1)), a3_(lift(c3, c1)), p2_(lorentz(a2_, a2_)), p3_(lorentz(a3_, a3_)),
           p23_(lorentz(lift(c3, c2), lift(c3, c2))), g_(lorentz(a2_, a3_)),
           k_x_(a2_.y * a3_.s - a2_.s * a3_.y), k_y_(a2_.s * a3_.x - a2_.x * a3_.s), k_s_(a2_.x * a3_.y - a2_.y * a3_.x),
           kk_(g_ * g_ - p2_ * p3_), m_x_(factor2() * a2_.x + factor3() * a3_.x),
@@ -116,6 +143,7 @@ private:
     auto factor3() const { return (p3_ - g_) * p2_; }
 
     Circle<K> c1_;
+    double c2_r_, c3_r_;  // the radii's doubles, to find the smallest
     Lifted<K> a2_, a3_;
     Power p2_, p3_, p23_, g_;
     Cross k_x_, k_y_, k_s_;

@@ -119,7 +119,7 @@ bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, co
 
 // Four circles: the closed form in Q(sqrt D) (circle_predicates.hpp).
 Decision<InCircle> circle_incircle_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q) {
-    const Decision<bool> separated = pairwise_separated(e1, e2, e3);
+    const Decision<bool> separated = none_inside_another(e1, e2, e3);
     if (!*separated) return separated.with(InCircle::no_circle);
     const CircleVoronoiVertex vertex(e1, e2, e3);
     if (!vertex.exists()) return Decision<InCircle>::decided(InCircle::no_circle, Stage::exact);

@@ -19,12 +19,13 @@ const char* voronoi_circles_name(VoronoiCircles v) {
     return "?";
 }
 
-Decision<bool> pairwise_separated(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     Decision<bool> separated = Decision<bool>::decided(true, Stage::filter);
     for (auto [p, q] : {std::pair{&e1, &e2}, {&e2, &e3}, {&e3, &e1}}) {
         const Decision<RelativePosition> r = relative_position(*p, *q);
         separated.depends_on(r);
-        if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent)
+        const bool crossing_circles = *r == RelativePosition::intersecting && p->is_circle() && q->is_circle();
+        if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent && !crossing_circles)
             return separated.with(false);
     }
     return separated;
@@ -35,7 +36,7 @@ Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& 
     // site contains another.
     const Decision<VoronoiCircles> fast = circle_voronoi_circle_count_semi_static(e1, e2, e3);
     if (fast.is_decided()) return fast;
-    const Decision<bool> separated = pairwise_separated(e1, e2, e3);
+    const Decision<bool> separated = none_inside_another(e1, e2, e3);
     if (!*separated) return separated.with(VoronoiCircles::none);
     if (e1.is_circle() && e2.is_circle() && e3.is_circle())
         return Decision<VoronoiCircles>::decided(circle_voronoi_circle_count(e1, e2, e3), Stage::exact);

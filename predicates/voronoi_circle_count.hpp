@@ -25,8 +25,9 @@ const char* voronoi_circles_name(VoronoiCircles v);
 // latest any of them needed.
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
-// Whether the three sites are pairwise separated or externally tangent (the
-// premise of a Voronoi circle; a nested pair has none).
-Decision<bool> pairwise_separated(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+// Whether no site of the three lies inside another (the premise of a Voronoi
+// circle; a nested pair has none): every pair separated, externally tangent,
+// or -- two circles, whose closed forms take signed distances -- crossing.
+Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 }  // namespace ellvor

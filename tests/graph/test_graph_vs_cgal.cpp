@@ -205,6 +205,86 @@ std::vector<Circle> random_circles(std::mt19937_64& rng, std::size_t n, long rma
     return out;
 }
 
+// Whether the disk of c lies in the closed disk of o (exact, integers).
+bool inside(const Circle& c, const Circle& o) {
+    const long dx = c.x - o.x, dy = c.y - o.y, d = o.r - c.r;
+    return d >= 0 && dx * dx + dy * dy <= d * d;
+}
+
+// A disk covered by the union of `cover` (tested at 1440 boundary points
+// with a margin: it labels test data, it decides nothing).
+bool covered_by_union(const Circle& c, const std::vector<Circle>& cover) {
+    for (int k = 0; k < 1440; ++k) {
+        const double t = 2 * M_PI * k / 1440, x = c.x + c.r * std::cos(t), y = c.y + c.r * std::sin(t);
+        bool in = false;
+        for (const Circle& o : cover) in = in || std::hypot(x - o.x, y - o.y) < o.r - 1e-6 * o.r;
+        if (!in) return false;
+    }
+    return true;
+}
+
+// n random circles with integer data that overlap freely: crossing pairs
+// everywhere (the box is about as wide as the circles cover), plus, each with
+// a small probability, a circle nested in an earlier one, and a circle
+// covered by the union of two or three new circles but contained in none of
+// them (it stays visible: CGAL's manual). Only exact duplicates are left out.
+// `grid` > 1 snaps centers and radii to its multiples (ties: tangencies,
+// cocircular quadruples). `covered` counts the union-covered circles made.
+std::vector<Circle> overlapping_circles(std::mt19937_64& rng, std::size_t n, long rmax, long grid, int* covered) {
+    const long box = std::max<long>(4 * rmax, static_cast<long>(1.2 * rmax * std::sqrt(double(n)))) / grid * grid;
+    std::vector<Circle> out;
+    auto add = [&](const Circle& c) {
+        for (const Circle& o : out)
+            if (o.x == c.x && o.y == c.y && o.r == c.r) return false;
+        out.push_back(c);
+        return true;
+    };
+    auto snap = [&](long v) { return v / grid * grid; };
+    while (out.size() < n) {
+        const long kind = draw(rng, 0, 99);
+        if (kind < 8 && !out.empty()) {  // nested in an earlier circle
+            const Circle o = out[rng() % out.size()];
+            if (o.r < 6) continue;
+            add({o.x + draw(rng, -o.r / 3, o.r / 3), o.y + draw(rng, -o.r / 3, o.r / 3), draw(rng, 1, o.r / 2)});
+        } else if (kind < 14 && out.size() + 4 <= n) {  // covered by the union of two or three
+            const long r = std::max(2L, draw(rng, 2, rmax / 2)), d = r + draw(rng, 0, r / 2);
+            const Circle c{snap(draw(rng, -box, box)), snap(draw(rng, -box, box)), r};
+            const int parts = kind < 11 ? 2 : 3;
+            std::vector<Circle> cover;
+            for (int k = 0; k < parts; ++k) {
+                const double t = 2 * M_PI * k / parts + 0.3 * (kind % 3);
+                // Radius: covers the gaps between the parts, yet each part
+                // misses c's far side (R < d + r).
+                const long R = parts == 2 ? static_cast<long>(std::ceil(std::sqrt(double(d * d + r * r)))) + 1 : d + r / 2 + 1;
+                cover.push_back({c.x + std::lround(d * std::cos(t)), c.y + std::lround(d * std::sin(t)), R});
+            }
+            bool ok = covered_by_union(c, cover);
+            for (const Circle& o : cover) ok = ok && !inside(c, o);
+            if (!ok) continue;
+            if (add(c)) {
+                *covered += 1;
+                for (const Circle& o : cover) add(o);
+            }
+        } else {
+            add({snap(draw(rng, -box, box)), snap(draw(rng, -box, box)), std::max(grid, snap(draw(rng, 1, rmax)))});
+        }
+    }
+    out.resize(n);
+    return out;
+}
+
+// How many pairs cross (boundaries meet in two points).
+std::size_t crossing_pairs(const std::vector<Circle>& c) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < c.size(); ++i)
+        for (std::size_t j = i + 1; j < c.size(); ++j) {
+            const long dx = c[i].x - c[j].x, dy = c[i].y - c[j].y, d2 = dx * dx + dy * dy;
+            const long s = c[i].r + c[j].r, d = c[i].r - c[j].r;
+            k += d2 < s * s && d2 > d * d;
+        }
+    return k;
+}
+
 }  // namespace
 
 // The seed can be changed for fuzzing: ELLVOR_CGAL_SEED=N build/ellvor_tests "graph vs CGAL: 200*"
@@ -396,6 +476,119 @@ TEST_CASE("graph vs CGAL: cocircular rings and collinear equal circles", "[graph
             check_against_cgal(c, order, true);
             shuffle(order, rng);
         }
+    }
+}
+
+// Intersecting circles: signed distances |x - c| - r, internal Voronoi circles
+// (negative radius), hidden = contained in one other circle (tangency
+// included); a circle covered by a union of others stays visible.
+TEST_CASE("graph vs CGAL: 200 random sets of 10 to 2000 overlapping circles", "[graph][overlap]") {
+    std::mt19937_64 rng(20261124);
+    struct Band {
+        int sets;
+        long lo, hi;
+    };
+    const std::vector<Band> bands = {{150, 10, 60}, {40, 60, 300}, {8, 300, 1000}, {2, 2000, 2000}};
+    int set = 0, agreed = 0, with_hidden = 0, with_covered = 0, covered = 0;
+    std::size_t crossings = 0;
+    for (const Band& band : bands) {
+        for (int k = 0; k < band.sets; ++k, ++set) {
+            const std::size_t n = static_cast<std::size_t>(draw(rng, band.lo, band.hi));
+            const long rmax = std::vector<long>{12, 40, 300}[set % 3];
+            const long grid = (set % 5 == 4) ? 4 : 1;
+            int covered_here = 0;
+            const std::vector<Circle> circles = overlapping_circles(rng, n, rmax, grid, &covered_here);
+            std::vector<SiteId> order = identity(circles.size());
+            shuffle(order, rng);
+            INFO("set " << set << ": " << circles.size() << " circles, rmax " << rmax << ", grid " << grid);
+            Graph g;
+            if (check_against_cgal(circles, order, circles.size() <= 40, &g)) ++agreed;
+            with_hidden += !g.hidden.empty();
+            with_covered += covered_here > 0;
+            covered += covered_here;
+            if (circles.size() <= 300) crossings += crossing_pairs(circles);
+        }
+    }
+    CHECK(set == 200);
+    CHECK(agreed == set);
+    CHECK(with_hidden >= 100);
+    CHECK(with_covered >= 100);
+    CHECK(crossings >= 5000);
+    WARN("overlapping circles: " << covered << " union-covered circles, " << crossings
+                                 << " crossing pairs in the sets of <= 300");
+}
+
+TEST_CASE("graph vs CGAL: removals from 100 sets of overlapping circles", "[graph][overlap][removal]") {
+    std::mt19937_64 rng(20261125);
+    int agreed = 0;
+    for (int set = 0; set < 100; ++set) {
+        const std::size_t n = static_cast<std::size_t>(set < 90 ? draw(rng, 10, 80) : draw(rng, 300, 1000));
+        int covered = 0;
+        const std::vector<Circle> circles = overlapping_circles(rng, n, std::vector<long>{12, 40, 300}[set % 3],
+                                                                set % 5 == 4 ? 4 : 1, &covered);
+        std::vector<SiteId> order = identity(circles.size()), removals = identity(circles.size());
+        shuffle(order, rng);
+        shuffle(removals, rng);
+        const double fraction = std::vector<double>{0.0, 0.1, 0.5, 1.0}[set % 4];
+        removals.resize(std::max<std::size_t>(1, static_cast<std::size_t>(fraction * double(removals.size()))));
+        INFO("set " << set << ": " << circles.size() << " circles, removing " << removals.size());
+        if (check_against_cgal(circles, order, circles.size() <= 40, nullptr, removals)) ++agreed;
+    }
+    CHECK(agreed == 100);
+}
+
+TEST_CASE("graph vs CGAL: a circle covered by two or three others stays visible", "[graph][overlap]") {
+    // The disk of radius 5 at the origin lies in the union of the two (three)
+    // larger disks but in none of them: its cell is not empty (it owns its
+    // center) in every insertion order.
+    const std::vector<std::vector<Circle>> cases = {
+        {{0, 0, 5}, {-6, 0, 8}, {6, 0, 8}},
+        {{0, 0, 5}, {6, 0, 8}, {-3, 5, 8}, {-3, -5, 8}},
+        {{0, 0, 5}, {-6, 0, 8}, {6, 0, 8}, {0, 40, 3}, {30, -30, 6}},
+    };
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        REQUIRE(covered_by_union(cases[c][0], {cases[c].begin() + 1, cases[c].begin() + (c == 1 ? 4 : 3)}));
+        std::vector<SiteId> order = identity(cases[c].size());
+        do {
+            INFO("case " << c);
+            Graph g;
+            check_against_cgal(cases[c], order, true, &g);
+            CHECK(std::count(g.visible.begin(), g.visible.end(), SiteId(0)) == 1);
+            CHECK(g.hidden.empty());
+        } while (std::next_permutation(order.begin(), order.end()));
+    }
+}
+
+TEST_CASE("graph vs CGAL: internal Voronoi circles and tangencies of overlapping circles", "[graph][overlap]") {
+    // Three pairwise crossing circles with a common point inside all three
+    // (an internal Voronoi circle, negative radius); a fourth through it;
+    // circles through one common point (three boundaries meet: radius 0);
+    // internally and externally tangent pairs among crossing ones; equal
+    // circles on a lattice (cocircular internal circles).
+    const std::vector<std::vector<Circle>> cases = {
+        {{0, 0, 10}, {12, 0, 10}, {6, 10, 10}},
+        {{0, 0, 10}, {12, 0, 10}, {6, 10, 10}, {6, 4, 3}},
+        {{-5, 0, 5}, {5, 0, 5}, {0, 5, 5}, {0, -5, 5}},          // four circles through the origin
+        {{0, 0, 5}, {8, 0, 5}, {4, 3, 5}, {4, -3, 5}, {4, 1, 1}},  // shared points (4, +-3), a small one inside two
+        {{0, 0, 10}, {20, 0, 10}, {10, 0, 4}, {10, 8, 6}},        // tangent pairs among crossing ones
+        {{0, 0, 10}, {5, 0, 5}, {12, 0, 6}, {0, 14, 7}},          // internally tangent: hidden
+    };
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        std::vector<SiteId> order = identity(cases[c].size());
+        do {
+            INFO("case " << c);
+            check_against_cgal(cases[c], order, true);
+        } while (std::next_permutation(order.begin(), order.end()));
+    }
+    std::vector<Circle> lattice;
+    for (long i = 0; i < 6; ++i)
+        for (long j = 0; j < 6; ++j) lattice.push_back({12 * i, 12 * j, 9});
+    std::mt19937_64 rng(3);
+    std::vector<SiteId> order = identity(lattice.size());
+    for (int k = 0; k < 4; ++k) {
+        INFO("lattice order " << k);
+        check_against_cgal(lattice, order, true);
+        shuffle(order, rng);
     }
 }
 
