@@ -57,7 +57,7 @@ int run(const std::vector<std::string>& args) {
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     const auto& s = file.sites;
     require_site_count(file, 2, 3, "E1 E2 [Q]");
-    require_no_crossing(file);
+    require_acceptable_crossings(file);
     const RelativePosition position = *relative_position(s[0], s[1]);
     if (position != RelativePosition::separated && position != RelativePosition::externally_tangent)
         throw InputError(file.name + ": sites 0 and 1 are " + relative_position_name(position) +

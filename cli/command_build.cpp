@@ -78,7 +78,7 @@ int run(const std::vector<std::string>& args) {
         });
     } catch (const IntersectingSites& e) {
         if (progress) std::fprintf(stderr, "\n");
-        throw crossing_sites_error(file, e.first(), e.second());
+        throw crossing_sites_error(file, e.first(), e.second(), e.why());
     }
     if (progress) std::fprintf(stderr, "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -22,20 +22,25 @@ const char* const kHelp =
     "usage: ellvor check FILE [--cin] [--describe]\n"
     "\n"
     "Validates a site file: every line parses ('a b w xc yc', exact rationals), a, b > 0,\n"
-    "no two sites are the same ellipse, and every pair of sites is disjoint or nested.\n"
+    "no two sites are the same ellipse, and every pair of sites is disjoint, nested, or two\n"
+    "circles crossing (signed distances, as CGAL's Apollonius graph).\n"
     "Prints one line per notable pair (ids are 0-based in file order):\n"
-    "  intersecting: I J           the two sites intersect (an error)\n"
+    "  crossing: I J               the boundaries cross in two points (allowed between circles)\n"
+    "  invalid: I J WHY            a crossing the diagram does not accept: boundaries meeting in\n"
+    "                              3 or 4 points, or crossing ellipses that are not both circles\n"
     "  hidden: I inside J          site I lies inside site J (I is a hidden site)\n"
     "  hidden: I inside J tangent  the same, touching J from inside\n"
     "  tangent: I J                externally tangent sites\n"
-    "then a summary 'N sites (C circles), H hidden, OK' (or '..., K intersecting pairs, INVALID').\n"
+    "then a summary 'N sites (C circles), H hidden[, X crossing pairs], OK' (or '..., K invalid\n"
+    "pairs, INVALID').\n"
     "\n"
     "options:\n"
     "  --cin        read CGAL's circle format 'x y r' instead of .ell\n"
-    "  --describe   also print a short description (counts, bounding box, axis ranges, bit sizes)\n"
+    "  --describe   also print a short description (counts, bounding box, axis ranges, bit sizes,\n"
+    "               nested and crossing pairs)\n"
     "  FILE may be '-' for standard input.\n"
     "\n"
-    "exit status: 0 valid; 2 a parse error, a duplicate or an intersecting pair\n"
+    "exit status: 0 valid; 2 a parse error, a duplicate or an invalid pair\n"
     "(message 'ellvor: FILE:LINE:COL: what' on stderr); 1 other failure.\n";
 
 struct PairReport {
@@ -45,8 +50,33 @@ struct PairReport {
 
 Rational max_axis(const Ellipse& e) { return e.a() < e.b() ? e.b() : e.a(); }
 
-void describe(std::ostream& out, const SiteFile& file, std::size_t circles,
-              const std::vector<PairReport>& nested) {
+// Up to ten pairs "i in j" (nested) or "i x j" (crossing), then "...".
+void list_pairs(std::ostream& out, const char* what, const std::vector<PairReport>& pairs) {
+    out << "  " << what << " pairs: " << pairs.size();
+    if (!pairs.empty()) {
+        out << " (";
+        std::size_t shown = 0;
+        for (const PairReport& p : pairs) {
+            if (shown++ == 10) {
+                out << ", ...";
+                break;
+            }
+            if (shown > 1) out << ", ";
+            if (p.position == RelativePosition::intersecting) {
+                out << p.i << " x " << p.j;
+                continue;
+            }
+            const bool first = p.position == RelativePosition::first_inside ||
+                               p.position == RelativePosition::first_inside_tangent;
+            out << (first ? p.i : p.j) << " in " << (first ? p.j : p.i);
+        }
+        out << ")";
+    }
+    out << '\n';
+}
+
+void describe(std::ostream& out, const SiteFile& file, std::size_t circles, const std::vector<PairReport>& nested,
+              const std::vector<PairReport>& crossing) {
     const auto& s = file.sites;
     out << "description of " << file.name << ":\n";
     out << "  sites: " << s.size() << " (" << circles << " circles, " << s.size() - circles << " ellipses)\n";
@@ -72,20 +102,8 @@ void describe(std::ostream& out, const SiteFile& file, std::size_t circles,
                   amin.to_double(), amax.to_double(), bmin.to_double(), bmax.to_double());
     out << buf;
     out << "  largest numerator/denominator: " << max_bits << " bits\n";
-    out << "  nested pairs: " << nested.size();
-    if (!nested.empty()) {
-        out << " (";
-        std::size_t shown = 0;
-        for (const PairReport& p : nested) {
-            if (shown++ == 10) { out << ", ..."; break; }
-            if (shown > 1) out << ", ";
-            const bool first = p.position == RelativePosition::first_inside ||
-                               p.position == RelativePosition::first_inside_tangent;
-            out << (first ? p.i : p.j) << " in " << (first ? p.j : p.i);
-        }
-        out << ")";
-    }
-    out << '\n';
+    list_pairs(out, "nested", nested);
+    list_pairs(out, "crossing", crossing);
 }
 
 int run_check(const std::vector<std::string>& args) {
@@ -132,16 +150,24 @@ int run_check(const std::vector<std::string>& args) {
               [](const PairReport& x, const PairReport& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
 
     std::set<std::size_t> hidden;
-    std::vector<PairReport> nested, intersecting;
+    std::vector<PairReport> nested, crossing;
+    std::vector<std::pair<PairReport, std::string>> invalid;  // with the reason
     std::size_t circles = 0;
     for (const Ellipse& e : sites) circles += e.is_circle() ? 1 : 0;
     std::ostream& out = std::cout;
     for (const PairReport& r : reports) {
         switch (r.position) {
-            case RelativePosition::intersecting:
-                out << "intersecting: " << r.i << ' ' << r.j << '\n';
-                intersecting.push_back(r);
+            case RelativePosition::intersecting: {
+                const std::string problem = crossing_pair_problem(sites[r.i], sites[r.j]);
+                if (problem.empty()) {
+                    out << "crossing: " << r.i << ' ' << r.j << '\n';
+                    crossing.push_back(r);
+                } else {
+                    out << "invalid: " << r.i << ' ' << r.j << ' ' << problem << '\n';
+                    invalid.push_back({r, problem});
+                }
                 break;
+            }
             case RelativePosition::identical:
                 // The reader rejects duplicates; report it like one all the same.
                 throw InputError(file.name, file.lines[r.j], 1,
@@ -168,15 +194,15 @@ int run_check(const std::vector<std::string>& args) {
                 break;
         }
     }
-    if (parsed.has("--describe")) describe(out, file, circles, nested);
+    if (parsed.has("--describe")) describe(out, file, circles, nested, crossing);
     out << n << " sites (" << circles << " circles), " << hidden.size() << " hidden";
-    if (!intersecting.empty()) {
-        out << ", " << intersecting.size() << " intersecting pair" << (intersecting.size() == 1 ? "" : "s")
-            << ", INVALID\n";
+    if (!crossing.empty()) out << ", " << crossing.size() << " crossing pair" << (crossing.size() == 1 ? "" : "s");
+    if (!invalid.empty()) {
+        out << ", " << invalid.size() << " invalid pair" << (invalid.size() == 1 ? "" : "s") << ", INVALID\n";
         out.flush();
-        const PairReport& r = intersecting.front();
-        std::cerr << "ellvor: " << crossing_sites_error(file, r.i, r.j).what() << " (" << intersecting.size()
-                  << " intersecting pair" << (intersecting.size() == 1 ? "" : "s") << " in all)\n";
+        const auto& [r, why] = invalid.front();
+        std::cerr << "ellvor: " << crossing_sites_error(file, r.i, r.j, why).what() << " (" << invalid.size()
+                  << " invalid pair" << (invalid.size() == 1 ? "" : "s") << " in all)\n";
         return kExitInput;
     }
     out << ", OK\n";

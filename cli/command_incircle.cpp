@@ -47,7 +47,7 @@ int run(const std::vector<std::string>& args) {
         parsed.integer("--max-precision", options.refinement.cap, precision::kStart, precision::kMaxCap);
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 4, 4, "E1 E2 E3 Q");
-    require_no_crossing(file);
+    require_acceptable_crossings(file);
     const auto& s = file.sites;
 
     const auto start = std::chrono::steady_clock::now();

@@ -40,7 +40,7 @@ int run(const std::vector<std::string>& args) {
     parsed.expect_positional(1, 1, "FILE");
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 3, 3, "E1 E2 E3");
-    require_no_crossing(file);
+    require_acceptable_crossings(file);
     const auto& s = file.sites;
 
     const IncircleResultant r = incircle_resultant(s[0], s[1], s[2]);

@@ -42,7 +42,7 @@ int run(const std::vector<std::string>& args) {
     const auto& pos = parsed.positional();
     const SiteFile file = read_site_argument(parsed, pos[0]);
     require_site_count(file, 2, 2, "E1 E2");
-    require_no_crossing(file);
+    require_acceptable_crossings(file);
     const Point p{coordinate(pos[1], "X"), coordinate(pos[2], "Y")};
 
     const auto start = std::chrono::steady_clock::now();

@@ -53,7 +53,7 @@ int run(const std::vector<std::string>& args) {
     const long bits = parsed.integer("--bits", 53, 1, 10'000'000);
     const SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     require_site_count(file, 3, 3, "E1 E2 E3");
-    require_no_crossing(file);
+    require_acceptable_crossings(file);
     const auto& s = file.sites;
 
     nlohmann::json j;

@@ -1,6 +1,7 @@
 #include "cli/site_arguments.hpp"
 
 #include "predicates/relative_position.hpp"
+#include "util/error.hpp"
 
 namespace ellvor::cli {
 
@@ -18,11 +19,12 @@ void require_site_count(const SiteFile& file, std::size_t min, std::size_t max, 
     throw InputError(file.name + ": " + what);
 }
 
-void require_no_crossing(const SiteFile& file) {
-    const auto& s = file.sites;
-    for (std::size_t j = 1; j < s.size(); ++j)
-        for (std::size_t i = 0; i < j; ++i)
-            if (*relative_position(s[i], s[j]) == RelativePosition::intersecting) throw crossing_sites_error(file, i, j);
+void require_acceptable_crossings(const SiteFile& file) {
+    try {
+        ellvor::require_acceptable_crossings(file.sites);
+    } catch (const IntersectingSites& e) {
+        throw crossing_sites_error(file, e.first(), e.second(), e.why());
+    }
 }
 
 }  // namespace ellvor::cli

@@ -89,7 +89,7 @@ inline Outcome build_sites(const SiteFile& file) {
         if (!problem.empty()) return {Outcome::finding, "invalid graph after removing the odd sites: " + problem, file};
     } catch (const IntersectingSites& e) {
         // Located at the later site's line, as `ellvor build` reports it.
-        return {Outcome::input_error, crossing_sites_error(file, e.first(), e.second()).what(), file};
+        return {Outcome::input_error, crossing_sites_error(file, e.first(), e.second(), e.why()).what(), file};
     } catch (const InputError& e) {
         return {Outcome::input_error, e.what(), file};
     } catch (const std::exception& e) {

@@ -63,8 +63,10 @@ bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     if (found != hidden_memo_.end()) return found->second;
     ++stats_.is_hidden.calls;
     const RelativePosition r = counted(stats_.is_hidden, relative_position(site(p), site(q)), "relative position", {p, q});
-    if (r == RelativePosition::intersecting && !(site(p).is_circle() && site(q).is_circle()))
-        throw IntersectingSites(std::min(p, q), std::max(p, q));
+    if (r == RelativePosition::intersecting) {
+        const std::string problem = crossing_pair_problem(site(p), site(q));
+        if (!problem.empty()) throw IntersectingSites(std::min(p, q), std::max(p, q), problem);
+    }
     bool q_in_p = false, p_in_q = false;
     switch (r) {
         case RelativePosition::second_inside:

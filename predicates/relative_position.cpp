@@ -2,6 +2,7 @@
 
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
+#include "util/error.hpp"
 #include "util/interval.hpp"
 
 
@@ -109,6 +110,32 @@ Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e
     if (side_of_boundary(intersection_quartic(e2, e1)) < 0)
         return exactly(tangent ? RelativePosition::second_inside_tangent : RelativePosition::second_inside);
     return exactly(tangent ? RelativePosition::externally_tangent : RelativePosition::separated);
+}
+
+int boundary_meeting_points(const Ellipse& e1, const Ellipse& e2) {
+    const IntPolynomial quartic = intersection_quartic(e1, e2);
+    if (quartic.is_zero()) throw Error("boundary_meeting_points: the two sites are the same point set");
+    int points = quartic.degree() < kIntersectionFormalDegree ? 1 : 0;
+    for (const auto& [factor, exponent] : squarefree_factors(quartic))
+        if (factor.degree() >= 1) points += static_cast<int>(isolate_real_roots(factor).size());
+    return points;
+}
+
+std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2) {
+    const int points = boundary_meeting_points(e1, e2);
+    if (points > 2)
+        return "their boundaries meet in " + std::to_string(points) + " points (sites may cross in at most two)";
+    if (!e1.is_circle() || !e2.is_circle()) return "crossing sites must both be circles (crossing ellipses are not supported yet)";
+    return "";
+}
+
+void require_acceptable_crossings(const std::vector<Ellipse>& sites) {
+    for (std::size_t j = 1; j < sites.size(); ++j)
+        for (std::size_t i = 0; i < j; ++i)
+            if (*relative_position(sites[i], sites[j]) == RelativePosition::intersecting) {
+                const std::string problem = crossing_pair_problem(sites[i], sites[j]);
+                if (!problem.empty()) throw IntersectingSites(i, j, problem);
+            }
 }
 
 bool is_hidden(const Ellipse& p, const Ellipse& q) {

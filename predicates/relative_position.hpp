@@ -7,12 +7,15 @@
 #include "predicates/stage.hpp"
 #include "sites/ellipse.hpp"
 
+#include <string>
+#include <vector>
+
 namespace ellvor {
 
 enum class RelativePosition {
     separated,              // disjoint closed sets, neither inside the other
     externally_tangent,     // touching from outside (one or two contact points), no crossing
-    intersecting,           // the boundaries cross: not a valid pair of sites
+    intersecting,           // the boundaries cross (crossing_pair_problem says whether that is allowed)
     first_inside,           // E1 strictly inside E2 (E1 is hidden by E2)
     first_inside_tangent,   // E1 inside E2, boundaries touching
     second_inside,          // E2 strictly inside E1 (E2 is hidden by E1)
@@ -30,6 +33,24 @@ Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e
 // are apart, proved in outward-rounded doubles. False when the doubles cannot
 // tell; then relative_position decides. Cheaper than any memo lookup.
 bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2);
+
+// How many distinct points the boundaries of two different sites share (0
+// to 4), exactly: the real roots of the intersection quartic, t = infinity
+// included.
+int boundary_meeting_points(const Ellipse& e1, const Ellipse& e2);
+
+// For two sites whose boundaries cross: why they cannot be sites of one
+// diagram, or "" when they can (docs/DESIGN.md §2). Two circles may cross
+// (they meet in at most two points: pseudo-circles, signed distances).
+// Boundaries meeting in three or four points are never accepted; two
+// ellipses that are not both circles and cross in two points are not yet.
+std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2);
+
+// Throws IntersectingSites (util/error.hpp) naming the first pair (i < j, in
+// the order of j, then i) that crosses in a way crossing_pair_problem rejects.
+// For the predicate commands, which take a few sites; the graph finds
+// crossings itself as it inserts.
+void require_acceptable_crossings(const std::vector<Ellipse>& sites);
 
 // CGAL's Is_hidden(p, q): q lies inside p, internal tangency and identical
 // sites included.

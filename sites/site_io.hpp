@@ -69,11 +69,11 @@ void check_site_set(const SiteFile& file);
 std::vector<Ellipse> read_sites(std::istream& in, const std::string& display_name, SiteFormat format = SiteFormat::ell);
 std::vector<Ellipse> read_sites(const std::string& path, SiteFormat format = SiteFormat::ell);
 
-// The input error for two sites of a file whose boundaries cross, at the
-// later site's line: "FILE:LINE:1: site j intersects site i (line L); sites
-// must be disjoint or nested" (the reader does not test pairs: the graph and
-// the commands find crossings).
-InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second);
+// The input error for two sites of a file that cross in a way the diagram does
+// not accept (crossing_pair_problem in predicates/relative_position.hpp), at
+// the later site's line: "FILE:LINE:1: site j crosses site i (line L): WHY"
+// (the reader does not test pairs: the graph and the commands find crossings).
+InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second, const std::string& why);
 
 // Writers. `header` lines (may be empty) are written first, each prefixed with "# ".
 void write_ell(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header = "");

@@ -143,22 +143,44 @@ void tritangent_system(const Charts& charts, const BallMatrix& X, BallMatrix& F,
 }
 
 // det(P2 - P1, P3 - P1) at the chart parameters X(0..2): positive iff the
-// tangency points are counter-clockwise.
-Ball orientation(const Charts& charts, const BallMatrix& X, long prec) {
+// tangency points are counter-clockwise. With `of_normals`, det(nu2 - nu1,
+// nu3 - nu1) instead: the same sign for every rho != 0 (P_i = V - rho nu_i,
+// and a scaling by -rho multiplies the orientation by rho^2), and the only
+// one defined at rho = 0.
+Ball orientation(const Charts& charts, const BallMatrix& X, long prec, bool of_normals = false) {
     std::array<BoundaryChart::Local, 3> p{};
     for (int i = 0; i < 3; ++i) {
         Ball t;
         arb_set(t.get(), X.at(i, 0));
         p[i] = charts[i]->evaluate(t, prec, false);
     }
+    Ball BoundaryChart::Local::*x = of_normals ? &BoundaryChart::Local::nx : &BoundaryChart::Local::px;
+    Ball BoundaryChart::Local::*y = of_normals ? &BoundaryChart::Local::ny : &BoundaryChart::Local::py;
     Ball ux, uy, vx, vy, orient;
-    arb_sub(ux.get(), p[1].px.get(), p[0].px.get(), prec);
-    arb_sub(uy.get(), p[1].py.get(), p[0].py.get(), prec);
-    arb_sub(vx.get(), p[2].px.get(), p[0].px.get(), prec);
-    arb_sub(vy.get(), p[2].py.get(), p[0].py.get(), prec);
+    arb_sub(ux.get(), (p[1].*x).get(), (p[0].*x).get(), prec);
+    arb_sub(uy.get(), (p[1].*y).get(), (p[0].*y).get(), prec);
+    arb_sub(vx.get(), (p[2].*x).get(), (p[0].*x).get(), prec);
+    arb_sub(vy.get(), (p[2].*y).get(), (p[0].*y).get(), prec);
     arb_mul(orient.get(), ux.get(), vy.get(), prec);
     arb_submul(orient.get(), uy.get(), vx.get(), prec);
     return orient;
+}
+
+// rho > -min_i (smallest radius of curvature of E_i) = -min_i min(a, b)^2 /
+// max(a, b), certainly: then the disk of radius -rho touching E_i at P_i from
+// inside lies in E_i (Blaschke's rolling theorem), so P_i is the boundary
+// point nearest to V and rho the signed distance (DESIGN.md §4.1).
+bool above_depth_limit(const std::array<const Ellipse*, 3>& sites, const arb_t rho, long prec) {
+    for (const Ellipse* e : sites) {
+        const bool a_small = e->a() < e->b();
+        const Rational& small = a_small ? e->a() : e->b();
+        const Rational& large = a_small ? e->b() : e->a();
+        Ball limit;
+        arb_set_fmpq(limit.get(), (small * small / large).get(), prec);
+        arb_add(limit.get(), limit.get(), rho, prec);
+        if (!arb_is_positive(limit.get())) return false;
+    }
+    return true;
 }
 
 // Precision of the Jacobian for a Newton step at precision prec: half is
@@ -246,11 +268,20 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     for (int j = 0; j < kUnknowns; ++j)
         if (!arb_contains_interior(X.at(j, 0), K.at(j, 0))) return false;
     // The root in K: a counter-clockwise circle of positive radius?
-    if (!arb_is_positive(K.at(3, 0))) return false;
-    // The tangency points' coordinates cancel in the orientation: it needs
-    // their magnitude's bits on top of the low precision.
-    const long orientation_prec = std::min(prec, kLowPrecision + magnitude_bits(midpoint_));
-    if (!arb_is_positive(orientation(charts(), K, orientation_prec).get())) return false;
+    if (arb_is_positive(K.at(3, 0))) {
+        // The tangency points' coordinates cancel in the orientation: it needs
+        // their magnitude's bits on top of the low precision.
+        const long orientation_prec = std::min(prec, kLowPrecision + magnitude_bits(midpoint_));
+        if (!arb_is_positive(orientation(charts(), K, orientation_prec).get())) return false;
+    } else {
+        // An internal circle of overlapping sites (rho < 0), or one of radius
+        // 0 where three boundaries meet: rho is the signed distance to E_i
+        // while -rho stays below E_i's smallest radius of curvature (DESIGN.md
+        // §4.1), and the tangency points, V + |rho| nu_i, are counter-clockwise
+        // iff the normals are (at rho = 0 only the normals tell).
+        if (!above_depth_limit(work_sites_, K.at(3, 0), prec)) return false;
+        if (!arb_is_positive(orientation(charts(), K, prec, true).get())) return false;
+    }
 
     for (int i = 0; i < 3; ++i) arb_set(enclosure_.parameter[i].get(), K.at(i, 0));
     arb_set(enclosure_.radius.get(), K.at(3, 0));

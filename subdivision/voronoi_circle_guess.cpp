@@ -101,18 +101,22 @@ bool newton(const std::array<Shape, 3>& e, Vector6& X) {
     return F.norm() < tolerance_at(X, kStalledTolerance);
 }
 
-// The tangency points appear counter-clockwise on the circle iff the
-// triangle P1 P2 P3 is positively oriented; and the radius must be positive.
+// The tangency points appear counter-clockwise on the circle iff their unit
+// normals do (P_i = V - rho nu_i: the same orientation for every rho != 0,
+// and the only one defined at rho = 0); and the radius must be a signed
+// distance: positive, or (overlapping sites) above minus every site's
+// smallest radius of curvature (the certificate's condition, DESIGN.md §4.1).
 bool is_counterclockwise_solution(const std::array<Shape, 3>& e, const Vector6& X) {
-    if (!(X[3] > 0)) return false;
-    double p[3][2];
+    double n[3][2];
     for (int i = 0; i < 3; ++i) {
         const Shape& k = e[i];
-        const double ct = std::cos(X[i]), st = std::sin(X[i]);
-        p[i][0] = k.x + k.a * ct * k.c - k.b * st * k.s;
-        p[i][1] = k.y + k.a * ct * k.s + k.b * st * k.c;
+        if (!(X[3] > -std::min(k.a, k.b) * std::min(k.a, k.b) / std::max(k.a, k.b))) return false;
+        // The outward normal at angle theta: (b cos, a sin) in the ellipse's frame.
+        const double lx = k.b * std::cos(X[i]), ly = k.a * std::sin(X[i]), length = std::hypot(lx, ly);
+        n[i][0] = (lx * k.c - ly * k.s) / length;
+        n[i][1] = (lx * k.s + ly * k.c) / length;
     }
-    const double orient = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    const double orient = (n[1][0] - n[0][0]) * (n[2][1] - n[0][1]) - (n[1][1] - n[0][1]) * (n[2][0] - n[0][0]);
     return orient > 0;
 }
 
@@ -144,8 +148,11 @@ std::vector<std::array<double, 3>> apollonius_circles(const std::array<Shape, 3>
             rhos.push_back((-qb - std::sqrt(disc)) / (2 * qa));
         }
     }
+    // Signed radii: |V - C_i| = rho + r_i needs rho + r_i > 0 for each circle
+    // (rho < 0 is an internal circle of overlapping sites).
+    const double smallest = std::min({r[0], r[1], r[2]});
     for (double rho : rhos)
-        if (rho > 0) {
+        if (rho + smallest > 0) {
             const Eigen::Vector2d v = v0 + rho * v1;
             out.push_back({rho, v[0], v[1]});
         }
@@ -173,7 +180,7 @@ std::vector<std::array<double, 3>> collinear_apollonius_circles(const std::array
     if (!(std::fabs(A.determinant()) > 1e-12 * A.cwiseAbs().maxCoeff() * A.cwiseAbs().maxCoeff())) return out;
     const Eigen::Vector2d sol = A.inverse() * b;
     const double X = sol[0], rho = sol[1], y2 = (rho + r[0]) * (rho + r[0]) - (X - x[0]) * (X - x[0]);
-    if (!(rho > 0) || !(y2 >= 0)) return out;
+    if (!(rho + std::min({r[0], r[1], r[2]}) > 0) || !(y2 >= 0)) return out;
     for (double side : {1.0, -1.0}) {
         const double Y = side * std::sqrt(y2);
         out.push_back({rho, c[0].x + X * ex - Y * ey, c[0].y + X * ey + Y * ex});

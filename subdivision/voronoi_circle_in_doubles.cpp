@@ -123,10 +123,26 @@ bool counterclockwise(const std::array<BoundaryPoint<Interval>, 3>& p) {
     return orientation.positive();
 }
 
+// The solution's rho is the signed distance from V to each site (DESIGN.md
+// §4.1): rho > 0, or -rho below every site's smallest radius of curvature
+// b^2 / a, so that the disk of radius -rho touching E_i at P_i from inside
+// lies in E_i (Blaschke's rolling theorem) and P_i is V's nearest boundary
+// point.
+bool signed_distances(const std::array<Shape<Interval>, 3>& k, const Interval& rho) {
+    if (rho.positive()) return true;
+    for (const Shape<Interval>& e : k) {
+        // min(a, b)^2 / max(a, b) = min(a^2 / b, b^2 / a), bounded below.
+        const Interval curvature_radius(std::fmin((e.a.square() / e.b).lo, (e.b.square() / e.a).lo));
+        if (!(rho + curvature_radius).positive()) return false;
+    }
+    return true;
+}
+
 // The Krawczyk test with epsilon-inflation: boxes m +- r, r from the size of
 // the Newton correction, grown a few times when K(X) is not inside X.
 // Returns K(X), which holds the unique solution in X, once it has also
-// proved rho > 0 and the counter-clockwise order (on X, which contains K(X)).
+// proved that rho is the signed distance to the sites and the
+// counter-clockwise order (on X, which contains K(X)).
 std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>, 3>& k,
                                                 const std::array<bool, 3>& flipped, const Vector6& m,
                                                 const Matrix6& Y, double length_scale) {
@@ -176,7 +192,7 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
             reach[i] = std::fmax(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
         }
         if (inside) {
-            if (!K[3].positive() || !counterclockwise(at)) return std::nullopt;
+            if (!signed_distances(k, K[3]) || !counterclockwise(at)) return std::nullopt;
             return K;
         }
         for (int i = 0; i < 6; ++i) r[i] = 2 * std::fmax(r[i], reach[i]);

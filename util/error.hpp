@@ -50,22 +50,26 @@ private:
     std::optional<SitePair> sites_;
 };
 
-// Two input sites whose boundaries cross (not a valid pair of sites): thrown
-// by the algorithms that discover it, with the ids, so that a caller that
-// knows the file can point at the lines.
+// Two input sites that cross in a way the diagram does not accept
+// (docs/DESIGN.md §2: only circles may cross, in at most two points): thrown
+// by the algorithms that discover it, with the ids and the reason, so that a
+// caller that knows the file can point at the lines.
 class IntersectingSites : public InputError {
 public:
-    IntersectingSites(std::size_t first, std::size_t second)
+    IntersectingSites(std::size_t first, std::size_t second, const std::string& why)
         : InputError("invalid input: sites " + std::to_string(first) + " and " + std::to_string(second) +
-                         " intersect (sites must be disjoint or nested)",
+                         " cross: " + why,
                      SitePair{first, second}),
           first_(first),
-          second_(second) {}
+          second_(second),
+          why_(why) {}
     std::size_t first() const { return first_; }
     std::size_t second() const { return second_; }
+    const std::string& why() const { return why_; }  // e.g. "their boundaries meet in 4 points"
 
 private:
     std::size_t first_, second_;
+    std::string why_;
 };
 
 }  // namespace ellvor

@@ -146,7 +146,7 @@ std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& form
         } catch (const Interrupted&) {
             interrupted = true;
         } catch (const IntersectingSites& e) {
-            if (d->from_file) throw crossing_sites_error(d->names, e.first(), e.second());
+            if (d->from_file) throw crossing_sites_error(d->names, e.first(), e.second(), e.why());
             throw;
         }
         if (!interrupted) {

@@ -18,15 +18,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // The checks the CLI makes of a predicate's site file (the reader's set
-// checks, then no crossing pair); errors name the sites by position.
+// checks, then no crossing pair but of circles); errors name the sites by position.
 void require_valid_sites(const std::vector<const Ellipse*>& sites) {
     SiteFile file;
     for (const Ellipse* e : sites) file.sites.push_back(*e);
     check_site_set(file);
-    for (std::size_t j = 1; j < sites.size(); ++j)
-        for (std::size_t i = 0; i < j; ++i)
-            if (*relative_position(*sites[i], *sites[j]) == RelativePosition::intersecting)
-                throw IntersectingSites(i, j);
+    require_acceptable_crossings(file.sites);
 }
 
 double microseconds_since(Clock::time_point start) {

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -62,14 +63,41 @@ TEST_CASE("build: three collinear circles give the CGAL structure", "[cli][build
     CHECK(contains(r.out, "valid"));
 }
 
-TEST_CASE("build: intersecting sites are an input error naming them", "[cli][build]") {
+TEST_CASE("build: crossing ellipses are an input error naming them", "[cli][build]") {
     ScratchDirectory dir;
-    const std::string f = dir.write("bad.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 1 0\n");
-    const auto r = dir.ellvor("build '" + f + "'");
+    const std::string f = dir.write("bad.ell", "2 1 0 0 0\n1 1 0 10 0\n2 1 0 1 1\n");
+    const std::string json = dir.path() + "/g.json";
+    const auto r = dir.ellvor("build '" + f + "' --json '" + json + "'");
     INFO(r.out << r.err);
     CHECK(r.status == 2);
-    CHECK(contains(r.err, f + ":3:1: site 2 intersects site 0 (line 1)"));
+    CHECK(contains(r.err, f + ":3:1: site 2 crosses site 0 (line 1): crossing sites must both be circles"));
     CHECK(r.out.find("Delaunay edges") == std::string::npos);
+    CHECK(!std::ifstream(json));  // nothing written
+}
+
+TEST_CASE("build: crossing circles, an internal Voronoi circle of negative radius in the JSON", "[cli][build]") {
+    // Three pairwise crossing circles of radius 10 whose common part holds the
+    // point (6, 16/5), at distance 34/5 from each center: the Voronoi vertex
+    // of the face (0, 1, 2) is the internal circle of radius -16/5 there.
+    ScratchDirectory dir;
+    const std::string f = dir.write("o.ell", "10 10 0 0 0\n10 10 0 12 0\n10 10 0 6 10\n3 3 0 6 4\n2 2 0 30 30\n");
+    const std::string json = dir.path() + "/g.json";
+    const auto r = dir.ellvor("build '" + f + "' --validate --json '" + json + "'");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(contains(r.out, "5 sites (1 hidden)"));
+    const nlohmann::json g = nlohmann::json::parse(std::ifstream(json));
+    CHECK(g["hidden"] == nlohmann::json::array({nlohmann::json::array({3, 2})}));
+    bool internal = false;
+    for (const auto& v : g["voronoi_vertices"])
+        if (v["face"] == nlohmann::json::array({0, 1, 2})) {
+            internal = true;
+            const double error = v["error"].get<double>();
+            CHECK(std::fabs(v["radius"].get<double>() + 3.2) <= error + 1e-15);
+            CHECK(std::fabs(v["center"][0].get<double>() - 6.0) <= error + 1e-15);
+            CHECK(std::fabs(v["center"][1].get<double>() - 3.2) <= error + 1e-15);
+        }
+    CHECK(internal);
 }
 
 TEST_CASE("build --help", "[cli][build]") {

@@ -62,8 +62,12 @@ TEST_CASE("malformed site files exit 2 with file:line:column and what was expect
         {"cin missing field", "1 2\n", "1:4", "expected 3 fields x y r, found 2", true},
         {"cin radius zero", "0 0 1\n5 5 0\n", "2:5", "radius r must be positive", true},
         {"cin duplicate", "0 0 1\n0 0 1.0\n", "2:1", "duplicate site", true},
-        {"intersecting circles", "1 1 0 0 0\n1 1 0 1 0\n", "2:1", "site 1 intersects site 0 (line 1)"},
-        {"intersecting ellipses (cross)", "# a cross\n3 1 0 0 0\n1 3 0 0 0\n", "3:1", "site 1 intersects site 0"},
+        {"crossing ellipses", "2 1 0 0 0\n2 1 0 1 1\n", "2:1",
+         "site 1 crosses site 0 (line 1): crossing sites must both be circles"},
+        {"boundaries meeting in 4 points (a cross)", "# a cross\n3 1 0 0 0\n1 3 0 0 0\n", "3:1",
+         "site 1 crosses site 0 (line 2): their boundaries meet in 4 points (sites may cross in at most two)"},
+        {"boundaries meeting in 3 points (a tangency and two crossings)", "1 1 0 0 0\n1 3/2 0 0 -1/2\n", "2:1",
+         "their boundaries meet in 3 points"},
     };
     REQUIRE(cases.size() >= 20);
     TempDir dir;
@@ -79,19 +83,28 @@ TEST_CASE("malformed site files exit 2 with file:line:column and what was expect
     }
 }
 
-TEST_CASE("intersecting pairs are all listed by id", "[cli]") {
+TEST_CASE("crossing pairs are all listed by id, the invalid ones with their reason", "[cli]") {
     TempDir dir;
     const std::string file = dir.write("x.ell",
                                        "1 1 0 0 0\n"
                                        "1 1 0 10 0\n"
-                                       "1 1 0 1 0\n"     // meets 0
-                                       "1 1 0 11 0\n");  // meets 1
-    const Run r = run_ellvor(dir, "check " + file);
+                                       "1 1 0 1 0\n"       // crosses 0
+                                       "1 1 0 11 0\n"      // crosses 1
+                                       "3 1 0 30 0\n"      // a cross with the next:
+                                       "1 3 0 30 0\n");    // 4 points
+    const Run r = run_ellvor(dir, "check " + file + " --describe");
     CHECK(r.status == 2);
-    CHECK(r.out.find("intersecting: 0 2\n") != std::string::npos);
-    CHECK(r.out.find("intersecting: 1 3\n") != std::string::npos);
-    CHECK(r.out.find("4 sites (4 circles), 0 hidden, 2 intersecting pairs, INVALID") != std::string::npos);
-    CHECK(r.err.find(":3:1: site 2 intersects site 0 (line 1)") != std::string::npos);
+    CHECK(r.out.find("crossing: 0 2\n") != std::string::npos);
+    CHECK(r.out.find("crossing: 1 3\n") != std::string::npos);
+    CHECK(r.out.find("invalid: 4 5 their boundaries meet in 4 points") != std::string::npos);
+    CHECK(r.out.find("  crossing pairs: 2 (0 x 2, 1 x 3)\n") != std::string::npos);
+    CHECK(r.out.find("6 sites (4 circles), 0 hidden, 2 crossing pairs, 1 invalid pair, INVALID") != std::string::npos);
+    CHECK(r.err.find(":6:1: site 5 crosses site 4 (line 5): their boundaries meet in 4 points") != std::string::npos);
+    // Crossing circles alone are a valid file.
+    const std::string circles = dir.write("c.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 1 0\n1 1 0 11 0\n");
+    const Run ok = run_ellvor(dir, "check " + circles);
+    CHECK(ok.status == 0);
+    CHECK(ok.out.find("4 sites (4 circles), 0 hidden, 2 crossing pairs, OK") != std::string::npos);
 }
 
 TEST_CASE("every predicate command rejects crossing sites at the later site's line", "[cli]") {
@@ -114,8 +127,8 @@ TEST_CASE("every predicate command rejects crossing sites at the later site's li
         INFO(c.command << "\nstdout: " << r.out << "\nstderr: " << r.err);
         CHECK(r.status == 2);
         CHECK(r.out.empty());
-        CHECK(r.err.find(c.command + std::string(".ell:2:1: site 1 intersects site 0 (line 1); sites must be disjoint or nested")) !=
-              std::string::npos);
+        CHECK(r.err.find(c.command + std::string(".ell:2:1: site 1 crosses site 0 (line 1): crossing sites must both be "
+                                                 "circles")) != std::string::npos);
     }
 }
 

@@ -17,6 +17,10 @@
 // open disk touches each circle from outside and so misses all three).
 // The tangency points T_i = V + R (c_i - V) / (R + r_i) decide the
 // orientation: counter-clockwise iff orient(T1, T2, T3) > 0.
+// With signed distances (overlapping circles; `signed_radii`), a root is a
+// Voronoi circle iff R + r_i > 0 for every i: then |V - c_i| - r_i = R, the
+// signed distance, also for R <= 0 (V inside all three), and the T_i above
+// are still the points of the circles nearest to V.
 #pragma once
 
 #include "sites/ellipse.hpp"
@@ -24,6 +28,7 @@
 
 #include <arb.h>
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 #include <string>
@@ -78,7 +83,8 @@ struct Affine {
 }  // namespace detail
 
 // All Voronoi circles of the three circles, at `prec` bits.
-inline Result voronoi_circles(const Circle& c1, const Circle& c2, const Circle& c3, long prec = 4096) {
+inline Result voronoi_circles(const Circle& c1, const Circle& c2, const Circle& c3, long prec = 4096,
+                              bool signed_radii = false) {
     Result out;
     const ellvor::BallArithmetic A{prec};
     // Rows (coefficients of X, Y, R | right-hand side) for i = 2, 3.
@@ -139,7 +145,8 @@ inline Result voronoi_circles(const Circle& c1, const Circle& c2, const Circle& 
         sol.x = at(v[0]);
         sol.y = at(v[1]);
         sol.radius = at(v[2]);
-        const int rs = sol.radius.certain_sign();
+        const Rational smallest = std::min({c1.r, c2.r, c3.r});
+        const int rs = (signed_radii ? A.add(sol.radius, A.q(smallest)) : sol.radius).certain_sign();
         if (rs < 0) continue;
         if (rs == 0) {
             out.certain = false;
@@ -164,9 +171,11 @@ inline Result voronoi_circles(const Circle& c1, const Circle& c2, const Circle& 
 // InCircle oracle: sign of |V - c_q| - R - r_q for the counter-clockwise
 // circle (+1 no conflict, -1 conflict, 0 exactly zero as a ball, 2 undecided);
 // -1 (CGAL's rule) when there is no counter-clockwise circle; 3 when the
-// oracle itself is not certain about the circles.
-inline int incircle(const Circle& c1, const Circle& c2, const Circle& c3, const Circle& q, long prec = 1024) {
-    const Result r = voronoi_circles(c1, c2, c3, prec);
+// oracle itself is not certain about the circles. Q's signed distance is
+// compared with R, never squared, so it serves signed radii too.
+inline int incircle(const Circle& c1, const Circle& c2, const Circle& c3, const Circle& q, long prec = 1024,
+                    bool signed_radii = false) {
+    const Result r = voronoi_circles(c1, c2, c3, prec, signed_radii);
     if (!r.certain || r.ccw_count() > 1) return 3;
     const Solution* s = r.ccw();
     if (!s) return -1;

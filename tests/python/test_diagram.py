@@ -195,3 +195,22 @@ def test_remove_updates_the_arrays_and_brings_hidden_sites_back():
     assert d.removed.tolist() == [0]  # a refused call removes nothing
     d.remove(np.array([2, 3]))
     assert d.removed.tolist() == [0, 2, 3] and len(d.faces) == 0 and d.edges.tolist() == [[1, 4]]
+
+
+def test_crossing_circles_have_internal_voronoi_circles():
+    # Three pairwise crossing circles of radius 10: the face (0, 1, 2) is the
+    # internal circle about (6, 16/5) of signed radius -16/5 (its center lies
+    # 34/5 from each center); a fourth circle inside the third is hidden.
+    sites = [ellvor.Ellipse.circle(0, 0, 10), ellvor.Ellipse.circle(12, 0, 10), ellvor.Ellipse.circle(6, 10, 10),
+             ellvor.Ellipse.circle(6, 4, 3)]
+    d = ellvor.build(sites)
+    assert d.hidden.tolist() == [[3, 2]]
+    assert d.validate() == ""
+    (i,) = [k for k, f in enumerate(d.faces.tolist()) if f == [0, 1, 2]]
+    c = d.vertex(i, bits=100)
+    assert c.radius.lo <= Fraction(-16, 5) <= c.radius.hi
+    assert c.center[0].lo <= 6 <= c.center[0].hi and c.center[1].lo <= Fraction(16, 5) <= c.center[1].hi
+    assert d.vertex_radii[i] < 0
+    # Crossing ellipses that are not circles are still refused, with the reason.
+    with pytest.raises(ellvor.InputError, match="crossing sites must both be circles"):
+        ellvor.build([ellvor.Ellipse(2, 1, 0, 0, 0), ellvor.Ellipse(2, 1, 0, 1, 1)])

@@ -73,7 +73,8 @@ def test_crossing_sites_in_a_file_point_at_their_lines(cli, write_sites):
     e = err.value
     assert "ellvor: " + str(e) + "\n" == stderr
     assert e.sites == (6, 7) and (e.filename, e.lineno, e.column) == (str(path), 9, 1)
-    assert e.reason == "site 7 intersects site 6 (line 8); sites must be disjoint or nested"
+    assert e.reason == ("site 7 crosses site 6 (line 8): their boundaries meet in 4 points "
+                        "(sites may cross in at most two)")
     # Read first, then built: the same error, with the lines.
     with pytest.raises(ellvor.InputError) as again:
         ellvor.build(ellvor.read_sites(path))
@@ -85,7 +86,7 @@ def test_crossing_sites_in_a_list_carry_the_pair(write_sites):
     with pytest.raises(ellvor.InputError) as err:
         ellvor.build(sites)
     assert err.value.sites == (6, 7) and err.value.filename is None and err.value.lineno is None
-    assert "sites 6 and 7 intersect" in str(err.value)
+    assert "sites 6 and 7 cross: their boundaries meet in 4 points" in str(err.value)
 
 
 def test_predicates_refuse_crossing_sites():

@@ -289,14 +289,15 @@ TEST_CASE("InputError keeps its location, reason and site pair as fields", "[sit
     REQUIRE(dup.sites());
     CHECK(*dup.sites() == InputError::SitePair{0, 2});
     CHECK(dup.line() == 3);
-    const IntersectingSites crossing(3, 7);
+    const IntersectingSites crossing(3, 7, "their boundaries meet in 4 points");
     CHECK(!crossing.has_location());
     CHECK(crossing.file().empty());
     CHECK(*crossing.sites() == InputError::SitePair{3, 7});
     CHECK(crossing.reason() == crossing.what());
+    CHECK(crossing.why() == "their boundaries meet in 4 points");
     SiteFile file{"c.ell", {Ellipse::circle(0, 0, 1), Ellipse::circle(5, 0, 1)}, {2, 4}};
-    const InputError e = crossing_sites_error(file, 1, 0);
-    CHECK(std::string(e.what()) == "c.ell:4:1: site 1 intersects site 0 (line 2); sites must be disjoint or nested");
+    const InputError e = crossing_sites_error(file, 1, 0, "why");
+    CHECK(std::string(e.what()) == "c.ell:4:1: site 1 crosses site 0 (line 2): why");
     CHECK(*e.sites() == InputError::SitePair{0, 1});
 }
 
