@@ -4,6 +4,8 @@
 // brute-force nearest point (dense samples on each ellipse, then a local
 // golden-section refinement): every point is equidistant from its two sites
 // within the stated tolerance and no third site is closer by more than it.
+// Crossing circles: the bisector runs through the lens (negative signed
+// distances) and through both crossing points.
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/svg_writer.hpp"
@@ -15,6 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -229,6 +232,35 @@ void check_geometry(const Built& b) {
     CHECK(worst_side <= 1e-3 * tol);
 }
 
+// Circle sites in doubles (exact for the integer data of these tests).
+struct Disk {
+    double x, y, r;
+};
+
+double signed_distance(const Disk& c, double x, double y) { return std::hypot(x - c.x, y - c.y) - c.r; }
+
+// The two points where the boundaries of crossing circles meet: on the line
+// of the centers at distance l from c's, and h to either side.
+std::array<std::array<double, 2>, 2> crossing_points(const Disk& c, const Disk& d) {
+    const double dx = d.x - c.x, dy = d.y - c.y, len = std::hypot(dx, dy);
+    const double l = (len * len + c.r * c.r - d.r * d.r) / (2 * len), h = std::sqrt(c.r * c.r - l * l);
+    const double mx = c.x + l * dx / len, my = c.y + l * dy / len;
+    return {{{mx - h * dy / len, my + h * dx / len}, {mx + h * dy / len, my - h * dx / len}}};
+}
+
+double segment_distance(const BisectorPoint& a, const BisectorPoint& b, double x, double y) {
+    const double ux = b.x - a.x, uy = b.y - a.y, len2 = ux * ux + uy * uy;
+    const double t = len2 > 0 ? std::clamp(((x - a.x) * ux + (y - a.y) * uy) / len2, 0.0, 1.0) : 0;
+    return std::hypot(a.x + t * ux - x, a.y + t * uy - y);
+}
+
+// Distance from (x, y) to the polyline.
+double polyline_distance(const std::vector<BisectorPoint>& pts, double x, double y) {
+    double best = INFINITY;
+    for (std::size_t k = 1; k < pts.size(); ++k) best = std::min(best, segment_distance(pts[k - 1], pts[k], x, y));
+    return best;
+}
+
 }  // namespace
 
 TEST_CASE("svg: the bundled example is drawn completely", "[graph][svg]") {
@@ -315,4 +347,103 @@ TEST_CASE("svg: ellvor build --svg writes the drawing; --svg-ids needs --svg", "
     CHECK(bad.status == 2);
     const auto help = dir.ellvor("build --help");
     CHECK(ellvor::test::contains(help.out, "0.5% of the drawing box"));
+}
+
+TEST_CASE("svg: nearest points and signed distances inside an ellipse", "[svg]") {
+    // Inside points, many inside the evolute (where the normals of three
+    // boundary points or more pass through them), on the axes and at the
+    // center; both a > b and a < b; against the brute force.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const std::vector<Ellipse> shapes = {Ellipse(Rational(5), Rational(1), Rational(1, 3), Rational(2), Rational(-1)),
+                                         Ellipse(Rational(1), Rational(3), Rational(0), Rational(0), Rational(0)),
+                                         Ellipse(Rational(2), Rational(2), Rational(0), Rational(1), Rational(1)),
+                                         Ellipse(Rational(7, 2), Rational(3), Rational(-2), Rational(0), Rational(4))};
+    for (const Ellipse& site : shapes) {
+        const BruteForce brute(site);
+        const EllipseShape& e = brute.e;
+        std::vector<std::array<double, 2>> local = {{0, 0}, {0.5 * e.a, 0}, {0.99 * e.a, 0}, {0, 0.5 * e.b}, {0, 0.99 * e.b},
+                                                    {0.3 * e.a, 1e-9 * e.b}, {1e-9 * e.a, 0.3 * e.b}};
+        while (local.size() < 300) {
+            const double u = unit(rng), v = unit(rng);
+            if (u * u + v * v < 1) local.push_back({u * e.a, v * e.b});
+        }
+        for (const auto& [u, v] : local) {
+            const double x = e.xc + u * e.c - v * e.s, y = e.yc + u * e.s + v * e.c;
+            INFO(site.str() << " at (" << x << ", " << y << ")");
+            const double d = e.signed_distance(x, y);
+            CHECK(d < 0);
+            CHECK(d == Approx(brute.distance(x, y)).margin(1e-9 * e.a));
+        }
+        // A foot point stays the nearest point down the inward normal up to
+        // the medial axis, not beyond it (unless the site is a circle: there
+        // the axis is the center).
+        for (double theta : {0.0, 0.3, 1.2, 2.0, 4.5}) {
+            double px, py, nx, ny;
+            e.point(theta, px, py);
+            e.normal(theta, nx, ny);
+            const double m = e.medial_depth(theta);
+            INFO(site.str() << " theta " << theta);
+            CHECK(e.signed_distance(px - 0.999 * m * nx, py - 0.999 * m * ny) == Approx(-0.999 * m).margin(1e-9 * e.a));
+            if (!site.is_circle())
+                CHECK(e.signed_distance(px - 1.01 * m * nx, py - 1.01 * m * ny) > -1.01 * m + 1e-6 * e.a);
+        }
+    }
+}
+
+TEST_CASE("svg: the bisector of two crossing circles runs through their crossing points", "[svg]") {
+    TraceOptions o;
+    o.box = {-3, -4, 6, 4};
+    o.tolerance = 0.04;
+    // Equal radii: the line x = 3/2 through (3/2, +-sqrt(7)/2); inside both
+    // circles (|y| < sqrt(7)/2) the signed distance rho is negative.
+    {
+        const Disk c = {0, 0, 2}, d = {3, 0, 2};
+        const EllipseShape p = EllipseShape::of(Ellipse::circle(Rational(0), Rational(0), Rational(2)));
+        const EllipseShape q = EllipseShape::of(Ellipse::circle(Rational(3), Rational(0), Rational(2)));
+        const auto pts = trace_bisector(p, q, std::nullopt, std::nullopt, o);
+        REQUIRE(pts.size() > 10);
+        CHECK(pts.front().y > 4);
+        CHECK(pts.back().y < -4);
+        std::size_t inside = 0;
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+            const BisectorPoint& pt = pts[k];
+            INFO("point " << k << " (" << pt.x << ", " << pt.y << ")");
+            CHECK(pt.x == Approx(1.5).margin(1e-9));
+            CHECK(pt.rho == Approx(signed_distance(c, pt.x, pt.y)).margin(1e-9));
+            CHECK(pt.rho == Approx(signed_distance(d, pt.x, pt.y)).margin(1e-9));
+            CHECK((pt.rho < 0) == (std::fabs(pt.y) < std::sqrt(7.0) / 2));
+            if (pt.rho < 0) ++inside;
+            if (k > 0) CHECK(pts[k].y < pts[k - 1].y);       // the tangency angle on p decreases
+            if (k > 0) CHECK(pts[k].theta < pts[k - 1].theta);
+        }
+        CHECK(inside > 10);
+        for (const auto& [x, y] : crossing_points(c, d)) CHECK(polyline_distance(pts, x, y) <= 1e-2 * o.tolerance);
+        // Between two given angles, one outside q and one inside: from
+        // (3/2, 2) down to the lens's middle (3/2, 0), rho = -1/2.
+        const auto part = trace_bisector(p, q, std::atan2(2.0, 1.5), 0.0, o);
+        REQUIRE(part.size() >= 2);
+        CHECK(part.front().y == Approx(2).margin(1e-9));
+        CHECK(part.back().y == Approx(0).margin(1e-9));
+        CHECK(part.back().rho == Approx(-0.5).margin(1e-9));
+    }
+    // Different radii, a deep crossing: a hyperbola branch, |V| - |V - D| = 1.
+    {
+        const Disk c = {0, 0, 3}, d = {2, 1, 2};
+        const EllipseShape p = EllipseShape::of(Ellipse::circle(Rational(0), Rational(0), Rational(3)));
+        const EllipseShape q = EllipseShape::of(Ellipse::circle(Rational(2), Rational(1), Rational(2)));
+        for (bool swap : {false, true}) {
+            const auto pts = swap ? trace_bisector(q, p, std::nullopt, std::nullopt, o)
+                                  : trace_bisector(p, q, std::nullopt, std::nullopt, o);
+            REQUIRE(pts.size() > 10);
+            double lowest = 0;
+            for (const BisectorPoint& pt : pts) {
+                CHECK(signed_distance(c, pt.x, pt.y) == Approx(signed_distance(d, pt.x, pt.y)).margin(1e-9));
+                CHECK(pt.rho == Approx(signed_distance(c, pt.x, pt.y)).margin(1e-9));
+                lowest = std::min(lowest, pt.rho);
+            }
+            CHECK(lowest < -0.5);
+            for (const auto& [x, y] : crossing_points(c, d)) CHECK(polyline_distance(pts, x, y) <= 1e-2 * o.tolerance);
+        }
+    }
 }
