@@ -1,11 +1,12 @@
 // The SVG drawing of the diagram: structure of the document (balanced tags,
-// one root, one <ellipse> per site, one <path> per Voronoi edge, legend
-// counts), and the geometry of the traced bisector arcs, checked against a
-// brute-force nearest point (dense samples on each ellipse, then a local
-// golden-section refinement): every point is equidistant from its two sites
-// within the stated tolerance and no third site is closer by more than it.
-// Crossing circles: the bisector runs through the lens (negative signed
-// distances) and through both crossing points.
+// one root, one <ellipse> per site, one <path> per Voronoi edge, one shaded
+// lens per crossing pair, legend counts), and the geometry of the traced
+// bisector arcs, checked against a brute-force nearest point (dense samples on
+// each ellipse, then a local golden-section refinement): every point is
+// equidistant in signed distance from its two sites within the stated
+// tolerance and no third site is closer by more than it. Crossing circles:
+// the same, and the edge of a crossing pair runs through the crossing points
+// that no other site covers.
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/svg_writer.hpp"
@@ -154,9 +155,9 @@ void check_document(const Built& b) {
     const auto faces = b.graph.faces();
     const auto hidden = b.graph.hidden();
     // One ellipse element per site, the hidden ones dashed.
-    CHECK(count(svg, "<ellipse ") == b.sites.size());
+    CHECK(count(svg, "<ellipse data-site=") == b.sites.size());
     std::size_t dashed = 0;
-    for (std::size_t i = svg.find("<ellipse "); i != std::string::npos; i = svg.find("<ellipse ", i + 1))
+    for (std::size_t i = svg.find("<ellipse data-site="); i != std::string::npos; i = svg.find("<ellipse data-site=", i + 1))
         if (svg.substr(i, svg.find('>', i) - i).find("stroke-dasharray") != std::string::npos) ++dashed;
     CHECK(dashed == hidden.size());
     // One path per Voronoi edge drawn; every Voronoi edge is drawn (one per
@@ -176,6 +177,12 @@ void check_document(const Built& b) {
     CHECK(legend.find(">hidden: " + std::to_string(hidden.size()) + "<") != std::string::npos);
     CHECK(legend.find(">Delaunay edges: " + std::to_string(edges.size()) + "<") != std::string::npos);
     CHECK(legend.find(">Voronoi vertices: " + std::to_string(faces.size()) + "<") != std::string::npos);
+    // One shaded lens per crossing pair (the ellipses of the overlap group),
+    // and a legend row only when there are any.
+    const long overlaps = attribute(legend, "data-overlaps");
+    CHECK(long(count(svg, "<ellipse data-sites=")) == overlaps);
+    CHECK((svg.find("<g id=\"overlaps\"") != std::string::npos) == (overlaps > 0));
+    CHECK((legend.find(">overlapping pairs: " + std::to_string(overlaps) + "<") != std::string::npos) == (overlaps > 0));
     // A title, and the tolerance stated in a comment.
     CHECK(count(svg, "<title>") == 1);
     CHECK(svg.find("tolerance") < svg.find("<svg"));
@@ -237,7 +244,17 @@ struct Disk {
     double x, y, r;
 };
 
+Disk disk(const Ellipse& e) {
+    REQUIRE(e.is_circle());
+    return {e.xc().to_double(), e.yc().to_double(), e.a().to_double()};
+}
+
 double signed_distance(const Disk& c, double x, double y) { return std::hypot(x - c.x, y - c.y) - c.r; }
+
+bool cross(const Disk& c, const Disk& d) {
+    const double d2 = (c.x - d.x) * (c.x - d.x) + (c.y - d.y) * (c.y - d.y);
+    return d2 < (c.r + d.r) * (c.r + d.r) && d2 > (c.r - d.r) * (c.r - d.r);
+}
 
 // The two points where the boundaries of crossing circles meet: on the line
 // of the centers at distance l from c's, and h to either side.
@@ -259,6 +276,55 @@ double polyline_distance(const std::vector<BisectorPoint>& pts, double x, double
     double best = INFINITY;
     for (std::size_t k = 1; k < pts.size(); ++k) best = std::min(best, segment_distance(pts[k - 1], pts[k], x, y));
     return best;
+}
+
+// For a drawing of circles: the overlap count is the number of crossing pairs
+// of visible sites; every crossing point of such a pair that no other visible
+// site covers (nor comes within the tolerance of) is on the Voronoi edge of
+// the pair, so a traced arc of the pair passes through it. Returns the number
+// of crossing points so checked.
+std::size_t check_crossings(const Built& b) {
+    const double tol = b.diagram.tolerance;
+    std::set<SiteId> hidden;
+    for (const auto& h : b.graph.hidden()) hidden.insert(h.first);
+    std::vector<Disk> disks;
+    for (const Ellipse& e : b.sites) disks.push_back(disk(e));
+    long pairs = 0;
+    std::size_t checked = 0;
+    for (SiteId p = 0; p < disks.size(); ++p)
+        for (SiteId q = p + 1; q < disks.size(); ++q) {
+            if (hidden.count(p) || hidden.count(q) || !cross(disks[p], disks[q])) continue;
+            ++pairs;
+            for (const auto& [x, y] : crossing_points(disks[p], disks[q])) {
+                bool covered = false;
+                for (SiteId s = 0; s < disks.size(); ++s)
+                    if (s != p && s != q && !hidden.count(s) && signed_distance(disks[s], x, y) <= tol) covered = true;
+                if (covered) continue;
+                double nearest = INFINITY;
+                for (const VoronoiEdgeArc& arc : b.diagram.arcs)
+                    if (std::set<SiteId>{arc.p, arc.q} == std::set<SiteId>{p, q})
+                        nearest = std::min(nearest, polyline_distance(arc.points, x, y));
+                INFO("sites " << p << " " << q << " crossing point (" << x << ", " << y << ")");
+                CHECK(nearest <= 1e-2 * tol);
+                ++checked;
+            }
+        }
+    CHECK(attribute(b.svg.substr(b.svg.find("<g id=\"legend\"")), "data-overlaps") == pairs);
+    return checked;
+}
+
+// Overlapping circles with integer data: centers in [0, 60]^2, radii 3 to 12
+// (crossing, nested and disjoint pairs; no two identical).
+std::vector<Ellipse> overlapping_circles(std::uint64_t seed, int n) {
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<long> coordinate(0, 60), radius(3, 12);
+    std::vector<Ellipse> sites;
+    std::set<std::array<long, 3>> seen;
+    while (int(sites.size()) < n) {
+        const std::array<long, 3> c = {coordinate(rng), coordinate(rng), radius(rng)};
+        if (seen.insert(c).second) sites.push_back(Ellipse::circle(Rational(c[0]), Rational(c[1]), Rational(c[2])));
+    }
+    return sites;
 }
 
 }  // namespace
@@ -446,4 +512,73 @@ TEST_CASE("svg: the bisector of two crossing circles runs through their crossing
             for (const auto& [x, y] : crossing_points(c, d)) CHECK(polyline_distance(pts, x, y) <= 1e-2 * o.tolerance);
         }
     }
+}
+
+TEST_CASE("svg: crossing circles: traced edges on their bisectors through the crossing points, overlaps shaded",
+          "[graph][svg][overlap]") {
+    // Two pairs crossing, a third circle through both lenses: the common part
+    // of 0, 1, 2 holds an internal Voronoi vertex (negative radius).
+    {
+        std::vector<Ellipse> sites = {Ellipse::circle(Rational(0), Rational(0), Rational(2)),
+                                      Ellipse::circle(Rational(3), Rational(0), Rational(2)),
+                                      Ellipse::circle(Rational(3, 2), Rational(5, 2), Rational(3, 2)),
+                                      Ellipse::circle(Rational(7), Rational(1), Rational(1)),
+                                      Ellipse::circle(Rational(-4), Rational(3), Rational(1))};
+        Built b(sites);
+        check_document(b);
+        check_geometry(b);
+        CHECK(check_crossings(b) == 3);  // of each pair's two crossing points one is in the third circle
+        CHECK(attribute(b.svg, "data-overlaps") == 3);
+        CHECK(count(b.svg, "<clipPath id=\"site-") == 2);
+        bool internal = false;
+        for (const VoronoiVertexPoint& v : b.diagram.vertices)
+            if (v.radius < 0) {
+                internal = true;
+                CHECK(v.x == Approx(1.5));
+                CHECK(v.y == Approx(1.125));
+                CHECK(v.radius == Approx(-0.125));
+            }
+        CHECK(internal);
+    }
+    // Two crossing circles alone (and one hidden in the first): one bisector,
+    // unbounded both ways, through the lens.
+    {
+        Built b({Ellipse::circle(Rational(0), Rational(0), Rational(3)), Ellipse::circle(Rational(2), Rational(1), Rational(2)),
+                 Ellipse::circle(Rational(-1), Rational(0), Rational(1))});
+        check_document(b);
+        REQUIRE(b.diagram.arcs.size() == 1);
+        CHECK(b.diagram.arcs[0].from_infinity);
+        CHECK(b.diagram.arcs[0].to_infinity);
+        check_geometry(b);
+        CHECK(check_crossings(b) == 2);
+    }
+    // Random sets.
+    std::size_t checked = 0, negative = 0, internal = 0;
+    for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+        Built b(overlapping_circles(seed, 14), false);
+        INFO("seed " << seed);
+        check_document(b);
+        check_geometry(b);
+        checked += check_crossings(b);
+        for (const VoronoiEdgeArc& arc : b.diagram.arcs)
+            for (const BisectorPoint& pt : arc.points) negative += pt.rho < 0;
+        for (const VoronoiVertexPoint& v : b.diagram.vertices) internal += v.radius < 0;
+    }
+    // (68 crossing points, 1552 points inside both sites, 6 internal vertices.)
+    CHECK(checked >= 40);
+    CHECK(negative >= 500);
+    CHECK(internal >= 2);
+}
+
+TEST_CASE("svg: a drawing without crossing sites has no overlap shading", "[graph][svg][overlap]") {
+    GeneratorOptions g;
+    g.kind = SiteKind::circles;
+    g.count = 10;
+    g.seed = 5;
+    g.nested_fraction = Rational(1, 5);
+    Built b(generate_sites(g), false);
+    check_document(b);
+    CHECK(attribute(b.svg, "data-overlaps") == 0);
+    CHECK(b.svg.find("<g id=\"overlaps\"") == std::string::npos);
+    CHECK(count(b.svg, "<clipPath ") == 1);  // the drawing box only
 }
