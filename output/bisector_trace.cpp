@@ -1,7 +1,9 @@
 #include "output/bisector_trace.hpp"
 
+#include "predicates/circle_predicates.hpp"
 #include "subdivision/nearest_point.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +21,56 @@ double wrap(double x) {  // into [0, 2 pi)
     if (x < 0) x += kTwoPi;
     if (x >= kTwoPi) x = 0;
     return x;
+}
+
+// The angle in [0, pi/2] of the point (a cos t, b sin t) nearest to (X, Y),
+// a point inside with X, Y >= 0 and a >= b. At the nearest point P the
+// normal passes through (X, Y): (X, Y) - P = lambda (P_x / a^2, P_y / b^2),
+// so with s = lambda + b^2, cos t = a X / (s + a^2 - b^2) and sin t = b Y / s,
+// and s is the root of F(s) = cos^2 t + sin^2 t - 1. F decreases on s > 0,
+// where its one root is the nearest point (Eberly, "Distance from a point to
+// an ellipse"); F(b Y) >= 0 and, the point being inside, F(b^2) < 0. F is
+// convex, so Newton from the left stays in the bracket; bisection guards it.
+double inner_nearest_angle(double a, double b, double X, double Y) {
+    const double e = (a - b) * (a + b), ax = a * X, by = b * Y;
+    if (Y == 0) {
+        // On the major axis: the vertex, or off the medial axis's segment
+        // |x| < e / a the point above it whose normal passes through (X, 0).
+        return ax >= e ? 0 : std::acos(ax / e);
+    }
+    auto F = [&](double s, double* slope) {
+        const double cx = ax / (s + e), sy = by / s;
+        if (slope) *slope = -2 * (cx * cx / (s + e) + sy * sy / s);
+        return cx * cx + sy * sy - 1;
+    };
+    double lo = by, hi = b * b, s = lo;
+    for (int it = 0; it < 200; ++it) {
+        double slope;
+        const double v = F(s, &slope);
+        if (v == 0) break;
+        (v > 0 ? lo : hi) = s;
+        double next = slope < 0 ? s - v / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const bool done = std::fabs(next - s) <= 1e-15 * s || hi - lo <= 1e-15 * hi;
+        s = next;
+        if (done) break;
+    }
+    return std::atan2(by / s, ax / (s + e));
+}
+
+// x within an ulp or within `resolution` (an absolute error far below the
+// drawing's), by a + b sqrt(d) in Arb balls whose precision grows until the
+// two terms' cancellation is overcome; false past the default cap (the vertex
+// then counts as not certified).
+bool to_double(const QuadraticNumber& x, double resolution, double& out) {
+    for (long prec = precision::kStart; prec <= precision::kDefaultCap; prec *= 2) {
+        const Ball b = x.to_ball(prec);
+        if (b.radius_double() <= std::max(resolution, 0x1p-53 * std::fabs(b.mid_double()))) {
+            out = b.mid_double();
+            return true;
+        }
+    }
+    return false;
 }
 
 }  // namespace
@@ -58,26 +110,34 @@ bool EllipseShape::inside(double x, double y) const {
 double EllipseShape::nearest_angle(double x, double y) const {
     const double dx = x - xc, dy = y - yc;
     const double lx = dx * c + dy * s, ly = -dx * s + dy * c;
-    // Fold into the first quadrant, where the nearest point of a point outside
-    // is the unique zero of g (the derivative of half the squared distance,
-    // up to sign): g(0) = -b Y <= 0, g(pi/2) = a X >= 0.
+    // Fold into the first quadrant, which holds a nearest point.
     const double X = std::fabs(lx), Y = std::fabs(ly);
-    auto g = [&](double t) { return a * X * std::sin(t) - b * Y * std::cos(t) - (a * a - b * b) * std::sin(t) * std::cos(t); };
-    double lo = 0, hi = kPi / 2;
-    double t = approximate_nearest_angle(a, b, X, Y);  // the library's guess, kept when it is in the quadrant
-    if (!(t > lo && t < hi)) t = std::atan2(a * Y, b * X);
-    for (int it = 0; it < 100; ++it) {
-        const double gt = g(t);
-        if (gt == 0) break;
-        if (gt < 0) lo = t; else hi = t;
-        const double dg = a * X * std::cos(t) + b * Y * std::sin(t) - (a * a - b * b) * (std::cos(t) * std::cos(t) - std::sin(t) * std::sin(t));
-        double next = dg > 0 ? t - gt / dg : 0.5 * (lo + hi);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        if (std::fabs(next - t) < 1e-15 || hi - lo < 1e-15) {
+    double t;
+    if (inside(x, y)) {
+        // g below can have three zeros there (inside the evolute); the
+        // formulation of inner_nearest_angle has one.
+        t = a >= b ? inner_nearest_angle(a, b, X, Y) : kPi / 2 - inner_nearest_angle(b, a, Y, X);
+    } else {
+        // The nearest point of a point outside is the unique zero of g (the
+        // derivative of half the squared distance, up to sign): g(0) = -b Y <= 0,
+        // g(pi/2) = a X >= 0.
+        auto g = [&](double t) { return a * X * std::sin(t) - b * Y * std::cos(t) - (a * a - b * b) * std::sin(t) * std::cos(t); };
+        double lo = 0, hi = kPi / 2;
+        t = approximate_nearest_angle(a, b, X, Y);  // the library's guess, kept when it is in the quadrant
+        if (!(t > lo && t < hi)) t = std::atan2(a * Y, b * X);
+        for (int it = 0; it < 100; ++it) {
+            const double gt = g(t);
+            if (gt == 0) break;
+            if (gt < 0) lo = t; else hi = t;
+            const double dg = a * X * std::cos(t) + b * Y * std::sin(t) - (a * a - b * b) * (std::cos(t) * std::cos(t) - std::sin(t) * std::sin(t));
+            double next = dg > 0 ? t - gt / dg : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (std::fabs(next - t) < 1e-15 || hi - lo < 1e-15) {
+                t = next;
+                break;
+            }
             t = next;
-            break;
         }
-        t = next;
     }
     // Unfold.
     return std::atan2(ly < 0 ? -std::sin(t) : std::sin(t), lx < 0 ? -std::cos(t) : std::cos(t));
@@ -88,6 +148,10 @@ double EllipseShape::signed_distance(double x, double y) const {
     point(nearest_angle(x, y), px, py);
     const double d = std::hypot(x - px, y - py);
     return inside(x, y) ? -d : d;
+}
+
+double EllipseShape::medial_depth(double theta) const {
+    return std::min(a, b) / std::max(a, b) * std::hypot(b * std::cos(theta), a * std::sin(theta));
 }
 
 double EllipseShape::support(double nx, double ny) const {
@@ -120,7 +184,7 @@ public:
         return q_.support(nx, ny) - p_.support(nx, ny);
     }
 
-    // Finds the ends of A; false if A looks empty (sites not disjoint).
+    // Finds the ends of A; false if A looks empty (q inside p).
     bool find_arc() {
         const int n = 720;
         double best = -std::numeric_limits<double>::infinity(), best_t = 0;
@@ -151,32 +215,37 @@ public:
     double length() const { return length_; }
     double inner_u() const { return u_of(inner_); }
 
-    // The bisector point at u (angle alpha_cw + u on p); empty if rho > cap.
+    // The bisector point at u (angle alpha_cw + u on p); empty if rho > cap,
+    // or if the point would lie beyond p's medial axis (crossing ellipses only).
     std::optional<BisectorPoint> at(double u) const {
         const double theta = alpha_cw_ + u;
         double px, py, nx, ny;
         p_.point(theta, px, py);
         p_.normal(theta, nx, ny);
-        // f(rho) = d(V(rho), q) - rho, nonincreasing, f(0) > 0.
+        // f(rho) = delta(V(rho), q) - rho, nonincreasing.
         auto f = [&](double rho, double* slope) {
             const double vx = px + rho * nx, vy = py + rho * ny;
-            if (q_.inside(vx, vy)) {
-                if (slope) *slope = 0;
-                return -rho - 1e-300;
-            }
             double qx, qy;
             q_.point(q_.nearest_angle(vx, vy), qx, qy);
-            const double d = std::hypot(vx - qx, vy - qy);
-            if (slope) *slope = d > 0 ? ((vx - qx) * nx + (vy - qy) * ny) / d - 1 : 0;
+            const double d = q_.inside(vx, vy) ? -std::hypot(vx - qx, vy - qy) : std::hypot(vx - qx, vy - qy);
+            // The gradient of delta is q's outward normal at the nearest point, (V - Q) / delta.
+            if (slope) *slope = d != 0 ? ((vx - qx) * nx + (vy - qy) * ny) / d - 1 : 0;
             return d - rho;
         };
         const double f0 = f(0, nullptr);
-        if (!(f0 > 0)) return BisectorPoint{px, py, theta, 0};
-        double lo = 0, hi = f0;
-        while (f(hi, nullptr) > 0) {
-            lo = hi;
-            hi *= 2;
-            if (hi > cap_) return std::nullopt;
+        double lo = 0, hi = 0;
+        if (f0 > 0) {  // P(theta) outside q: rho > 0
+            hi = f0;
+            while (f(hi, nullptr) > 0) {
+                lo = hi;
+                hi *= 2;
+                if (hi > cap_) return std::nullopt;
+            }
+        } else if (f0 < 0) {  // P(theta) inside q: rho < 0, V in both sites
+            lo = -p_.medial_depth(theta);
+            if (f(lo, nullptr) < 0) return std::nullopt;
+        } else {
+            return BisectorPoint{px, py, theta, 0};
         }
         double rho = 0.5 * (lo + hi);
         for (int it = 0; it < 200; ++it) {
@@ -186,7 +255,8 @@ public:
             (v > 0 ? lo : hi) = rho;
             double next = slope < 0 ? rho - v / slope : 0.5 * (lo + hi);
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            const bool done = std::fabs(next - rho) <= 1e-14 * (1 + rho) || hi - lo <= 1e-14 * (1 + hi);
+            const double scale = 1 + std::max(std::fabs(lo), std::fabs(hi));
+            const bool done = std::fabs(next - rho) <= 1e-14 * scale || hi - lo <= 1e-14 * scale;
             rho = next;
             if (done) break;
         }
@@ -371,19 +441,29 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
     }
 
     // The Voronoi vertex of every finite face (index into d.vertices).
+    const double resolution = 1e-16 * d.box.size();
     std::map<FaceIndex, std::size_t> vertex_of_face;
     for (FaceIndex f : tds.faces()) {
         if (tds.is_infinite_face(f)) continue;
         const Triangulation::Face& F = tds.face(f);
         VoronoiVertexPoint v;
         for (int k = 0; k < 3; ++k) v.face[k] = tds.vertex(F.v[k]).site;
-        VoronoiCircleSolver solver(sites[v.face[0]], sites[v.face[1]], sites[v.face[2]]);
-        if (solver.refine(53)) {
-            const VoronoiCircleEnclosure& c = solver.enclosure();
-            v.certified = true;
-            v.x = c.center_x.mid_double();
-            v.y = c.center_y.mid_double();
-            v.radius = c.radius.mid_double();
+        const Ellipse &e1 = sites[v.face[0]], &e2 = sites[v.face[1]], &e3 = sites[v.face[2]];
+        if (e1.is_circle() && e2.is_circle() && e3.is_circle()) {
+            // The exact closed form; unlike the solver's certificate (rho > 0)
+            // it has the internal circles of crossing circles too.
+            const CircleVoronoiVertex c(e1, e2, e3);
+            v.certified = c.exists() && to_double(c.center_x(), resolution, v.x) &&
+                          to_double(c.center_y(), resolution, v.y) && to_double(c.radius(), resolution, v.radius);
+        } else {
+            VoronoiCircleSolver solver(e1, e2, e3);
+            if (solver.refine(53)) {
+                const VoronoiCircleEnclosure& c = solver.enclosure();
+                v.certified = true;
+                v.x = c.center_x.mid_double();
+                v.y = c.center_y.mid_double();
+                v.radius = c.radius.mid_double();
+            }
         }
         vertex_of_face[f] = d.vertices.size();
         d.vertices.push_back(v);

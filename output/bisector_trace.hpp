@@ -1,16 +1,29 @@
 // Floating-point tracing of the bisector of two ellipses, for drawing only
 // (the SVG output). Nothing here decides anything about the graph: the
 // combinatorics come from DelaunayGraph, the Voronoi vertices from the
-// certified Voronoi circles; this only joins them by polylines.
+// certified Voronoi circles (the exact closed form for three circles); this
+// only joins them by polylines.
 //
-// The bisector of disjoint ellipses Ep, Eq is parametrized by the angle theta
-// of the tangency point on Ep: the center of the circle tangent to Ep at
-// P(theta) from outside is V = P(theta) + rho n(theta) (n the outward unit
-// normal), and rho solves d(V(rho), Eq) = rho. f(rho) = d(V(rho), Eq) - rho is
-// nonincreasing with f(0) > 0, so rho is found by a safeguarded Newton /
-// bisection; a root exists iff h_q(n) > h_p(n) (h the support function), i.e.
-// for theta in an open arc A of Ep whose two ends are the directions of the
-// external bitangents (the two Voronoi vertices at infinity).
+// The bisector of two sites Ep, Eq (disjoint, or crossing circles) is the
+// locus of equal signed distance delta (the distance to the boundary,
+// negative inside). It is parametrized by the angle theta of the foot point
+// on Ep: V = P(theta) + rho n(theta) (n the outward unit normal) has
+// delta(V, Ep) = rho for every rho >= 0, and for rho < 0 down to minus the
+// depth of Ep's medial axis below P(theta) (EllipseShape::medial_depth; r for
+// a circle), and rho solves delta(V(rho), Eq) = rho. f(rho) = delta(V(rho),
+// Eq) - rho is nonincreasing (delta is 1-Lipschitz), so rho is found by a
+// safeguarded Newton / bisection: on [0, infinity) when P(theta) is outside
+// Eq (f(0) > 0), on [-medial_depth, 0] when it is inside (f(0) < 0: V lies in
+// both sites, the equal-depth part of the bisector through the lens). A root
+// exists iff h_q(n) > h_p(n) (h the support function), i.e. for theta in an
+// open arc A of Ep whose two ends are the directions of the external
+// bitangents (the two Voronoi vertices at infinity); the arc of Ep inside Eq
+// lies within A, and its ends, the crossing points, have rho = 0, so a traced
+// Voronoi edge passes through them continuously. (Crossing ellipses that are
+// not circles, which the graph still rejects, can do worse: h_q(n) > h_p(n)
+// on several arcs, of which the tracer follows the one around the largest
+// difference; and where the bisector crosses Ep's medial axis inside the lens
+// a piece of it has no foot point on Ep, which the tracer bridges by a chord.)
 //
 // Orientation (checked by the tests): for the Delaunay edge p -> q with the
 // face f on its left and g on its right, the dual Voronoi edge runs from the
@@ -38,12 +51,17 @@ struct EllipseShape {
     void normal(double theta, double& nx, double& ny) const;
     // Is (x, y) strictly inside?
     bool inside(double x, double y) const;
-    // Angle of the boundary point nearest to (x, y) (a point outside or on the
-    // boundary; for a point inside, a boundary point with a normal through it).
+    // Angle of the boundary point nearest to (x, y), inside or outside (of
+    // two equally near points, one of them).
     double nearest_angle(double x, double y) const;
-    // Distance from (x, y) to the ellipse, negative inside (for inside points
-    // only the sign is meaningful here).
+    // Distance from (x, y) to the boundary, negative inside.
     double signed_distance(double x, double y) const;
+    // How far the inward normal at theta runs before it meets the medial axis
+    // (the segment of the major axis between the centers of curvature of its
+    // vertices): the boundary point at theta is the nearest one of every point
+    // of the normal up to that depth. min(a, b) / max(a, b) times the length of
+    // (b cos theta, a sin theta); r for a circle.
+    double medial_depth(double theta) const;
     // Support function max over the ellipse of (nx, ny) . point.
     double support(double nx, double ny) const;
     // Axis-aligned half extents.
@@ -65,7 +83,7 @@ struct DrawingBox {
 struct BisectorPoint {
     double x = 0, y = 0;
     double theta = 0;  // tangency angle on the first site
-    double rho = 0;    // distance to both sites
+    double rho = 0;    // signed distance to both sites (negative inside both)
 };
 
 struct TraceOptions {
@@ -102,7 +120,7 @@ struct VoronoiEdgeArc {
 struct VoronoiVertexPoint {
     std::array<SiteId, 3> face{};         // counter-clockwise, as in the triangulation
     bool certified = false;
-    double x = 0, y = 0, radius = 0;
+    double x = 0, y = 0, radius = 0;      // radius < 0: inside its three sites (crossing circles)
 };
 
 struct TracedDiagram {

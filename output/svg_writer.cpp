@@ -1,7 +1,11 @@
 #include "output/svg_writer.hpp"
 
+#include "predicates/relative_position.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -38,6 +42,39 @@ const char* const kHiddenStroke = "#9a9a9a";
 const char* const kDelaunay = "#7fb77e";
 const char* const kVoronoi = "#c0392b";
 const char* const kVertex = "#7b1b12";
+// Overlaps: the site stroke's colour, translucent, so that a region covered
+// by k sites, shaded once per pair, darkens with k, and the boundary under it
+// shows through.
+const char* const kOverlapFill = kSiteStroke;
+const char* const kOverlapOpacity = "0.25";
+
+// The visible sites whose boundaries cross, as first -> the later ones (i < j):
+// bounding boxes swept along x, then relative_position decides each pair whose
+// boxes meet.
+std::map<SiteId, std::vector<SiteId>> crossing_pairs(const std::vector<Ellipse>& sites, const std::set<SiteId>& hidden) {
+    struct Box {
+        SiteId id;
+        double xmin, xmax, ymin, ymax;
+    };
+    std::vector<Box> boxes;
+    for (SiteId i = 0; i < sites.size(); ++i) {
+        if (hidden.count(i)) continue;
+        const EllipseShape e = EllipseShape::of(sites[i]);
+        const double w = e.half_width(), h = e.half_height();
+        boxes.push_back({i, e.xc - w, e.xc + w, e.yc - h, e.yc + h});
+    }
+    std::sort(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) { return a.xmin < b.xmin; });
+    std::map<SiteId, std::vector<SiteId>> pairs;
+    for (std::size_t k = 0; k < boxes.size(); ++k)
+        for (std::size_t l = k + 1; l < boxes.size() && boxes[l].xmin <= boxes[k].xmax; ++l) {
+            const Box &a = boxes[k], &b = boxes[l];
+            if (b.ymin > a.ymax || a.ymin > b.ymax) continue;
+            if (*relative_position(sites[a.id], sites[b.id]) != RelativePosition::intersecting) continue;
+            pairs[std::min(a.id, b.id)].push_back(std::max(a.id, b.id));
+        }
+    for (auto& [i, later] : pairs) std::sort(later.begin(), later.end());
+    return pairs;
+}
 
 }  // namespace
 
@@ -48,13 +85,16 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     const auto hidden = graph.hidden();
     std::set<SiteId> hidden_ids;
     for (const auto& h : hidden) hidden_ids.insert(h.first);
+    const std::map<SiteId, std::vector<SiteId>> crossing = crossing_pairs(sites, hidden_ids);
+    std::size_t overlaps = 0;
+    for (const auto& [i, later] : crossing) overlaps += later.size();
 
     const DrawingBox& box = d.box;
     const double s = o.pixels / box.size();           // pixels per world unit
     const double pad = 20, top = 48, legend_width = 250;
     const double draw_w = s * box.width(), draw_h = s * box.height();
     const double legend_x = pad + draw_w + pad;
-    const double legend_h = 22 + 5 * 24 + 14 + (d.failed_edges > 0 ? 18 : 0);
+    const double legend_h = 22 + (overlaps > 0 ? 6 : 5) * 24 + 14 + (d.failed_edges > 0 ? 18 : 0);
     const double width = legend_x + legend_width;
     const double height = std::max(top + draw_h + pad, top + legend_h + pad);
     const double tx = pad - s * box.xmin, ty = top + s * box.ymax;
@@ -75,8 +115,19 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
         << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n";
     out << "<title>" << escape(title) << "</title>\n";
+    // An ellipse element's geometry (world coordinates).
+    auto geometry = [&](SiteId i) {
+        const EllipseShape e = EllipseShape::of(sites[i]);
+        const double degrees = std::atan2(e.s, e.c) * 180 / kPi;
+        std::string g = " cx=\"" + num(e.xc) + "\" cy=\"" + num(e.yc) + "\" rx=\"" + num(e.a) + "\" ry=\"" + num(e.b) + "\"";
+        if (degrees != 0) g += " transform=\"rotate(" + num(degrees) + " " + num(e.xc) + " " + num(e.yc) + ")\"";
+        return g;
+    };
     out << "<defs><clipPath id=\"drawing-box\"><rect x=\"" << num(box.xmin) << "\" y=\"" << num(box.ymin)
-        << "\" width=\"" << num(box.width()) << "\" height=\"" << num(box.height()) << "\"/></clipPath></defs>\n";
+        << "\" width=\"" << num(box.width()) << "\" height=\"" << num(box.height()) << "\"/></clipPath>";
+    // Each site that crosses a later one clips the later ones to itself.
+    for (const auto& [i, later] : crossing) out << "\n<clipPath id=\"site-" << i << "\"><ellipse" << geometry(i) << "/></clipPath>";
+    out << "</defs>\n";
     out << "<rect x=\"0\" y=\"0\" width=\"" << num(width) << "\" height=\"" << num(height) << "\" fill=\"white\"/>\n";
     out << "<text x=\"" << num(pad) << "\" y=\"30\" font-size=\"18\" font-weight=\"bold\" fill=\"#222\">" << escape(title)
         << "</text>\n";
@@ -90,12 +141,7 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     out << "<g clip-path=\"url(#drawing-box)\">\n";
 
     auto ellipse = [&](SiteId i, bool is_hidden) {
-        const EllipseShape e = EllipseShape::of(sites[i]);
-        const double degrees = std::atan2(e.s, e.c) * 180 / kPi;
-        out << "<ellipse data-site=\"" << i << "\" cx=\"" << num(e.xc) << "\" cy=\"" << num(e.yc) << "\" rx=\"" << num(e.a)
-            << "\" ry=\"" << num(e.b) << "\"";
-        if (degrees != 0)
-            out << " transform=\"rotate(" << num(degrees) << " " << num(e.xc) << " " << num(e.yc) << ")\"";
+        out << "<ellipse data-site=\"" << i << "\"" << geometry(i);
         if (is_hidden)
             out << " fill=\"none\" stroke=\"" << kHiddenStroke << "\" stroke-width=\"" << num(px(1.1))
                 << "\" stroke-dasharray=\"" << num(px(4)) << " " << num(px(3)) << "\"/>\n";
@@ -106,7 +152,19 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     out << "<g id=\"sites\">\n";
     for (SiteId i = 0; i < sites.size(); ++i)
         if (!hidden_ids.count(i)) ellipse(i, false);
-    out << "</g>\n<g id=\"hidden-sites\">\n";
+    out << "</g>\n";
+    if (overlaps > 0) {
+        // The lens of each crossing pair: the later site clipped to the
+        // earlier (the clip in a <g>: on the ellipse it would be rotated with it).
+        out << "<g id=\"overlaps\" fill=\"" << kOverlapFill << "\" fill-opacity=\"" << kOverlapOpacity << "\">\n";
+        for (const auto& [i, later] : crossing) {
+            out << "<g clip-path=\"url(#site-" << i << ")\">";
+            for (SiteId j : later) out << "<ellipse data-sites=\"" << i << " " << j << "\"" << geometry(j) << "/>";
+            out << "</g>\n";
+        }
+        out << "</g>\n";
+    }
+    out << "<g id=\"hidden-sites\">\n";
     for (SiteId i : hidden_ids) ellipse(i, true);
     out << "</g>\n";
 
@@ -152,7 +210,7 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     // Legend.
     out << "<g id=\"legend\" data-sites=\"" << sites.size() << "\" data-hidden=\"" << hidden.size()
         << "\" data-delaunay-edges=\"" << edges.size() << "\" data-voronoi-vertices=\"" << faces.size()
-        << "\" data-voronoi-edges=\"" << d.arcs.size() << "\" font-size=\"13\" fill=\"#222\">\n";
+        << "\" data-voronoi-edges=\"" << d.arcs.size() << "\" data-overlaps=\"" << overlaps << "\" font-size=\"13\" fill=\"#222\">\n";
     const double lx = legend_x, ly = top;
     out << "<rect x=\"" << num(lx) << "\" y=\"" << num(ly) << "\" width=\"" << num(legend_width - pad) << "\" height=\""
         << num(legend_h) << "\" fill=\"white\" stroke=\"#cccccc\"/>\n";
@@ -168,6 +226,12 @@ void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector
     out << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" rx=\"7\" fill=\"none\" stroke=\""
         << kHiddenStroke << "\" stroke-width=\"1.1\" stroke-dasharray=\"4 3\"/>\n";
     text("hidden: " + std::to_string(hidden.size()));
+    if (overlaps > 0) {
+        out << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" fill=\"" << kSiteFill
+            << "\"/>\n<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" fill=\""
+            << kOverlapFill << "\" fill-opacity=\"" << kOverlapOpacity << "\"/>\n";
+        text("overlapping pairs: " + std::to_string(overlaps));
+    }
     out << "<line x1=\"" << num(sx) << "\" y1=\"" << num(row) << "\" x2=\"" << num(ex) << "\" y2=\"" << num(row)
         << "\" stroke=\"" << kDelaunay << "\" stroke-width=\"1\" stroke-dasharray=\"5 3\"/>\n";
     text("Delaunay edges: " + std::to_string(edges.size()));

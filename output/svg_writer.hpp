@@ -3,8 +3,11 @@
 // the Delaunay edges (thin, light, between the centers), the Voronoi vertices
 // (dots at the certified centers of the Voronoi circles) and every Voronoi
 // edge as a traced bisector arc (output/bisector_trace.hpp), one <path> each;
-// unbounded edges are clipped to the drawing box. A title and a legend with
-// the counts. World y points up (flipped by the group's transform).
+// unbounded edges are clipped to the drawing box. Where two visible sites
+// cross, their common part (the lens) is shaded translucently, one later site
+// clipped to the earlier one per pair (so a part covered by more sites is
+// darker). A title and a legend with the counts. World y points up (flipped
+// by the group's transform).
 //
 // Tolerance: consecutive points of an arc are closer than
 // tolerance_fraction (default 0.5%) of the drawing box's larger side; each

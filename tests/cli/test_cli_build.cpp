@@ -100,6 +100,23 @@ TEST_CASE("build: crossing circles, an internal Voronoi circle of negative radiu
     CHECK(internal);
 }
 
+TEST_CASE("build --svg: crossing circles are drawn, their overlaps shaded", "[cli][build][svg]") {
+    // Circles 0 and 1 cross, and 2 crosses both: three lenses; every Voronoi
+    // edge is drawn, the internal Voronoi vertex in the common part included.
+    ScratchDirectory dir;
+    const std::string f = dir.write("cross.ell", "2 2 0 0 0\n2 2 0 3 0\n1.5 1.5 0 1.5 2.5\n1 1 0 7 1\n1 1 0 -4 3\n");
+    const auto r = dir.ellvor("build '" + f + "' --svg '" + dir.path() + "/d.svg'");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(contains(r.out, "5 sites (0 hidden), 7 Delaunay edges, 3 faces"));
+    CHECK(!contains(r.err, "not drawn"));
+    const std::string svg = ellvor::test::read_file(dir.path() + "/d.svg");
+    CHECK(contains(svg, "<g id=\"overlaps\""));
+    CHECK(contains(svg, "data-overlaps=\"3\""));
+    CHECK(contains(svg, "data-voronoi-edges=\"7\""));
+    CHECK(contains(svg, ">overlapping pairs: 3<"));
+}
+
 TEST_CASE("build --help", "[cli][build]") {
     ScratchDirectory dir;
     const auto r = dir.ellvor("build --help");

@@ -1,9 +1,12 @@
 // The SVG drawing of the diagram: structure of the document (balanced tags,
-// one root, one <ellipse> per site, one <path> per Voronoi edge, legend
-// counts), and the geometry of the traced bisector arcs, checked against a
-// brute-force nearest point (dense samples on each ellipse, then a local
-// golden-section refinement): every point is equidistant from its two sites
-// within the stated tolerance and no third site is closer by more than it.
+// one root, one <ellipse> per site, one <path> per Voronoi edge, one shaded
+// lens per crossing pair, legend counts), and the geometry of the traced
+// bisector arcs, checked against a brute-force nearest point (dense samples on
+// each ellipse, then a local golden-section refinement): every point is
+// equidistant in signed distance from its two sites within the stated
+// tolerance and no third site is closer by more than it. Crossing circles:
+// the same, and the edge of a crossing pair runs through the crossing points
+// that no other site covers.
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/svg_writer.hpp"
@@ -15,6 +18,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -151,9 +155,9 @@ void check_document(const Built& b) {
     const auto faces = b.graph.faces();
     const auto hidden = b.graph.hidden();
     // One ellipse element per site, the hidden ones dashed.
-    CHECK(count(svg, "<ellipse ") == b.sites.size());
+    CHECK(count(svg, "<ellipse data-site=") == b.sites.size());
     std::size_t dashed = 0;
-    for (std::size_t i = svg.find("<ellipse "); i != std::string::npos; i = svg.find("<ellipse ", i + 1))
+    for (std::size_t i = svg.find("<ellipse data-site="); i != std::string::npos; i = svg.find("<ellipse data-site=", i + 1))
         if (svg.substr(i, svg.find('>', i) - i).find("stroke-dasharray") != std::string::npos) ++dashed;
     CHECK(dashed == hidden.size());
     // One path per Voronoi edge drawn; every Voronoi edge is drawn (one per
@@ -173,6 +177,12 @@ void check_document(const Built& b) {
     CHECK(legend.find(">hidden: " + std::to_string(hidden.size()) + "<") != std::string::npos);
     CHECK(legend.find(">Delaunay edges: " + std::to_string(edges.size()) + "<") != std::string::npos);
     CHECK(legend.find(">Voronoi vertices: " + std::to_string(faces.size()) + "<") != std::string::npos);
+    // One shaded lens per crossing pair (the ellipses of the overlap group),
+    // and a legend row only when there are any.
+    const long overlaps = attribute(legend, "data-overlaps");
+    CHECK(long(count(svg, "<ellipse data-sites=")) == overlaps);
+    CHECK((svg.find("<g id=\"overlaps\"") != std::string::npos) == (overlaps > 0));
+    CHECK((legend.find(">overlapping pairs: " + std::to_string(overlaps) + "<") != std::string::npos) == (overlaps > 0));
     // A title, and the tolerance stated in a comment.
     CHECK(count(svg, "<title>") == 1);
     CHECK(svg.find("tolerance") < svg.find("<svg"));
@@ -227,6 +237,94 @@ void check_geometry(const Built& b) {
     // Far below the tolerance in practice (the root solve is ~1e-12 relative).
     CHECK(worst_equidistance <= 1e-3 * tol);
     CHECK(worst_side <= 1e-3 * tol);
+}
+
+// Circle sites in doubles (exact for the integer data of these tests).
+struct Disk {
+    double x, y, r;
+};
+
+Disk disk(const Ellipse& e) {
+    REQUIRE(e.is_circle());
+    return {e.xc().to_double(), e.yc().to_double(), e.a().to_double()};
+}
+
+double signed_distance(const Disk& c, double x, double y) { return std::hypot(x - c.x, y - c.y) - c.r; }
+
+bool cross(const Disk& c, const Disk& d) {
+    const double d2 = (c.x - d.x) * (c.x - d.x) + (c.y - d.y) * (c.y - d.y);
+    return d2 < (c.r + d.r) * (c.r + d.r) && d2 > (c.r - d.r) * (c.r - d.r);
+}
+
+// The two points where the boundaries of crossing circles meet: on the line
+// of the centers at distance l from c's, and h to either side.
+std::array<std::array<double, 2>, 2> crossing_points(const Disk& c, const Disk& d) {
+    const double dx = d.x - c.x, dy = d.y - c.y, len = std::hypot(dx, dy);
+    const double l = (len * len + c.r * c.r - d.r * d.r) / (2 * len), h = std::sqrt(c.r * c.r - l * l);
+    const double mx = c.x + l * dx / len, my = c.y + l * dy / len;
+    return {{{mx - h * dy / len, my + h * dx / len}, {mx + h * dy / len, my - h * dx / len}}};
+}
+
+double segment_distance(const BisectorPoint& a, const BisectorPoint& b, double x, double y) {
+    const double ux = b.x - a.x, uy = b.y - a.y, len2 = ux * ux + uy * uy;
+    const double t = len2 > 0 ? std::clamp(((x - a.x) * ux + (y - a.y) * uy) / len2, 0.0, 1.0) : 0;
+    return std::hypot(a.x + t * ux - x, a.y + t * uy - y);
+}
+
+// Distance from (x, y) to the polyline.
+double polyline_distance(const std::vector<BisectorPoint>& pts, double x, double y) {
+    double best = INFINITY;
+    for (std::size_t k = 1; k < pts.size(); ++k) best = std::min(best, segment_distance(pts[k - 1], pts[k], x, y));
+    return best;
+}
+
+// For a drawing of circles: the overlap count is the number of crossing pairs
+// of visible sites; every crossing point of such a pair that no other visible
+// site covers (nor comes within the tolerance of) is on the Voronoi edge of
+// the pair, so a traced arc of the pair passes through it. Returns the number
+// of crossing points so checked.
+std::size_t check_crossings(const Built& b) {
+    const double tol = b.diagram.tolerance;
+    std::set<SiteId> hidden;
+    for (const auto& h : b.graph.hidden()) hidden.insert(h.first);
+    std::vector<Disk> disks;
+    for (const Ellipse& e : b.sites) disks.push_back(disk(e));
+    long pairs = 0;
+    std::size_t checked = 0;
+    for (SiteId p = 0; p < disks.size(); ++p)
+        for (SiteId q = p + 1; q < disks.size(); ++q) {
+            if (hidden.count(p) || hidden.count(q) || !cross(disks[p], disks[q])) continue;
+            ++pairs;
+            for (const auto& [x, y] : crossing_points(disks[p], disks[q])) {
+                bool covered = false;
+                for (SiteId s = 0; s < disks.size(); ++s)
+                    if (s != p && s != q && !hidden.count(s) && signed_distance(disks[s], x, y) <= tol) covered = true;
+                if (covered) continue;
+                double nearest = INFINITY;
+                for (const VoronoiEdgeArc& arc : b.diagram.arcs)
+                    if (std::set<SiteId>{arc.p, arc.q} == std::set<SiteId>{p, q})
+                        nearest = std::min(nearest, polyline_distance(arc.points, x, y));
+                INFO("sites " << p << " " << q << " crossing point (" << x << ", " << y << ")");
+                CHECK(nearest <= 1e-2 * tol);
+                ++checked;
+            }
+        }
+    CHECK(attribute(b.svg.substr(b.svg.find("<g id=\"legend\"")), "data-overlaps") == pairs);
+    return checked;
+}
+
+// Overlapping circles with integer data: centers in [0, 60]^2, radii 3 to 12
+// (crossing, nested and disjoint pairs; no two identical).
+std::vector<Ellipse> overlapping_circles(std::uint64_t seed, int n) {
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<long> coordinate(0, 60), radius(3, 12);
+    std::vector<Ellipse> sites;
+    std::set<std::array<long, 3>> seen;
+    while (int(sites.size()) < n) {
+        const std::array<long, 3> c = {coordinate(rng), coordinate(rng), radius(rng)};
+        if (seen.insert(c).second) sites.push_back(Ellipse::circle(Rational(c[0]), Rational(c[1]), Rational(c[2])));
+    }
+    return sites;
 }
 
 }  // namespace
@@ -315,4 +413,172 @@ TEST_CASE("svg: ellvor build --svg writes the drawing; --svg-ids needs --svg", "
     CHECK(bad.status == 2);
     const auto help = dir.ellvor("build --help");
     CHECK(ellvor::test::contains(help.out, "0.5% of the drawing box"));
+}
+
+TEST_CASE("svg: nearest points and signed distances inside an ellipse", "[svg]") {
+    // Inside points, many inside the evolute (where the normals of three
+    // boundary points or more pass through them), on the axes and at the
+    // center; both a > b and a < b; against the brute force.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const std::vector<Ellipse> shapes = {Ellipse(Rational(5), Rational(1), Rational(1, 3), Rational(2), Rational(-1)),
+                                         Ellipse(Rational(1), Rational(3), Rational(0), Rational(0), Rational(0)),
+                                         Ellipse(Rational(2), Rational(2), Rational(0), Rational(1), Rational(1)),
+                                         Ellipse(Rational(7, 2), Rational(3), Rational(-2), Rational(0), Rational(4))};
+    for (const Ellipse& site : shapes) {
+        const BruteForce brute(site);
+        const EllipseShape& e = brute.e;
+        std::vector<std::array<double, 2>> local = {{0, 0}, {0.5 * e.a, 0}, {0.99 * e.a, 0}, {0, 0.5 * e.b}, {0, 0.99 * e.b},
+                                                    {0.3 * e.a, 1e-9 * e.b}, {1e-9 * e.a, 0.3 * e.b}};
+        while (local.size() < 300) {
+            const double u = unit(rng), v = unit(rng);
+            if (u * u + v * v < 1) local.push_back({u * e.a, v * e.b});
+        }
+        for (const auto& [u, v] : local) {
+            const double x = e.xc + u * e.c - v * e.s, y = e.yc + u * e.s + v * e.c;
+            INFO(site.str() << " at (" << x << ", " << y << ")");
+            const double d = e.signed_distance(x, y);
+            CHECK(d < 0);
+            CHECK(d == Approx(brute.distance(x, y)).margin(1e-9 * e.a));
+        }
+        // A foot point stays the nearest point down the inward normal up to
+        // the medial axis, not beyond it (unless the site is a circle: there
+        // the axis is the center).
+        for (double theta : {0.0, 0.3, 1.2, 2.0, 4.5}) {
+            double px, py, nx, ny;
+            e.point(theta, px, py);
+            e.normal(theta, nx, ny);
+            const double m = e.medial_depth(theta);
+            INFO(site.str() << " theta " << theta);
+            CHECK(e.signed_distance(px - 0.999 * m * nx, py - 0.999 * m * ny) == Approx(-0.999 * m).margin(1e-9 * e.a));
+            if (!site.is_circle())
+                CHECK(e.signed_distance(px - 1.01 * m * nx, py - 1.01 * m * ny) > -1.01 * m + 1e-6 * e.a);
+        }
+    }
+}
+
+TEST_CASE("svg: the bisector of two crossing circles runs through their crossing points", "[svg]") {
+    TraceOptions o;
+    o.box = {-3, -4, 6, 4};
+    o.tolerance = 0.04;
+    // Equal radii: the line x = 3/2 through (3/2, +-sqrt(7)/2); inside both
+    // circles (|y| < sqrt(7)/2) the signed distance rho is negative.
+    {
+        const Disk c = {0, 0, 2}, d = {3, 0, 2};
+        const EllipseShape p = EllipseShape::of(Ellipse::circle(Rational(0), Rational(0), Rational(2)));
+        const EllipseShape q = EllipseShape::of(Ellipse::circle(Rational(3), Rational(0), Rational(2)));
+        const auto pts = trace_bisector(p, q, std::nullopt, std::nullopt, o);
+        REQUIRE(pts.size() > 10);
+        CHECK(pts.front().y > 4);
+        CHECK(pts.back().y < -4);
+        std::size_t inside = 0;
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+            const BisectorPoint& pt = pts[k];
+            INFO("point " << k << " (" << pt.x << ", " << pt.y << ")");
+            CHECK(pt.x == Approx(1.5).margin(1e-9));
+            CHECK(pt.rho == Approx(signed_distance(c, pt.x, pt.y)).margin(1e-9));
+            CHECK(pt.rho == Approx(signed_distance(d, pt.x, pt.y)).margin(1e-9));
+            CHECK((pt.rho < 0) == (std::fabs(pt.y) < std::sqrt(7.0) / 2));
+            if (pt.rho < 0) ++inside;
+            if (k > 0) CHECK(pts[k].y < pts[k - 1].y);       // the tangency angle on p decreases
+            if (k > 0) CHECK(pts[k].theta < pts[k - 1].theta);
+        }
+        CHECK(inside > 10);
+        for (const auto& [x, y] : crossing_points(c, d)) CHECK(polyline_distance(pts, x, y) <= 1e-2 * o.tolerance);
+        // Between two given angles, one outside q and one inside: from
+        // (3/2, 2) down to the lens's middle (3/2, 0), rho = -1/2.
+        const auto part = trace_bisector(p, q, std::atan2(2.0, 1.5), 0.0, o);
+        REQUIRE(part.size() >= 2);
+        CHECK(part.front().y == Approx(2).margin(1e-9));
+        CHECK(part.back().y == Approx(0).margin(1e-9));
+        CHECK(part.back().rho == Approx(-0.5).margin(1e-9));
+    }
+    // Different radii, a deep crossing: a hyperbola branch, |V| - |V - D| = 1.
+    {
+        const Disk c = {0, 0, 3}, d = {2, 1, 2};
+        const EllipseShape p = EllipseShape::of(Ellipse::circle(Rational(0), Rational(0), Rational(3)));
+        const EllipseShape q = EllipseShape::of(Ellipse::circle(Rational(2), Rational(1), Rational(2)));
+        for (bool swap : {false, true}) {
+            const auto pts = swap ? trace_bisector(q, p, std::nullopt, std::nullopt, o)
+                                  : trace_bisector(p, q, std::nullopt, std::nullopt, o);
+            REQUIRE(pts.size() > 10);
+            double lowest = 0;
+            for (const BisectorPoint& pt : pts) {
+                CHECK(signed_distance(c, pt.x, pt.y) == Approx(signed_distance(d, pt.x, pt.y)).margin(1e-9));
+                CHECK(pt.rho == Approx(signed_distance(c, pt.x, pt.y)).margin(1e-9));
+                lowest = std::min(lowest, pt.rho);
+            }
+            CHECK(lowest < -0.5);
+            for (const auto& [x, y] : crossing_points(c, d)) CHECK(polyline_distance(pts, x, y) <= 1e-2 * o.tolerance);
+        }
+    }
+}
+
+TEST_CASE("svg: crossing circles: traced edges on their bisectors through the crossing points, overlaps shaded",
+          "[graph][svg][overlap]") {
+    // Two pairs crossing, a third circle through both lenses: the common part
+    // of 0, 1, 2 holds an internal Voronoi vertex (negative radius).
+    {
+        std::vector<Ellipse> sites = {Ellipse::circle(Rational(0), Rational(0), Rational(2)),
+                                      Ellipse::circle(Rational(3), Rational(0), Rational(2)),
+                                      Ellipse::circle(Rational(3, 2), Rational(5, 2), Rational(3, 2)),
+                                      Ellipse::circle(Rational(7), Rational(1), Rational(1)),
+                                      Ellipse::circle(Rational(-4), Rational(3), Rational(1))};
+        Built b(sites);
+        check_document(b);
+        check_geometry(b);
+        CHECK(check_crossings(b) == 3);  // of each pair's two crossing points one is in the third circle
+        CHECK(attribute(b.svg, "data-overlaps") == 3);
+        CHECK(count(b.svg, "<clipPath id=\"site-") == 2);
+        bool internal = false;
+        for (const VoronoiVertexPoint& v : b.diagram.vertices)
+            if (v.radius < 0) {
+                internal = true;
+                CHECK(v.x == Approx(1.5));
+                CHECK(v.y == Approx(1.125));
+                CHECK(v.radius == Approx(-0.125));
+            }
+        CHECK(internal);
+    }
+    // Two crossing circles alone (and one hidden in the first): one bisector,
+    // unbounded both ways, through the lens.
+    {
+        Built b({Ellipse::circle(Rational(0), Rational(0), Rational(3)), Ellipse::circle(Rational(2), Rational(1), Rational(2)),
+                 Ellipse::circle(Rational(-1), Rational(0), Rational(1))});
+        check_document(b);
+        REQUIRE(b.diagram.arcs.size() == 1);
+        CHECK(b.diagram.arcs[0].from_infinity);
+        CHECK(b.diagram.arcs[0].to_infinity);
+        check_geometry(b);
+        CHECK(check_crossings(b) == 2);
+    }
+    // Random sets.
+    std::size_t checked = 0, negative = 0, internal = 0;
+    for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+        Built b(overlapping_circles(seed, 14), false);
+        INFO("seed " << seed);
+        check_document(b);
+        check_geometry(b);
+        checked += check_crossings(b);
+        for (const VoronoiEdgeArc& arc : b.diagram.arcs)
+            for (const BisectorPoint& pt : arc.points) negative += pt.rho < 0;
+        for (const VoronoiVertexPoint& v : b.diagram.vertices) internal += v.radius < 0;
+    }
+    // (68 crossing points, 1552 points inside both sites, 6 internal vertices.)
+    CHECK(checked >= 40);
+    CHECK(negative >= 500);
+    CHECK(internal >= 2);
+}
+
+TEST_CASE("svg: a drawing without crossing sites has no overlap shading", "[graph][svg][overlap]") {
+    GeneratorOptions g;
+    g.kind = SiteKind::circles;
+    g.count = 10;
+    g.seed = 5;
+    g.nested_fraction = Rational(1, 5);
+    Built b(generate_sites(g), false);
+    check_document(b);
+    CHECK(attribute(b.svg, "data-overlaps") == 0);
+    CHECK(b.svg.find("<g id=\"overlaps\"") == std::string::npos);
+    CHECK(count(b.svg, "<clipPath ") == 1);  // the drawing box only
 }
