@@ -1,9 +1,7 @@
 #include "output/bisector_trace.hpp"
 
-#include "predicates/circle_predicates.hpp"
 #include "subdivision/nearest_point.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-#include "util/precision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -56,21 +54,6 @@ double inner_nearest_angle(double a, double b, double X, double Y) {
         if (done) break;
     }
     return std::atan2(by / s, ax / (s + e));
-}
-
-// x within an ulp or within `resolution` (an absolute error far below the
-// drawing's), by a + b sqrt(d) in Arb balls whose precision grows until the
-// two terms' cancellation is overcome; false past the default cap (the vertex
-// then counts as not certified).
-bool to_double(const QuadraticNumber& x, double resolution, double& out) {
-    for (long prec = precision::kStart; prec <= precision::kDefaultCap; prec *= 2) {
-        const Ball b = x.to_ball(prec);
-        if (b.radius_double() <= std::max(resolution, 0x1p-53 * std::fabs(b.mid_double()))) {
-            out = b.mid_double();
-            return true;
-        }
-    }
-    return false;
 }
 
 }  // namespace
@@ -441,29 +424,19 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
     }
 
     // The Voronoi vertex of every finite face (index into d.vertices).
-    const double resolution = 1e-16 * d.box.size();
     std::map<FaceIndex, std::size_t> vertex_of_face;
     for (FaceIndex f : tds.faces()) {
         if (tds.is_infinite_face(f)) continue;
         const Triangulation::Face& F = tds.face(f);
         VoronoiVertexPoint v;
         for (int k = 0; k < 3; ++k) v.face[k] = tds.vertex(F.v[k]).site;
-        const Ellipse &e1 = sites[v.face[0]], &e2 = sites[v.face[1]], &e3 = sites[v.face[2]];
-        if (e1.is_circle() && e2.is_circle() && e3.is_circle()) {
-            // The exact closed form; unlike the solver's certificate (rho > 0)
-            // it has the internal circles of crossing circles too.
-            const CircleVoronoiVertex c(e1, e2, e3);
-            v.certified = c.exists() && to_double(c.center_x(), resolution, v.x) &&
-                          to_double(c.center_y(), resolution, v.y) && to_double(c.radius(), resolution, v.radius);
-        } else {
-            VoronoiCircleSolver solver(e1, e2, e3);
-            if (solver.refine(53)) {
-                const VoronoiCircleEnclosure& c = solver.enclosure();
-                v.certified = true;
-                v.x = c.center_x.mid_double();
-                v.y = c.center_y.mid_double();
-                v.radius = c.radius.mid_double();
-            }
+        VoronoiCircleSolver solver(sites[v.face[0]], sites[v.face[1]], sites[v.face[2]]);
+        if (solver.refine(53)) {
+            const VoronoiCircleEnclosure& c = solver.enclosure();
+            v.certified = true;
+            v.x = c.center_x.mid_double();
+            v.y = c.center_y.mid_double();
+            v.radius = c.radius.mid_double();
         }
         vertex_of_face[f] = d.vertices.size();
         d.vertices.push_back(v);

@@ -1,8 +1,7 @@
 // Floating-point tracing of the bisector of two ellipses, for drawing only
 // (the SVG output). Nothing here decides anything about the graph: the
 // combinatorics come from DelaunayGraph, the Voronoi vertices from the
-// certified Voronoi circles (the exact closed form for three circles); this
-// only joins them by polylines.
+// certified Voronoi circles; this only joins them by polylines.
 //
 // The bisector of two sites Ep, Eq (disjoint, or crossing circles) is the
 // locus of equal signed distance delta (the distance to the boundary,
