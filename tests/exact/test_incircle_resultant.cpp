@@ -202,6 +202,45 @@ TEST_CASE("InCircle resultant of generic ellipse triples has degree 184 and vani
     CHECK(checked_roots >= 3);
 }
 
+TEST_CASE("InCircle resultant: the wanted factor also vanishes at internal circles of crossing ellipses",
+          "[exact][resultant][overlap]") {
+    // Three pairwise crossing ellipses (a = 3, b = 2) with a small common
+    // part: the counter-clockwise circle is internal (rho < 0, certified by
+    // the signed-distance certificate, DESIGN.md §4.1). Its tangency
+    // parameter on E1 is a root of the same degree-184 factor (§9): the ball
+    // of the value contains 0, is tight, and the factor changes sign across
+    // t -+ 2^-250.
+    const long prec = 1024;
+    const Ellipse e1(Rational(3), Rational(2), Rational(0), Rational(0), Rational(0));
+    const Ellipse e2(Rational(3), Rational(2), Rational(1), Rational(4), Rational(0));
+    for (const Rational& y3 : {Rational(3), Rational(7, 2UL)}) {
+        const Ellipse e3(Rational(3), Rational(2), Rational(1, 3UL), Rational(2), y3);
+        INFO(e1.str() << " | " << e2.str() << " | " << e3.str());
+        VoronoiCircleSolver solver(e1, e2, e3);
+        REQUIRE(solver.certify());
+        REQUIRE(solver.refine(prec));
+        CHECK(arb_is_negative(solver.enclosure().radius.get()));
+        const Ball t = solver.enclosure().tangency_parameter(0, prec + 64);
+        const IncircleResultant r = incircle_resultant(e1, e2, e3);
+        INFO(describe(r));
+        CHECK(r.degree == 184);
+        CHECK(vanishes_at(r.polynomial, t, prec + 4 * r.coefficient_bits));
+        CHECK(tight(r.polynomial, t, prec + 4 * r.coefficient_bits));
+        int signs[2];
+        for (int side : {0, 1}) {
+            Ball x, v;
+            arb_get_mid_arb(x.get(), t.get());
+            Ball step;
+            arb_set_si(step.get(), side ? 1 : -1);
+            arb_mul_2exp_si(step.get(), step.get(), -250);
+            arb_add(x.get(), x.get(), step.get(), prec);
+            arb_fmpz_poly_evaluate_arb(v.get(), r.polynomial.get(), x.get(), prec + 4 * r.coefficient_bits);
+            signs[side] = v.certain_sign();
+        }
+        CHECK(signs[0] * signs[1] == -1);
+    }
+}
+
 TEST_CASE("InCircle resultant is reproducible and independent of the primes", "[exact][resultant]") {
     std::mt19937_64 rng(777);
     auto e = random_triple(rng, 8);
