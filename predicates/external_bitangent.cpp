@@ -5,6 +5,7 @@
 
 #include <arb_fmpz_poly.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace ellvor {
@@ -14,6 +15,7 @@ namespace {
 // a lower actual degree means a root at the i-point.
 constexpr long kBitangentFormalDegree = 4;
 constexpr long kTangentSideFormalDegree = 2;
+constexpr long kIntersectionFormalDegree = 4;
 }  // namespace
 
 int sign_at(const IntPolynomial& p, long formal_degree, BoundaryParameter& t) {
@@ -64,11 +66,20 @@ BoundaryParameter external_bitangent_on(const Ellipse& e, const Ellipse& other, 
     }
     // Counter-clockwise on E: [departure, internal..., arrival] with the
     // internal tangency points on the arc facing the other ellipse.
-    const size_t n = roots.size();
     int externals = 0;
     for (const auto& r : roots) externals += r.external;
+    if (roots.size() == 2 && externals == 2) {
+        // Crossing sites have no internal tangent; their crossing points lie
+        // on the arc of E inside the other, which is part of the facing arc,
+        // and mark it instead (DESIGN.md §9).
+        const IntPolynomial crossings = intersection_quartic(e, other);
+        for (auto& r : real_roots(crossings)) roots.push_back({BoundaryParameter{r}, false});
+        if (crossings.degree() < kIntersectionFormalDegree) roots.push_back({BoundaryParameter{}, false});
+        std::sort(roots.begin(), roots.end(), [](Root& a, Root& b) { return compare(a.t, b.t) < 0; });
+    }
+    const size_t n = roots.size();
     if (n < 3 || externals != 2)
-        throw Error("external bitangent: the ellipses are not separated (" + std::to_string(n) +
+        throw Error("external bitangent: one ellipse lies inside the other (" + std::to_string(n) +
                     " common tangents)");
     for (size_t i = 0; i < n; ++i) {
         const Root& neighbour = roots[side == HullSide::arrival ? (i + n - 1) % n : (i + 1) % n];

@@ -35,7 +35,8 @@ BallPoint boundary_point(const Ellipse& e, BoundaryParameter& t, long prec);
 // Going counter-clockwise around the convex hull of E and `other`, the hull
 // arrives on E along one external bitangent and departs from E along the
 // other. Returns the tangency parameter on E of that bitangent.
-// Throws Error unless E and `other` are separated or externally tangent.
+// Throws Error when one lies inside the other (no external bitangent);
+// crossing sites have them (their crossing points mark the facing arc).
 enum class HullSide { arrival, departure };
 BoundaryParameter external_bitangent_on(const Ellipse& e, const Ellipse& other, HullSide side);
 

@@ -3,6 +3,7 @@
 // right of L directed from T1 to T2); ties (Q touching L from the sites' side)
 // broken as in CGAL. Oracles: CGAL's test vectors, the closed form for circles
 // at 256 bits, constructed tangencies, support-function numerics for ellipses.
+#include "predicates/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "tests/predicates/circle_oracles.hpp"
@@ -164,18 +165,57 @@ TEST_CASE("kappa2 constructed tangencies on circles agree with the oracle's exac
     }
 }
 
-TEST_CASE("kappa2's exact stage rejects intersecting E1, E2", "[predicates][infinite_vertex_conflict]") {
-    // The precondition (E1, E2 separated or tangent) is checked by the exact
-    // stage; the filter does not pay for it (see the header).
-    InfiniteVertexConflictOptions exact_only;
-    exact_only.use_filter = false;
-    exact_only.use_circle_closed_form = false;  // the closed form, like the filter, does not check it either
-    CHECK_THROWS_AS(infinite_vertex_conflict(Ellipse::circle(0, 0, 1), Ellipse::circle(1, 0, 1),
-                                             Ellipse::circle(10, 10, 1), exact_only),
-                    Error);
+TEST_CASE("kappa2's exact stage rejects nested E1, E2", "[predicates][infinite_vertex_conflict]") {
+    // No external bitangent at all; the filter cannot decide either.
     CHECK_THROWS_AS(infinite_vertex_conflict(Ellipse::circle(0, 0, 3), Ellipse::circle(1, 0, 1),
                                              Ellipse::circle(10, 10, 1)),
-                    Error);  // nested: no external bitangent at all, the filter cannot decide either
+                    Error);
+}
+
+TEST_CASE("kappa2 on crossing E1, E2: the crossing points stand for the internal tangents",
+          "[predicates][infinite_vertex_conflict][overlap]") {
+    // Circles: the exact stage of the general path (the bitangent quartic,
+    // the crossing points from the intersection quartic) against the closed
+    // form. Ellipses: the filter and the exact stage against support-function
+    // numerics.
+    Rng rng(1124);
+    InfiniteVertexConflictOptions exact_only;
+    exact_only.use_filter = false;
+    exact_only.use_circle_closed_form = false;
+    int circles = 0, ellipses = 0, conflicts = 0, tries = 0;
+    while (circles < 200 && ++tries < 10000) {
+        const Ellipse e1 = Ellipse::circle(rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 5), rnd_pos(rng, 4, 3));
+        const Ellipse e2 = Ellipse::circle(rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 5), rnd_pos(rng, 4, 3));
+        const Ellipse q = Ellipse::circle(rnd(rng, -8, 8, 7), rnd(rng, -8, 8, 5), rnd_pos(rng, 2, 3));
+        if (*relative_position(e1, e2) != RelativePosition::intersecting) continue;
+        ++circles;
+        INFO(oracle::ell({&e1, &e2, &q}));
+        const Decision<Sign> got = infinite_vertex_conflict(e1, e2, q, exact_only);
+        CHECK(got.stage == Stage::exact);
+        CHECK(to_int(*got) == circle_infinite_vertex_conflict(e1, e2, q));
+        conflicts += to_int(*got) < 0;
+    }
+    while (ellipses < 200 && ++tries < 20000) {
+        auto random_ellipse = [&] {
+            return Ellipse(rnd_pos(rng, 4, 7), rnd_pos(rng, 4, 5), rnd(rng, -4, 4, 19), rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 9));
+        };
+        const Ellipse e1 = random_ellipse(), e2 = random_ellipse();
+        const Ellipse q(rnd_pos(rng, 2, 7), rnd_pos(rng, 2, 5), rnd(rng, -4, 4, 3), rnd(rng, -9, 9, 7), rnd(rng, -9, 9, 5));
+        if (*relative_position(e1, e2) != RelativePosition::intersecting || boundary_meeting_points(e1, e2) != 2) continue;
+        const oracle::NumEllipse n1 = oracle::num(e1), n2 = oracle::num(e2), nq = oracle::num(q);
+        oracle::LD phi = 0;
+        INFO(oracle::ell({&e1, &e2, &q}));
+        REQUIRE(oracle::bitangent_normal(n1, n2, phi));
+        const oracle::LD margin = oracle::support(nq, phi) - oracle::support(n1, phi);
+        if (std::fabs(static_cast<double>(margin)) < 1e-9) continue;
+        ++ellipses;
+        const int want = margin > 0 ? -1 : 1;
+        CHECK(to_int(*infinite_vertex_conflict(e1, e2, q, exact_only)) == want);
+        CHECK(to_int(*infinite_vertex_conflict(e1, e2, q)) == want);
+    }
+    CHECK(circles == 200);
+    CHECK(ellipses == 200);
+    CHECK(conflicts > 20);
 }
 
 TEST_CASE("kappa2 on 300+ random disjoint ellipse triples agrees with support-function numerics", "[predicates][infinite_vertex_conflict]") {

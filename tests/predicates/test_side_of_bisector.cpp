@@ -2,6 +2,7 @@
 // signed distance (negative inside), -1 closer to E2, 0 equidistant.
 // Oracles: the closed form for circles at 256 bits (circle_oracles.hpp), a
 // brute-force distance for ellipses, and ties built by symmetry.
+#include "predicates/relative_position.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "tests/predicates/circle_oracles.hpp"
 
@@ -294,4 +295,30 @@ TEST_CASE("kappa1 on 300+ random ellipse cases agrees with a brute-force distanc
     INFO("compared " << compared << " skipped " << skipped << " inside " << inside);
     CHECK(compared >= 300);
     CHECK(inside >= 60);
+}
+
+TEST_CASE("kappa1 inside both of two crossing ellipses (the lens) agrees with a brute-force distance",
+          "[predicates][side_of_bisector][overlap]") {
+    // Signed distances: inside both, the site whose boundary is farther is
+    // the closer one (DESIGN.md §2); the points lie in the lens of crossing
+    // pairs, many near its bisector (between the centers).
+    Rng rng(20261124);
+    int compared = 0, subdivision = 0;
+    for (int i = 0; compared < 200 && i < 20000; ++i) {
+        const Ellipse e1(rnd_pos(rng, 4, 7), rnd_pos(rng, 4, 5), rnd(rng, -4, 4, 19), rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 9));
+        const Ellipse e2(rnd_pos(rng, 4, 7), rnd_pos(rng, 4, 5), rnd(rng, -4, 4, 19), rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 9));
+        if (*relative_position(e1, e2) != RelativePosition::intersecting) continue;
+        const Rational t = rnd(rng, 0, 1, 37);
+        const Point p{e1.xc() + t * (e2.xc() - e1.xc()) + rnd(rng, -1, 1, 11), e1.yc() + t * (e2.yc() - e1.yc())};
+        if (e1.side_of_point(p.x, p.y) >= 0 || e2.side_of_point(p.x, p.y) >= 0) continue;
+        const oracle::LD d1 = oracle::signed_distance(e1, p), d2 = oracle::signed_distance(e2, p);
+        if (std::fabs(static_cast<double>(d1 - d2)) <= 1e-6) continue;
+        INFO(replay(e1, e2, p) << "brute force: d1 = " << static_cast<double>(d1) << " d2 = " << static_cast<double>(d2));
+        const Decision<Sign> got = side_of_bisector(e1, e2, p);
+        CHECK(to_int(*got) == (d1 < d2 ? 1 : -1));
+        subdivision += got.stage == Stage::subdivision;
+        ++compared;
+    }
+    CHECK(compared == 200);
+    CHECK(subdivision >= 150);  // inside both, the Arb stage decides (the filter bounds outside distances only)
 }
