@@ -12,7 +12,9 @@
 // DelaunayGraph::insert_all, CGAL's insert), the ratios overlap / disjoint and
 // ellvor / CGAL; peak memory the same way. The target for overlapping
 // ellipses (later) is an overlapping build within 2x of a disjoint set of the
-// same size; the summary says whether circles meet it.
+// same size; the summary says whether circles meet it. Beside them, the CPU
+// time of relative_position alone on the crossing pairs (the exact stage
+// decides every crossing pair), against the overlap set's extra build time.
 //
 // Checks: the crossing sites are counted exactly (circles_cross) and must be
 // round(0.3 n); ellvor's graph passes validate() and equals CGAL's (visible
@@ -30,6 +32,7 @@
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "predicates/ellipse_delaunay_traits.hpp"
+#include "predicates/relative_position.hpp"
 #include "sites/site_generators.hpp"
 
 #include <algorithm>
@@ -61,6 +64,21 @@ std::string fmt(const char* f, double x) {
     return buf;
 }
 
+// CPU seconds of relative_position (the exact stage: the intersection quartic)
+// on the crossing pairs: what the graph's is_hidden pays for them once each.
+double relative_position_seconds(const std::vector<Ellipse>& s, const std::vector<std::pair<SiteId, SiteId>>& pairs,
+                                 int& anomalies) {
+    long sum = 0;
+    const double c0 = now_cpu();
+    for (const auto& [i, j] : pairs) sum += static_cast<long>(*relative_position(s[i], s[j]));
+    const double c1 = now_cpu();
+    if (sum != static_cast<long>(pairs.size()) * static_cast<long>(RelativePosition::intersecting)) {
+        std::cerr << "ANOMALY: relative_position does not find every crossing pair intersecting\n";
+        ++anomalies;
+    }
+    return c1 - c0;
+}
+
 // Runs `build` until 0.3 s of wall time (at least once, at most 20 times), medians.
 template <class F>
 void timed(F build, double& wall, double& cpu, int& reps) {
@@ -80,17 +98,17 @@ void timed(F build, double& wall, double& cpu, int& reps) {
     reps = static_cast<int>(w.size());
 }
 
-// Sites that cross at least one other, and crossing pairs, exactly. Only pairs
-// whose centers are within twice the largest radius in x and y can meet; the
-// centers and radii are exact in double, so that window is found in doubles.
-std::pair<long, long> crossings(const std::vector<Ellipse>& s) {
+// Sites that cross at least one other, and the crossing pairs, exactly. Only
+// pairs whose centers are within twice the largest radius in x and y can meet;
+// the centers and radii are exact in double, so that window is found in doubles.
+std::pair<long, std::vector<std::pair<SiteId, SiteId>>> crossings(const std::vector<Ellipse>& s) {
     double reach = 0;
     for (const Ellipse& e : s) reach = std::max(reach, 2 * e.a().to_double());
     std::vector<std::size_t> order(s.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return s[i].xc() < s[j].xc(); });
     std::vector<char> crosses(s.size(), 0);
-    long pairs = 0;
+    std::vector<std::pair<SiteId, SiteId>> pairs;
     for (std::size_t p = 0; p < order.size(); ++p) {
         const Ellipse& e = s[order[p]];
         const double x = e.xc().to_double(), y = e.yc().to_double();
@@ -99,7 +117,7 @@ std::pair<long, long> crossings(const std::vector<Ellipse>& s) {
             if (f.xc().to_double() - x > reach) break;
             if (std::fabs(f.yc().to_double() - y) > reach || !circles_cross(e, f)) continue;
             crosses[order[p]] = crosses[order[q]] = 1;
-            ++pairs;
+            pairs.push_back({order[p], order[q]});
         }
     }
     return {static_cast<long>(std::count(crosses.begin(), crosses.end(), 1)), pairs};
@@ -111,6 +129,7 @@ struct Row {
     double seconds = 0, cpu_seconds = 0;
     int reps = 0;
     long crossing_sites = 0, crossing_pairs = 0;
+    double relative_position_cpu = 0;  // relative_position on the crossing pairs, seconds
     std::size_t visible = 0, hidden = 0, edges = 0;
     std::string validate = "-", cgal = "-";  // "ok", a problem, or "-" (not run)
     TraitsStats stats;                       // ellvor only
@@ -238,7 +257,9 @@ int main(int argc, char** argv) {
                 ++anomalies;
                 continue;
             }
-            const auto [crossing_sites, crossing_pairs] = crossings(sites);
+            const auto [crossing_sites, pairs] = crossings(sites);
+            const long crossing_pairs = static_cast<long>(pairs.size());
+            const double relative_position_cpu = relative_position_seconds(sites, pairs, anomalies);
             const long expected = set == "overlap" ? (3 * n + 5) / 10 : 0;  // round(0.3 n), halves up
             if (crossing_sites != expected) {
                 std::cerr << "ANOMALY: " << set << " n = " << n << ": " << crossing_sites << " crossing sites, expected "
@@ -251,6 +272,7 @@ int main(int argc, char** argv) {
             for (Row* r : {&e, &c}) {
                 r->crossing_sites = crossing_sites;
                 r->crossing_pairs = crossing_pairs;
+                r->relative_position_cpu = relative_position_cpu;
                 r->memory = memory.at({r->library, set, n});
             }
             if (e.validate.rfind("exception", 0) != 0) {
@@ -293,7 +315,7 @@ int main(int argc, char** argv) {
     csv << "library,set,n,seconds,cpu_seconds,runs,crossing_sites,crossing_pairs,visible,hidden,edges";
     for (const Pred& p : kPreds)
         csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
-    csv << ",validate,equals_cgal,peak_rss_growth_bytes\n";
+    csv << ",relative_position_cpu_seconds,validate,equals_cgal,peak_rss_growth_bytes\n";
     for (const Row& r : rows) {
         csv << r.library << "," << r.set << "," << r.n << "," << fmt("%.6g", r.seconds) << "," << fmt("%.6g", r.cpu_seconds)
             << "," << r.reps << "," << r.crossing_sites << "," << r.crossing_pairs << "," << r.visible << "," << r.hidden
@@ -306,7 +328,7 @@ int main(int argc, char** argv) {
                 csv << "," << c.calls << "," << c.stages[Stage::filter] << "," << c.stages[Stage::subdivision] << ","
                     << c.stages[Stage::exact];
         }
-        csv << "," << r.validate << "," << r.cgal << "," << (r.memory_kb() < 0 ? std::string() : std::to_string(r.memory_kb() * 1024))
+        csv << "," << fmt("%.6g", r.relative_position_cpu) << "," << r.validate << "," << r.cgal << "," << (r.memory_kb() < 0 ? std::string() : std::to_string(r.memory_kb() * 1024))
             << "\n";
     }
 
@@ -368,6 +390,20 @@ int main(int argc, char** argv) {
                << " |\n";
         }
     md << "\n\"equals CGAL\": the visible sites, the hidden pairs, the finite edges (as a multiset) and the hull.\n";
+
+    md << "\n## Where ellvor's extra time goes\n\nThe overlap set's extra CPU time against the disjoint set, and "
+          "the CPU time of `relative_position` alone (its exact stage, the intersection quartic: no filter decides a "
+          "crossing pair) on the set's crossing pairs, which the graph's is_hidden meets about once each (see "
+          "is_hidden's exact calls below).\n\n"
+          "| n | crossing pairs | extra build time (s) | relative_position on the crossing pairs (s) | µs a pair |\n"
+          "|---:|---:|---:|---:|---:|\n";
+    for (long n : ns) {
+        const Row *ed = find("ellvor", "disjoint", n), *eo = find("ellvor", "overlap", n);
+        if (!ed || !eo || eo->crossing_pairs == 0) continue;
+        md << "| " << n << " | " << eo->crossing_pairs << " | " << fmt("%.3g", eo->cpu_seconds - ed->cpu_seconds) << " | "
+           << fmt("%.3g", eo->relative_position_cpu) << " | "
+           << fmt("%.1f", 1e6 * eo->relative_position_cpu / double(eo->crossing_pairs)) << " |\n";
+    }
 
     md << "\n## Predicate calls per stage (ellvor)\n\ncalls (filter / subdivision / exact); memoized answers are not "
           "counted. is_hidden decides the relative position of the pairs the graph meets; kappa1 = side_of_bisector, "
