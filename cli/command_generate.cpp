@@ -17,12 +17,13 @@ namespace {
 
 const char* const kHelp =
     "usage: ellvor generate (ellipses|circles|nested) --count N [--seed S] [--bits B] [--box X]\n"
-    "                       [--nested-fraction F] [--cin] [-o FILE]\n"
+    "                       [--nested-fraction F] [--crossing F] [--cin] [-o FILE]\n"
     "       ellvor generate paper-dataset (kappa1|kappa2|incircle) --set (1|2a|2b|2c|3) [--seed S]\n"
     "                       [--bits B] [-o DIR/|FILE]\n"
     "\n"
-    "Random pairwise-disjoint sites, written as a .ell file (exact rationals) with a header\n"
-    "comment saying how it was generated. The same arguments give the same file on every machine.\n"
+    "Random pairwise-disjoint sites (crossing circles on request), written as a .ell file (exact\n"
+    "rationals) with a header comment saying how it was generated. The same arguments give the\n"
+    "same file on every machine.\n"
     "  ellipses   N random ellipses in the box [-X, X]^2\n"
     "  circles    N random circles (a = b, w = 0)\n"
     "  nested     ellipses of which a fraction F (default 1/4) lies strictly inside another\n"
@@ -35,6 +36,10 @@ const char* const kHelp =
     "  --box X              half-width of the box, a positive rational (default 100)\n"
     "  --nested-fraction F  fraction in [0, 1) of sites nested in another (rounded to a count;\n"
     "                       default 0, or 1/4 for 'nested'); exact rationals such as 0.25 or 1/4\n"
+    "  --crossing F         circles only: exactly round(F N) of the circles, F in [0, 1], cross\n"
+    "                       at least one other circle (boundaries meeting in two points, checked\n"
+    "                       exactly); the others cross none; nested sites never cross, and a\n"
+    "                       count of 1 is an error. Default 0: the file is the same as without it\n"
     "  --cin                write CGAL's 'x y r' circle format (circles only)\n"
     "  -o, --output FILE    write FILE atomically (a temporary file renamed into place)\n"
     "                       instead of standard output\n"
@@ -75,7 +80,7 @@ int run_paper_dataset(const Arguments& parsed) {
     const std::string set = parsed.value("--set");
     if (set != "1" && set != "2a" && set != "2b" && set != "2c" && set != "3")
         throw UsageError("option --set: expected 1, 2a, 2b, 2c or 3, got '" + set + "'");
-    for (const char* o : {"--count", "--box", "--nested-fraction", "--cin"})
+    for (const char* o : {"--count", "--box", "--nested-fraction", "--crossing", "--cin"})
         if (parsed.has(o)) throw UsageError(std::string("option ") + o + " does not apply to paper-dataset");
     const std::uint64_t seed = parsed.unsigned_integer("--seed", 1);
     const long bits = parsed.integer("--bits", 16, 1, kMaxGeneratorBits);
@@ -129,6 +134,7 @@ int run_generate(const std::vector<std::string>& args) {
                             {"--bits", true},
                             {"--box", true},
                             {"--nested-fraction", true},
+                            {"--crossing", true},
                             {"--set", true},
                             {"--cin", false},
                             {"-o", true, "--output"}});
@@ -152,6 +158,11 @@ int run_generate(const std::vector<std::string>& args) {
     o.nested_fraction = parsed.rational("--nested-fraction", kind == "nested" ? Rational(1, 4) : Rational(0));
     if (o.nested_fraction.sign() < 0 || o.nested_fraction >= Rational(1))
         throw UsageError("option --nested-fraction: expected a rational in [0, 1), got " + o.nested_fraction.str());
+    if (parsed.has("--crossing") && o.kind != SiteKind::circles)
+        throw UsageError("option --crossing needs 'circles': crossing sites are supported between circles only");
+    o.crossing_fraction = parsed.rational("--crossing", Rational(0));
+    if (o.crossing_fraction.sign() < 0 || o.crossing_fraction > Rational(1))
+        throw UsageError("option --crossing: expected a rational in [0, 1], got " + o.crossing_fraction.str());
     const bool cin = parsed.has("--cin");
     if (cin && o.kind != SiteKind::circles) throw UsageError("option --cin needs 'circles'");
 

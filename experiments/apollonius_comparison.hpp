@@ -1,7 +1,7 @@
 // What the experiments compare between ellvor's Delaunay graph and CGAL's
 // Apollonius graph on circles: the visible sites, the [hidden, hiding] pairs,
 // the finite edges (a multiset of sorted pairs) and the hull, in ellvor's
-// site ids; and the site generators of build_scaling's sets.
+// site ids; and the site generators of build_scaling's and overlap_scaling's sets.
 #pragma once
 
 #include "graph/delaunay_graph.hpp"
@@ -101,15 +101,17 @@ inline std::string compare(const Summary& a, const Summary& b) {
 }
 
 // build_scaling's sets: "circles" (dyadic, exact in double), "ellipses",
-// "ellipses-nest10" (nested fraction 1/10).
+// "ellipses-nest10" (nested fraction 1/10); overlap_scaling's "circles-cross30":
+// "circles" with crossing fraction 3/10 (the same grid and radii).
 inline std::vector<Ellipse> make_sites(const std::string& set, long n) {
     GeneratorOptions o;
     o.count = n;
     o.seed = 1;
-    if (set == "circles") {
+    if (set == "circles" || set == "circles-cross30") {
         o.kind = SiteKind::circles;
         o.bits = 1;
         o.box = Rational(256 * static_cast<long>(std::ceil(std::sqrt(double(n)) - 1e-9)));
+        if (set == "circles-cross30") o.crossing_fraction = Rational(3, 10);
     } else {
         o.kind = SiteKind::ellipses;
         o.bits = 8;
@@ -121,6 +123,9 @@ inline std::vector<Ellipse> make_sites(const std::string& set, long n) {
 
 inline std::string describe_set(const std::string& set) {
     if (set == "circles") return "generate_sites(circles, seed 1, bits 1, box 256 ceil(sqrt n)) — dyadic, exact in double";
+    if (set == "circles-cross30")
+        return "generate_sites(circles, seed 1, bits 1, box 256 ceil(sqrt n), crossing fraction 3/10) — dyadic, exact "
+               "in double";
     if (set == "ellipses-nest10") return "generate_sites(ellipses, seed 1, bits 8, box 100, nested fraction 1/10)";
     return "generate_sites(ellipses, seed 1, bits 8, box 100)";
 }

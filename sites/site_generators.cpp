@@ -75,12 +75,32 @@ bool bounding_circle_inside_inscribed(const Ellipse& inner, const Ellipse& host)
     return squared_distance(inner, host) < gap * gap;
 }
 
+namespace {
+// Two circles: disks disjoint (|c1 - c2| > r1 + r2), boundaries crossing, or
+// anything else (tangent, nested, identical). Exact.
+enum class CirclePair { separated, crossing, other };
+CirclePair circle_pair(const Ellipse& c1, const Ellipse& c2) {
+    const Rational d2 = squared_distance(c1, c2);
+    const Rational sum = c1.a() + c2.a(), diff = c1.a() - c2.a();
+    if (d2 > sum * sum) return CirclePair::separated;
+    if (diff * diff < d2 && d2 < sum * sum) return CirclePair::crossing;
+    return CirclePair::other;
+}
+}  // namespace
+
+bool circles_cross(const Ellipse& c1, const Ellipse& c2) {
+    if (!c1.is_circle() || !c2.is_circle()) throw Error("circles_cross: the sites must be circles");
+    return circle_pair(c1, c2) == CirclePair::crossing;
+}
+
 // ---- random site sets --------------------------------------------------------
 
 std::string describe(const GeneratorOptions& o) {
     return std::string("ellvor generate ") + (o.kind == SiteKind::circles ? "circles" : "ellipses") +
            " --count " + std::to_string(o.count) + " --seed " + std::to_string(o.seed) + " --bits " +
-           std::to_string(o.bits) + " --box " + o.box.str() + " --nested-fraction " + o.nested_fraction.str();
+           std::to_string(o.bits) + " --box " + o.box.str() + " --nested-fraction " + o.nested_fraction.str() +
+           // only when set, so that the headers of files made before the option stay the same
+           (o.crossing_fraction.is_zero() ? std::string() : " --crossing " + o.crossing_fraction.str());
 }
 
 namespace {
@@ -106,16 +126,34 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
     if (o.box.sign() <= 0) throw Error("box must be positive, got " + o.box.str());
     if (o.nested_fraction.sign() < 0 || o.nested_fraction >= Rational(1))
         throw Error("nested fraction must be in [0, 1), got " + o.nested_fraction.str());
+    if (o.crossing_fraction.sign() < 0 || o.crossing_fraction > Rational(1))
+        throw Error("crossing fraction must be in [0, 1], got " + o.crossing_fraction.str());
+    if (!o.crossing_fraction.is_zero() && o.kind != SiteKind::circles)
+        throw Error("crossing sites are supported between circles only, not ellipses (crossing fraction " +
+                    o.crossing_fraction.str() + ")");
     if (o.count == 0) return {};
 
     // round(fraction * count), halves rounded up
-    Rational nested_q = o.nested_fraction * Rational(o.count) + Rational(1, 2);
-    const long nested = floor_to_long(nested_q);
+    auto rounded_count = [&](const Rational& fraction) {
+        return floor_to_long(fraction * Rational(o.count) + Rational(1, 2));
+    };
+    const long nested = rounded_count(o.nested_fraction);
     const long top = o.count - nested;
     if (top < 1) throw Error("nested fraction leaves no site to nest into");
+    const long crossing = rounded_count(o.crossing_fraction);
+    if (crossing == 1)
+        throw Error("crossing fraction " + o.crossing_fraction.str() + " of " + std::to_string(o.count) +
+                    " sites is 1 crossing site; a crossing needs two circles");
+    if (crossing > top)
+        throw Error("crossing fraction " + o.crossing_fraction.str() + " asks for " + std::to_string(crossing) +
+                    " crossing sites, but only " + std::to_string(top) + " are not nested (nested sites never cross)");
+    const long partners = (crossing + 1) / 2;
+    const long separated = top - partners;
 
     SiteRandom rng(o.seed);
     const bool circles = o.kind == SiteKind::circles;
+    // The scale depends on the non-nested sites, not on how many cross, so that
+    // sets differing only in the crossing fraction are alike.
     const long g = isqrt_ceil(top);
     const Rational rmax = o.box / Rational(4 * g);  // bounding radii in [rmax/4, rmax]
     const Rational rmin = rmax / Rational(4);
@@ -127,7 +165,7 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
     const long max_attempts = 1000 + 200 * o.count;
     long attempts = 0;
     auto give_up = [&]() {
-        throw Error("could not place " + std::to_string(o.count) + " disjoint sites after " +
+        throw Error("could not place " + std::to_string(o.count) + (crossing ? " sites" : " disjoint sites") + " after " +
                     std::to_string(max_attempts) + " attempts; use a larger --box or more --bits");
     };
 
@@ -142,7 +180,7 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
         }
     };
 
-    while (static_cast<long>(placed.size()) < top) {
+    while (static_cast<long>(placed.size()) < separated) {
         if (++attempts > max_attempts) give_up();
         Rational a, b, w;
         draw_shape(rmin, rmax, a, b, w);
@@ -184,6 +222,59 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
         inside[h].push_back(placed.size());
         placed.push_back(std::move(e));
         ++n;
+    }
+
+    // Crossing partners (see the header). `crosses` marks the sites that cross
+    // another; `free_targets` the separated circles that do not yet.
+    std::vector<char> crosses(placed.size(), 0);
+    std::vector<std::size_t> crossing_ids, free_targets;
+    for (std::size_t k = 0; k < hosts; ++k) free_targets.push_back(k);
+    for (long p = 0; p < partners;) {
+        if (++attempts > max_attempts) give_up();
+        // Two new crossing sites (the partner and its target) while two or more
+        // are missing; for odd K the last partner adds only itself.
+        const bool pair = crossing - static_cast<long>(crossing_ids.size()) >= 2;
+        const std::size_t slot = rng.below(pair ? free_targets.size() : crossing_ids.size());
+        const std::size_t t = pair ? free_targets[slot] : crossing_ids[slot];
+        const Ellipse& target = placed[t];
+        const Rational r = rng.uniform_rational(rmin, rmax, o.bits);
+        const Rational reach = target.a() + r;
+        Rational xc = rng.uniform_rational(target.xc() - reach, target.xc() + reach, o.bits);
+        Rational yc = rng.uniform_rational(target.yc() - reach, target.yc() + reach, o.bits);
+        if (xc < -center_extent || xc > center_extent || yc < -center_extent || yc > center_extent) continue;
+        Ellipse e = Ellipse::circle(xc, yc, r);
+        if (circle_pair(e, target) != CirclePair::crossing) continue;
+        // Every site near enough to meet e is in a neighbouring cell (radii <=
+        // rmax); nested sites lie inside their hosts, so only the hosts e meets
+        // need their nested sites checked.
+        const long cx = floor_to_long((xc + o.box) / cell), cy = floor_to_long((yc + o.box) / cell);
+        bool ok = true;
+        for (long i = cx - 1; i <= cx + 1 && ok; ++i)
+            for (long j = cy - 1; j <= cy + 1 && ok; ++j) {
+                auto it = grid.find({i, j});
+                if (it == grid.end()) continue;
+                for (std::size_t k : it->second) {
+                    const CirclePair rel = circle_pair(e, placed[k]);
+                    if (rel == CirclePair::separated) continue;
+                    if (rel == CirclePair::other || (k != t && !crosses[k])) { ok = false; break; }
+                    if (k < hosts)
+                        for (std::size_t m : inside[k])
+                            if (circle_pair(e, placed[m]) != CirclePair::separated) { ok = false; break; }
+                    if (!ok) break;
+                }
+            }
+        if (!ok) continue;
+        if (pair) {
+            crosses[t] = 1;
+            crossing_ids.push_back(t);
+            free_targets[slot] = free_targets.back();
+            free_targets.pop_back();
+        }
+        grid[{cx, cy}].push_back(placed.size());
+        crosses.push_back(1);
+        crossing_ids.push_back(placed.size());
+        placed.push_back(std::move(e));
+        ++p;
     }
 
     // Fisher-Yates with our own uniform draws.

@@ -1,11 +1,12 @@
 // Deterministic generators: reproducibility, disjointness (conservative and by exact
-// boundary sampling), nested fraction, bit sizes, and the paper's datasets.
+// boundary sampling), nested fraction, crossing circles, bit sizes, and the paper's datasets.
 #include <catch2/catch.hpp>
 
 #include "sites/site_generators.hpp"
 #include "sites/site_io.hpp"
 #include "util/error.hpp"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
@@ -50,9 +51,33 @@ long nested_count(const std::vector<Ellipse>& s) {
     return n;
 }
 
-void check_disjoint(const std::vector<Ellipse>& s, bool sample) {
+// Crossing circles written out here, independently of the generator's test.
+bool cross(const Ellipse& c1, const Ellipse& c2) {
+    const Rational dx = c1.xc() - c2.xc(), dy = c1.yc() - c2.yc(), d2 = dx * dx + dy * dy;
+    const Rational sum = c1.a() + c2.a(), diff = c1.a() - c2.a();
+    return diff * diff < d2 && d2 < sum * sum;
+}
+
+// How many sites cross at least one other (circles).
+long crossing_count(const std::vector<Ellipse>& s) {
+    std::vector<char> crosses(s.size(), 0);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = i + 1; j < s.size(); ++j)
+            if (cross(s[i], s[j])) crosses[i] = crosses[j] = 1;
+    return static_cast<long>(std::count(crosses.begin(), crosses.end(), 1));
+}
+
+long rounded(const Rational& fraction, long count) {
+    Rational q = fraction * Rational(count) + Rational(1, 2);  // round half up
+    return fmpz_get_si(fmpq_numref(q.get())) / fmpz_get_si(fmpq_denref(q.get()));
+}
+
+// Every pair separated or nested (bounding-circle tests, and boundary sampling
+// if `sample`); with `crossing_circles`, pairs of crossing circles are skipped.
+void check_disjoint(const std::vector<Ellipse>& s, bool sample, bool crossing_circles = false) {
     for (std::size_t i = 0; i < s.size(); ++i)
         for (std::size_t j = i + 1; j < s.size(); ++j) {
+            if (crossing_circles && cross(s[i], s[j])) continue;
             const bool in_ij = bounding_circle_inside_inscribed(s[i], s[j]);
             const bool in_ji = bounding_circle_inside_inscribed(s[j], s[i]);
             INFO("sites " << i << " and " << j << ": " << s[i].str() << " | " << s[j].str());
@@ -104,8 +129,7 @@ TEST_CASE("random ellipses and circles are pairwise disjoint, nested fraction ho
         auto s = generate_sites(o);
         REQUIRE(static_cast<long>(s.size()) == c.count);
         check_disjoint(s, true);
-        Rational expected = c.fraction * Rational(c.count) + Rational(1, 2);  // round half up
-        CHECK(nested_count(s) == fmpz_get_si(fmpq_numref(expected.get())) / fmpz_get_si(fmpq_denref(expected.get())));
+        CHECK(nested_count(s) == rounded(c.fraction, c.count));
         for (const Ellipse& e : s) {
             if (c.kind == SiteKind::circles) CHECK((e.is_circle() && e.w().is_zero()));
             for (const Rational* v : {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()}) {
@@ -123,6 +147,112 @@ TEST_CASE("random ellipses and circles are pairwise disjoint, nested fraction ho
     auto s = generate_sites(big);
     check_disjoint(s, false);
     CHECK(nested_count(s) == 30);
+}
+
+TEST_CASE("sites made before the crossing option are unchanged", "[sites][generators]") {
+    // Output of the generator before crossing_fraction existed (commit edffa80).
+    GeneratorOptions o;
+    o.kind = SiteKind::circles;
+    o.count = 4;
+    o.seed = 11;
+    o.nested_fraction = Rational(1, 4);
+    const std::string circles = "133/12 133/12 0 -3595/87 655/237\n41/6 41/6 0 -2759/78 -9331/197\n"
+                                "268/61 268/61 0 13329/254 -279/7\n111/94 111/94 0 360/7 -892/23\n";
+    CHECK(text(generate_sites(o)).find(circles) != std::string::npos);
+    o.crossing_fraction = Rational(0);
+    CHECK(text(generate_sites(o)).find(circles) != std::string::npos);
+    CHECK(describe(o) == "ellvor generate circles --count 4 --seed 11 --bits 8 --box 100 --nested-fraction 1/4");
+    o.kind = SiteKind::ellipses;
+    o.count = 3;
+    o.nested_fraction = Rational(0);
+    CHECK(text(generate_sites(o)).find("268/61 1091/254 -67/210 -1852/41 9749/178\n"
+                                       "787/145 2089/234 29/167 -9600/143 -11194/227\n"
+                                       "484/47 10/3 55/92 7460/127 1038/23\n") != std::string::npos);
+}
+
+TEST_CASE("crossing circles: exactly round(fraction * count) cross another, checked exactly", "[sites][generators]") {
+    struct Case { long count; Rational crossing, nested; long bits; Rational box; };
+    for (const Case& c : {Case{40, Rational(3, 10), Rational(0), 8, Rational(100)},       // K = 12
+                          Case{60, Rational(1, 3), Rational(1, 10), 6, Rational(50)},     // K = 20, 6 nested
+                          Case{31, Rational(1, 2), Rational(0), 8, Rational(100)},        // K = 16 (15.5 rounded up)
+                          Case{25, Rational(1), Rational(0), 8, Rational(100)},           // every circle, K odd
+                          Case{30, Rational(1, 10), Rational(1, 5), 8, Rational(100)},    // K = 3: last partner alone
+                          Case{200, Rational(3, 10), Rational(0), 1, Rational(256 * 15)}}) {  // benchmark-like, dyadic
+        GeneratorOptions o;
+        o.kind = SiteKind::circles;
+        o.count = c.count;
+        o.seed = 17;
+        o.bits = c.bits;
+        o.box = c.box;
+        o.nested_fraction = c.nested;
+        o.crossing_fraction = c.crossing;
+        INFO("count " << c.count << ", crossing " << c.crossing.str() << ", nested " << c.nested.str());
+        const auto s = generate_sites(o);
+        REQUIRE(static_cast<long>(s.size()) == c.count);
+        CHECK(crossing_count(s) == rounded(c.crossing, c.count));
+        CHECK(nested_count(s) == rounded(c.nested, c.count));
+        // the rest: separated or nested, no tangency, no identical sites
+        check_disjoint(s, c.count <= 60, true);
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            CHECK((s[i].is_circle() && s[i].w().is_zero()));
+            for (const Rational* v : {&s[i].xc(), &s[i].yc()}) CHECK((-c.box <= *v && *v <= c.box));
+            for (std::size_t j = i + 1; j < s.size(); ++j) CHECK(circles_cross(s[i], s[j]) == cross(s[i], s[j]));
+        }
+        CHECK(text(generate_sites(o)) == text(s));
+        o.seed = 18;
+        CHECK(text(generate_sites(o)) != text(s));
+        CHECK(describe(o).find(" --crossing " + c.crossing.str()) != std::string::npos);
+    }
+    // Without nested sites, the separated circles are those of fraction 0: all
+    // but the ceil(K/2) partners of the crossing set are in the disjoint set.
+    GeneratorOptions o;
+    o.kind = SiteKind::circles;
+    o.count = 300;
+    o.seed = 2;
+    const auto disjoint = generate_sites(o);
+    o.crossing_fraction = Rational(3, 10);  // K = 90, 45 partners
+    const auto crossing = generate_sites(o);
+    CHECK(crossing_count(crossing) == 90);
+    std::set<std::string> in_disjoint;
+    for (const Ellipse& e : disjoint) in_disjoint.insert(e.str());
+    long common = 0;
+    for (const Ellipse& e : crossing) common += in_disjoint.count(e.str());
+    CHECK(common == 300 - 45);
+}
+
+TEST_CASE("crossing option errors", "[sites][generators]") {
+    GeneratorOptions o;
+    o.kind = SiteKind::ellipses;
+    o.count = 20;
+    o.crossing_fraction = Rational(1, 4);
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("between circles only"));
+    o.crossing_fraction = Rational(0);
+    CHECK(generate_sites(o).size() == 20);
+    o.kind = SiteKind::circles;
+    o.crossing_fraction = Rational(-1, 4);
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("crossing fraction must be in [0, 1]"));
+    o.crossing_fraction = Rational(5, 4);
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("crossing fraction must be in [0, 1]"));
+    o.crossing_fraction = Rational(1, 20);  // K = 1
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two circles"));
+    o.crossing_fraction = Rational(1, 40);  // K = round(1/2) = 1
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two circles"));
+    o.crossing_fraction = Rational(1, 100);  // K = 0: no crossing
+    CHECK(crossing_count(generate_sites(o)) == 0);
+    o.nested_fraction = Rational(1, 2);
+    o.crossing_fraction = Rational(11, 20);  // K = 11 > 10 not nested
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("nested sites never cross"));
+    o.crossing_fraction = Rational(1, 2);  // K = 10: every non-nested circle crosses
+    const auto s = generate_sites(o);
+    CHECK(crossing_count(s) == 10);
+    CHECK(nested_count(s) == 10);
+    const Ellipse e1 = Ellipse::circle(Rational(0), Rational(0), Rational(1));
+    const Ellipse e2(Rational(2), Rational(1), Rational(0), Rational(1), Rational(0));
+    CHECK_THROWS_AS(circles_cross(e1, e2), Error);
+    CHECK(circles_cross(e1, Ellipse::circle(Rational(1), Rational(0), Rational(1))));
+    CHECK(!circles_cross(e1, Ellipse::circle(Rational(2), Rational(0), Rational(1))));  // tangent
+    CHECK(!circles_cross(e1, Ellipse::circle(Rational(1, 2), Rational(0), Rational(1, 2))));  // internally tangent
+    CHECK(!circles_cross(e1, e1));
 }
 
 TEST_CASE("generator option errors", "[sites][generators]") {
