@@ -84,6 +84,20 @@ bool supports_apart_in_doubles(const Ellipse& e1, const Ellipse& e2) {
     return gap.finite() && gap.positive();
 }
 
+// Two circles, exactly: |C1 - C2|^2 against (r1 + r2)^2 and (r1 - r2)^2.
+RelativePosition circle_position(const Ellipse& c1, const Ellipse& c2) {
+    const Rational dx = c1.xc() - c2.xc(), dy = c1.yc() - c2.yc(), d2 = dx * dx + dy * dy;
+    const Rational sum = c1.a() + c2.a(), difference = c1.a() - c2.a();
+    const int outer = fmpq_cmp(d2.get(), (sum * sum).get()), inner = fmpq_cmp(d2.get(), (difference * difference).get());
+    if (outer > 0) return RelativePosition::separated;
+    if (outer == 0) return RelativePosition::externally_tangent;
+    if (inner > 0) return RelativePosition::intersecting;
+    if (difference.is_zero()) return RelativePosition::identical;  // d2 = 0 and equal radii
+    const bool first_larger = difference.sign() > 0;
+    if (inner == 0) return first_larger ? RelativePosition::second_inside_tangent : RelativePosition::first_inside_tangent;
+    return first_larger ? RelativePosition::second_inside : RelativePosition::first_inside;
+}
+
 }  // namespace
 
 bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2) {
@@ -99,6 +113,7 @@ Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e
     if (bounding_circles_apart_in_doubles(e1, e2) || supports_apart_in_doubles(e1, e2) ||
         bounding_circles_apart_exactly(e1, e2))
         return Decision<RelativePosition>::decided(RelativePosition::separated, Stage::filter);
+    if (e1.is_circle() && e2.is_circle()) return exactly(circle_position(e1, e2));
     const IntPolynomial i12 = intersection_quartic(e1, e2);
     if (i12.is_zero()) return exactly(RelativePosition::identical);
     const ContactPoints contact = contact_points(i12);

@@ -232,3 +232,34 @@ TEST_CASE("bounding circles apart in doubles: never claims a pair whose exact te
     CHECK(far > 500);
     CHECK(decided >= far);
 }
+
+TEST_CASE("relative position of two circles (closed form) against the intersection quartic", "[predicates][relative_position]") {
+    // Integer circles on a small grid, so that tangencies, equal radii and
+    // concentric pairs are frequent. The oracle is the general code: the
+    // number of distinct points the boundaries share (the quartic's real
+    // roots) and the sign of each conic at the other's center.
+    std::mt19937_64 rng(7);
+    auto draw = [&](long lo, long hi) { return lo + static_cast<long>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+    int seen[8] = {};
+    for (int n = 0; n < 3000; ++n) {
+        const long r1 = draw(1, 6), r2 = draw(1, 6);
+        const Ellipse e1 = Ellipse::circle(draw(-6, 6), draw(-6, 6), r1), e2 = Ellipse::circle(draw(-6, 6), draw(-6, 6), r2);
+        INFO(e1.str() << " | " << e2.str());
+        const Decision<RelativePosition> got = relative_position(e1, e2);
+        ++seen[static_cast<int>(*got)];
+        if (e1.xc() == e2.xc() && e1.yc() == e2.yc() && r1 == r2) {
+            CHECK(*got == RP::identical);
+            continue;
+        }
+        const int meeting = boundary_meeting_points(e1, e2);
+        const bool center1_in_2 = e2.side_of_point(e1.xc(), e1.yc()) < 0, center2_in_1 = e1.side_of_point(e2.xc(), e2.yc()) < 0;
+        RP want;
+        if (meeting == 2) want = RP::intersecting;
+        else if (!center1_in_2 && !center2_in_1) want = meeting ? RP::externally_tangent : RP::separated;
+        else if (r1 < r2) want = meeting ? RP::first_inside_tangent : RP::first_inside;
+        else want = meeting ? RP::second_inside_tangent : RP::second_inside;
+        CHECK(*got == want);
+    }
+    for (int k = 0; k < 8; ++k)  // every position, tangencies included (identical pairs are rare)
+        CHECK(seen[k] >= (k == static_cast<int>(RP::identical) ? 1 : 10));
+}
