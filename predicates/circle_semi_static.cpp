@@ -85,17 +85,21 @@ public:
     // +1 when the circle of orientation o is one of signed distances, R +
     // r_i > 0 for the three sites, -1 when not, 0 when unproven (as
     // TangentCircles::circle in circle_predicates.cpp). The lifted s = R + r1
-    // is (m_s + sqrt(rad) n_s) / (2 <k, k>); R + r_i = s + rho_i. The site
-    // with the smallest radius decides; the doubles of rounded inputs keep the
-    // order of the radii except at ties, so every tied site is asked.
-    int radius_sign(int o) const {
+    // is (m_s + sqrt(rad) n_s) / (2 <k, k>); R + r_i = s + rho_i. R > 0, the
+    // one sign sites that do not overlap need, proves it; else the site with
+    // the smallest radius decides (the doubles of rounded inputs keep the order
+    // of the radii except at ties, so every tied site is asked).
+    int radius_sign(int o) {
+        const auto n_s = o > 0 ? -k_s_ : k_s_;
+        const bool positive = height_sign(-c1_.r, n_s) > 0;
+        if (o > 0) ccw_radius_positive_ = positive;
+        if (positive) return 1;
         const double smallest = std::fmin(c1_.r.value, std::fmin(c2_r_, c3_r_));
         int sign = 1;
         auto require = [&](int s) {
             if (s < 0) sign = -1;
             else if (s == 0 && sign > 0) sign = 0;
         };
-        const auto n_s = o > 0 ? -k_s_ : k_s_;
         if (c1_.r.value == smallest) require(certain_sign_with_root(m_s_, n_s, rad_) * kk_sign_);
         if (c2_r_ == smallest) require(height_sign(a2_.s, n_s));
         if (c3_r_ == smallest) require(height_sign(a3_.s, n_s));
@@ -109,8 +113,10 @@ public:
     int conflict_sign(const Circle<K>& q) const {
         const Lifted<K> a = lift(q, c1_);
         // R + r_Q < 0 (an internal circle deeper than Q's radius): no conflict
-        // whatever the squares say. R + r_Q > R + r_min > 0 unless Q is smaller.
-        if (q.r.value <= std::fmin(c1_.r.value, std::fmin(c2_r_, c3_r_))) {
+        // whatever the squares say. Not when R > 0 (radius_sign(1) proved it,
+        // as it does for all sites that do not overlap), and R + r_Q > R +
+        // r_min > 0 unless Q is smaller.
+        if (!ccw_radius_positive_ && q.r.value <= std::fmin(c1_.r.value, std::fmin(c2_r_, c3_r_))) {
             const int height = height_sign(a.s, -k_s_);
             if (height <= 0) return height < 0 ? 1 : 0;
         }
@@ -152,13 +158,14 @@ private:
         m_x_, m_y_, m_s_;  // M (the sign of m_x, m_y is in the formulas)
     decltype(std::declval<Power>() * std::declval<Power>() * std::declval<Power>()) rad_;
     int kk_sign_ = 0;
+    bool ccw_radius_positive_ = false;  // radius_sign(1) proved R > 0
 };
 
 // kappa3 from circles of index K.
 template <int K>
 Decision<InCircle> incircle_of(const Circle<K>& c1, const Circle<K>& c2, const Circle<K>& c3, const Circle<K>& q) {
     const Decision<InCircle> undecided = Decision<InCircle>::undecided(Stage::filter, 0);
-    const std::optional<TangentCircles<K>> circles = TangentCircles<K>::of(c1, c2, c3);
+    std::optional<TangentCircles<K>> circles = TangentCircles<K>::of(c1, c2, c3);
     if (!circles) return undecided;
     const int radius = circles->radius_sign(1);
     if (radius < 0) return Decision<InCircle>::decided(InCircle::no_circle, Stage::filter);
@@ -189,7 +196,7 @@ Decision<VoronoiCircles> circle_voronoi_circle_count_semi_static(const Ellipse& 
     const Decision<VoronoiCircles> undecided = Decision<VoronoiCircles>::undecided(Stage::filter, 0);
     const auto e1 = exact_circle(c1), e2 = exact_circle(c2), e3 = exact_circle(c3);
     if (!e1 || !e2 || !e3) return undecided;
-    const std::optional<TangentCircles<0>> circles = TangentCircles<0>::of(*e1, *e2, *e3);
+    std::optional<TangentCircles<0>> circles = TangentCircles<0>::of(*e1, *e2, *e3);
     if (!circles) return undecided;
     const int ccw = circles->radius_sign(1), cw = circles->radius_sign(-1);
     if (ccw == 0 || cw == 0) return undecided;

@@ -86,7 +86,7 @@ py::array_t<double> sites_array(const Sites& s) {
 }
 
 Sites generate(const std::string& kind, long count, std::uint64_t seed, long bits, py::handle box,
-               py::handle nested_fraction) {
+               py::handle nested_fraction, py::handle crossing) {
     // The checks of `ellvor generate` (cli/command_generate.cpp), as ValueErrors.
     if (kind != "ellipses" && kind != "circles" && kind != "nested")
         throw py::value_error("kind: expected 'ellipses', 'circles' or 'nested', got '" + kind + "'");
@@ -105,6 +105,11 @@ Sites generate(const std::string& kind, long count, std::uint64_t seed, long bit
                                                   : to_rational(nested_fraction, "nested_fraction");
     if (o.nested_fraction.sign() < 0 || o.nested_fraction >= Rational(1))
         throw py::value_error("nested_fraction: expected a rational in [0, 1), got " + o.nested_fraction.str());
+    o.crossing_fraction = to_rational(crossing, "crossing");
+    if (o.crossing_fraction.sign() < 0 || o.crossing_fraction > Rational(1))
+        throw py::value_error("crossing: expected a rational in [0, 1], got " + o.crossing_fraction.str());
+    if (!o.crossing_fraction.is_zero() && o.kind != SiteKind::circles)
+        throw py::value_error("crossing: needs 'circles' (crossing sites are supported between circles only)");
     Sites s;
     {
         py::gil_scoped_release release;
@@ -197,7 +202,7 @@ void bind_sites(py::module_& m) {
 
     m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");
     m.def("generate", &generate, py::arg("kind") = "ellipses", py::arg("count") = 10, py::arg("seed") = 1,
-          py::arg("bits") = 8, py::arg("box") = 100, py::arg("nested_fraction") = py::none());
+          py::arg("bits") = 8, py::arg("box") = 100, py::arg("nested_fraction") = py::none(), py::arg("crossing") = 0);
 }
 
 }  // namespace ellvor::python

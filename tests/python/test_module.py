@@ -38,15 +38,22 @@ def test_build_accepts_paths_sites_and_lists(root):
         ellvor.build(42)
 
 
-def test_generate_checks_its_arguments():
+def test_generate_checks_its_arguments(cli, write_sites):
     for kwargs in ({"kind": "squares"}, {"count": -1}, {"count": 10**7}, {"bits": 0}, {"bits": 1001},
                    {"box": 0}, {"box": "-1"}, {"nested_fraction": 1}, {"nested_fraction": "-0.1"},
-                   {"count": 5000, "box": "1/100"}):
+                   {"count": 5000, "box": "1/100"}, {"crossing": "1/2"}, {"kind": "circles", "crossing": 2},
+                   {"kind": "circles", "count": 10, "crossing": "1/10"}):
         with pytest.raises(ValueError):
             ellvor.generate(**kwargs)
     nested = ellvor.generate("nested", count=40, seed=3)
     assert len(ellvor.build(nested).hidden) == 10  # a quarter by default, as the CLI
     assert all(e.is_circle for e in ellvor.generate("circles", count=30))
+    # As `ellvor generate circles --crossing 3/10`: exactly 30% cross another circle.
+    crossing = ellvor.generate("circles", count=100, seed=4, crossing="3/10")
+    _, text, _ = cli("generate", "circles", "--count", 100, "--seed", 4, "--crossing", "3/10")
+    assert list(crossing) == list(ellvor.read_sites(write_sites(text)))
+    d = ellvor.build(crossing)
+    assert d.validate() == ""
 
 
 @pytest.mark.parametrize("fmt", ["ell", "cin"])
