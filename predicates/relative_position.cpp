@@ -137,6 +137,7 @@ int boundary_meeting_points(const Ellipse& e1, const Ellipse& e2) {
 }
 
 std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2) {
+    if (e1.is_circle() && e2.is_circle()) return "";  // two circles meet in two points at most
     const int points = boundary_meeting_points(e1, e2);
     if (points > 2)
         return "their boundaries meet in " + std::to_string(points) + " points (sites may cross in at most two)";
