@@ -32,6 +32,7 @@
 // ANOMALY and makes the program exit with status 1.
 #include "experiments/apollonius_comparison.hpp"
 #include "experiments/peak_memory.hpp"
+#include "experiments/predicate_stages.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "predicates/ellipse_delaunay_traits.hpp"
@@ -204,25 +205,6 @@ double kappa1_seconds(const std::vector<Ellipse>& sites) {
     return (c1 - c0) / calls;
 }
 
-struct Pred {
-    const char* name;
-    const PredicateCount TraitsStats::*field;
-};
-const Pred kPreds[] = {
-    {"is_hidden", &TraitsStats::is_hidden},
-    {"kappa1", &TraitsStats::side_of_bisector},
-    {"kappa2", &TraitsStats::vertex_conflict3},
-    {"kappa3", &TraitsStats::vertex_conflict4},
-    {"kappa4_finite", &TraitsStats::finite_edge},
-    {"kappa4_infinite", &TraitsStats::infinite_edge},
-};
-
-std::string stage_triple(const PredicateCount& p) {
-    if (p.calls == 0) return "0";
-    return std::to_string(p.calls) + " (" + std::to_string(p.stages[Stage::filter]) + "/" +
-           std::to_string(p.stages[Stage::subdivision]) + "/" + std::to_string(p.stages[Stage::exact]) + ")";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -337,14 +319,14 @@ int main(int argc, char** argv) {
     // CSV
     std::ostringstream csv;
     csv << "set,n,seconds,cpu_seconds,runs,us_per_insertion,visible,hidden,edges,faces";
-    for (const Pred& p : kPreds) csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
+    for (const PredicateColumn& p : kPredicateColumns) csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
     csv << ",walk_steps,conflict_faces,degree2_insertions,validate,brute_force,equals_cgal,kappa1_us_per_call,"
            "peak_rss_growth_bytes\n";
     for (const Row& r : rows) {
         csv << r.set << "," << r.n << "," << fmt("%.6g", r.seconds) << "," << fmt("%.6g", r.cpu_seconds) << "," << r.reps
             << "," << fmt("%.6g", 1e6 * r.seconds / r.n) << "," << r.visible << "," << r.hidden << "," << r.edges << ","
             << (is_cgal(r) ? std::string("") : std::to_string(r.faces));
-        for (const Pred& p : kPreds) {
+        for (const PredicateColumn& p : kPredicateColumns) {
             const PredicateCount& c = r.stats.*(p.field);
             if (is_cgal(r))
                 csv << ",,,,";
@@ -434,14 +416,14 @@ int main(int argc, char** argv) {
     md << "\n## Predicate calls per stage\n\ncalls (filter / subdivision / exact); memoized answers are not "
           "counted. kappa1 = side_of_bisector (nearest-neighbour walk), kappa2 = infinite Voronoi vertex, kappa3 = "
           "InCircle, kappa4 = edge conflicts.\n\n| set | n |";
-    for (const Pred& p : kPreds) md << " " << p.name << " |";
+    for (const PredicateColumn& p : kPredicateColumns) md << " " << p.name << " |";
     md << "\n|---|---:|";
-    for (std::size_t i = 0; i < sizeof kPreds / sizeof kPreds[0]; ++i) md << "---|";
+    for (std::size_t i = 0; i < sizeof kPredicateColumns / sizeof kPredicateColumns[0]; ++i) md << "---|";
     md << "\n";
     for (const Row& r : rows) {
         if (is_cgal(r)) continue;
         md << "| " << r.set << " | " << r.n << " |";
-        for (const Pred& p : kPreds) md << " " << stage_triple(r.stats.*(p.field)) << " |";
+        for (const PredicateColumn& p : kPredicateColumns) md << " " << stage_triple(r.stats.*(p.field)) << " |";
         md << "\n";
     }
 

@@ -32,6 +32,7 @@
 // a broken construction -- is printed as "ANOMALY: ..." with a replayable .ell
 // snippet and makes the program exit with status 1.
 #include "experiments/peak_memory.hpp"
+#include "experiments/predicate_stages.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "graph/triangulation_index.hpp"
@@ -718,11 +719,6 @@ Table stage_table() {
     return {"graph_predicates", {"graph", "is_hidden", "kappa1", "kappa2", "kappa3", "kappa4 finite", "kappa4 infinite",
                                  "calls timed", "in predicates", "time by predicate: share (mean)", "mean per call",
                                  "slowest call (in the build)", "which", "that call alone, cold: CPU (wall)"}};
-}
-
-std::string stage_triple(const PredicateCount& p) {
-    return std::to_string(p.calls) + " (" + std::to_string(p.stages[Stage::filter]) + "/" +
-           std::to_string(p.stages[Stage::subdivision]) + "/" + std::to_string(p.stages[Stage::exact]) + ")";
 }
 
 // "kappa3 41% (2.1 µs), kappa4 ...": the predicates by decreasing share of the timed calls' time.

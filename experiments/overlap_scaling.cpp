@@ -29,6 +29,7 @@
 //   build/experiments/overlap_scaling --full --out experiments/results   # 10^3 .. 10^5; overlap.csv, .md
 #include "experiments/apollonius_comparison.hpp"
 #include "experiments/peak_memory.hpp"
+#include "experiments/predicate_stages.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "predicates/ellipse_delaunay_traits.hpp"
@@ -192,25 +193,6 @@ Row run_cgal(const std::string& set, const std::vector<Ellipse>& sites, Summary&
     return r;
 }
 
-struct Pred {
-    const char* name;
-    const PredicateCount TraitsStats::*field;
-};
-const Pred kPreds[] = {
-    {"is_hidden", &TraitsStats::is_hidden},
-    {"kappa1", &TraitsStats::side_of_bisector},
-    {"kappa2", &TraitsStats::vertex_conflict3},
-    {"kappa3", &TraitsStats::vertex_conflict4},
-    {"kappa4_finite", &TraitsStats::finite_edge},
-    {"kappa4_infinite", &TraitsStats::infinite_edge},
-};
-
-std::string stage_triple(const PredicateCount& p) {
-    if (p.calls == 0) return "0";
-    return std::to_string(p.calls) + " (" + std::to_string(p.stages[Stage::filter]) + "/" +
-           std::to_string(p.stages[Stage::subdivision]) + "/" + std::to_string(p.stages[Stage::exact]) + ")";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -313,14 +295,14 @@ int main(int argc, char** argv) {
     // CSV
     std::ostringstream csv;
     csv << "library,set,n,seconds,cpu_seconds,runs,crossing_sites,crossing_pairs,visible,hidden,edges";
-    for (const Pred& p : kPreds)
+    for (const PredicateColumn& p : kPredicateColumns)
         csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
     csv << ",relative_position_cpu_seconds,validate,equals_cgal,peak_rss_growth_bytes\n";
     for (const Row& r : rows) {
         csv << r.library << "," << r.set << "," << r.n << "," << fmt("%.6g", r.seconds) << "," << fmt("%.6g", r.cpu_seconds)
             << "," << r.reps << "," << r.crossing_sites << "," << r.crossing_pairs << "," << r.visible << "," << r.hidden
             << "," << r.edges;
-        for (const Pred& p : kPreds) {
+        for (const PredicateColumn& p : kPredicateColumns) {
             const PredicateCount& c = r.stats.*(p.field);
             if (r.library == "cgal")
                 csv << ",,,,";
@@ -408,14 +390,14 @@ int main(int argc, char** argv) {
     md << "\n## Predicate calls per stage (ellvor)\n\ncalls (filter / subdivision / exact); memoized answers are not "
           "counted. is_hidden decides the relative position of the pairs the graph meets; kappa1 = side_of_bisector, "
           "kappa2 = infinite Voronoi vertex, kappa3 = InCircle, kappa4 = edge conflicts.\n\n| set | n |";
-    for (const Pred& p : kPreds) md << " " << p.name << " |";
+    for (const PredicateColumn& p : kPredicateColumns) md << " " << p.name << " |";
     md << "\n|---|---:|";
-    for (std::size_t i = 0; i < sizeof kPreds / sizeof kPreds[0]; ++i) md << "---|";
+    for (std::size_t i = 0; i < sizeof kPredicateColumns / sizeof kPredicateColumns[0]; ++i) md << "---|";
     md << "\n";
     for (const Row& r : rows) {
         if (r.library != "ellvor") continue;
         md << "| " << r.set << " | " << r.n << " |";
-        for (const Pred& p : kPreds) md << " " << stage_triple(r.stats.*(p.field)) << " |";
+        for (const PredicateColumn& p : kPredicateColumns) md << " " << stage_triple(r.stats.*(p.field)) << " |";
         md << "\n";
     }
 
