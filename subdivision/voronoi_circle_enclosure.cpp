@@ -1,6 +1,7 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include "subdivision/huge_circle_start.hpp"
+#include "subdivision/inscribed_disk.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/error.hpp"
 
@@ -166,19 +167,30 @@ Ball orientation(const Charts& charts, const BallMatrix& X, long prec, bool of_n
     return orient;
 }
 
-// rho > -min_i (smallest radius of curvature of E_i) = -min_i min(a, b)^2 /
-// max(a, b), certainly: then the disk of radius -rho touching E_i at P_i from
-// inside lies in E_i (Blaschke's rolling theorem), so P_i is the boundary
-// point nearest to V and rho the signed distance (DESIGN.md §4.1).
-bool above_depth_limit(const std::array<const Ellipse*, 3>& sites, const arb_t rho, long prec) {
-    for (const Ellipse* e : sites) {
+// rho is the signed distance from V to each site, for rho <= 0 (an internal
+// circle of overlapping sites, DESIGN.md §4.1): while -rho stays below the
+// site's smallest radius of curvature min(a, b)^2 / max(a, b), the disk of
+// radius -rho touching E_i at P_i from inside lies in E_i (Blaschke's rolling
+// theorem), so P_i is the boundary point nearest to V; deeper, up to E_i's
+// medial axis, disk_inside_ellipse proves the same over the box K.
+bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::array<bool, 3>& flipped,
+                      const BallMatrix& K, long prec) {
+    const arb_struct* rho = K.at(3, 0);
+    for (int i = 0; i < 3; ++i) {
+        const Ellipse* e = sites[i];
         const bool a_small = e->a() < e->b();
         const Rational& small = a_small ? e->a() : e->b();
         const Rational& large = a_small ? e->b() : e->a();
         Ball limit;
         arb_set_fmpq(limit.get(), (small * small / large).get(), prec);
         arb_add(limit.get(), limit.get(), rho, prec);
-        if (!arb_is_positive(limit.get())) return false;
+        if (arb_is_positive(limit.get())) continue;
+        Ball t, r, vx, vy;
+        arb_set(t.get(), K.at(i, 0));
+        arb_set(r.get(), rho);
+        arb_set(vx.get(), K.at(4, 0));
+        arb_set(vy.get(), K.at(5, 0));
+        if (!disk_inside_ellipse(*e, flipped[i], t, r, vx, vy, prec)) return false;
     }
     return true;
 }
@@ -275,11 +287,11 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
         if (!arb_is_positive(orientation(charts(), K, orientation_prec).get())) return false;
     } else {
         // An internal circle of overlapping sites (rho < 0), or one of radius
-        // 0 where three boundaries meet: rho is the signed distance to E_i
-        // while -rho stays below E_i's smallest radius of curvature (DESIGN.md
-        // §4.1), and the tangency points, V + |rho| nu_i, are counter-clockwise
-        // iff the normals are (at rho = 0 only the normals tell).
-        if (!above_depth_limit(work_sites_, K.at(3, 0), prec)) return false;
+        // 0 where three boundaries meet: rho must be the signed distance to
+        // each site, and the tangency points, V + |rho| nu_i, are
+        // counter-clockwise iff the normals are (at rho = 0 only the normals
+        // tell).
+        if (!signed_distances(work_sites_, enclosure_.flipped, K, prec)) return false;
         if (!arb_is_positive(orientation(charts(), K, prec, true).get())) return false;
     }
 

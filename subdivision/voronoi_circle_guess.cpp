@@ -103,14 +103,15 @@ bool newton(const std::array<Shape, 3>& e, Vector6& X) {
 
 // The tangency points appear counter-clockwise on the circle iff their unit
 // normals do (P_i = V - rho nu_i: the same orientation for every rho != 0,
-// and the only one defined at rho = 0); and the radius must be a signed
+// and the only one defined at rho = 0); and the radius can be a signed
 // distance: positive, or (overlapping sites) above minus every site's
-// smallest radius of curvature (the certificate's condition, DESIGN.md §4.1).
+// smallest semi-axis, the depth of its deepest point (whether the foot points
+// are the nearest ones is the certificate's question, DESIGN.md §4.1).
 bool is_counterclockwise_solution(const std::array<Shape, 3>& e, const Vector6& X) {
     double n[3][2];
     for (int i = 0; i < 3; ++i) {
         const Shape& k = e[i];
-        if (!(X[3] > -std::min(k.a, k.b) * std::min(k.a, k.b) / std::max(k.a, k.b))) return false;
+        if (!(X[3] > -std::min(k.a, k.b))) return false;
         // The outward normal at angle theta: (b cos, a sin) in the ellipse's frame.
         const double lx = k.b * std::cos(X[i]), ly = k.a * std::sin(X[i]), length = std::hypot(lx, ly);
         n[i][0] = (lx * k.c - ly * k.s) / length;
