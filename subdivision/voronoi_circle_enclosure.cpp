@@ -423,10 +423,18 @@ bool VoronoiCircleSolver::certify_from(const VoronoiCircleStart& start) {
             if (step >= kStalledNewtonBits) continue;
             return false;
         }
-        // A root of the wrong kind (rho <= 0, clockwise) would fail Krawczyk's
-        // final test: skip it cheaply.
-        if (arf_sgn(arb_midref(midpoint_.at(3, 0))) <= 0) return false;
-        if (arf_sgn(arb_midref(orientation(charts(), midpoint_, prec).get())) <= 0) return false;
+        // A root of the wrong kind (clockwise, or an internal circle deeper
+        // than the certificate's limit) would fail Krawczyk's final test: skip
+        // it cheaply. Near rho = 0 the points' orientation is rho^2 times the
+        // normals' and drowns in rounding: either one positive lets it through.
+        if (arf_sgn(arb_midref(midpoint_.at(3, 0))) > 0) {
+            if (arf_sgn(arb_midref(orientation(charts(), midpoint_, prec).get())) <= 0 &&
+                arf_sgn(arb_midref(orientation(charts(), midpoint_, prec, true).get())) <= 0)
+                return false;
+        } else if (!above_depth_limit(work_sites_, midpoint_.at(3, 0), prec) ||
+                   arf_sgn(arb_midref(orientation(charts(), midpoint_, prec, true).get())) <= 0) {
+            return false;
+        }
         if (krawczyk(prec)) return true;
     }
     return false;

@@ -51,6 +51,30 @@ long scale_exponent(const std::array<const Ellipse*, 3>& sites) {
     return exponent_bound(std::max(x_max - x_min, y_max - y_min));
 }
 
+// Exponent of L_in: 2^(e-1) <= the smallest semi-axis of the three < 2^e. A
+// point at signed distance rho <= 0 from all three sites lies at depth -rho
+// in each, and no point of an ellipse is deeper than its smaller semi-axis
+// (the depth of the medial axis' middle), so branch (C) needs -rho < L_in.
+long internal_scale_exponent(const std::array<const Ellipse*, 3>& sites) {
+    Rational smallest = std::min(sites[0]->a(), sites[0]->b());
+    for (const Ellipse* e : sites) smallest = std::min({smallest, e->a(), e->b()});
+    return exponent_bound(smallest);
+}
+
+// Some two of the sites certainly share no point: their circumscribed
+// circles (radius the larger semi-axis) are apart. Then no point has signed
+// distance <= 0 from all three, and branch (C) holds no Voronoi circle.
+bool some_pair_apart(const std::array<const Ellipse*, 3>& sites) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) {
+            const Ellipse &e = *sites[i], &f = *sites[j];
+            const Rational dx = e.xc() - f.xc(), dy = e.yc() - f.yc();
+            const Rational reach = std::max(e.a(), e.b()) + std::max(f.a(), f.b());
+            if (dx * dx + dy * dy > reach * reach) return true;
+        }
+    return false;
+}
+
 Ball sub(const Ball& a, const Ball& b, long prec) {
     Ball r;
     arb_sub(r.get(), a.get(), b.get(), prec);
@@ -62,6 +86,12 @@ struct PointNormal {
     Ball px, py, nx, ny;
 };
 
+enum class Branch {
+    radius,          // (A) rho = s L
+    inverse_radius,  // (B) rho = L / s
+    internal,        // (C) rho = -s L_in
+};
+
 // A box of the search: chart flags, branch, and four coordinates as balls.
 // The chart parameters have an exact dyadic midpoint and a power-of-two
 // radius (bisection is exact), with the point and normal at both ends (a
@@ -70,7 +100,7 @@ struct PointNormal {
 // they do not pin it down: the search is mostly over the 3 chart parameters.
 struct Box {
     std::array<bool, 3> flipped{};
-    bool inverse_radius = false;  // branch (B): s = L / rho; else (A): s = rho / L
+    Branch branch = Branch::radius;
     std::array<Ball, kCoordinates> coordinate;
     std::array<std::array<PointNormal, 2>, 3> ends;  // [site][low end, high end]
 };
@@ -186,8 +216,9 @@ private:
     mutable std::map<long, std::array<Extreme, 4>> cache_;  // by precision: few distinct ones per search
 };
 
-// The equations of pair (i, j), both branches in one form, affine in s:
+// The equations of pair (i, j), all branches in one form, affine in s:
 //   (A) (Pi - Pj) + s L (nui - nuj) = 0,  (B) (nui - nuj) + s (Pi - Pj) / L = 0,
+//   (C) (Pi - Pj) - s L_in (nui - nuj) = 0,
 // i.e. constant + s slope = 0 per coordinate.
 struct PairEquations {
     Ball constant_x, constant_y, slope_x, slope_y;
@@ -195,15 +226,20 @@ struct PairEquations {
 
 class SearchSystem {
 public:
-    explicit SearchSystem(const std::array<const Ellipse*, 3>& sites) : scale_(scale_exponent(sites)) {
+    explicit SearchSystem(const std::array<const Ellipse*, 3>& sites)
+        : sites_(sites), scale_(scale_exponent(sites)), internal_scale_(internal_scale_exponent(sites)),
+          internal_possible_(!some_pair_apart(sites)) {
         for (const Ellipse* e : sites)
             for (bool flipped : {false, true}) arcs_.emplace_back(*e, flipped);
     }
 
+    // Whether branch (C) needs searching: the three sites may share a point.
+    bool internal_possible() const { return internal_possible_; }
+
     // Charts (bit i of `charts`: site i flipped) x [-1, 1]^3 x s in [0, 1].
-    Box root_box(int charts, bool inverse_radius, long prec) const {
+    Box root_box(int charts, Branch branch, long prec) const {
         Box box;
-        box.inverse_radius = inverse_radius;
+        box.branch = branch;
         for (int i = 0; i < 3; ++i) {
             box.flipped[i] = (charts >> i) & 1;
             arb_zero(box.coordinate[i].get());
@@ -250,6 +286,7 @@ public:
         constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
         std::array<PairEquations, 3> pairs;
         Ball& s = box.coordinate[3];
+        if (box.branch == Branch::internal && !narrow_to_medial_depth(q, s, prec)) return true;
         for (int k = 0; k < 3; ++k) {
             pairs[k] = pair_equations(box, q[kPairs[k][0]], q[kPairs[k][1]], prec);
             for (const auto& [constant, slope] : {std::make_pair(&pairs[k].constant_x, &pairs[k].slope_x),
@@ -278,20 +315,23 @@ public:
             arb_addmul(g.get(), sub(pi.py, pj.py, prec).get(), sum.get(), prec);
             if (!arb_contains_zero(g.get())) return true;
         }
-        // det(P2 - P1, P3 - P1) = det(P1 - P2, P1 - P3)
-        const Ball ux = sub(q[0].px, q[1].px, prec), uy = sub(q[0].py, q[1].py, prec);
-        const Ball vx = sub(q[0].px, q[2].px, prec), vy = sub(q[0].py, q[2].py, prec);
-        Ball orientation;
-        arb_mul(orientation.get(), ux.get(), vy.get(), prec);
-        arb_submul(orientation.get(), uy.get(), vx.get(), prec);
-        return arb_is_negative(orientation.get());
+        if (box.branch == Branch::internal && !center_inside_sites(q, s, prec)) return true;
+        // Orientation. At a solution P_i - P_1 = -rho (nu_i - nu_1), so
+        // det(P2 - P1, P3 - P1) = rho^2 det(nu2 - nu1, nu3 - nu1): a
+        // counter-clockwise solution (normals' determinant > 0, DESIGN.md §2)
+        // makes neither negative, whatever the sign of rho. The points' form
+        // is the sharper one for large rho (the normals' shrinks like their
+        // spread squared); the normals' is the only one that tells near rho =
+        // 0, where the points' is rho^2 times it.
+        return arb_is_negative(orientation(q, &PointNormal::px, &PointNormal::py, prec).get()) ||
+               arb_is_negative(orientation(q, &PointNormal::nx, &PointNormal::ny, prec).get());
     }
 
     // The Krawczyk operator of the reduced system (pairs (1, 2), (1, 3)),
     //   K = m - Y F(m) + (I - Y J(box)) (box - m),   Y ~ mid(J(box))^-1:
     // every root in the box lies in K, so K missing the box excludes it --
     // what the range tests cannot do near roots just outside the box or the
-    // domain (rho < 0: circles around the sites).
+    // domain (rho < 0 for (A): circles around the sites, or internal ones).
     bool excluded_by_krawczyk(const Box& box, long prec) const {
         BallMatrix midpoint(kCoordinates, 1), F(kCoordinates, 1), J(kCoordinates, kCoordinates),
             Fm(kCoordinates, 1), Jmid(kCoordinates, kCoordinates), Y(kCoordinates, kCoordinates);
@@ -335,11 +375,19 @@ public:
         for (int i = 0; i < 3; ++i) arb_get_mid_arb(start.parameter[i].get(), box.coordinate[i].get());
         Ball s;
         arb_get_mid_arb(s.get(), box.coordinate[3].get());
-        if (box.inverse_radius)
-            arb_inv(start.radius.get(), s.get(), prec);
-        else
-            arb_set(start.radius.get(), s.get());
-        arb_mul_2exp_si(start.radius.get(), start.radius.get(), scale_);
+        switch (box.branch) {
+            case Branch::radius:
+                arb_mul_2exp_si(start.radius.get(), s.get(), scale_);
+                break;
+            case Branch::inverse_radius:
+                arb_inv(start.radius.get(), s.get(), prec);
+                arb_mul_2exp_si(start.radius.get(), start.radius.get(), scale_);
+                break;
+            case Branch::internal:
+                arb_neg(start.radius.get(), s.get());
+                arb_mul_2exp_si(start.radius.get(), start.radius.get(), internal_scale_);
+                break;
+        }
         arb_get_mid_arb(start.radius.get(), start.radius.get());
         const PointNormal p = arcs(0, box.flipped[0]).at(start.parameter[0], prec);
         for (auto [center, point, normal] : {std::make_tuple(&start.center_x, &p.px, &p.nx),
@@ -359,14 +407,24 @@ private:
         Ball dpx = sub(pi.px, pj.px, prec), dpy = sub(pi.py, pj.py, prec);
         Ball dnx = sub(pi.nx, pj.nx, prec), dny = sub(pi.ny, pj.ny, prec);
         PairEquations e;
-        if (box.inverse_radius) {
-            e.constant_x = std::move(dnx), e.constant_y = std::move(dny);
-            arb_mul_2exp_si(e.slope_x.get(), dpx.get(), -scale_);
-            arb_mul_2exp_si(e.slope_y.get(), dpy.get(), -scale_);
-        } else {
-            e.constant_x = std::move(dpx), e.constant_y = std::move(dpy);
-            arb_mul_2exp_si(e.slope_x.get(), dnx.get(), scale_);
-            arb_mul_2exp_si(e.slope_y.get(), dny.get(), scale_);
+        switch (box.branch) {
+            case Branch::radius:
+                e.constant_x = std::move(dpx), e.constant_y = std::move(dpy);
+                arb_mul_2exp_si(e.slope_x.get(), dnx.get(), scale_);
+                arb_mul_2exp_si(e.slope_y.get(), dny.get(), scale_);
+                break;
+            case Branch::inverse_radius:
+                e.constant_x = std::move(dnx), e.constant_y = std::move(dny);
+                arb_mul_2exp_si(e.slope_x.get(), dpx.get(), -scale_);
+                arb_mul_2exp_si(e.slope_y.get(), dpy.get(), -scale_);
+                break;
+            case Branch::internal:
+                e.constant_x = std::move(dpx), e.constant_y = std::move(dpy);
+                arb_mul_2exp_si(e.slope_x.get(), dnx.get(), internal_scale_);
+                arb_mul_2exp_si(e.slope_y.get(), dny.get(), internal_scale_);
+                arb_neg(e.slope_x.get(), e.slope_x.get());
+                arb_neg(e.slope_y.get(), e.slope_y.get());
+                break;
         }
         return e;
     }
@@ -374,13 +432,23 @@ private:
     // The reduced system F = (pair (1, 2) x, y; pair (1, 3) x, y) at s and
     // the chart values q, and its Jacobian in (t1, t2, t3, s) when J is given
     // (q with derivatives): d/dt_i = +-(alpha P_i' + beta nu_i') with
-    // (alpha, beta) = (1, s L) in (A), (s / L, 1) in (B); d/ds = slope.
+    // (alpha, beta) = (1, s L) in (A), (s / L, 1) in (B), (1, -s L_in) in (C);
+    // d/ds = slope.
     void reduced_system(const Box& box, const Ball& s, const std::array<BoundaryChart::Local, 3>& q, BallMatrix& F,
                         BallMatrix* J, long prec) const {
         Ball alpha, beta;
-        arb_mul_2exp_si(alpha.get(), s.get(), box.inverse_radius ? -scale_ : scale_);
-        arb_one(beta.get());
-        if (!box.inverse_radius) arb_swap(alpha.get(), beta.get());
+        arb_one(alpha.get());
+        switch (box.branch) {
+            case Branch::radius: arb_mul_2exp_si(beta.get(), s.get(), scale_); break;
+            case Branch::inverse_radius:
+                arb_mul_2exp_si(alpha.get(), s.get(), -scale_);
+                arb_one(beta.get());
+                break;
+            case Branch::internal:
+                arb_mul_2exp_si(beta.get(), s.get(), internal_scale_);
+                arb_neg(beta.get(), beta.get());
+                break;
+        }
         for (int pair = 0; pair < 2; ++pair) {
             const int j = pair + 1;
             const PairEquations e = pair_equations(box, q[0], q[j], prec);
@@ -403,7 +471,112 @@ private:
         }
     }
 
-    long scale_;  // L = 2^scale_
+    // det(q1 - q0, q2 - q0) = det(q0 - q1, q0 - q2) of the points (or the
+    // normals) over the box.
+    static Ball orientation(const std::array<PointNormal, 3>& q, Ball PointNormal::*x, Ball PointNormal::*y,
+                            long prec) {
+        const Ball ux = sub(q[0].*x, q[1].*x, prec), uy = sub(q[0].*y, q[1].*y, prec);
+        const Ball vx = sub(q[0].*x, q[2].*x, prec), vy = sub(q[0].*y, q[2].*y, prec);
+        Ball d;
+        arb_mul(d.get(), ux.get(), vy.get(), prec);
+        arb_submul(d.get(), uy.get(), vx.get(), prec);
+        return d;
+    }
+
+    // Branch (C): V = P_i - s L_in nu_i is a Voronoi circle's center only if
+    // it has not crossed E_i's medial axis (beyond it the mirror image of P_i
+    // is nearer, so rho is not the signed distance). For a >= b the inward
+    // normal at the frame point (x, y) = (a cos theta, b sin theta) meets the
+    // major axis at depth (b / a) sqrt(b^2 cos^2 theta + a^2 sin^2 theta) =
+    // sqrt((b^2 / a^2)^2 x^2 + y^2), inside the medial axis |x| <= (a^2 -
+    // b^2) / a; at most b; for a circle r. Narrows s to [0, max depth / L_in]
+    // with an upper bound of that depth over the box's arc of each site;
+    // false: s is empty (every point of the box lies beyond a medial axis).
+    // The solutions of the algebraic system beyond the axis are no Voronoi
+    // circles, and boxes around them could never be excluded otherwise.
+    bool narrow_to_medial_depth(const std::array<PointNormal, 3>& q, Ball& s, long prec) const {
+        for (int i = 0; i < 3; ++i) {
+            const Ellipse& e = *sites_[i];
+            const Rational& minor = std::min(e.a(), e.b());
+            Ball depth(minor, prec);
+            if (e.a() != e.b()) {
+                const Ball dx = sub(q[i].px, Ball(e.xc(), prec), prec), dy = sub(q[i].py, Ball(e.yc(), prec), prec);
+                const Ball c(e.cos_rotation(), prec), sn(e.sin_rotation(), prec);
+                Ball along, across;  // along the a-axis, along the b-axis
+                arb_mul(along.get(), dx.get(), c.get(), prec);
+                arb_addmul(along.get(), dy.get(), sn.get(), prec);
+                arb_mul(across.get(), dy.get(), c.get(), prec);
+                arb_submul(across.get(), dx.get(), sn.get(), prec);
+                const bool a_major = e.a() > e.b();
+                const Rational& major = a_major ? e.a() : e.b();
+                Ball& x = a_major ? along : across;
+                Ball& y = a_major ? across : along;
+                const Rational ratio = minor * minor / (major * major);
+                arb_mul(x.get(), x.get(), Ball(ratio, prec).get(), prec);
+                Ball squared;
+                arb_sqr(squared.get(), x.get(), prec);
+                arb_addmul(squared.get(), y.get(), y.get(), prec);
+                Ball over_arc;
+                arb_sqrt(over_arc.get(), squared.get(), prec);
+                if (arb_is_finite(over_arc.get())) arb_min(depth.get(), depth.get(), over_arc.get(), prec);
+            }
+            Arf upper;
+            arb_get_ubound_arf(upper.get(), depth.get(), prec);
+            arf_mul_2exp_si(upper.get(), upper.get(), -internal_scale_);
+            Ball range;
+            arb_set_interval_arf(range.get(), Arf().get(), upper.get(), prec);
+            if (!arb_intersection(s.get(), s.get(), range.get(), prec)) return false;
+        }
+        return true;
+    }
+
+    // Branch (C): rho <= 0 is the signed distance to all three only at a
+    // point V inside all three (closed). V = P_i - s L_in nu_i for each i:
+    // false when those ranges are disjoint or when their intersection lies
+    // certainly outside some site (its quadratic form exceeds 1). For sites
+    // that come near one another without a common point the pair equations
+    // exclude most boxes of (C) at once; this excludes about a quarter of the
+    // rest (60 close disjoint ellipse triples: 494 boxes of (C) instead of
+    // 660, 8 of them the roots of each triple).
+    bool center_inside_sites(const std::array<PointNormal, 3>& q, const Ball& s, long prec) const {
+        Ball depth;
+        arb_mul_2exp_si(depth.get(), s.get(), internal_scale_);
+        Ball vx, vy, x, y;
+        for (int i = 0; i < 3; ++i) {
+            arb_set(x.get(), q[i].px.get());
+            arb_submul(x.get(), depth.get(), q[i].nx.get(), prec);
+            arb_set(y.get(), q[i].py.get());
+            arb_submul(y.get(), depth.get(), q[i].ny.get(), prec);
+            if (i == 0) {
+                vx = x, vy = y;
+            } else if (!arb_intersection(vx.get(), vx.get(), x.get(), prec) ||
+                       !arb_intersection(vy.get(), vy.get(), y.get(), prec)) {
+                return false;
+            }
+        }
+        for (const Ellipse* e : sites_) {
+            const Ball dx = sub(vx, Ball(e->xc(), prec), prec), dy = sub(vy, Ball(e->yc(), prec), prec);
+            const Ball c(e->cos_rotation(), prec), sn(e->sin_rotation(), prec);
+            Ball along, across, form, term;
+            arb_mul(along.get(), dx.get(), c.get(), prec);
+            arb_addmul(along.get(), dy.get(), sn.get(), prec);
+            arb_mul(across.get(), dy.get(), c.get(), prec);
+            arb_submul(across.get(), dx.get(), sn.get(), prec);
+            arb_sqr(form.get(), along.get(), prec);
+            arb_div(form.get(), form.get(), Ball(e->a() * e->a(), prec).get(), prec);
+            arb_sqr(term.get(), across.get(), prec);
+            arb_div(term.get(), term.get(), Ball(e->b() * e->b(), prec).get(), prec);
+            arb_add(form.get(), form.get(), term.get(), prec);
+            arb_sub_ui(form.get(), form.get(), 1, prec);
+            if (arb_is_positive(form.get())) return false;
+        }
+        return true;
+    }
+
+    std::array<const Ellipse*, 3> sites_;
+    long scale_;           // L = 2^scale_
+    long internal_scale_;  // L_in = 2^internal_scale_
+    bool internal_possible_;
     std::vector<ArcRanges> arcs_;  // site i, flipped f at 2 i + f
 };
 
@@ -431,15 +604,18 @@ VoronoiCircleSearchResult search_voronoi_circle(const Ellipse& e1, const Ellipse
     // into a region of near-solutions (a clockwise circle, a near-tangent
     // line) while the circle waits elsewhere.
     std::deque<Box> queue;
-    for (bool inverse_radius : {false, true})
+    for (Branch branch : {Branch::radius, Branch::inverse_radius, Branch::internal}) {
+        if (branch == Branch::internal && !system.internal_possible()) continue;
         for (int charts = 0; charts < 8; ++charts)
-            queue.push_back(system.root_box(charts, inverse_radius, kMinimumPrecision + magnitude));
+            queue.push_back(system.root_box(charts, branch, kMinimumPrecision + magnitude));
+    }
     VoronoiCircleSearchResult result;
     while (!queue.empty()) {
         if (result.boxes >= options.max_boxes)
             throw Error("Voronoi circle search: " + std::to_string(result.boxes) +
                         " boxes neither certified nor excluded the circle of the triple (degenerate: a line "
-                        "tangent to all three sites?)");
+                        "tangent to all three sites? or overlapping ellipses with an internal circle deeper than "
+                        "the certificate's limit min(a, b)^2 / max(a, b)?)");
         Box box = std::move(queue.front());
         queue.pop_front();
         ++result.boxes;

@@ -4,7 +4,9 @@
 // certified enclosure (two independent certificates of the unique circle
 // must overlap), the closed-form Apollonius circle for circle triples, the
 // kappa2-based count for triples without a counter-clockwise circle, and
-// translation invariance for triples far from the origin.
+// translation invariance for triples far from the origin; for crossing
+// circles (internal circles, branch (C)) the closed form CircleVoronoiVertex.
+#include "predicates/circle_predicates.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/rational_parse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
@@ -303,4 +305,117 @@ TEST_CASE("search on a degenerate triple (a line tangent to all three) stops at 
     options.max_boxes = 4000;
     CHECK_THROWS_AS(solver.certify_by_search(options), Error);
     CHECK_FALSE(solver.certified());
+}
+
+namespace {
+
+// The certified enclosure holds the closed-form counter-clockwise circle.
+void check_contains_closed_form(const VoronoiCircleEnclosure& found, const CircleVoronoiVertex& oracle) {
+    constexpr long prec = 1024;
+    INFO(show(found) << "oracle center (" << oracle.center_x().str() << ", " << oracle.center_y().str()
+                     << ") radius " << oracle.radius().str());
+    CHECK(arb_contains(found.center_x.get(), oracle.center_x().to_ball(prec).get()));
+    CHECK(arb_contains(found.center_y.get(), oracle.center_y().to_ball(prec).get()));
+    CHECK(arb_contains(found.radius.get(), oracle.radius().to_ball(prec).get()));
+}
+
+// |r1 - r2| < |C1 - C2| < r1 + r2: the boundaries cross in two points.
+bool circles_cross(const Ellipse& c1, const Ellipse& c2) {
+    const Rational dx = c1.xc() - c2.xc(), dy = c1.yc() - c2.yc(), d2 = dx * dx + dy * dy;
+    const Rational sum = c1.a() + c2.a(), difference = c1.a() - c2.a();
+    return d2 < sum * sum && d2 > difference * difference;
+}
+
+}  // namespace
+
+TEST_CASE("search certifies the internal circle of crossing circles (branch C)", "[search][overlap]") {
+    // Radius 10 about (0, 0), (12, 0), (6, 10): the counter-clockwise circle
+    // has center (6, 16/5) and radius -16/5, inside all three.
+    const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10), c3 = Ellipse::circle(6, 10, 10);
+    const CircleVoronoiVertex oracle(c1, c2, c3);
+    REQUIRE(oracle.exists());
+    REQUIRE(oracle.radius().sign() < 0);
+    VoronoiCircleSolver searched(c1, c2, c3);
+    REQUIRE(searched.certify_by_search());
+    CHECK(searched.enclosure().found_by == CircleStart::search);
+    CHECK(searched.enclosure().radius.certain_sign() == -1);
+    check_contains_closed_form(searched.enclosure(), oracle);
+    REQUIRE(searched.refine(300));
+    check_contains_closed_form(searched.enclosure(), oracle);
+    // The reversed order's circle is clockwise: the search proves there is
+    // no counter-clockwise one (none exists, CircleVoronoiVertex agrees).
+    const CircleVoronoiVertex reversed_oracle(c1, c3, c2);
+    VoronoiCircleSolver reversed(c1, c3, c2);
+    CHECK(reversed.certify_by_search() == reversed_oracle.exists());
+}
+
+TEST_CASE("search on random pairwise crossing circle triples agrees with the closed form", "[search][overlap]") {
+    Rng rng(4242);
+    std::vector<double> times, boxes;
+    int internal = 0, external = 0, none = 0, draws = 0;
+    while (internal < 100 || none < 20) {
+        REQUIRE(++draws < 100000);
+        std::array<Ellipse, 3> c = {
+            Ellipse::circle(random_fraction(rng, -80, 80, 8), random_fraction(rng, -80, 80, 8),
+                            random_fraction(rng, 24, 96, 8)),
+            Ellipse::circle(random_fraction(rng, -80, 80, 8), random_fraction(rng, -80, 80, 8),
+                            random_fraction(rng, 24, 96, 8)),
+            Ellipse::circle(random_fraction(rng, -80, 80, 8), random_fraction(rng, -80, 80, 8),
+                            random_fraction(rng, 24, 96, 8))};
+        if (!circles_cross(c[0], c[1]) || !circles_cross(c[0], c[2]) || !circles_cross(c[1], c[2])) continue;
+        const CircleVoronoiVertex oracle(c[0], c[1], c[2]);
+        const int kind = !oracle.exists() ? 0 : oracle.radius().sign() < 0 ? -1 : 1;
+        if ((kind < 0 && internal >= 100) || (kind == 0 && none >= 20) || (kind > 0 && external >= 20)) continue;
+        (kind < 0 ? internal : kind == 0 ? none : external) += 1;
+        INFO(apollonius::ell({&c[0], &c[1], &c[2]}));
+        VoronoiCircleSolver searched(c[0], c[1], c[2]);
+        const auto start = std::chrono::steady_clock::now();
+        const bool found = searched.certify_by_search();
+        times.push_back(milliseconds_since(start));
+        boxes.push_back(static_cast<double>(searched.enclosure().search_boxes));
+        REQUIRE(found == oracle.exists());
+        if (found) check_contains_closed_form(searched.enclosure(), oracle);
+    }
+    if (verbose())
+        std::printf("[search/crossing circles] %d internal, %d external, %d none: median %.2f ms, %.0f boxes; max "
+                    "%.2f ms, %.0f boxes\n",
+                    internal, external, none, median(times), median(boxes),
+                    *std::max_element(times.begin(), times.end()), *std::max_element(boxes.begin(), boxes.end()));
+}
+
+TEST_CASE("search certifies radius 0: three circles through one point", "[search][overlap]") {
+    // Radius 5 about (-5, 0), (0, -5), (5, 0): all three boundaries pass
+    // through the origin, with outward normals (1, 0), (0, 1), (-1, 0) there
+    // (counter-clockwise). The root lies on s = 0, shared by branches (A) and
+    // (C); the certificate's normals' orientation decides at rho = 0.
+    const Ellipse c1 = Ellipse::circle(-5, 0, 5), c2 = Ellipse::circle(0, -5, 5), c3 = Ellipse::circle(5, 0, 5);
+    const CircleVoronoiVertex oracle(c1, c2, c3);
+    REQUIRE(oracle.exists());
+    REQUIRE(oracle.radius().sign() == 0);
+    VoronoiCircleSolver searched(c1, c2, c3);
+    REQUIRE(searched.certify_by_search());
+    CHECK(arb_contains_zero(searched.enclosure().radius.get()));
+    check_contains_closed_form(searched.enclosure(), oracle);
+    VoronoiCircleSolver reversed(c1, c3, c2);
+    CHECK(reversed.certify_by_search() == CircleVoronoiVertex(c1, c3, c2).exists());
+}
+
+TEST_CASE("search on an internal circle deeper than the certificate's limit: Error, not an answer",
+          "[search][overlap]") {
+    // E1 = the ellipse a = 10, b = 2 about the origin (smallest radius of
+    // curvature b^2 / a = 2/5); circles of radius 5/2 about (3/2, 1) and
+    // (-3/2, 1), each crossing E1 in two points. V = (0, 1), rho = -1 is
+    // at signed distance -1 from all three (tangency points (0, 2), (-1, 1),
+    // (1, 1), counter-clockwise), but 1 > 2/5: the certificate cannot prove
+    // it (DESIGN.md §4.1), and the medial-depth exclusion cannot exclude it
+    // (E1's medial axis lies 2 below (0, 2)). The box around it survives
+    // every bisection: the cap ends the search with an Error.
+    const Ellipse e1(10, 2, 0, 0, 0);
+    const Ellipse c2 = Ellipse::circle(Rational(3, 2UL), 1, Rational(5, 2UL));
+    const Ellipse c3 = Ellipse::circle(Rational(-3, 2UL), 1, Rational(5, 2UL));
+    VoronoiCircleSolver searched(e1, c2, c3);
+    VoronoiCircleSearchOptions options;
+    options.max_boxes = 3000;
+    CHECK_THROWS_AS(searched.certify_by_search(options), Error);
+    CHECK_FALSE(searched.certified());
 }
