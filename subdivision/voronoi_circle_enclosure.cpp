@@ -195,6 +195,15 @@ bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::arr
     return true;
 }
 
+// -rho exceeds some site's smaller semi-axis (by the midpoint): no point of
+// that site lies so deep, so the root is no Voronoi circle.
+bool deeper_than_every_point(const std::array<const Ellipse*, 3>& sites, const arb_t rho) {
+    const double depth = -arf_get_d(arb_midref(rho), ARF_RND_NEAR);
+    for (const Ellipse* e : sites)
+        if (depth > std::min(e->a(), e->b()).to_double()) return true;
+    return false;
+}
+
 // Precision of the Jacobian for a Newton step at precision prec: half is
 // enough, since the step only needs half of the bits (quadratic convergence).
 long jacobian_precision(long prec) { return std::max(kStartPrecision, prec / 2 + kGuardBits); }
@@ -423,15 +432,15 @@ bool VoronoiCircleSolver::certify_from(const VoronoiCircleStart& start) {
             if (step >= kStalledNewtonBits) continue;
             return false;
         }
-        // A root of the wrong kind (clockwise, or an internal circle deeper
-        // than the certificate's limit) would fail Krawczyk's final test: skip
+        // A root of the wrong kind (clockwise, or deeper than any point of a
+        // site, its smaller semi-axis) would fail Krawczyk's final test: skip
         // it cheaply. Near rho = 0 the points' orientation is rho^2 times the
         // normals' and drowns in rounding: either one positive lets it through.
         if (arf_sgn(arb_midref(midpoint_.at(3, 0))) > 0) {
             if (arf_sgn(arb_midref(orientation(charts(), midpoint_, prec).get())) <= 0 &&
                 arf_sgn(arb_midref(orientation(charts(), midpoint_, prec, true).get())) <= 0)
                 return false;
-        } else if (!above_depth_limit(work_sites_, midpoint_.at(3, 0), prec) ||
+        } else if (deeper_than_every_point(work_sites_, midpoint_.at(3, 0)) ||
                    arf_sgn(arb_midref(orientation(charts(), midpoint_, prec, true).get())) <= 0) {
             return false;
         }

@@ -614,8 +614,7 @@ VoronoiCircleSearchResult search_voronoi_circle(const Ellipse& e1, const Ellipse
         if (result.boxes >= options.max_boxes)
             throw Error("Voronoi circle search: " + std::to_string(result.boxes) +
                         " boxes neither certified nor excluded the circle of the triple (degenerate: a line "
-                        "tangent to all three sites? or overlapping ellipses with an internal circle deeper than "
-                        "the certificate's limit min(a, b)^2 / max(a, b)?)");
+                        "tangent to all three sites? or an internal circle centered on a site's medial axis?)");
         Box box = std::move(queue.front());
         queue.pop_front();
         ++result.boxes;

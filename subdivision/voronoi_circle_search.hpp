@@ -56,17 +56,19 @@
 // nonzero (the normals' determinant: three distinct points of the unit
 // circle; at rho = 0 the points' determinant vanishes), so clockwise
 // solutions are excluded once boxes are small; the counter-clockwise one is
-// certified from a small enough box around it. Hence, whenever the triple's
-// counter-clockwise circle (if any) is within the certificate's limit --
-// always for circles and for disjoint ellipses -- the search either
-// certifies it or excludes every box, which proves that there is none --
-// except at a degenerate infinite circle (s = 0 in (B) with nu1 = nu2 = nu3
-// and a line tangent to all three sites), where it would not terminate: the
-// number of boxes is capped, and the cap throws. Overlapping ellipses: an
-// internal circle deeper than the certificate's limit min(a, b)^2 / max(a,
-// b) in some site but short of its medial axis is a Voronoi circle that is
-// neither certified nor excluded; its box survives every bisection and the
-// cap throws as well, never a wrong "none".
+// certified from a small enough box around it. The Jacobian is nonsingular
+// at every Voronoi circle: the t_i column carries (1 + rho kappa_i) with
+// kappa_i the curvature at P_i, positive for rho >= 0 and for internal
+// circles too, since V lies short of E_i's medial axis and the normal from
+// P_i meets the medial axis before the center of curvature. The certificate
+// proves every such circle (DESIGN.md §4.1: Blaschke's bound, then
+// disk_inside_ellipse up to the medial axis). Hence the search either
+// certifies the counter-clockwise circle or excludes every box, which proves
+// that there is none -- except at degenerate circles where it would not
+// terminate: an infinite one (s = 0 in (B) with nu1 = nu2 = nu3 and a line
+// tangent to all three sites), or an internal one whose center lies on a
+// site's medial axis (two nearest points); the number of boxes is capped,
+// and the cap throws, never a wrong "none".
 #pragma once
 
 #include "sites/ellipse.hpp"
@@ -93,9 +95,7 @@ struct VoronoiCircleSearchOptions {
     // Generous: random triples needed at most a few thousand boxes, and
     // near-degenerate ones grow slowly (collinear equal circles with the
     // middle one moved by 10^-12: 14000). The degenerate collinear triple
-    // reaches this cap after about 25 s (boxes cost more with depth). So
-    // does, later, a triple of overlapping ellipses whose internal circle is
-    // too deep to certify (30000 boxes: 2 s).
+    // reaches this cap after about 25 s (boxes cost more with depth).
     long max_boxes = 500'000;
 };
 
@@ -106,8 +106,7 @@ struct VoronoiCircleSearchResult {
 
 // Examines boxes breadth-first and offers the midpoint of each surviving box
 // to `try_start` until it accepts one (returns true). Throws Error when
-// `options.max_boxes` boxes did not decide (a degenerate triple, or an
-// internal circle of overlapping ellipses deeper than the certificate's limit).
+// `options.max_boxes` boxes did not decide (a degenerate triple).
 VoronoiCircleSearchResult search_voronoi_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
                                                 const std::function<bool(const VoronoiCircleStart&)>& try_start,
                                                 const VoronoiCircleSearchOptions& options = {});

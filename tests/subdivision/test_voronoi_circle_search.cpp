@@ -400,22 +400,28 @@ TEST_CASE("search certifies radius 0: three circles through one point", "[search
     CHECK(reversed.certify_by_search() == CircleVoronoiVertex(c1, c3, c2).exists());
 }
 
-TEST_CASE("search on an internal circle deeper than the certificate's limit: Error, not an answer",
+TEST_CASE("search on an internal circle deeper than the Blaschke bound: certified up to the medial axis",
           "[search][overlap]") {
     // E1 = the ellipse a = 10, b = 2 about the origin (smallest radius of
     // curvature b^2 / a = 2/5); circles of radius 5/2 about (3/2, 1) and
     // (-3/2, 1), each crossing E1 in two points. V = (0, 1), rho = -1 is
     // at signed distance -1 from all three (tangency points (0, 2), (-1, 1),
-    // (1, 1), counter-clockwise), but 1 > 2/5: the certificate cannot prove
-    // it (DESIGN.md §4.1), and the medial-depth exclusion cannot exclude it
-    // (E1's medial axis lies 2 below (0, 2)). The box around it survives
-    // every bisection: the cap ends the search with an Error.
+    // (1, 1), counter-clockwise). 1 > 2/5, so Blaschke's bound does not
+    // prove it, but V lies short of E1's medial axis (2 below (0, 2)) and
+    // disk_inside_ellipse does (DESIGN.md §4.1): the search certifies it.
     const Ellipse e1(10, 2, 0, 0, 0);
     const Ellipse c2 = Ellipse::circle(Rational(3, 2UL), 1, Rational(5, 2UL));
     const Ellipse c3 = Ellipse::circle(Rational(-3, 2UL), 1, Rational(5, 2UL));
     VoronoiCircleSolver searched(e1, c2, c3);
-    VoronoiCircleSearchOptions options;
-    options.max_boxes = 3000;
-    CHECK_THROWS_AS(searched.certify_by_search(options), Error);
-    CHECK_FALSE(searched.certified());
+    REQUIRE(searched.certify_by_search());
+    searched.refine(100);
+    const VoronoiCircleEnclosure& c = searched.enclosure();
+    for (const auto& [ball, value] : {std::pair{&c.radius, -1L}, {&c.center_x, 0L}, {&c.center_y, 1L}}) {
+        Ball want;
+        arb_set_si(want.get(), value);
+        CHECK(arb_overlaps(ball->get(), want.get()));
+    }
+    CHECK(c.correct_bits() >= 100);
+    VoronoiCircleSolver guessed(e1, c2, c3);
+    CHECK(guessed.certify());  // the default path (guesses first) agrees
 }
