@@ -6,23 +6,29 @@
 // exact/quadratic_number.hpp. Nothing is approximated and nothing is left
 // undecided: no stage, no precision.
 //
+// Distances are signed (|x - C| - r, negative inside), so sites may cross:
+// the Voronoi circle (V, R) of crossing circles may be internal, R < 0
+// (docs/DESIGN.md §2, §4.6).
+//
 // Why it is linear (the lifting). Move C1 to the origin and subtract r1 from
 // every radius: site i becomes a_i = (D_i, rho_i) = (C_i - C1, r_i - r1) (a_1 =
-// 0, a point) and a circle (V, R) externally tangent to site i becomes the
-// point w = (x, y, s) = (V - C1, R + r1) of the cone x^2 + y^2 = s^2 with
+// 0, a point) and a circle (V, R) at signed distance R from site i becomes
+// the point w = (x, y, s) = (V - C1, R + r1) of the cone x^2 + y^2 = s^2 with
 //     |(x, y) - D_i| = s + rho_i   <=>   a_i . w = h_i,   h_i = (|D_i|^2 - rho_i^2) / 2
-// (square, subtract the cone equation; every h_i > 0 for separated or
-// externally tangent sites). So:
+// (square, subtract the cone equation; every h_i > 0 when no site contains
+// another) and s + rho_i = R + r_i > 0 (squaring loses that sign). So:
 //   * the circles tangent to C1, C2, C3 are the points of the line
 //     {a_2 . w = h_2, a_3 . w = h_3} = {p + t k}, k = a_2 x a_3, on the cone:
-//     a quadratic in t; the Voronoi circles are its roots with R = s - r1 > 0;
+//     a quadratic in t; the Voronoi circles are its roots with R + r_i > 0
+//     for the three sites (R > 0 for sites that do not overlap);
 //   * their tangency points are counter-clockwise iff <w, k> < 0, where
 //     <u, v> = u_x v_x + u_y v_y - u_s v_s (the orientation determinant of the
 //     tangency points, rows scaled by R + r_i > 0, is -<w, k>); at a root <w,
 //     k> is half the quadratic's slope, so the counter-clockwise circle is the
 //     root where the quadratic decreases: at most one per orientation;
-//   * Q meets the open disk of the circle w iff |V - C_Q| < R + r_Q iff
-//     h_Q - a_Q . w < 0 (the same subtraction): kappa3 is one linear form.
+//   * Q's signed distance at V is below R iff |V - C_Q| < R + r_Q iff
+//     h_Q - a_Q . w < 0 (the same subtraction), when R + r_Q >= 0; kappa3 is
+//     one linear form, and POSITIVE when R + r_Q < 0.
 // Closed form (circle_predicates.cpp): with p_i = |D_i|^2 - rho_i^2 (= 2 h_i),
 // g = D_2 . D_3 - rho_2 rho_3 and p_23 = p_2 + p_3 - 2 g (the same quantity
 // for the pair C2, C3), the two roots are
@@ -51,9 +57,9 @@ namespace ellvor {
 // (C1, C3, C2). Keeps pointers to the sites, which must outlive it.
 class CircleVoronoiVertex {
 public:
-    // Sites: circles (Error otherwise), pairwise separated or externally
-    // tangent. A site inside another (or internally tangent) is detected for
-    // free and throws Error; crossing sites are not detected.
+    // Sites: circles (Error otherwise), none inside another: separated,
+    // tangent or crossing. A site inside another (or internally tangent) is
+    // detected for free and throws Error.
     CircleVoronoiVertex(const Ellipse& c1, const Ellipse& c2, const Ellipse& c3);
 
     // The triple has a counter-clockwise Voronoi circle.
@@ -83,10 +89,10 @@ private:
     Integer denominator_, radicand_;
 };
 
-// kappa3 (InCircle): -1 when Q meets the open disk of the counter-clockwise
-// Voronoi circle of (C1, C2, C3), or when the triple has none (CGAL's rule);
-// 0 when Q is externally tangent to it; +1 otherwise. Q: a circle site
-// separated from or externally tangent to the three.
+// kappa3 (InCircle): -1 when Q's signed distance at the center of the
+// counter-clockwise Voronoi circle of (C1, C2, C3) is below its radius (for
+// R > 0: Q meets its open disk), or when the triple has none (CGAL's rule); 0
+// when equal; +1 otherwise. Q: a circle site.
 int circle_vertex_conflict(const Ellipse& c1, const Ellipse& c2, const Ellipse& c3, const Ellipse& q);
 // The same against a vertex built once.
 int circle_vertex_conflict(const CircleVoronoiVertex& vertex, const Ellipse& q);
