@@ -197,7 +197,7 @@ bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::arr
 
 // -rho exceeds some site's smaller semi-axis (by the midpoint): no point of
 // that site lies so deep, so the root is no Voronoi circle.
-bool deeper_than_every_point(const std::array<const Ellipse*, 3>& sites, const arb_t rho) {
+bool deeper_than_some_site(const std::array<const Ellipse*, 3>& sites, const arb_t rho) {
     const double depth = -arf_get_d(arb_midref(rho), ARF_RND_NEAR);
     for (const Ellipse* e : sites)
         if (depth > std::min(e->a(), e->b()).to_double()) return true;
@@ -440,7 +440,7 @@ bool VoronoiCircleSolver::certify_from(const VoronoiCircleStart& start) {
             if (arf_sgn(arb_midref(orientation(charts(), midpoint_, prec).get())) <= 0 &&
                 arf_sgn(arb_midref(orientation(charts(), midpoint_, prec, true).get())) <= 0)
                 return false;
-        } else if (deeper_than_every_point(work_sites_, midpoint_.at(3, 0)) ||
+        } else if (deeper_than_some_site(work_sites_, midpoint_.at(3, 0)) ||
                    arf_sgn(arb_midref(orientation(charts(), midpoint_, prec, true).get())) <= 0) {
             return false;
         }
