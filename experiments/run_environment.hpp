@@ -69,6 +69,26 @@ inline double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
+// Runs `build` until 0.3 s of wall time (at least once, at most 20 times):
+// the medians of its wall and CPU times, and how many runs.
+template <class F>
+void timed(F build, double& wall, double& cpu, int& reps) {
+    std::vector<double> w, c;
+    double total = 0;
+    while (true) {
+        const double w0 = now_wall(), c0 = now_cpu();
+        build();
+        const double w1 = now_wall(), c1 = now_cpu();
+        w.push_back(w1 - w0);
+        c.push_back(c1 - c0);
+        total += w1 - w0;
+        if (total >= 0.3 || w.size() >= 20) break;
+    }
+    wall = median(w);
+    cpu = median(c);
+    reps = static_cast<int>(w.size());
+}
+
 // The common command line of the experiments: [--full] [--out DIR].
 struct BenchArguments {
     bool full = false;
