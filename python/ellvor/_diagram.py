@@ -150,8 +150,9 @@ class Diagram:
                                infinity): ridge_vertices[k][0] is the face on the left of
                                the Delaunay edge ridge_points[k][0] -> ridge_points[k][1]
     Voronoi vertices, as the JSON gives them (computed on first use):
-        vertices (f, 2), vertex_radii (f,)   centers and radii of the Voronoi circles, the doubles
-                                             nearest the midpoints of their certified balls
+        vertices (f, 2), vertex_radii (f,)   centers and signed radii of the Voronoi circles, the
+                                             doubles nearest the midpoints of their certified balls
+                                             (a negative radius: inside three crossing circles)
         vertex_errors (f,)                   every exact value is within this of the double given
                                              (the ball's radius plus the midpoint's rounding)
     ``vertex(i, bits)`` refines one circle to exact bounds; ``trace()`` draws the
@@ -259,7 +260,8 @@ def build(sites, progress=False, *, fmt="ell", progress_interval=0.1):
     or a callable ``progress(done, total)``, called after the first and the last
     insertion and every ``progress_interval`` seconds between; an exception it
     raises stops the build and propagates.
-    Raises InputError for bad input (crossing sites carry ``sites=(i, j)``).
+    Raises InputError for bad input (crossing sites other than two circles, and boundaries meeting
+    in three or four points, carry ``sites=(i, j)``).
     """
     if progress is True:
         progress = _StderrProgress()
