@@ -65,24 +65,17 @@ Ball power_of_two(long e) {
     arb_mul_2exp_si(r.get(), r.get(), e);
     return r;
 }
-Ball lower_end(const Ball& b, long prec) {
+// The ball's lower (upper) end as an exact ball.
+Ball end_of(const Ball& b, long prec, bool upper) {
     Ball r;
-    arf_t x;
-    arf_init(x);
-    arb_get_lbound_arf(x, b.get(), prec);
-    arb_set_arf(r.get(), x);
-    arf_clear(x);
+    Arf x;
+    if (upper) arb_get_ubound_arf(x.get(), b.get(), prec);
+    else arb_get_lbound_arf(x.get(), b.get(), prec);
+    arb_set_arf(r.get(), x.get());
     return r;
 }
-Ball upper_end(const Ball& b, long prec) {
-    Ball r;
-    arf_t x;
-    arf_init(x);
-    arb_get_ubound_arf(x, b.get(), prec);
-    arb_set_arf(r.get(), x);
-    arf_clear(x);
-    return r;
-}
+Ball lower_end(const Ball& b, long prec) { return end_of(b, prec, false); }
+Ball upper_end(const Ball& b, long prec) { return end_of(b, prec, true); }
 bool less(const Ball& a, const Ball& b) { return arf_cmp(arb_midref(a.get()), arb_midref(b.get())) < 0; }
 
 // u^4 p(-1/u): the quartic in the flipped chart (each of X, Y, W becomes
