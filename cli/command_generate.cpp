@@ -21,7 +21,7 @@ const char* const kHelp =
     "       ellvor generate paper-dataset (kappa1|kappa2|incircle) --set (1|2a|2b|2c|3) [--seed S]\n"
     "                       [--bits B] [-o DIR/|FILE]\n"
     "\n"
-    "Random pairwise-disjoint sites (crossing circles on request), written as a .ell file (exact\n"
+    "Random pairwise-disjoint sites (crossing ones on request), written as a .ell file (exact\n"
     "rationals) with a header comment saying how it was generated. The same arguments give the\n"
     "same file on every machine.\n"
     "  ellipses   N random ellipses in the box [-X, X]^2\n"
@@ -36,10 +36,13 @@ const char* const kHelp =
     "  --box X              half-width of the box, a positive rational (default 100)\n"
     "  --nested-fraction F  fraction in [0, 1) of sites nested in another (rounded to a count;\n"
     "                       default 0, or 1/4 for 'nested'); exact rationals such as 0.25 or 1/4\n"
-    "  --crossing F         circles only: exactly round(F N) of the circles, F in [0, 1], cross\n"
-    "                       at least one other circle (boundaries meeting in two points, checked\n"
-    "                       exactly); the others cross none; nested sites never cross, and a\n"
-    "                       count of 1 is an error. Default 0: the file is the same as without it\n"
+    "  --crossing F         exactly round(F N) of the sites, F in [0, 1], cross at least one\n"
+    "                       other site (boundaries meeting in exactly two points, checked\n"
+    "                       exactly; never three or four); the others cross none; nested sites\n"
+    "                       never cross, and a count of 1 is an error. Crossing ellipses are\n"
+    "                       thin (aspect ratio up to 16) or fat, at any angle, crossing deep\n"
+    "                       (a center inside the other) or shallow. Default 0: the file is the\n"
+    "                       same as without it\n"
     "  --cin                write CGAL's 'x y r' circle format (circles only)\n"
     "  -o, --output FILE    write FILE atomically (a temporary file renamed into place)\n"
     "                       instead of standard output\n"
@@ -158,8 +161,6 @@ int run_generate(const std::vector<std::string>& args) {
     o.nested_fraction = parsed.rational("--nested-fraction", kind == "nested" ? Rational(1, 4) : Rational(0));
     if (o.nested_fraction.sign() < 0 || o.nested_fraction >= Rational(1))
         throw UsageError("option --nested-fraction: expected a rational in [0, 1), got " + o.nested_fraction.str());
-    if (parsed.has("--crossing") && o.kind != SiteKind::circles)
-        throw UsageError("option --crossing needs 'circles': crossing sites are supported between circles only");
     o.crossing_fraction = parsed.rational("--crossing", Rational(0));
     if (o.crossing_fraction.sign() < 0 || o.crossing_fraction > Rational(1))
         throw UsageError("option --crossing: expected a rational in [0, 1], got " + o.crossing_fraction.str());

@@ -1,5 +1,6 @@
 #include "sites/site_generators.hpp"
 
+#include "sites/ellipse_polynomials.hpp"
 #include "util/error.hpp"
 
 #include <map>
@@ -76,22 +77,56 @@ bool bounding_circle_inside_inscribed(const Ellipse& inner, const Ellipse& host)
 }
 
 namespace {
-// Two circles: disks disjoint (|c1 - c2| > r1 + r2), boundaries crossing, or
-// anything else (tangent, nested, identical). Exact.
-enum class CirclePair { separated, crossing, other };
-CirclePair circle_pair(const Ellipse& c1, const Ellipse& c2) {
+// How two sites lie, as far as the generator cares: apart (disjoint, neither
+// inside the other), crossing (boundaries meeting in exactly two points, both
+// crossings), or anything else (tangent, nested, identical, meeting in three
+// or four points). Exact.
+enum class SitePair { separated, crossing, other };
+
+// Two circles: by their centers and radii.
+SitePair circle_pair(const Ellipse& c1, const Ellipse& c2) {
     const Rational d2 = squared_distance(c1, c2);
     const Rational sum = c1.a() + c2.a(), diff = c1.a() - c2.a();
-    if (d2 > sum * sum) return CirclePair::separated;
-    if (diff * diff < d2 && d2 < sum * sum) return CirclePair::crossing;
-    return CirclePair::other;
+    if (d2 > sum * sum) return SitePair::separated;
+    if (diff * diff < d2 && d2 < sum * sum) return SitePair::crossing;
+    return SitePair::other;
+}
+
+// Any two sites: by the intersection quartic (the conic of E2 along the
+// boundary of E1, negative inside E2). Its roots are the meeting points, t =
+// infinity (the i-point of E1) with multiplicity 4 - degree, and a root's
+// multiplicity is the intersection multiplicity there: 1 for a transversal
+// crossing, more for a tangency or an osculating crossing. So the sites cross
+// transversally in two points iff the quartic is squarefree, of degree 3 or 4,
+// with two real roots counting infinity. predicates/ counts them in
+// boundary_meeting_points, which this layer cannot call; FLINT's real-root
+// count (Sturm sequences, for squarefree polynomials) does it here.
+SitePair ellipse_pair(const Ellipse& e1, const Ellipse& e2) {
+    if (bounding_circles_separated(e1, e2)) return SitePair::separated;
+    const IntPolynomial quartic = intersection_quartic(e1, e2);
+    // Degree below 3: a multiple root at infinity, or the same ellipse (zero).
+    if (quartic.degree() < 3 || !fmpz_poly_is_squarefree(quartic.get())) return SitePair::other;
+    const long meeting_points = fmpz_poly_num_real_roots(quartic.get()) + (quartic.degree() == 3 ? 1 : 0);
+    if (meeting_points == 2) return SitePair::crossing;
+    if (meeting_points != 0) return SitePair::other;
+    // The boundaries do not meet, so each lies wholly inside or outside the
+    // other site: one point of each decides.
+    const Point p2 = e2.point_at(Rational(0));
+    return quartic.sign_at(Rational(0)) > 0 && e1.side_of_point(p2.x, p2.y) > 0 ? SitePair::separated
+                                                                                : SitePair::other;
+}
+
+SitePair site_pair(const Ellipse& e1, const Ellipse& e2) {
+    return e1.is_circle() && e2.is_circle() ? circle_pair(e1, e2) : ellipse_pair(e1, e2);
 }
 }  // namespace
 
 bool circles_cross(const Ellipse& c1, const Ellipse& c2) {
     if (!c1.is_circle() || !c2.is_circle()) throw Error("circles_cross: the sites must be circles");
-    return circle_pair(c1, c2) == CirclePair::crossing;
+    return circle_pair(c1, c2) == SitePair::crossing;
 }
+
+bool sites_cross(const Ellipse& e1, const Ellipse& e2) { return site_pair(e1, e2) == SitePair::crossing; }
 
 // ---- random site sets --------------------------------------------------------
 
@@ -111,6 +146,12 @@ long isqrt_ceil(long n) {
     return r;
 }
 
+// The semi-axes and rotation of a site, before it has a center.
+struct SiteShape {
+    Rational a, b, w;
+    const Rational& largest_axis() const { return a < b ? b : a; }
+};
+
 long floor_to_long(const Rational& q) {
     Integer f;
     fmpz_fdiv_q(f.get(), fmpq_numref(q.get()), fmpq_denref(q.get()));
@@ -128,9 +169,6 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
         throw Error("nested fraction must be in [0, 1), got " + o.nested_fraction.str());
     if (o.crossing_fraction.sign() < 0 || o.crossing_fraction > Rational(1))
         throw Error("crossing fraction must be in [0, 1], got " + o.crossing_fraction.str());
-    if (!o.crossing_fraction.is_zero() && o.kind != SiteKind::circles)
-        throw Error("crossing sites are supported between circles only, not ellipses (crossing fraction " +
-                    o.crossing_fraction.str() + ")");
     if (o.count == 0) return {};
 
     // round(fraction * count), halves rounded up
@@ -143,7 +181,7 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
     const long crossing = rounded_count(o.crossing_fraction);
     if (crossing == 1)
         throw Error("crossing fraction " + o.crossing_fraction.str() + " of " + std::to_string(o.count) +
-                    " sites is 1 crossing site; a crossing needs two circles");
+                    " sites is 1 crossing site; a crossing needs two sites");
     if (crossing > top)
         throw Error("crossing fraction " + o.crossing_fraction.str() + " asks for " + std::to_string(crossing) +
                     " crossing sites, but only " + std::to_string(top) + " are not nested (nested sites never cross)");
@@ -169,24 +207,26 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
                     std::to_string(max_attempts) + " attempts; use a larger --box or more --bits");
     };
 
-    auto draw_shape = [&](const Rational& lo, const Rational& hi, Rational& a, Rational& b, Rational& w) {
-        a = rng.uniform_rational(lo, hi, o.bits);
+    // a in [a_lo, a_hi]; for ellipses b in [b_lo, b_hi] and w in [-1, 1]
+    // (every direction of the a-axis: the rotation in [-pi/2, pi/2]).
+    auto draw_shape = [&](const Rational& a_lo, const Rational& a_hi, const Rational& b_lo, const Rational& b_hi) {
+        SiteShape shape;
+        shape.a = rng.uniform_rational(a_lo, a_hi, o.bits);
         if (circles) {
-            b = a;
-            w = Rational(0);
+            shape.b = shape.a;
         } else {
-            b = rng.uniform_rational(lo, hi, o.bits);
-            w = rng.uniform_rational(Rational(-1), Rational(1), o.bits);
+            shape.b = rng.uniform_rational(b_lo, b_hi, o.bits);
+            shape.w = rng.uniform_rational(Rational(-1), Rational(1), o.bits);
         }
+        return shape;
     };
 
     while (static_cast<long>(placed.size()) < separated) {
         if (++attempts > max_attempts) give_up();
-        Rational a, b, w;
-        draw_shape(rmin, rmax, a, b, w);
+        const SiteShape shape = draw_shape(rmin, rmax, rmin, rmax);
         Rational xc = rng.uniform_rational(-center_extent, center_extent, o.bits);
         Rational yc = rng.uniform_rational(-center_extent, center_extent, o.bits);
-        Ellipse e(a, b, w, xc, yc);
+        Ellipse e(shape.a, shape.b, shape.w, xc, yc);
         const long cx = floor_to_long((xc + o.box) / cell), cy = floor_to_long((yc + o.box) / cell);
         bool ok = true;
         for (long i = cx - 1; i <= cx + 1 && ok; ++i)
@@ -208,12 +248,11 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
         const std::size_t h = rng.below(hosts);
         const Ellipse& host = placed[h];
         const Rational m = min_axis(host);
-        Rational a, b, w;
-        draw_shape(m / Rational(8), m / Rational(2), a, b, w);
+        const SiteShape shape = draw_shape(m / Rational(8), m / Rational(2), m / Rational(8), m / Rational(2));
         const Rational off = m / Rational(4);
         Rational xc = rng.uniform_rational(host.xc() - off, host.xc() + off, o.bits);
         Rational yc = rng.uniform_rational(host.yc() - off, host.yc() + off, o.bits);
-        Ellipse e(a, b, w, xc, yc);
+        Ellipse e(shape.a, shape.b, shape.w, xc, yc);
         if (!bounding_circle_inside_inscribed(e, host)) continue;
         bool ok = true;
         for (std::size_t k : inside[h])
@@ -225,7 +264,7 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
     }
 
     // Crossing partners (see the header). `crosses` marks the sites that cross
-    // another; `free_targets` the separated circles that do not yet.
+    // another; `free_targets` the separated sites that do not yet.
     std::vector<char> crosses(placed.size(), 0);
     std::vector<std::size_t> crossing_ids, free_targets;
     for (std::size_t k = 0; k < hosts; ++k) free_targets.push_back(k);
@@ -237,16 +276,21 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
         const std::size_t slot = rng.below(pair ? free_targets.size() : crossing_ids.size());
         const std::size_t t = pair ? free_targets[slot] : crossing_ids[slot];
         const Ellipse& target = placed[t];
-        const Rational r = rng.uniform_rational(rmin, rmax, o.bits);
-        const Rational reach = target.a() + r;
+        // Half the partner ellipses thin: the minor semi-axis in [rmin/4, rmin],
+        // an aspect ratio up to 16 (no draw for circles, whose sets stay as they were).
+        const bool thin = !circles && rng.below(2) == 0;
+        const SiteShape shape = draw_shape(rmin, rmax, thin ? rmin / Rational(4) : rmin, thin ? rmin : rmax);
+        // Centers up to the sum of the largest semi-axes away in each coordinate:
+        // deep crossings (a center inside the other site) and shallow ones.
+        const Rational reach = max_axis(target) + shape.largest_axis();
         Rational xc = rng.uniform_rational(target.xc() - reach, target.xc() + reach, o.bits);
         Rational yc = rng.uniform_rational(target.yc() - reach, target.yc() + reach, o.bits);
         if (xc < -center_extent || xc > center_extent || yc < -center_extent || yc > center_extent) continue;
-        Ellipse e = Ellipse::circle(xc, yc, r);
-        if (circle_pair(e, target) != CirclePair::crossing) continue;
-        // Every site near enough to meet e is in a neighbouring cell (radii <=
-        // rmax); nested sites lie inside their hosts, so only the hosts e meets
-        // need their nested sites checked.
+        Ellipse e(shape.a, shape.b, shape.w, xc, yc);
+        if (site_pair(e, target) != SitePair::crossing) continue;
+        // Every site near enough to meet e is in a neighbouring cell (largest
+        // semi-axes <= rmax); nested sites lie inside their hosts, so only the
+        // hosts e meets need their nested sites checked.
         const long cx = floor_to_long((xc + o.box) / cell), cy = floor_to_long((yc + o.box) / cell);
         bool ok = true;
         for (long i = cx - 1; i <= cx + 1 && ok; ++i)
@@ -254,12 +298,14 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
                 auto it = grid.find({i, j});
                 if (it == grid.end()) continue;
                 for (std::size_t k : it->second) {
-                    const CirclePair rel = circle_pair(e, placed[k]);
-                    if (rel == CirclePair::separated) continue;
-                    if (rel == CirclePair::other || (k != t && !crosses[k])) { ok = false; break; }
+                    if (k != t) {  // the target crosses e (above)
+                        const SitePair rel = site_pair(e, placed[k]);
+                        if (rel == SitePair::separated) continue;
+                        if (rel == SitePair::other || !crosses[k]) { ok = false; break; }
+                    }
                     if (k < hosts)
                         for (std::size_t m : inside[k])
-                            if (circle_pair(e, placed[m]) != CirclePair::separated) { ok = false; break; }
+                            if (site_pair(e, placed[m]) != SitePair::separated) { ok = false; break; }
                     if (!ok) break;
                 }
             }

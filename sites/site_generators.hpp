@@ -13,7 +13,10 @@
 // circles (center, radius max(a, b)) are disjoint, and a site is accepted as
 // nested in a host when its bounding circle lies strictly inside the host's
 // inscribed circle (radius min(a, b)), hence strictly inside the host.
-// Crossing circles (below) are decided exactly, by their centers and radii.
+// Crossing sites (below) are decided exactly: circles by their centers and
+// radii, ellipses by the real roots of their intersection quartic (the count
+// of predicates/relative_position.hpp's boundary_meeting_points, which this
+// layer cannot call, made here with FLINT's real-root count).
 #pragma once
 
 #include "sites/ellipse.hpp"
@@ -53,7 +56,7 @@ struct GeneratorOptions {
     long bits = 8;                    // denominators up to 2^bits; 1 <= bits <= kMaxGeneratorBits
     Rational box = Rational(100);     // centers of top-level sites lie in [-box, box]^2
     Rational nested_fraction = Rational(0);  // round(fraction * count) sites are nested in another
-    Rational crossing_fraction = Rational(0);  // circles only: round(fraction * count) sites cross another
+    Rational crossing_fraction = Rational(0);  // round(fraction * count) sites cross another
 };
 
 constexpr long kMaxGeneratorBits = 1000;
@@ -64,30 +67,41 @@ constexpr long kMaxGeneratorBits = 1000;
 // its host). Throws Error on bad options, or when rejection sampling fails to
 // place the sites (too many for the box).
 //
-// crossing_fraction in [0, 1] (circles only; a nonzero fraction for ellipses
-// is an Error, since the library accepts crossing sites between circles only):
-// exactly K = round(crossing_fraction * count) of the circles cross at least
-// one other circle (circles_cross below), and the other sites cross none.
-// K = 1 is an Error (a crossing needs two circles), and so is K > count -
-// nested (nested sites never cross). The K circles come from ceil(K/2)
-// *partners*, drawn after the separated and nested sites: each crosses a
-// separated circle that crossed nothing yet (its target); for odd K the last
-// partner's target is a circle that already crosses. A partner may also cross
-// any number of circles that already cross; from every other site (nested ones
-// included) its disk is disjoint. So no two sites are identical, tangent or
-// nested except the nested ones in their hosts, and the nested count is as
-// above. The separated circles are count - nested - ceil(K/2) of the first
-// draws, on the grid and radius range of K = 0: with fraction 0 the sites are
-// those the generator made before the option existed, and two fractions with
-// the same seed share their first separated circles.
+// crossing_fraction in [0, 1]: exactly K = round(crossing_fraction * count)
+// of the sites cross at least one other site (sites_cross below: boundaries
+// meeting in exactly two points, crossing at both), and the other sites cross
+// none; no two boundaries meet in three or four points. K = 1 is an Error (a
+// crossing needs two sites), and so is K > count - nested (nested sites never
+// cross). The K sites come from ceil(K/2) *partners*, drawn after the
+// separated and nested sites: each crosses a separated site that crossed
+// nothing yet (its target); for odd K the last partner's target is a site that
+// already crosses. A partner may also cross any number of sites that already
+// cross; from every other site (nested ones included) it is apart. So no two
+// sites are identical, tangent or nested except the nested ones in their
+// hosts, and the nested count is as above. Half the partner ellipses are
+// drawn like the separated ones, half thin (the minor semi-axis below the
+// separated ones' smallest, down to a quarter of it: aspect ratios up to 16);
+// at any angle, their centers inside the target (deep crossings) or not. The
+// separated sites are count - nested - ceil(K/2) of the first draws, on the
+// grid and size range of K = 0: with fraction 0 the sites are those the
+// generator made before the option existed, and two fractions with the same
+// seed share their first separated sites.
 std::vector<Ellipse> generate_sites(const GeneratorOptions& options);
 
 // The conservative tests used above (exact).
 bool bounding_circles_separated(const Ellipse& e1, const Ellipse& e2);
 bool bounding_circle_inside_inscribed(const Ellipse& inner, const Ellipse& host);
+
+// The crossing tests (exact).
 // Two circles' boundaries cross (meet in two points), exactly:
 // (r1 - r2)^2 < |c1 - c2|^2 < (r1 + r2)^2. Throws Error unless both are circles.
 bool circles_cross(const Ellipse& c1, const Ellipse& c2);
+// Two sites' boundaries meet in exactly two points and cross transversally at
+// both (intersection multiplicity 1), exactly; symmetric; for two circles
+// circles_cross. False for every other pair: apart, tangent, nested,
+// identical, meeting in three or four points, and the rare crossing that also
+// osculates (multiplicity 3), which the generator does not make.
+bool sites_cross(const Ellipse& e1, const Ellipse& e2);
 
 // A one-line description of the options, for file headers.
 std::string describe(const GeneratorOptions& options);

@@ -1,7 +1,9 @@
 // Deterministic generators: reproducibility, disjointness (conservative and by exact
-// boundary sampling), nested fraction, crossing circles, bit sizes, and the paper's datasets.
+// boundary sampling), nested fraction, crossing circles and ellipses (checked against the
+// predicates' exact relative positions), bit sizes, and the paper's datasets.
 #include <catch2/catch.hpp>
 
+#include "predicates/relative_position.hpp"
 #include "sites/site_generators.hpp"
 #include "sites/site_io.hpp"
 #include "util/error.hpp"
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 using namespace ellvor;
 
@@ -87,6 +90,50 @@ void check_disjoint(const std::vector<Ellipse>& s, bool sample, bool crossing_ci
             else if (in_ji) check_pair_by_sampling(s[j], s[i], true);
             else check_pair_by_sampling(s[i], s[j], false);
         }
+}
+
+// A generated set judged by the predicates alone (relative_position and
+// boundary_meeting_points, exact), over all pairs: every pair is separated,
+// strictly nested, or crosses meeting in exactly two points; nothing else.
+struct CrossingCensus {
+    std::vector<char> crosses, nested;  // per site: crosses another, lies inside another
+    long crossing_pairs = 0;
+    long deep_pairs = 0;  // a center inside the other site
+    long crossing_sites() const { return static_cast<long>(std::count(crosses.begin(), crosses.end(), 1)); }
+    long nested_sites() const { return static_cast<long>(std::count(nested.begin(), nested.end(), 1)); }
+};
+
+CrossingCensus crossing_census(const std::vector<Ellipse>& s) {
+    CrossingCensus census;
+    census.crosses.assign(s.size(), 0);
+    census.nested.assign(s.size(), 0);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        for (std::size_t j = i + 1; j < s.size(); ++j) {
+            const RelativePosition position = *relative_position(s[i], s[j]);
+            if (position == RelativePosition::separated) continue;
+            if (position == RelativePosition::first_inside) census.nested[i] = 1;
+            else if (position == RelativePosition::second_inside) census.nested[j] = 1;
+            else {
+                INFO("sites " << i << " and " << j << ": " << s[i].str() << " | " << s[j].str() << ": "
+                              << relative_position_name(position));
+                REQUIRE(position == RelativePosition::intersecting);
+                REQUIRE(boundary_meeting_points(s[i], s[j]) == 2);
+                census.crosses[i] = census.crosses[j] = 1;
+                ++census.crossing_pairs;
+                if (s[i].side_of_point(s[j].xc(), s[j].yc()) < 0 || s[j].side_of_point(s[i].xc(), s[i].yc()) < 0)
+                    ++census.deep_pairs;
+            }
+        }
+    return census;
+}
+
+// The generator's own crossing test against the predicates, both orders.
+void check_sites_cross(const Ellipse& e1, const Ellipse& e2) {
+    const bool expected = *relative_position(e1, e2) == RelativePosition::intersecting &&
+                          boundary_meeting_points(e1, e2) == 2;
+    INFO(e1.str() << " | " << e2.str());
+    CHECK(sites_cross(e1, e2) == expected);
+    CHECK(sites_cross(e2, e1) == expected);
 }
 
 }  // namespace
@@ -222,21 +269,16 @@ TEST_CASE("crossing circles: exactly round(fraction * count) cross another, chec
 
 TEST_CASE("crossing option errors", "[sites][generators]") {
     GeneratorOptions o;
-    o.kind = SiteKind::ellipses;
-    o.count = 20;
-    o.crossing_fraction = Rational(1, 4);
-    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("between circles only"));
-    o.crossing_fraction = Rational(0);
-    CHECK(generate_sites(o).size() == 20);
     o.kind = SiteKind::circles;
+    o.count = 20;
     o.crossing_fraction = Rational(-1, 4);
     CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("crossing fraction must be in [0, 1]"));
     o.crossing_fraction = Rational(5, 4);
     CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("crossing fraction must be in [0, 1]"));
     o.crossing_fraction = Rational(1, 20);  // K = 1
-    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two circles"));
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two sites"));
     o.crossing_fraction = Rational(1, 40);  // K = round(1/2) = 1
-    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two circles"));
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two sites"));
     o.crossing_fraction = Rational(1, 100);  // K = 0: no crossing
     CHECK(crossing_count(generate_sites(o)) == 0);
     o.nested_fraction = Rational(1, 2);
@@ -253,6 +295,124 @@ TEST_CASE("crossing option errors", "[sites][generators]") {
     CHECK(!circles_cross(e1, Ellipse::circle(Rational(2), Rational(0), Rational(1))));  // tangent
     CHECK(!circles_cross(e1, Ellipse::circle(Rational(1, 2), Rational(0), Rational(1, 2))));  // internally tangent
     CHECK(!circles_cross(e1, e1));
+}
+
+TEST_CASE("crossing ellipses: exactly round(fraction * count) cross another, by the predicates", "[sites][generators]") {
+    struct Case { long count; Rational crossing, nested; long bits; Rational box; std::uint64_t seed; };
+    long deep_pairs = 0, shallow_pairs = 0, thin_crossing = 0, turned_left = 0, turned_right = 0;
+    for (const Case& c : {Case{40, Rational(3, 10), Rational(0), 8, Rational(100), 1},        // K = 12
+                          Case{150, Rational(0), Rational(0), 8, Rational(100), 2},           // no crossing
+                          Case{300, Rational(3, 10), Rational(0), 8, Rational(100), 3},       // K = 90
+                          Case{201, Rational(1), Rational(0), 8, Rational(100), 4},           // every site, K odd
+                          Case{400, Rational(1, 3), Rational(1, 10), 12, Rational(50), 5},    // K = 133, 40 nested
+                          Case{30, Rational(1, 10), Rational(1, 5), 6, Rational(100), 6},     // K = 3: last partner alone
+                          Case{200, Rational(3, 10), Rational(0), 1, Rational(256 * 15), 7},  // dyadic, as benchmarks
+                          Case{1000, Rational(3, 10), Rational(0), 8, Rational(100), 8}}) {   // K = 300
+        GeneratorOptions o;
+        o.count = c.count;
+        o.seed = c.seed;
+        o.bits = c.bits;
+        o.box = c.box;
+        o.nested_fraction = c.nested;
+        o.crossing_fraction = c.crossing;
+        INFO("count " << c.count << ", crossing " << c.crossing.str() << ", nested " << c.nested.str() << ", seed "
+                      << c.seed);
+        const auto s = generate_sites(o);
+        REQUIRE(static_cast<long>(s.size()) == c.count);
+        const CrossingCensus census = crossing_census(s);
+        CHECK(census.crossing_sites() == rounded(c.crossing, c.count));
+        CHECK(census.nested_sites() == rounded(c.nested, c.count));
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            CHECK(!(census.crosses[i] && census.nested[i]));  // nested sites never cross
+            for (const Rational* v : {&s[i].xc(), &s[i].yc()}) CHECK((-c.box <= *v && *v <= c.box));
+            if (!census.crosses[i]) continue;
+            const Rational ratio = s[i].a() < s[i].b() ? s[i].b() / s[i].a() : s[i].a() / s[i].b();
+            thin_crossing += ratio > Rational(4);  // beyond the separated sites' shapes
+            (s[i].w().sign() < 0 ? turned_right : turned_left) += 1;
+        }
+        deep_pairs += census.deep_pairs;
+        shallow_pairs += census.crossing_pairs - census.deep_pairs;
+        // deterministic: the same options give the same file, another seed another
+        CHECK(text(generate_sites(o)) == text(s));
+        o.seed = c.seed + 100;
+        CHECK(text(generate_sites(o)) != text(s));
+        CHECK((describe(o).find(" --crossing ") != std::string::npos) == !c.crossing.is_zero());
+    }
+    // varied crossings: deep and shallow, thin partners, turned both ways
+    CHECK(deep_pairs >= 50);
+    CHECK(shallow_pairs >= 100);
+    CHECK(thin_crossing >= 30);
+    CHECK(turned_left >= 100);
+    CHECK(turned_right >= 100);
+
+    // A fixed set (guards against accidental changes of the partners' draws).
+    GeneratorOptions o;
+    o.count = 4;
+    o.seed = 11;
+    o.crossing_fraction = Rational(1, 2);
+    CHECK(text(generate_sites(o)).find("1319/200 727/116 44/61 56 409/12\n"
+                                       "484/47 10/3 55/92 7460/127 1038/23\n"
+                                       "787/145 2089/234 29/167 -9600/143 -11194/227\n"
+                                       "268/61 1091/254 -67/210 -1852/41 9749/178\n") != std::string::npos);
+    // Without nested sites, all but the ceil(K/2) partners are the disjoint set's.
+    o.count = 300;
+    o.seed = 2;
+    o.crossing_fraction = Rational(0);
+    std::set<std::string> disjoint;
+    for (const Ellipse& e : generate_sites(o)) disjoint.insert(e.str());
+    o.crossing_fraction = Rational(3, 10);  // K = 90, 45 partners
+    long common = 0;
+    for (const Ellipse& e : generate_sites(o)) common += static_cast<long>(disjoint.count(e.str()));
+    CHECK(common == 300 - 45);
+    // errors as for circles
+    o.count = 20;
+    o.crossing_fraction = Rational(1, 20);  // K = 1
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("a crossing needs two sites"));
+    o.nested_fraction = Rational(1, 2);
+    o.crossing_fraction = Rational(11, 20);  // K = 11 > 10 not nested
+    CHECK_THROWS_WITH(generate_sites(o), Catch::Contains("nested sites never cross"));
+}
+
+TEST_CASE("sites_cross: two transversal crossings, as the predicates count them", "[sites][generators]") {
+    // Random pairs near each other: apart, crossing in two or four points, nested.
+    SiteRandom rng(23);
+    long crossing = 0, four_points = 0, nested = 0, separated = 0;
+    for (int k = 0; k < 1500; ++k) {
+        auto shape = [&](const Rational& x, const Rational& y) {
+            return Ellipse(rng.uniform_rational(Rational(1, 4), Rational(4), 8),
+                           rng.uniform_rational(Rational(1, 4), Rational(4), 8),
+                           rng.uniform_rational(Rational(-1), Rational(1), 8), x, y);
+        };
+        const Ellipse e1 = shape(Rational(0), Rational(0));
+        const Ellipse e2 = shape(rng.uniform_rational(Rational(-5), Rational(5), 8),
+                                 rng.uniform_rational(Rational(-5), Rational(5), 8));
+        check_sites_cross(e1, e2);
+        const RelativePosition position = *relative_position(e1, e2);
+        if (position == RelativePosition::intersecting)
+            ++(boundary_meeting_points(e1, e2) == 2 ? crossing : four_points);
+        else if (position == RelativePosition::separated) ++separated;
+        else ++nested;
+    }
+    CHECK(crossing >= 100);
+    CHECK(four_points >= 20);
+    CHECK(nested >= 10);
+    CHECK(separated >= 100);
+    // Special pairs: tangent, identical, three meeting points, a crossing at
+    // E1's i-point (t = infinity: (-2, 0) for the first ellipse), circles.
+    const Ellipse wide(Rational(2), Rational(1), Rational(0), Rational(0), Rational(0));
+    const Ellipse unit = Ellipse::circle(Rational(0), Rational(0), Rational(1));
+    for (const auto& [e1, e2, crosses] : std::vector<std::tuple<Ellipse, Ellipse, bool>>{
+             {wide, Ellipse::circle(Rational(3), Rational(0), Rational(1)), false},                   // tangent outside
+             {wide, unit, false},                                                                     // tangent inside, twice
+             {wide, wide, false},                                                                     // identical
+             {unit, Ellipse(Rational(1), Rational(3, 2), Rational(0), Rational(0), Rational(-1, 2)), false},  // 3 points
+             {wide, Ellipse::circle(Rational(-2), Rational(1, 2), Rational(1, 2)), true},             // through the i-point
+             {wide, Ellipse(Rational(1), Rational(2), Rational(0), Rational(0), Rational(0)), false},  // 4 points
+             {wide, Ellipse(Rational(1), Rational(2), Rational(0), Rational(0), Rational(5, 2)), true},
+             {unit, Ellipse::circle(Rational(1), Rational(0), Rational(1)), true}}) {
+        check_sites_cross(e1, e2);
+        CHECK(sites_cross(e1, e2) == crosses);
+    }
 }
 
 TEST_CASE("generator option errors", "[sites][generators]") {
