@@ -26,7 +26,8 @@ const char* const kHelp =
     "Builds the Delaunay graph (the dual of the Voronoi diagram) of the sites of FILE by\n"
     "incremental insertion (Karavelas-Yvinec, as CGAL's Apollonius graph), every predicate\n"
     "certified. Distances are signed (negative inside a site). Sites inside others are hidden:\n"
-    "they have no Voronoi cell. Circles may cross; crossing ellipses are not supported yet.\n"
+    "they have no Voronoi cell. Sites may cross in two points; an ellipse inside the union of\n"
+    "crossing sites, with an empty cell, is hidden too (listed under a site crossing it).\n"
     "Prints a summary.\n"
     "\n"
     "options:\n"
@@ -57,7 +58,7 @@ const char* const kHelp =
     "                (and per removal)\n"
     "\n"
     "exit status: 0 built (and valid); 1 the validation failed, or an undecided predicate;\n"
-    "2 bad input (crossing ellipses, or boundaries meeting in 3 or 4 points, are named).\n";
+    "2 bad input (sites whose boundaries meet in 3 or 4 points are named).\n";
 
 constexpr std::size_t kBruteForceLimit = 300;
 

@@ -397,6 +397,9 @@ public:
     bool is_hidden(SiteId p, SiteId q) override {
         return timed(kIsHidden, {p, q}, [=](DelaunayTraits& t) { return t.is_hidden(p, q); });
     }
+    bool crosses(SiteId p, SiteId q) override {
+        return timed(kIsHidden, {p, q}, [=](DelaunayTraits& t) { return t.crosses(p, q); });
+    }
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override {
         return timed(kKappa1, {i, j, k}, [=](DelaunayTraits& t) { return t.side_of_bisector(i, j, k); });
     }

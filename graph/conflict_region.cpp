@@ -81,10 +81,46 @@ void ConflictRegion::expand(FaceIndex start) {
             }
         }
     }
+    find_swallowed_vertices();
+}
+
+// A site whose cell p empties crosses p (it does not contain p, which would
+// hide p, and shares points with it: p has no say where it is absent), so
+// the costlier test of the faces around it runs for crossing sites only.
+void ConflictRegion::find_swallowed_vertices() {
+    swallowed_.clear();
+    for (FaceIndex f : faces_)
+        for (VertexIndex v : tds_.face(f).v) {
+            if (v == Triangulation::kInfiniteVertex) continue;
+            ConflictMarks::Vertex& m = marks_.vertex(v);
+            if (m.swallowed || hides(v) || !predicates_.crosses(p_, predicates_.site(v))) continue;
+            if (every_edge_around_crossed(v)) {
+                m.swallowed = true;
+                swallowed_.push_back(v);
+            }
+        }
+    std::sort(swallowed_.begin(), swallowed_.end());
+}
+
+bool ConflictRegion::every_edge_around_crossed(VertexIndex v) const {
+    for (FaceIndex f : tds_.incident_faces(v)) {
+        const ConflictMarks::Face* m = marks_.find(f);
+        if (!m || !m->in_region) return false;
+        const int k = tds_.index(f, v);
+        if (m->crossed[ccw(k)] != 1 || m->crossed[cw(k)] != 1) return false;
+    }
+    return true;
 }
 
 std::vector<VertexIndex> ConflictRegion::hidden_vertices() const {
     std::vector<VertexIndex> out = hidden_;
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<VertexIndex> ConflictRegion::vanishing_vertices() const {
+    std::vector<VertexIndex> out = hidden_vertices();
+    out.insert(out.end(), swallowed_.begin(), swallowed_.end());
     std::sort(out.begin(), out.end());
     return out;
 }
@@ -131,14 +167,14 @@ std::vector<Edge> ConflictRegion::boundary() const {
     return boundary;
 }
 
-void ConflictRegion::check_inner_vertices(const std::vector<Edge>& boundary, const std::vector<VertexIndex>& hidden) {
+void ConflictRegion::check_inner_vertices(const std::vector<Edge>& boundary, const std::vector<VertexIndex>& vanishing) {
     for (const Edge& e : boundary) marks_.vertex(tds_.face(e.face).v[ccw(e.index)]).on_boundary = true;
     for (FaceIndex f : faces_)
         for (VertexIndex v : tds_.face(f).v)
-            if (!marks_.vertex(v).on_boundary && !hides(v))
+            if (!marks_.vertex(v).on_boundary && !hides(v) && !marks_.vertex(v).swallowed)
                 throw Error("site " + std::to_string(predicates_.site(v)) + " would vanish inserting site " +
                             std::to_string(p_) + " (internal error)");
-    for (VertexIndex v : hidden)
+    for (VertexIndex v : vanishing)
         if (marks_.vertex(v).on_boundary)
             throw Error("hidden site " + std::to_string(predicates_.site(v)) + " stays on the conflict boundary of site " +
                         std::to_string(p_) + " (internal error)");

@@ -33,10 +33,12 @@ public:
         bool in_region = false;
         std::array<signed char, 3> crossed = {kUntested, kUntested, kUntested};
     };
-    // Per vertex: whether p hides its site, and whether it is on the region's boundary.
+    // Per vertex: whether p hides its site, whether p and others empty its
+    // cell, and whether it is on the region's boundary.
     struct Vertex {
         std::uint32_t generation = 0;
         signed char hidden = kUnknown;  // 0, 1, or kUnknown
+        bool swallowed = false;
         bool on_boundary = false;
     };
     static constexpr signed char kUnknown = -2;
@@ -80,6 +82,14 @@ public:
     }
     // The vertices whose sites p hides, by increasing index.
     std::vector<VertexIndex> hidden_vertices() const;
+    // The vertices whose cells p empties without containing their sites
+    // (union hiding, docs/DESIGN.md §9): every face around them is in the
+    // region and every Voronoi edge of theirs entirely in conflict. Found
+    // by expand(); by increasing index.
+    const std::vector<VertexIndex>& swallowed_vertices() const { return swallowed_; }
+    // hidden_vertices() and swallowed_vertices(): the vertices starring the
+    // hole deletes, by increasing index.
+    std::vector<VertexIndex> vanishing_vertices() const;
     // The edges between two faces of the region that the growth did not cross,
     // each once (by increasing face, then index): the region touches itself
     // along them, and the hole is a disk only once each is split by a bogus vertex.
@@ -88,16 +98,20 @@ public:
     // Error when they do not form one cycle (the region is not a disk).
     std::vector<Edge> boundary() const;
     // Throws Error unless the vertices strictly inside the region are exactly
-    // the hidden ones: starring the hole deletes them.
-    void check_inner_vertices(const std::vector<Edge>& boundary, const std::vector<VertexIndex>& hidden);
+    // the vanishing ones: starring the hole deletes them.
+    void check_inner_vertices(const std::vector<Edge>& boundary, const std::vector<VertexIndex>& vanishing);
 
 private:
+    bool every_edge_around_crossed(VertexIndex v) const;
+    void find_swallowed_vertices();
+
     const Triangulation& tds_;
     TriangulationPredicates predicates_;
     SiteId p_;
     ConflictMarks& marks_;
     std::vector<FaceIndex> faces_;
     std::vector<VertexIndex> hidden_;  // in the order found
+    std::vector<VertexIndex> swallowed_;
 };
 
 }  // namespace ellvor

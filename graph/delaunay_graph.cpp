@@ -65,6 +65,37 @@ void DelaunayGraph::hide(SiteId hidden, SiteId by) {
     hidden_in_[hidden].clear();
 }
 
+void DelaunayGraph::hide_in_union(SiteId hidden, SiteId host, std::vector<SiteId>& again) {
+    // Only a site crossing `hidden` can cover its center without containing
+    // it; anything else is a wrong nearest site or predicate.
+    if (!traits_->crosses(host, hidden))
+        throw Error("site " + str(hidden) + " has an empty cell but site " + str(host) +
+                    ", nearest to its center, does not cross it (internal error)");
+    // The sites `hidden` hid lie in it, not in `host`: they look for their
+    // own host.
+    for (SiteId h : hidden_in_[hidden]) {
+        forget_union_hidden(h);
+        again.push_back(h);
+    }
+    hidden_in_[hidden].clear();
+    hidden_in_[host].push_back(hidden);
+    host_[hidden] = host;
+    union_hidden_.push_back(hidden);
+    ++stats_.union_hidden;
+}
+
+void DelaunayGraph::insert_again(std::vector<SiteId> sites) {
+    // CGAL's order: largest first, so that fewer are hidden again.
+    std::stable_sort(sites.begin(), sites.end(),
+                     [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
+    for (SiteId h : sites) {
+        host_[h] = kNoHost;
+        inserted_[h] = kOut;
+        --stats_.inserted;  // counted again by insert
+        insert(h);
+    }
+}
+
 // ---------------------------------------------------------------- small cases
 
 void DelaunayGraph::insert_small(SiteId p) {
@@ -105,22 +136,48 @@ void DelaunayGraph::insert_third(SiteId p) {
         return;
     }
     // The shadow of p on the single bisector of s1, s2 decides the shape of
-    // the graph of three sites (as CGAL's insert_third).
+    // the graph of three sites (as CGAL's insert_third). Without Voronoi
+    // vertices, the shadows of each site on the other two's bisector --
+    // none or all of it -- tell a chain (the middle site's shadow is all, the
+    // others' none) from a site covered by the union of the other two (its
+    // shadow is none, the others' all).
     TriangulationPredicates pred = predicates();
+    auto all = [&](SiteId a, SiteId b, SiteId q) {
+        const ConflictType t = pred.finite_edge_conflict_type_degenerated(a, b, q);
+        if (t != ConflictType::no_conflict && t != ConflictType::entire_edge)
+            throw Error("inconsistent predicates for the three sites " + str(s1) + ", " + str(s2) + ", " + str(p));
+        return t == ConflictType::entire_edge;
+    };
+    auto covered = [&](SiteId hidden, SiteId a, SiteId b) {
+        std::vector<SiteId> again;
+        hide_in_union(hidden, nearer_at_center(a, b, hidden), again);
+        small_ = {a, b};
+        insert_again(again);
+    };
     switch (pred.finite_edge_conflict_type_degenerated(s1, s2, p)) {
         case ConflictType::left_vertex: tds_.make_tetrahedron(s1, s2, p); break;
         case ConflictType::right_vertex: tds_.make_tetrahedron(s2, s1, p); break;
         case ConflictType::interior: build_three(s1, p, s2, false); break;
-        case ConflictType::entire_edge: build_three(s1, p, s2, true); break;
+        case ConflictType::entire_edge: {
+            const bool s1_all = all(s2, p, s1), s2_all = all(s1, p, s2);
+            if (!s1_all && !s2_all) {
+                build_three(s1, p, s2, true);
+            } else if (s1_all != s2_all) {
+                return covered(s1_all ? s2 : s1, s1_all ? s1 : s2, p);
+            } else {
+                throw Error("inconsistent predicates for the three sites " + str(s1) + ", " + str(s2) + ", " + str(p));
+            }
+            break;
+        }
         case ConflictType::no_conflict: {
-            // p does not reach the bisector: s1 or s2 lies between p and the other.
-            const ConflictType ct1 = pred.finite_edge_conflict_type_degenerated(s1, p, s2);
-            if (ct1 == ConflictType::no_conflict)
+            // p does not reach the bisector: s1 or s2 lies between p and the
+            // other, or p is covered.
+            if (!all(s1, p, s2))
                 build_three(s2, s1, p, true);
-            else if (ct1 == ConflictType::entire_edge)
+            else if (!all(s2, p, s1))
                 build_three(s1, s2, p, true);
             else
-                throw Error("inconsistent predicates for the three sites " + str(s1) + ", " + str(s2) + ", " + str(p));
+                return covered(p, s1, s2);
             break;
         }
         case ConflictType::both_vertices: {
@@ -168,16 +225,27 @@ void DelaunayGraph::insert_general(SiteId p) {
     const VertexIndex nearest = nearest_vertex(p);
     if (hide_in_nearest(p, nearest)) return;
     ConflictRegion region(tds_, predicates(), p, conflict_marks_);
-    const std::optional<FaceIndex> start = find_first_conflict(region, nearest);
+    std::optional<FaceIndex> start = find_first_conflict(region, nearest);
+    std::vector<SiteId> again;  // sites hidden by sites that p empties
     if (!start) {
         if (insert_in_voronoi_edge(p, nearest)) return;
-        throw Error("site " + str(p) + " is in conflict with no Voronoi vertex or edge (covered by a union of sites?)");
+        // A site crossing others need not own its center, so its cell may
+        // lie away from the nearest site's: only the whole graph can show
+        // that p conflicts with nothing, i.e. its cell is empty.
+        start = find_any_conflict(region);
+        if (!start) {
+            if (insert_in_any_voronoi_edge(p, nearest)) return;
+            hide_in_union(p, site_of(nearest), again);
+            return;
+        }
     }
     region.expand(*start);
-    if (rebuild_if_at_most_one_survives(region)) return;
-    stats_.conflict_faces += region.faces().size();
-    const std::vector<VertexIndex> bogus = add_bogus_vertices(region);
-    retriangulate_conflict_region(region, bogus);
+    if (!rebuild_if_at_most_one_survives(region, again)) {
+        stats_.conflict_faces += region.faces().size();
+        const std::vector<VertexIndex> bogus = add_bogus_vertices(region);
+        retriangulate_conflict_region(region, bogus, again);
+    }
+    insert_again(again);
 }
 
 // The nearest site (CGAL's nearest_neighbor): a greedy walk to the vertex
@@ -244,15 +312,56 @@ bool DelaunayGraph::insert_in_voronoi_edge(SiteId p, VertexIndex nearest) {
     return false;
 }
 
+std::optional<FaceIndex> DelaunayGraph::find_any_conflict(ConflictRegion& region) {
+    ++stats_.global_searches;
+    for (FaceIndex f : tds_.faces())
+        if (region.in_conflict(f)) return f;
+    return std::nullopt;
+}
+
+bool DelaunayGraph::insert_in_any_voronoi_edge(SiteId p, VertexIndex nearest) {
+    TriangulationPredicates pred = predicates();
+    for (FaceIndex f : tds_.faces())
+        for (int i = 0; i < 3; ++i) {
+            const Edge e{f, i};
+            // Each edge once; the nearest site's were tested already.
+            if (tds_.mirror_edge(e) < e || tds_.face(f).v[ccw(i)] == nearest || tds_.face(f).v[cw(i)] == nearest) continue;
+            if (pred.edge_interior(e, p, false)) {
+                record_vertex(p, tds_.insert_degree_2(e, p));
+                ++stats_.degree_2_insertions;
+                return true;
+            }
+        }
+    return false;
+}
+
+// The site of a or b nearer to the center of site `of` (kappa1; a at a tie).
+SiteId DelaunayGraph::nearer_at_center(SiteId a, SiteId b, SiteId of) {
+    return traits_->side_of_bisector(a, b, of) == Sign::negative ? b : a;
+}
+
+// The sites of the vanishing vertices are hidden by p: inside p, or emptied
+// by p with others.
+void DelaunayGraph::hide_vanishing(const ConflictRegion& region, const std::vector<VertexIndex>& vanishing,
+                                   std::vector<SiteId>& again) {
+    const std::vector<VertexIndex>& swallowed = region.swallowed_vertices();
+    for (VertexIndex v : vanishing) {
+        if (std::binary_search(swallowed.begin(), swallowed.end(), v))
+            hide_in_union(site_of(v), region.site(), again);
+        else
+            hide(site_of(v), region.site());
+    }
+}
+
 // CGAL's fallbacks when p hides all the visible sites, or all but one: no
 // triangulation is left, the survivors start again as the small cases.
-bool DelaunayGraph::rebuild_if_at_most_one_survives(const ConflictRegion& region) {
-    const std::vector<VertexIndex> hidden = region.hidden_vertices();
-    if (tds_.number_of_vertices() - 1 - hidden.size() > 1) return false;
+bool DelaunayGraph::rebuild_if_at_most_one_survives(const ConflictRegion& region, std::vector<SiteId>& again) {
+    const std::vector<VertexIndex> vanishing = region.vanishing_vertices();
+    if (tds_.number_of_vertices() - 1 - vanishing.size() > 1) return false;
     std::vector<SiteId> survivors;
     for (VertexIndex v : tds_.finite_vertices())
-        if (!std::binary_search(hidden.begin(), hidden.end(), v)) survivors.push_back(site_of(v));
-    for (VertexIndex v : hidden) hide(site_of(v), region.site());
+        if (!std::binary_search(vanishing.begin(), vanishing.end(), v)) survivors.push_back(site_of(v));
+    hide_vanishing(region, vanishing, again);
     survivors.push_back(region.site());
     rebuild_small(survivors);
     return true;
@@ -268,13 +377,14 @@ std::vector<VertexIndex> DelaunayGraph::add_bogus_vertices(const ConflictRegion&
 }
 
 // Retriangulation: the region's faces are replaced by a fan around p's new
-// vertex (star_hole); the vertices inside the region, exactly those p hides,
-// disappear.
-void DelaunayGraph::retriangulate_conflict_region(ConflictRegion& region, const std::vector<VertexIndex>& bogus) {
+// vertex (star_hole); the vertices inside the region, exactly those p hides
+// or empties, disappear.
+void DelaunayGraph::retriangulate_conflict_region(ConflictRegion& region, const std::vector<VertexIndex>& bogus,
+                                                  std::vector<SiteId>& again) {
     const std::vector<Edge> boundary = region.boundary();
-    const std::vector<VertexIndex> hidden = region.hidden_vertices();
-    region.check_inner_vertices(boundary, hidden);
-    for (VertexIndex h : hidden) hide(site_of(h), region.site());
+    const std::vector<VertexIndex> vanishing = region.vanishing_vertices();
+    region.check_inner_vertices(boundary, vanishing);
+    hide_vanishing(region, vanishing, again);
     TriangulationPredicates pred = predicates();
     for (FaceIndex f : region.faces()) pred.forget(f);
     const VertexIndex v = tds_.star_hole(region.site(), boundary, region.faces());
@@ -300,10 +410,27 @@ void DelaunayGraph::remove(SiteId s) {
         auto& list = hidden_in_[host_[s]];
         list.erase(std::find(list.begin(), list.end(), s));
         host_[s] = kNoHost;
+        forget_union_hidden(s);
         return;
     }
     std::vector<SiteId> orphans;
     orphans.swap(hidden_in_[s]);
+    for (SiteId h : orphans) forget_union_hidden(h);
+    // A site emptied by a union comes back if s was one of the sites
+    // covering it: s crosses it (a site it does not meet has no say on its
+    // points).
+    for (std::size_t k = 0; k < union_hidden_.size();) {
+        const SiteId h = union_hidden_[k];
+        if (traits_->crosses(h, s) || traits_->is_hidden(s, h)) {
+            auto& list = hidden_in_[host_[h]];
+            list.erase(std::find(list.begin(), list.end(), h));
+            orphans.push_back(h);
+            union_hidden_[k] = union_hidden_.back();
+            union_hidden_.pop_back();
+        } else {
+            ++k;
+        }
+    }
     if (tds_.empty()) {
         small_.erase(std::find(small_.begin(), small_.end(), s));
     } else if (tds_.number_of_vertices() == 4) {
@@ -320,14 +447,14 @@ void DelaunayGraph::remove(SiteId s) {
         remove_vertex(vertex_of(s));
     }
     // The sites s hid come back (CGAL: largest first, so that fewer are hidden again).
-    std::stable_sort(orphans.begin(), orphans.end(),
-                     [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
-    for (SiteId h : orphans) {
-        host_[h] = kNoHost;
-        inserted_[h] = kOut;
-        --stats_.inserted;  // counted again by insert
-        insert(h);
-    }
+    insert_again(orphans);
+}
+
+void DelaunayGraph::forget_union_hidden(SiteId h) {
+    const auto found = std::find(union_hidden_.begin(), union_hidden_.end(), h);
+    if (found == union_hidden_.end()) return;
+    *found = union_hidden_.back();
+    union_hidden_.pop_back();
 }
 
 VertexIndex DelaunayGraph::vertex_of(SiteId s) const {
@@ -495,7 +622,7 @@ std::optional<DelaunayGraph::Hole> DelaunayGraph::conflict_hole(SiteId p) {
     const std::optional<FaceIndex> start = find_first_conflict(region, nearest);
     if (!start) return std::nullopt;
     region.expand(*start);
-    if (!region.hidden_vertices().empty()) return std::nullopt;
+    if (!region.vanishing_vertices().empty()) return std::nullopt;
     add_bogus_vertices(region);
     return Hole{region.faces(), region.boundary()};
 }
@@ -616,8 +743,14 @@ std::string DelaunayGraph::validate() {
 std::string DelaunayGraph::brute_force_check() {
     const std::string local = validate();
     if (!local.empty()) return local;
-    for (const auto& [h, by] : hidden())
-        if (!traits_->is_hidden(by, h)) return "site " + str(h) + " is recorded hidden but is not inside site " + str(by);
+    // A hidden site lies in its host or, emptied by a union, crosses it; the
+    // loop below checks that no Voronoi circle has a hidden site in conflict.
+    for (const auto& [h, by] : hidden()) {
+        const bool by_union = std::find(union_hidden_.begin(), union_hidden_.end(), h) != union_hidden_.end();
+        if (by_union ? !traits_->crosses(by, h) : !traits_->is_hidden(by, h))
+            return "site " + str(h) + " is recorded hidden but " + (by_union ? "does not cross" : "is not inside") +
+                   " site " + str(by);
+    }
     for (FaceIndex f : tds_.faces()) {
         const Triangulation::Face& F = tds_.face(f);
         const int k = tds_.index(f, Triangulation::kInfiniteVertex);

@@ -8,8 +8,12 @@
 // is in conflict (kappa4) or whose site p hides, bogus vertices where the
 // region touches itself, and the hole starred around p.
 //
-// Sites are disjoint or nested. A site inside another one is hidden: it has
-// no vertex, and `hidden()` names the visible site that contains it.
+// A site is hidden when its cell is empty (docs/DESIGN.md §2): it has no
+// vertex, and `hidden()` names a visible site that contains it or -- for a
+// site inside the union of crossing sites and in none of them -- a visible
+// site that crosses it and covers its center. The graph finds a hidden site
+// at insertion, marks the sites a new site empties, and gives every hidden
+// site another chance when a site that may uncover it is removed.
 //
 // The graph knows sites by id only and sees them through its DelaunayTraits,
 // which it owns: signs and booleans, never a number, never a site's shape.
@@ -33,6 +37,8 @@ namespace ellvor {
 
 struct GraphStats {
     std::size_t inserted = 0, hidden_on_insert = 0, degree_2_insertions = 0, bogus_vertices = 0;
+    std::size_t union_hidden = 0;        // sites found hidden by a union of crossing sites (at insertion or later)
+    std::size_t global_searches = 0;     // insertions whose first conflict was sought over the whole graph
     std::size_t conflict_faces = 0;      // faces removed by conflict regions, in all
     std::size_t walk_steps = 0;          // nearest-neighbour walk moves
     std::size_t rebuilds = 0;            // "all / all but one hidden" fallbacks
@@ -102,6 +108,12 @@ private:
     SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site; }
     TriangulationPredicates predicates() { return {tds_, *traits_}; }
     void hide(SiteId hidden, SiteId by);  // moves `hidden`'s own hidden list to `by` too
+    // `hidden`'s cell is empty though `host` does not contain it; the sites
+    // `hidden` itself hid are appended to `again` (to be inserted again).
+    void hide_in_union(SiteId hidden, SiteId host, std::vector<SiteId>& again);
+    // Inserts the sites again, largest first.
+    void insert_again(std::vector<SiteId> sites);
+    void forget_union_hidden(SiteId h);  // h leaves union_hidden_ (if there)
 
     // Fewer than 3 visible sites.
     void insert_small(SiteId p);
@@ -117,9 +129,14 @@ private:
     bool hide_in_nearest(SiteId p, VertexIndex nearest);
     std::optional<FaceIndex> find_first_conflict(ConflictRegion& region, VertexIndex nearest);
     bool insert_in_voronoi_edge(SiteId p, VertexIndex nearest);
-    bool rebuild_if_at_most_one_survives(const ConflictRegion& region);
+    std::optional<FaceIndex> find_any_conflict(ConflictRegion& region);
+    bool insert_in_any_voronoi_edge(SiteId p, VertexIndex nearest);
+    SiteId nearer_at_center(SiteId a, SiteId b, SiteId of);
+    bool rebuild_if_at_most_one_survives(const ConflictRegion& region, std::vector<SiteId>& again);
     std::vector<VertexIndex> add_bogus_vertices(const ConflictRegion& region);
-    void retriangulate_conflict_region(ConflictRegion& region, const std::vector<VertexIndex>& bogus);
+    void retriangulate_conflict_region(ConflictRegion& region, const std::vector<VertexIndex>& bogus,
+                                       std::vector<SiteId>& again);
+    void hide_vanishing(const ConflictRegion& region, const std::vector<VertexIndex>& vanishing, std::vector<SiteId>& again);
     void record_vertex(SiteId p, VertexIndex v);
 
     // Deletion.
@@ -142,6 +159,7 @@ private:
     std::vector<SiteId> small_;                  // the visible sites while tds_ is empty (< 3)
     std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
     std::vector<SiteId> host_;                   // per hidden site: the visible site that hides it
+    std::vector<SiteId> union_hidden_;           // hidden sites whose host does not contain them
     enum : char { kOut, kIn, kRemoved };  // per site: not inserted, in the graph, removed
     std::vector<char> inserted_;
     std::vector<SiteId> removed_;

@@ -23,6 +23,7 @@ public:
     Sign compare_weight(SiteId a, SiteId b) const override { return parent_.compare_weight(g(a), g(b)); }
     LocationHint location_hint(SiteId i) const override { return parent_.location_hint(g(i)); }
     bool is_hidden(SiteId p, SiteId q) override { return parent_.is_hidden(g(p), g(q)); }
+    bool crosses(SiteId p, SiteId q) override { return parent_.crosses(g(p), g(q)); }
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override { return parent_.side_of_bisector(g(i), g(j), g(k)); }
     Sign vertex_conflict(SiteId i, SiteId j, SiteId q) override { return parent_.vertex_conflict(g(i), g(j), g(q)); }
     Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) override {

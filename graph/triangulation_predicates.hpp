@@ -26,6 +26,7 @@ public:
     SiteId site(VertexIndex v) const { return tds_.vertex(v).site; }
     // Site p hides site q (the traits' is_hidden).
     bool is_hidden(SiteId p, SiteId q) { return traits_.is_hidden(p, q); }
+    bool crosses(SiteId p, SiteId q) { return traits_.crosses(p, q); }
     // kappa3 of face f's Voronoi circle against q, kappa2 for an infinite face:
     // NEGATIVE conflict, ZERO tangent, POSITIVE no conflict.
     Sign incircle(FaceIndex f, SiteId q);

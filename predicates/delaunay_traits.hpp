@@ -63,6 +63,10 @@ public:
     // Is_hidden(p, q): site q lies inside site p (internal tangency and
     // identical sites included). Throws IntersectingSites when they cross.
     virtual bool is_hidden(SiteId p, SiteId q) = 0;
+    // The boundaries of p and q cross: the sites share interior points and
+    // neither contains the other. Only such sites can hide a site together
+    // without one containing it (a union-hidden site, docs/DESIGN.md §9).
+    virtual bool crosses(SiteId p, SiteId q) = 0;
     // kappa1 at the center of site k: POSITIVE closer to site i, NEGATIVE
     // closer to site j, ZERO equidistant (signed distances, negative inside).
     virtual Sign side_of_bisector(SiteId i, SiteId j, SiteId k) = 0;

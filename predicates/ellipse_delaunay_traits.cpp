@@ -33,6 +33,11 @@ T counted(PredicateCount& count, const Decision<T>& d, const char* what, std::in
     return *d;
 }
 
+// The memo key of an unordered pair.
+std::uint64_t unordered_pair_key(SiteId p, SiteId q) {
+    return (static_cast<std::uint64_t>(std::min(p, q)) << 32) | static_cast<std::uint64_t>(std::max(p, q));
+}
+
 }  // namespace
 
 EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {
@@ -78,7 +83,16 @@ bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     }
     hidden_memo_[key] = q_in_p;
     hidden_memo_[(static_cast<std::uint64_t>(q) << 32) | static_cast<std::uint64_t>(p)] = p_in_q;
+    crossing_memo_[unordered_pair_key(p, q)] = r == RelativePosition::intersecting;
     return q_in_p;
+}
+
+bool EllipseDelaunayTraits::crosses(SiteId p, SiteId q) {
+    if (p == q || bounding_circles_apart_in_doubles(site(p), site(q))) return false;
+    auto found = crossing_memo_.find(unordered_pair_key(p, q));
+    if (found != crossing_memo_.end()) return found->second;
+    is_hidden(p, q);  // fills both memos
+    return crossing_memo_.at(unordered_pair_key(p, q));
 }
 
 Sign EllipseDelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {

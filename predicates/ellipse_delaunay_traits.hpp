@@ -30,6 +30,8 @@ public:
 
     // Memoized, both ways at once (one relative position answers both).
     bool is_hidden(SiteId p, SiteId q) override;
+    // From the same relative position, memoized with it.
+    bool crosses(SiteId p, SiteId q) override;
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override;
     Sign vertex_conflict(SiteId i, SiteId j, SiteId q) override;
     Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) override;
@@ -54,7 +56,8 @@ private:
     std::vector<Ellipse> sites_;
     std::vector<Rational> area_;  // a b per site
     VoronoiCircleCache cache_;
-    std::unordered_map<std::uint64_t, bool> hidden_memo_;
+    std::unordered_map<std::uint64_t, bool> hidden_memo_;    // (p, q): q inside p
+    std::unordered_map<std::uint64_t, bool> crossing_memo_;  // (min, max): the two cross
     TraitsStats stats_;
 };
 

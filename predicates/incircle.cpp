@@ -5,6 +5,7 @@
 #include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
 #include "subdivision/boundary_chart.hpp"
+#include "subdivision/inscribed_disk.hpp"
 #include "subdivision/nearest_point.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/point_ellipse_distance.hpp"
@@ -42,22 +43,26 @@ Sign incircle_sign(InCircle r) {
 
 namespace {
 
-// d(V, Q) - rho with double intervals (the filter): -1, +1, or 0. Most
+// delta(V, Q) - rho with double intervals (the filter): -1, +1, or 0. Most
 // queries are far from tangent: Q's inscribed and circumscribed circles
 // (radii min and max of a, b about its center C) decide them first, since
-// d(V, Q) >= |V - C| - max(a, b), and Q meets the open disk when its
-// inscribed disk does, |V - C| < rho + min(a, b).
+// |V - C| - max(a, b) <= delta(V, Q) <= |V - C| - min(a, b) (signed
+// distances to nested sets), and delta(V, Q) >= -min(a, b). An internal
+// circle (rho < 0) inside Q is left to the Arb stage, which measures the
+// depth.
 int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q) {
     const Ellipse::Enclosure& k = q.enclosure();
     const Interval squared_distance = (center_x - k.xc).square() + (center_y - k.yc).square();
     const Interval outer = radius + Interval(Interval::max(k.a.hi, k.b.hi));
     if (outer.lo > 0 && squared_distance.lo > outer.square().hi) return 1;
     const Interval inner = radius + Interval(Interval::min(k.a.lo, k.b.lo));
-    if (squared_distance.hi < inner.square().lo) return -1;
+    if (inner.hi < 0) return 1;
+    if (inner.lo > 0 && squared_distance.hi < inner.square().lo) return -1;
     const LocalPoint v = to_local(q, center_x, center_y);
     const int side = filtered_side(v);
-    if (side < 0) return -1;  // the center is inside Q
+    if (side < 0) return radius.lo >= 0 ? -1 : 0;  // the center is inside Q: delta < 0 <= rho
     if (side == 0) return 0;
+    if (radius.hi < 0) return 1;  // outside Q: delta > 0 > rho
     const Interval distance = outside_distance_bounds(v);
     if (distance.lo > radius.hi) return 1;
     if (distance.hi < radius.lo) return -1;
@@ -65,9 +70,10 @@ int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interva
 }
 
 // When V cannot be placed inside or outside Q it is within rounding of Q's
-// boundary, so d(V, Q) is tiny and, rho being positive, Q conflicts: proven
-// by the distance from V to a boundary point of Q near it (an upper bound of
-// d(V, Q)) being below rho. 0 when even that is undecided.
+// boundary, so |delta(V, Q)| is tiny: below rho > 0 (Q conflicts) or below
+// -rho for an internal circle (it does not), proven by the distance from V
+// to a boundary point of Q near it, an upper bound of |delta(V, Q)|. 0 when
+// even that is undecided, and always at rho = 0.
 int center_near_boundary(const VoronoiCircleEnclosure& c, const Ellipse& q, long prec) {
     const auto& k = q.enclosure();
     const double dx = c.center_x.mid_double() - k.xc.mid(), dy = c.center_y.mid_double() - k.yc.mid();
@@ -82,8 +88,11 @@ int center_near_boundary(const VoronoiCircleEnclosure& c, const Ellipse& q, long
     arb_sub(dxb.get(), c.center_x.get(), p.px.get(), prec);
     arb_sub(dyb.get(), c.center_y.get(), p.py.get(), prec);
     arb_hypot(distance.get(), dxb.get(), dyb.get(), prec);
-    arb_sub(difference.get(), distance.get(), c.radius.get(), prec);
-    return difference.certain_sign() < 0 ? -1 : 0;
+    const int rho_sign = c.radius.certain_sign();
+    Ball abs_rho, margin;
+    arb_abs(abs_rho.get(), c.radius.get());
+    arb_sub(margin.get(), distance.get(), abs_rho.get(), prec);
+    return rho_sign != 0 && margin.certain_sign() < 0 ? -rho_sign : 0;
 }
 
 // d(V, Q) - rho at precision prec: -1, +1, or 0 when undecided.
@@ -91,8 +100,16 @@ int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, lon
     if (int s = filtered_distance_minus_radius(enclose(c.center_x), enclose(c.center_y), enclose(c.radius), q))
         return s;
     const int side = certified_side(q, c.center_x, c.center_y, prec);
-    if (side < 0) return -1;  // the center is inside Q
+    if (side < 0) {  // the center is inside Q: delta < 0
+        if (arb_is_nonnegative(c.radius.get())) return -1;  // rho >= 0
+        if (!arb_is_negative(c.radius.get())) return 0;
+        // An internal circle: Q conflicts iff V lies deeper in Q than -rho.
+        Ball depth;
+        arb_neg(depth.get(), c.radius.get());
+        return -inside_distance_minus(q, depth, c.center_x, c.center_y, prec);
+    }
     if (side == 0) return center_near_boundary(c, q, prec);
+    if (c.radius.certain_sign() < 0) return 1;  // outside Q: delta > 0 > rho
     Ball distance, difference;
     if (!certified_outside_distance(q, c.center_x, c.center_y, prec, distance)) return 0;
     arb_sub(difference.get(), distance.get(), c.radius.get(), prec);

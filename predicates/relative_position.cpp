@@ -141,7 +141,6 @@ std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2) {
     const int points = boundary_meeting_points(e1, e2);
     if (points > 2)
         return "their boundaries meet in " + std::to_string(points) + " points (sites may cross in at most two)";
-    if (!e1.is_circle() || !e2.is_circle()) return "crossing sites must both be circles (crossing ellipses are not supported yet)";
     return "";
 }
 

@@ -40,10 +40,8 @@ bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2);
 int boundary_meeting_points(const Ellipse& e1, const Ellipse& e2);
 
 // For two sites whose boundaries cross: why they cannot be sites of one
-// diagram, or "" when they can (docs/DESIGN.md §2). Two circles may cross
-// (they meet in at most two points: pseudo-circles, signed distances).
-// Boundaries meeting in three or four points are never accepted; two
-// ellipses that are not both circles and cross in two points are not yet.
+// diagram, or "" when they can (docs/DESIGN.md §2): sites may cross in two
+// points (pseudo-circles, signed distances), never in three or four.
 std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2);
 
 // Throws IntersectingSites (util/error.hpp) naming the first pair (i < j, in

@@ -2,8 +2,10 @@
 
 #include "predicates/circle_predicates.hpp"
 #include "predicates/circle_semi_static.hpp"
+#include "predicates/distance_filter.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <tuple>
 
@@ -24,12 +26,47 @@ Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const E
     for (auto [p, q] : {std::pair{&e1, &e2}, {&e2, &e3}, {&e3, &e1}}) {
         const Decision<RelativePosition> r = relative_position(*p, *q);
         separated.depends_on(r);
-        const bool crossing_circles = *r == RelativePosition::intersecting && p->is_circle() && q->is_circle();
-        if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent && !crossing_circles)
+        if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent &&
+            *r != RelativePosition::intersecting)
             return separated.with(false);
     }
     return separated;
 }
+
+namespace {
+
+// A point of x certainly outside y and z: then y and z do not cover x.
+// The points tried are x's center and eight points on or just inside its
+// boundary (unit-disk points (c, s) with c^2 + s^2 <= 1 mapped by x's axes),
+// in double intervals.
+bool has_point_outside_both(const Ellipse& x, const Ellipse& y, const Ellipse& z) {
+    const Ellipse::Enclosure& k = x.enclosure();
+    constexpr double d = 0.7;  // 2 d^2 < 1
+    constexpr double unit_disk[9][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {d, d}, {d, -d}, {-d, d}, {-d, -d}};
+    for (const auto& [c, s] : unit_disk) {
+        const Interval along = c * k.a, across = s * k.b;
+        const Interval px = k.xc + along * k.cos - across * k.sin, py = k.yc + along * k.sin + across * k.cos;
+        if (filtered_side(to_local(y, px, py)) > 0 && filtered_side(to_local(z, px, py)) > 0) return true;
+    }
+    return false;
+}
+
+// Whether one site may lie in the union of the other two with an empty
+// cell. Such a site x crosses both (a site disjoint from it has no say on
+// its points, one containing it would hide it alone) and lies in their
+// union (each of its points is deeper in one of them than in x). Circles
+// never qualify: a disk owns its center unless another disk contains it.
+bool some_site_may_be_covered(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    if (e1.is_circle() && e2.is_circle() && e3.is_circle()) return false;
+    auto crossing = [](const Ellipse& a, const Ellipse& b) {
+        return *relative_position(a, b) == RelativePosition::intersecting;
+    };
+    const bool c12 = crossing(e1, e2), c23 = crossing(e2, e3), c31 = crossing(e3, e1);
+    return (c12 && c31 && !has_point_outside_both(e1, e2, e3)) || (c12 && c23 && !has_point_outside_both(e2, e3, e1)) ||
+           (c23 && c31 && !has_point_outside_both(e3, e1, e2));
+}
+
+}  // namespace
 
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     // Three circles in doubles first: a count it proves also proves that no
@@ -52,6 +89,14 @@ Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& 
     }
     constexpr VoronoiCircles by_conflicts[] = {VoronoiCircles::cw_only, VoronoiCircles::none, VoronoiCircles::both,
                                                VoronoiCircles::ccw_only};
+    if (conflicts == 2 && some_site_may_be_covered(e1, e2, e3)) {
+        // Two conflicts also describe a triple where one site lies in the
+        // union of the other two with an empty cell: no circle at all
+        // (DESIGN.md §9). The complete solver tells the two apart.
+        count.depends_on(Decision<bool>::decided(true, Stage::subdivision));
+        VoronoiCircleSolver solver(e1, e2, e3);
+        return count.with(solver.certify() ? VoronoiCircles::both : VoronoiCircles::none);
+    }
     return count.with(by_conflicts[conflicts]);
 }
 

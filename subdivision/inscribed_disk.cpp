@@ -154,7 +154,42 @@ struct Piece {
     Ball lo, hi;
 };
 
+// Bisects the pieces until Q > 0 on all of them (positive), Q is certainly
+// negative at a midpoint (negative_at_midpoint), or `count` passes the cap
+// (unknown). q_t and q_u are Q in the unflipped and the flipped chart.
+Sign sign_on_pieces(std::vector<Piece> stack, const Poly& q_t, const Poly& q_u, long prec, long& count) {
+    while (!stack.empty()) {
+        if (++count > kMaxPieces) return Sign::unknown;
+        Piece p = std::move(stack.back());
+        stack.pop_back();
+        const Sign s = sign_on(p.flipped ? q_u : q_t, 4, p.lo, p.hi, prec);
+        if (s == Sign::positive) continue;
+        if (s == Sign::negative_at_midpoint) return s;
+        const Ball mid = exact_half(exact_add(p.lo, p.hi));
+        stack.push_back({p.flipped, mid, p.hi});
+        stack.push_back({p.flipped, std::move(p.lo), mid});
+    }
+    return Sign::positive;
+}
+
 }  // namespace
+
+int inside_distance_minus(const Ellipse& e, const Ball& r, const Ball& vx, const Ball& vy, long prec) {
+    if (!arb_is_positive(r.get()) || !arb_is_finite(vx.get()) || !arb_is_finite(vy.get())) return 0;
+    // Q > 0 on the whole boundary (both charts' [-1, 1]): the closed disk of
+    // radius r about V misses the boundary, and holding V (inside E) it lies
+    // in E, so every boundary point is farther than r. A boundary point
+    // certainly nearer than r proves the opposite.
+    const Poly q_t = distance_quartic(e, r, vx, vy, prec);
+    const Ball one(Rational(1), prec), minus_one(Rational(-1), prec);
+    long count = 0;
+    switch (sign_on_pieces({{false, minus_one, one}, {true, minus_one, one}}, q_t, flip(q_t), prec, count)) {
+        case Sign::positive: return 1;
+        case Sign::negative_at_midpoint: return -1;
+        case Sign::unknown: break;
+    }
+    return 0;
+}
 
 bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ball& rho, const Ball& vx,
                          const Ball& vy, long prec, long* pieces) {
@@ -177,7 +212,6 @@ bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ba
     const Poly q_t = distance_quartic(e, rho, vx, vy, prec);
     const Poly q_u = flip(q_t);
     const Poly& q = flipped ? q_u : q_t;  // the chart of t
-    const Poly& q_other = flipped ? q_t : q_u;
     Poly q2;  // Q''
     for (int k = 0; k <= 2; ++k) arb_mul_si(q2[k].get(), q[k + 2].get(), (k + 2) * (k + 1), prec);
 
@@ -250,24 +284,8 @@ bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ba
     }
     stack.push_back({!flipped, u_start, u_end});
 
-    bool proven = true;
-    while (!stack.empty()) {
-        if (++count > kMaxPieces) {
-            proven = false;
-            break;
-        }
-        Piece p = std::move(stack.back());
-        stack.pop_back();
-        const Sign s = sign_on(p.flipped == flipped ? q : q_other, 4, p.lo, p.hi, prec);
-        if (s == Sign::positive) continue;
-        if (s == Sign::negative_at_midpoint) {
-            proven = false;  // a boundary point certainly nearer than |rho|
-            break;
-        }
-        const Ball mid = exact_half(exact_add(p.lo, p.hi));
-        stack.push_back({p.flipped, mid, p.hi});
-        stack.push_back({p.flipped, std::move(p.lo), mid});
-    }
+    // Not proven at the cap, or a boundary point certainly nearer than |rho|.
+    const bool proven = sign_on_pieces(std::move(stack), q_t, q_u, prec, count) == Sign::positive;
     if (pieces) *pieces = std::min(count, kMaxPieces);
     return proven;
 }

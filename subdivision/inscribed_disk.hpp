@@ -1,5 +1,5 @@
-// Certified test that the disk of an internal Voronoi circle lies in its
-// site: for a center V at depth |rho| on the inward normal of E at P(t), is
+// Certified tests that a disk lies inside an ellipse. First, that the disk
+// of an internal Voronoi circle lies in its site: for a center V at depth |rho| on the inward normal of E at P(t), is
 // P(t) the boundary point nearest to V, so that rho is the signed distance
 // delta(V, E) (docs/DESIGN.md §2)? The certificate of §4.1 proves it by
 // Blaschke's rolling theorem while |rho| stays below E's smallest radius of
@@ -32,5 +32,13 @@ namespace ellvor {
 // Taylor-form enclosure. Why this proves the disk inside: see the .cpp.
 bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ball& rho, const Ball& vx,
                          const Ball& vy, long prec, long* pieces = nullptr);
+
+// For V = (vx, vy) inside E (the caller has proven it) and r > 0: the sign
+// of dist(V, boundary of E) - r, proven. +1: the closed disk of radius r
+// about V misses the boundary (Q > 0 on both charts, by the bisection
+// above), so it lies in E; -1: a boundary point is certainly nearer than r;
+// 0: undecided at prec (near equality, or the cap). InCircle asks it of an
+// internal Voronoi circle (radius -r) and a site Q that holds its center.
+int inside_distance_minus(const Ellipse& e, const Ball& r, const Ball& vx, const Ball& vy, long prec);
 
 }  // namespace ellvor

@@ -51,7 +51,7 @@ private:
 };
 
 // Two input sites that cross in a way the diagram does not accept
-// (docs/DESIGN.md §2: only circles may cross, in at most two points): thrown
+// (docs/DESIGN.md §2: sites may cross in at most two points): thrown
 // by the algorithms that discover it, with the ids and the reason, so that a
 // caller that knows the file can point at the lines.
 class IntersectingSites : public InputError {

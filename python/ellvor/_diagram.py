@@ -137,7 +137,8 @@ class Diagram:
     """The Delaunay graph of a site set and its Voronoi diagram (see ``build``).
 
     Integer arrays (int64, read-only), site ids 0-based in input order:
-        hidden (k, 2)          [hidden, hiding]: sites inside another, without a cell
+        hidden (k, 2)          [hidden, hiding]: sites without a cell, inside the hiding site or
+                               (an ellipse in a union of crossing sites) crossing it
         edges (m, 2)           finite Delaunay edges (i < j), sorted; listed twice when two
                                Voronoi edges separate the same two sites
         faces (f, 3)           finite faces, counter-clockwise, smallest id first, sorted;
@@ -152,7 +153,7 @@ class Diagram:
     Voronoi vertices, as the JSON gives them (computed on first use):
         vertices (f, 2), vertex_radii (f,)   centers and signed radii of the Voronoi circles, the
                                              doubles nearest the midpoints of their certified balls
-                                             (a negative radius: inside three crossing circles)
+                                             (a negative radius: inside three crossing sites)
         vertex_errors (f,)                   every exact value is within this of the double given
                                              (the ball's radius plus the midpoint's rounding)
     ``vertex(i, bits)`` refines one circle to exact bounds; ``trace()`` draws the
@@ -260,8 +261,8 @@ def build(sites, progress=False, *, fmt="ell", progress_interval=0.1):
     or a callable ``progress(done, total)``, called after the first and the last
     insertion and every ``progress_interval`` seconds between; an exception it
     raises stops the build and propagates.
-    Raises InputError for bad input (crossing sites other than two circles, and boundaries meeting
-    in three or four points, carry ``sites=(i, j)``).
+    Raises InputError for bad input (two sites whose boundaries meet in three or four points
+    carry ``sites=(i, j)``).
     """
     if progress is True:
         progress = _StderrProgress()

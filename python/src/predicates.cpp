@@ -18,7 +18,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // The checks the CLI makes of a predicate's site file (the reader's set
-// checks, then no crossing pair but of circles); errors name the sites by position.
+// checks, then no pair meeting in 3 or 4 points); errors name the sites by position.
 void require_valid_sites(const std::vector<const Ellipse*>& sites) {
     SiteFile file;
     for (const Ellipse* e : sites) file.sites.push_back(*e);

@@ -238,11 +238,11 @@ TEST_CASE("crossing pairs: which are accepted, and how many points the boundarie
         CHECK(boundary_meeting_points(circle, other) == 2);
         CHECK(crossing_pair_problem(circle, other).empty());
     }
-    SECTION("an ellipse crossing in two points: not yet") {
+    SECTION("an ellipse crossing in two points: accepted") {
         const Ellipse e(Rational(2), Rational(1), Rational(0), Rational(1), Rational(1));
         CHECK(boundary_meeting_points(circle, e) == 2);
-        CHECK(crossing_pair_problem(circle, e) == "crossing sites must both be circles (crossing ellipses are not "
-                                                  "supported yet)");
+        CHECK(crossing_pair_problem(circle, e).empty());
+        CHECK(crossing_pair_problem(e, Ellipse(Rational(2), Rational(1), Rational(1, 2UL), Rational(0), Rational(1))).empty());
     }
     SECTION("a tangency and two crossings: three points") {
         // x^2 + y^2 = 1 against x^2 + (y + 1/2)^2 / (9/4) = 1: y = 1 (double)

@@ -211,6 +211,6 @@ def test_crossing_circles_have_internal_voronoi_circles():
     assert c.radius.lo <= Fraction(-16, 5) <= c.radius.hi
     assert c.center[0].lo <= 6 <= c.center[0].hi and c.center[1].lo <= Fraction(16, 5) <= c.center[1].hi
     assert d.vertex_radii[i] < 0
-    # Crossing ellipses that are not circles are still refused, with the reason.
-    with pytest.raises(ellvor.InputError, match="crossing sites must both be circles"):
-        ellvor.build([ellvor.Ellipse(2, 1, 0, 0, 0), ellvor.Ellipse(2, 1, 0, 1, 1)])
+    # Boundaries meeting in four points are refused, with the reason.
+    with pytest.raises(ellvor.InputError, match="their boundaries meet in 4 points"):
+        ellvor.build([ellvor.Ellipse(3, 1, 0, 0, 0), ellvor.Ellipse(1, 3, 0, 0, 0)])

@@ -5,6 +5,8 @@
 // refined around every local minimum.
 #include "subdivision/boundary_chart.hpp"
 #include "subdivision/inscribed_disk.hpp"
+#include "tests/support/random_sites.hpp"
+#include "tests/support/signed_distance_oracle.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -228,4 +230,45 @@ TEST_CASE("inscribed disk: rho not certainly negative is not this test's case", 
     CHECK_FALSE(disk_inside_ellipse(e, false, zero.t, zero.rho, zero.vx, zero.vy, 128));
     arb_add_error_2exp_si(zero.rho.get(), -60);  // a ball around 0
     CHECK_FALSE(disk_inside_ellipse(e, false, zero.t, zero.rho, zero.vx, zero.vy, 128));
+}
+
+TEST_CASE("inside_distance_minus: the depth of a point inside an ellipse against a radius", "[inscribed-disk][crossing]") {
+    const long prec = 128;
+    auto ball = [](double x) {  // exact
+        Ball b;
+        arb_set_d(b.get(), x);
+        return b;
+    };
+    // The center of an ellipse lies at depth b (its smaller semi-axis); a
+    // point of a circle at distance d from its center, at depth r - d.
+    const Ellipse e(Rational(5), Rational(2), Rational(1, 3UL), Rational(1), Rational(-2));
+    CHECK(inside_distance_minus(e, ball(2 * (1 - 1e-9)), ball(1), ball(-2), prec) == 1);
+    CHECK(inside_distance_minus(e, ball(2 * (1 + 1e-9)), ball(1), ball(-2), prec) == -1);
+    CHECK(inside_distance_minus(e, ball(2), ball(1), ball(-2), prec) == 0);  // equal: never decided
+    const Ellipse c = Ellipse::circle(3, 4, 10);
+    // (6, 8) lies 5 from the center (3, 4): depth 5.
+    CHECK(inside_distance_minus(c, ball(5 - 1e-12), ball(6), ball(8), prec) == 1);
+    CHECK(inside_distance_minus(c, ball(5 + 1e-12), ball(6), ball(8), prec) == -1);
+    CHECK(inside_distance_minus(c, ball(-1), ball(6), ball(8), prec) == 0);  // r must be positive
+
+    // Random points inside random ellipses against the MPFR signed distance
+    // (tests/support/signed_distance_oracle.hpp): r a little below and above
+    // the depth.
+    Rng rng(5);
+    int decided = 0;
+    for (int k = 0; k < 200; ++k) {
+        const Ellipse f(test::random_fraction(rng, 10, 100, 10), test::random_fraction(rng, 1, 100, 10),
+                        test::random_fraction(rng, -99, 99, 100), test::random_fraction(rng, -100, 100, 10),
+                        test::random_fraction(rng, -100, 100, 10));
+        const double x = f.xc().to_double() + test::random_fraction(rng, -50, 50, 10).to_double(),
+                     y = f.yc().to_double() + test::random_fraction(rng, -50, 50, 10).to_double();
+        const double depth = -test::OracleEllipse(f).signed_distance_value({test::Real(x), test::Real(y)}).to_double();
+        if (!(depth > 1e-6)) continue;  // outside, or too near the boundary
+        for (double factor : {0.999, 1.001}) {
+            const int got = inside_distance_minus(f, ball(depth * factor), ball(x), ball(y), prec);
+            CHECK(got == (factor < 1 ? 1 : -1));
+            decided += got != 0;
+        }
+    }
+    CHECK(decided >= 100);
 }

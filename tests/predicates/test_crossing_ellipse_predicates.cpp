@@ -1,0 +1,152 @@
+// The predicates on crossing ellipses that differ from disjoint ones
+// (docs/DESIGN.md §9): the count of Voronoi circles when a site of the triple
+// is covered by the other two, and InCircle of an internal circle against a
+// site holding its center. Oracles: the configuration's geometry (a needle
+// covered by two disks), and signed distances in MPFR
+// (tests/support/signed_distance_oracle.hpp).
+#include "predicates/incircle.hpp"
+#include "predicates/infinite_vertex_conflict.hpp"
+#include "predicates/relative_position.hpp"
+#include "predicates/voronoi_circle_count.hpp"
+#include "sites/rational_parse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "tests/support/random_sites.hpp"
+#include "tests/support/signed_distance_oracle.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <random>
+
+using namespace ellvor;
+using test::OracleEllipse;
+using test::Real;
+using test::RealPoint;
+
+namespace {
+
+Ellipse ellipse(const char* a, const char* b, const char* w, const char* x, const char* y) {
+    return Ellipse(parse_rational(a), parse_rational(b), parse_rational(w), parse_rational(x), parse_rational(y));
+}
+
+RealPoint midpoint(const Ball& x, const Ball& y) { return {Real(x.mid_double()), Real(y.mid_double())}; }
+
+}  // namespace
+
+TEST_CASE("voronoi circle count: a site covered by the other two has no circle although k = 2",
+          "[predicates][voronoi_circle_count][crossing]") {
+    // Which circles exist, by the complete solver, for an independent answer.
+    auto by_solver = [](const Ellipse& a, const Ellipse& b, const Ellipse& c) {
+        const bool ccw = VoronoiCircleSolver(a, b, c).certify(), cw = VoronoiCircleSolver(a, c, b).certify();
+        return ccw ? (cw ? VoronoiCircles::both : VoronoiCircles::ccw_only) : (cw ? VoronoiCircles::cw_only : VoronoiCircles::none);
+    };
+    // How many sites conflict with the infinite vertex of the other two: the
+    // kappa2 rule of docs/DESIGN.md §2 says "both" for 2.
+    auto kappa2_conflicts = [](const Ellipse& a, const Ellipse& b, const Ellipse& c) {
+        return (*infinite_vertex_conflict(a, b, c) == Sign::negative) + (*infinite_vertex_conflict(b, c, a) == Sign::negative) +
+               (*infinite_vertex_conflict(c, a, b) == Sign::negative);
+    };
+    // The needle between two disks (the example), in all six orders:
+    // its cell is empty, so no circle touches all three.
+    const std::array<Ellipse, 3> covered = {ellipse("10", "1/10", "0", "0", "0"), Ellipse::circle(-5, 0, 6),
+                                            Ellipse::circle(5, 0, 6)};
+    // A fatter needle, also inside the union of two disks, but they are
+    // shallow at its middle (depth 1/2 there, against the needle's 1): it
+    // owns its middle, and both circles exist.
+    const std::array<Ellipse, 3> visible = {ellipse("21/2", "1", "0", "0", "0"), ellipse("6", "6", "0", "-11/2", "0"),
+                                            ellipse("6", "6", "0", "11/2", "0")};
+    // The disks apart at the middle: a point of the needle is certainly
+    // outside both, so the solver is not needed.
+    const std::array<Ellipse, 3> uncovered = {ellipse("10", "1/10", "0", "0", "0"), ellipse("6", "6", "0", "-13/2", "0"),
+                                              ellipse("6", "6", "0", "13/2", "0")};
+    for (const auto* triple : {&covered, &visible, &uncovered}) {
+        for (int j = 1; j < 3; ++j) {
+            REQUIRE(*relative_position((*triple)[0], (*triple)[j]) == RelativePosition::intersecting);
+            REQUIRE(crossing_pair_problem((*triple)[0], (*triple)[j]).empty());
+        }
+        std::array<int, 3> order = {0, 1, 2};
+        do {
+            const Ellipse &a = (*triple)[order[0]], &b = (*triple)[order[1]], &c = (*triple)[order[2]];
+            INFO("triple " << (triple == &covered ? "covered" : triple == &visible ? "visible" : "uncovered") << ", order "
+                           << order[0] << order[1] << order[2]);
+            const VoronoiCircles count = *voronoi_circle_count(a, b, c);
+            CHECK(count == by_solver(a, b, c));
+            if (triple == &covered) {
+                CHECK(kappa2_conflicts(a, b, c) == 2);  // the rule alone would say "both"
+                CHECK(count == VoronoiCircles::none);
+            }
+        } while (std::next_permutation(order.begin(), order.end()));
+    }
+    CHECK(*voronoi_circle_count(visible[0], visible[1], visible[2]) == VoronoiCircles::both);
+}
+
+TEST_CASE("incircle of an internal circle against a site holding its center: the depth decides",
+          "[predicates][incircle][crossing]") {
+    // Four pairwise crossing ellipses (found by the first random crossing
+    // sets): the circle of (E0, E1, E3) is internal (rho = -1.848) and its
+    // center lies in E2 at depth 1.719 only, so E2 does not conflict.
+    const Ellipse e0 = ellipse("47/10", "23/5", "-47/50", "91/5", "116/5"), e1 = ellipse("84/5", "49/5", "1/50", "5", "137/5"),
+                  e2 = ellipse("92/5", "10", "-13/50", "261/10", "58/5"), e3 = ellipse("3", "63/10", "-7/10", "25/2", "41/2");
+    VoronoiCircleSolver solver(e0, e1, e3);
+    REQUIRE(solver.certify());
+    const VoronoiCircleEnclosure& c = solver.enclosure();
+    REQUIRE(c.radius.certain_sign() < 0);
+    const RealPoint v = midpoint(c.center_x, c.center_y);
+    const double depth_in_e2 = OracleEllipse(e2).signed_distance_value(v).to_double();
+    CHECK(depth_in_e2 < 0);
+    CHECK(depth_in_e2 > c.radius.mid_double());
+    const Decision<InCircle> r = incircle(e0, e1, e3, e2);
+    CHECK(*r == InCircle::no_conflict);
+    CHECK(r.stage == Stage::subdivision);
+
+    // A large ellipse around that circle holds its center deeper than the
+    // radius: a conflict (its inscribed disk about its center holds the circle).
+    const Ellipse large = ellipse("40", "30", "0", "16", "22");
+    const Decision<InCircle> filtered = incircle(e0, e1, e3, large);
+    CHECK(*filtered == InCircle::conflict);
+}
+
+TEST_CASE("incircle of internal circles on random crossing quadruples agrees with the MPFR signed distance",
+          "[predicates][incircle][crossing]") {
+    // Three ellipses around a common point (so they overlap there) and a
+    // fourth one near it; whenever the triple has an internal circle, the
+    // answer must be the sign of delta(V, Q) - rho.
+    std::mt19937_64 rng(11);
+    int internal = 0, inside_q = 0, deeper = 0;  // deeper: inside Q deeper than the circle (a conflict)
+    for (int k = 0; k < 400 && internal < 60; ++k) {
+        std::array<Ellipse, 4> s{Ellipse::circle(0, 0, 1), Ellipse::circle(0, 0, 1), Ellipse::circle(0, 0, 1),
+                                 Ellipse::circle(0, 0, 1)};
+        for (Ellipse& e : s)
+            e = Ellipse(test::random_fraction(rng, 20, 60, 10), test::random_fraction(rng, 10, 40, 10),
+                        test::random_fraction(rng, -99, 99, 100), test::random_fraction(rng, -30, 30, 10),
+                        test::random_fraction(rng, -30, 30, 10));
+        bool pseudo_circles = true;
+        for (int i = 0; i < 4 && pseudo_circles; ++i)
+            for (int j = i + 1; j < 4 && pseudo_circles; ++j) {
+                const RelativePosition r = *relative_position(s[i], s[j]);
+                pseudo_circles = r == RelativePosition::intersecting ? crossing_pair_problem(s[i], s[j]).empty()
+                                                                     : r == RelativePosition::separated;
+            }
+        if (!pseudo_circles) continue;
+        VoronoiCircleSolver solver(s[0], s[1], s[2]);
+        if (!solver.certify() || solver.enclosure().radius.certain_sign() >= 0) continue;
+        ++internal;
+        solver.refine(100);
+        const VoronoiCircleEnclosure& c = solver.enclosure();
+        const RealPoint v = midpoint(c.center_x, c.center_y);
+        const double delta = OracleEllipse(s[3]).signed_distance_value(v).to_double();
+        inside_q += delta < 0;
+        const double gap = delta - c.radius.mid_double();
+        if (std::abs(gap) < 1e-9) continue;  // too near a tangency for the double oracle
+        deeper += gap < 0 && delta < 0;
+        const Decision<InCircle> r = incircle(s[0], s[1], s[2], s[3]);
+        INFO("quadruple " << k << ": delta " << delta << ", rho " << c.radius.mid_double());
+        CHECK(*r == (gap < 0 ? InCircle::conflict : InCircle::no_conflict));
+    }
+    WARN(internal << " internal circles, " << inside_q << " with the center inside Q, " << deeper
+                  << " of them deeper in Q than the circle");
+    CHECK(internal >= 20);
+    CHECK(deeper >= 2);
+    CHECK(inside_q - deeper >= 2);
+}
