@@ -31,11 +31,15 @@ SMALL = {
     "cocircular.ell": "".join(f"1 1 0 {x} {y}\n" for x, y in [(6, 8), (8, 6), (-6, 8), (10, 0), (0, -10), (-8, -6)]),
     "cocircular-four.ell": "1 1 0 10 0\n1 1 0 0 10\n1 1 0 -10 0\n1 1 0 0 -10\n",
     "touching.ell": "1 1 0 0 0\n1 1 0 2 0\n",
-    # Crossing circles (signed distances: an internal Voronoi circle, three boundaries through a point),
-    # and crossings that are rejected (an ellipse; boundaries meeting in 3 and 4 points).
+    # Crossing sites (signed distances: an internal Voronoi circle, three boundaries through a point,
+    # crossing ellipses, a needle hidden by the union of two disks, four crossing ellipses with an
+    # internal circle), and crossings that are rejected (boundaries meeting in 3 and 4 points).
     "crossing-circles.ell": "10 10 0 0 0\n10 10 0 12 0\n10 10 0 6 10\n3 3 0 6 4\n",
     "crossing-through-a-point.ell": "5 5 0 -5 0\n5 5 0 0 -5\n5 5 0 5 0\n5 5 0 0 5\n",
     "crossing-ellipse.ell": "2 1 0 0 0\n2 1 0 1 1\n1 1 0 5 5\n",
+    "union-hidden-needle.ell": "10 1/10 0 0 0\n6 6 0 -5 0\n6 6 0 5 0\n2 1 0 20 3\n",
+    "crossing-ellipses-internal.ell": "47/10 23/5 -47/50 91/5 116/5\n84/5 49/5 1/50 5 137/5\n"
+    "92/5 10 -13/50 261/10 58/5\n3 63/10 -7/10 25/2 41/2\n",
     "meeting-in-three-points.ell": "1 1 0 0 0\n1 3/2 0 0 -1/2\n",
     "meeting-in-four-points.ell": "3 1 0 0 0\n1 3 0 0 0\n",
     "nearly-touching.ell": "1 1 0 0 0\n1 1 0 2." + "0" * 39 + "1 0\n",

@@ -100,6 +100,33 @@ TEST_CASE("build: crossing circles, an internal Voronoi circle of negative radiu
     CHECK(internal);
 }
 
+TEST_CASE("build: crossing ellipses, a needle hidden by a union, its overlaps drawn", "[cli][build][svg]") {
+    // The needle (a = 10, b = 1/10) between two disks of radius 6 that cross
+    // it and each other: hidden, listed under a disk; `check` lists the
+    // three crossing pairs; a thin ellipse crossing a disk elsewhere stays
+    // visible. The SVG shades the lenses of visible sites.
+    ScratchDirectory dir;
+    const std::string f = dir.write("needle.ell", "10 1/10 0 0 0\n6 6 0 -5 0\n6 6 0 5 0\n8 1 1/2 30 10\n4 4 0 35 14\n");
+    const auto c = dir.ellvor("check '" + f + "'");
+    INFO(c.out << c.err);
+    REQUIRE(c.status == 0);
+    for (const char* pair : {"crossing: 0 1", "crossing: 0 2", "crossing: 1 2", "crossing: 3 4"}) CHECK(contains(c.out, pair));
+    CHECK(contains(c.out, "5 sites (3 circles), 0 hidden, 4 crossing pairs, OK"));
+    const std::string json = dir.path() + "/g.json";
+    const auto r = dir.ellvor("build '" + f + "' --validate --json '" + json + "' --svg '" + dir.path() + "/d.svg'");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(contains(r.out, "5 sites (1 hidden)"));
+    CHECK(contains(r.out, "valid"));
+    CHECK(!contains(r.err, "not drawn"));
+    const nlohmann::json g = nlohmann::json::parse(std::ifstream(json));
+    REQUIRE(g["hidden"].size() == 1);
+    CHECK(g["hidden"][0][0] == 0);
+    CHECK((g["hidden"][0][1] == 1 || g["hidden"][0][1] == 2));
+    const std::string svg = ellvor::test::read_file(dir.path() + "/d.svg");
+    CHECK(contains(svg, ">overlapping pairs: 2<"));  // the lenses of visible sites: (1, 2) and (3, 4)
+}
+
 TEST_CASE("build --svg: crossing circles are drawn, their overlaps shaded", "[cli][build][svg]") {
     // Circles 0 and 1 cross, and 2 crosses both: three lenses; every Voronoi
     // edge is drawn, the internal Voronoi vertex in the common part included.

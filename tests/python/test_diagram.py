@@ -214,3 +214,20 @@ def test_crossing_circles_have_internal_voronoi_circles():
     # Boundaries meeting in four points are refused, with the reason.
     with pytest.raises(ellvor.InputError, match="their boundaries meet in 4 points"):
         ellvor.build([ellvor.Ellipse(3, 1, 0, 0, 0), ellvor.Ellipse(1, 3, 0, 0, 0)])
+
+
+def test_an_ellipse_in_the_union_of_two_crossing_disks_is_hidden():
+    # The needle a = 10, b = 1/10 between disks of radius 6 at (-5, 0) and
+    # (5, 0): each pair crosses in two points, no disk contains the needle,
+    # and its cell is empty; it is listed under a disk that crosses it.
+    needle = ellvor.Ellipse(10, Fraction(1, 10), 0, 0, 0)
+    for order in ([0, 1, 2], [1, 2, 0], [2, 0, 1]):
+        sites = [[needle, ellvor.Ellipse.circle(-5, 0, 6), ellvor.Ellipse.circle(5, 0, 6)][k] for k in order]
+        d = ellvor.build(sites)
+        needle_id = order.index(0)
+        assert d.validate() == ""
+        assert d.hidden.tolist() in ([[needle_id, order.index(1)]], [[needle_id, order.index(2)]])
+        assert d.edges.tolist() == [sorted([order.index(1), order.index(2)])]
+    # Without the second disk the needle is visible again.
+    d = ellvor.build([needle, ellvor.Ellipse.circle(-5, 0, 6)])
+    assert d.hidden.tolist() == [] and d.edges.tolist() == [[0, 1]]
