@@ -6,6 +6,7 @@
 #include "graph/delaunay_graph.hpp"
 #include "predicates/relative_position.hpp"
 #include "sites/rational_parse.hpp"
+#include "sites/site_generators.hpp"
 #include "tests/support/ellipse_graph.hpp"
 #include "tests/support/random_sites.hpp"
 #include "tests/support/signed_distance_oracle.hpp"
@@ -235,4 +236,35 @@ TEST_CASE("random crossing ellipses: valid, brute force and oracle agree, in sev
                                       << crossing_pairs << " crossing pairs, " << union_hidden << " hidden by a union");
     CHECK(crossing_sites * 10 >= sites_total * 3);  // at least 30% cross another site
     CHECK(union_hidden > 0);
+}
+
+TEST_CASE("four crossing ellipses through one point: a Voronoi vertex of degree 4 at rho = 0", "[graph][crossing][exact]") {
+    const std::vector<Ellipse> sites = {
+        ellipse("14/5", "9/10", "-1/10", "18/101", "891/1010"), ellipse("37/10", "1/2", "1/10", "-10589/5050", "-84/101"),
+        ellipse("13/5", "7/10", "3/10", "42/109", "-637/1090"), ellipse("29/10", "13/10", "3/10", "11037/5450", "244/2725")};
+    DelaunayGraph g = ellipse_graph(sites);
+    g.insert_all();
+    CHECK(g.validate() == "");
+    CHECK(check_diagram(sites, g) == "");
+    CHECK(g.faces().size() == 2);  // the degree-4 vertex split by one diagonal
+    CHECK(g.predicate_stats().vertex_conflict4.stages[Stage::exact] >= 1);  // the fourth site tangent to a face
+}
+
+TEST_CASE("generated sets of 200 ellipses, 30% crossing another: valid, brute force and oracle agree",
+          "[graph][crossing]") {
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        GeneratorOptions o;
+        o.kind = SiteKind::ellipses;
+        o.count = 200;
+        o.seed = seed;
+        o.crossing_fraction = Rational(3, 10UL);
+        const std::vector<Ellipse> sites = generate_sites(o);
+        DelaunayGraph g = ellipse_graph(sites);
+        g.insert_all();
+        INFO("seed " << seed);
+        CHECK(g.visible_sites().size() == sites.size());
+        CHECK(g.validate() == "");
+        CHECK(g.brute_force_check() == "");
+        CHECK(check_diagram(sites, g) == "");
+    }
 }

@@ -150,3 +150,23 @@ TEST_CASE("incircle of internal circles on random crossing quadruples agrees wit
     CHECK(deeper >= 2);
     CHECK(inside_q - deeper >= 2);
 }
+
+TEST_CASE("four ellipse boundaries through one point: rho = 0, the fourth tangent, decided exactly",
+          "[predicates][incircle][crossing][exact]") {
+    // Four pairwise crossing ellipses whose boundaries pass through the origin
+    // (each center is minus a rational boundary point of its shape): every
+    // triple's Voronoi circle is the point itself (rho = 0), and the fourth
+    // site passes through it: InCircle is ZERO, which only the exact stage
+    // (the degree-184 resultant) can say.
+    const Ellipse e0 = ellipse("14/5", "9/10", "-1/10", "18/101", "891/1010"),
+                  e1 = ellipse("37/10", "1/2", "1/10", "-10589/5050", "-84/101"),
+                  e2 = ellipse("13/5", "7/10", "3/10", "42/109", "-637/1090"),
+                  e3 = ellipse("29/10", "13/10", "3/10", "11037/5450", "244/2725");
+    for (const Ellipse* e : {&e0, &e1, &e2, &e3}) CHECK(e->side_of_point(Rational(0), Rational(0)) == 0);
+    VoronoiCircleSolver solver(e0, e1, e3);
+    REQUIRE(solver.certify());
+    CHECK(arb_contains_zero(solver.enclosure().radius.get()));
+    const Decision<InCircle> r = incircle(e0, e1, e3, e2);
+    CHECK(*r == InCircle::tangent);
+    CHECK(r.stage == Stage::exact);
+}
