@@ -102,11 +102,13 @@ inline std::string compare(const Summary& a, const Summary& b) {
 
 // build_scaling's sets: "circles" (dyadic, exact in double), "ellipses",
 // "ellipses-nest10" (nested fraction 1/10); overlap_scaling's "circles-cross30":
-// "circles" with crossing fraction 3/10 (the same grid and radii).
-inline std::vector<Ellipse> make_sites(const std::string& set, long n) {
+// "circles" with crossing fraction 3/10 (the same grid and radii), and
+// "ellipses-cross30": "ellipses" with crossing fraction 3/10 (`ellvor generate
+// ellipses --count n --seed S --crossing 0.3`). Seed 1 unless told.
+inline std::vector<Ellipse> make_sites(const std::string& set, long n, std::uint64_t seed = 1) {
     GeneratorOptions o;
     o.count = n;
-    o.seed = 1;
+    o.seed = seed;
     if (set == "circles" || set == "circles-cross30") {
         o.kind = SiteKind::circles;
         o.bits = 1;
@@ -117,6 +119,7 @@ inline std::vector<Ellipse> make_sites(const std::string& set, long n) {
         o.bits = 8;
         o.box = Rational(100);
         if (set == "ellipses-nest10") o.nested_fraction = Rational(1, 10);
+        if (set == "ellipses-cross30") o.crossing_fraction = Rational(3, 10);
     }
     return generate_sites(o);
 }
@@ -126,6 +129,7 @@ inline std::string describe_set(const std::string& set) {
     if (set == "circles-cross30")
         return "generate_sites(circles, seed 1, bits 1, box 256 ceil(sqrt n), crossing fraction 3/10) — dyadic, exact "
                "in double";
+    if (set == "ellipses-cross30") return "generate_sites(ellipses, seed 1, bits 8, box 100, crossing fraction 3/10)";
     if (set == "ellipses-nest10") return "generate_sites(ellipses, seed 1, bits 8, box 100, nested fraction 1/10)";
     return "generate_sites(ellipses, seed 1, bits 8, box 100)";
 }
