@@ -230,12 +230,25 @@ void DelaunayGraph::insert_general(SiteId p) {
     if (!start) {
         if (insert_in_voronoi_edge(p, nearest)) return;
         // A site crossing others need not own its center, so its cell may
-        // lie away from the nearest site's: only the whole graph can show
-        // that p conflicts with nothing, i.e. its cell is empty.
-        start = find_any_conflict(region);
-        if (!start) {
-            if (insert_in_any_voronoi_edge(p, nearest)) return;
-            hide_in_union(p, site_of(nearest), again);
+        // lie away from the nearest site's. Whether it is empty is decided
+        // among the sites that meet p (hiding_among_sites_meeting); only a
+        // visible p needs the search over the whole graph.
+        std::optional<Hiding> hiding;
+        if (!whole_graph_search_) hiding = hiding_among_sites_meeting(p);
+        if (!hiding) {
+            start = find_any_conflict(region);
+            if (!start && insert_in_any_voronoi_edge(p, nearest)) return;
+            if (!start && !whole_graph_search_)
+                throw Error("site " + str(p) + " has a cell among the sites it meets but conflicts with nothing (internal error)");
+            if (!start) hiding = Hiding{site_of(nearest), true};
+        }
+        if (hiding) {
+            if (hiding->by_union)
+                hide_in_union(p, hiding->host, again);
+            else
+                hide(p, hiding->host);
+            ++stats_.hidden_on_insert;
+            insert_again(again);
             return;
         }
     }
@@ -310,6 +323,39 @@ bool DelaunayGraph::insert_in_voronoi_edge(SiteId p, VertexIndex nearest) {
         }
     }
     return false;
+}
+
+// Only sites that meet p can empty its cell: at a point of p a site apart
+// from p is farther than p, and a non-empty cell holds points of p (inward
+// along a normal the depth in p grows at rate 1, in any other site at rate
+// <= 1). So p is hidden among all sites iff it is hidden among the visible
+// sites that cross or contain it: a small graph of those (through
+// SubsetTraits, searched exhaustively) decides, and names the host.
+std::optional<DelaunayGraph::Hiding> DelaunayGraph::hiding_among_sites_meeting(SiteId p) {
+    std::vector<SiteId> ids;
+    for (VertexIndex v : tds_.finite_vertices()) {
+        const SiteId s = site_of(v);
+        if (traits_->crosses(s, p) || traits_->is_hidden(s, p)) ids.push_back(s);
+    }
+    if (ids.empty()) return std::nullopt;
+    ++stats_.hiding_tests;
+    const SiteId p_local = ids.size();
+    ids.push_back(p);
+    auto subset = std::make_unique<SubsetTraits>(*traits_, ids);
+    const SubsetTraits& local = *subset;
+    DelaunayGraph small(std::move(subset));
+    small.whole_graph_search_ = true;
+    for (SiteId i = 0; i <= p_local; ++i) small.insert(i);
+    std::optional<Hiding> hiding;
+    if (small.host_[p_local] != kNoHost) {
+        const SiteId host = small.host_[p_local];
+        const bool by_union = std::find(small.union_hidden_.begin(), small.union_hidden_.end(), p_local) != small.union_hidden_.end();
+        hiding = Hiding{local.global(host), by_union};
+    }
+    // The small graph's faces were asked about in the big traits: drop them.
+    TriangulationPredicates small_pred = small.predicates();
+    for (FaceIndex f : small.tds_.faces()) small_pred.forget(f);
+    return hiding;
 }
 
 std::optional<FaceIndex> DelaunayGraph::find_any_conflict(ConflictRegion& region) {

@@ -39,6 +39,7 @@ struct GraphStats {
     std::size_t inserted = 0, hidden_on_insert = 0, degree_2_insertions = 0, bogus_vertices = 0;
     std::size_t union_hidden = 0;        // sites found hidden by a union of crossing sites (at insertion or later)
     std::size_t global_searches = 0;     // insertions whose first conflict was sought over the whole graph
+    std::size_t hiding_tests = 0;        // small graphs of the sites meeting a new site, built to decide its hiding
     std::size_t conflict_faces = 0;      // faces removed by conflict regions, in all
     std::size_t walk_steps = 0;          // nearest-neighbour walk moves
     std::size_t rebuilds = 0;            // "all / all but one hidden" fallbacks
@@ -129,6 +130,11 @@ private:
     bool hide_in_nearest(SiteId p, VertexIndex nearest);
     std::optional<FaceIndex> find_first_conflict(ConflictRegion& region, VertexIndex nearest);
     bool insert_in_voronoi_edge(SiteId p, VertexIndex nearest);
+    struct Hiding {
+        SiteId host;
+        bool by_union;  // else the host contains the site
+    };
+    std::optional<Hiding> hiding_among_sites_meeting(SiteId p);
     std::optional<FaceIndex> find_any_conflict(ConflictRegion& region);
     bool insert_in_any_voronoi_edge(SiteId p, VertexIndex nearest);
     SiteId nearer_at_center(SiteId a, SiteId b, SiteId of);
@@ -160,6 +166,10 @@ private:
     std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
     std::vector<SiteId> host_;                   // per hidden site: the visible site that hides it
     std::vector<SiteId> union_hidden_;           // hidden sites whose host does not contain them
+    // A small graph that decides hiding (hiding_among_sites_meeting): a site
+    // without a conflict near its nearest site is searched for over the
+    // whole graph, and hidden if nothing conflicts.
+    bool whole_graph_search_ = false;
     enum : char { kOut, kIn, kRemoved };  // per site: not inserted, in the graph, removed
     std::vector<char> inserted_;
     std::vector<SiteId> removed_;

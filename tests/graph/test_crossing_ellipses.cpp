@@ -136,6 +136,10 @@ TEST_CASE("union hiding and removal: the needle comes back when a covering site 
         DelaunayGraph g = ellipse_graph(sites);
         g.insert_all();
         REQUIRE(g.hidden().size() == 1);
+        // The needle comes last (largest first) and is found hidden in the
+        // small graph of the sites meeting it, not by a search of the whole graph.
+        CHECK(g.stats().hiding_tests == 1);
+        CHECK(g.stats().global_searches == 0);
         g.remove(removed);
         INFO("removed " << removed);
         CHECK(g.validate() == "");
