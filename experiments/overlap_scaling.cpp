@@ -149,26 +149,12 @@ std::string one_line(std::string s) {
     return s;
 }
 
-// run_environment.hpp's timed(), with at least min_reps runs; also the
-// fastest and slowest run's CPU time.
-template <class F>
-void timed_runs(F build, int min_reps, Row& r) {
-    std::vector<double> w, c;
-    double total = 0;
-    while (true) {
-        const double w0 = now_wall(), c0 = now_cpu();
-        build();
-        const double w1 = now_wall(), c1 = now_cpu();
-        w.push_back(w1 - w0);
-        c.push_back(c1 - c0);
-        total += w1 - w0;
-        if ((total >= 0.3 && static_cast<int>(w.size()) >= min_reps) || w.size() >= 20) break;
-    }
-    r.seconds = median(w);
-    r.cpu_seconds = median(c);
-    r.cpu_min = *std::min_element(c.begin(), c.end());
-    r.cpu_max = *std::max_element(c.begin(), c.end());
-    r.reps = static_cast<int>(w.size());
+void set_timing(Row& r, const Timing& t) {
+    r.seconds = t.wall;
+    r.cpu_seconds = t.cpu;
+    r.cpu_min = t.cpu_min;
+    r.cpu_max = t.cpu_max;
+    r.reps = t.reps;
 }
 
 Row run_ellvor(const std::string& set, const std::vector<Ellipse>& sites, Summary& summary, int& anomalies,
@@ -181,10 +167,12 @@ Row run_ellvor(const std::string& set, const std::vector<Ellipse>& sites, Summar
     r.n = static_cast<long>(sites.size());
     try {
         std::unique_ptr<DelaunayGraph> g;
-        timed_runs([&] {
-            g = std::make_unique<DelaunayGraph>(std::make_unique<EllipseDelaunayTraits>(sites));
-            g->insert_all();
-        }, min_reps, r);
+        set_timing(r, timed_runs(
+                          [&] {
+                              g = std::make_unique<DelaunayGraph>(std::make_unique<EllipseDelaunayTraits>(sites));
+                              g->insert_all();
+                          },
+                          min_reps));
         r.visible = g->visible_sites().size();
         r.hidden = g->hidden().size();
         r.edges = g->edges().size();
@@ -212,10 +200,10 @@ Row run_cgal(const std::string& set, const std::vector<Ellipse>& sites, Summary&
     r.n = static_cast<long>(sites.size());
     const std::vector<AG::Site_2> input = cgal_sites(sites);
     AGH ag;
-    timed_runs([&] {
-        ag.clear();
-        ag.insert(input.begin(), input.end());
-    }, 1, r);
+    set_timing(r, timed_runs([&] {
+                      ag.clear();
+                      ag.insert(input.begin(), input.end());
+                  }));
     summary = summary_of(ag, CgalSiteIds(input));
     r.visible = summary.visible.size();
     r.hidden = summary.hidden.size();

@@ -69,10 +69,15 @@ inline double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
-// Runs `build` until 0.3 s of wall time (at least once, at most 20 times):
-// the medians of its wall and CPU times, and how many runs.
+// Runs `build` until 0.3 s of wall time and at least min_reps runs (at most
+// 20): the medians of its wall and CPU times, the fastest and slowest CPU
+// time, and how many runs.
+struct Timing {
+    double wall = 0, cpu = 0, cpu_min = 0, cpu_max = 0;
+    int reps = 0;
+};
 template <class F>
-void timed(F build, double& wall, double& cpu, int& reps) {
+Timing timed_runs(F build, int min_reps = 1) {
     std::vector<double> w, c;
     double total = 0;
     while (true) {
@@ -82,11 +87,19 @@ void timed(F build, double& wall, double& cpu, int& reps) {
         w.push_back(w1 - w0);
         c.push_back(c1 - c0);
         total += w1 - w0;
-        if (total >= 0.3 || w.size() >= 20) break;
+        if ((total >= 0.3 && static_cast<int>(w.size()) >= min_reps) || w.size() >= 20) break;
     }
-    wall = median(w);
-    cpu = median(c);
-    reps = static_cast<int>(w.size());
+    return {median(w), median(c), *std::min_element(c.begin(), c.end()), *std::max_element(c.begin(), c.end()),
+            static_cast<int>(w.size())};
+}
+
+// timed_runs with one run at least: the medians and the number of runs.
+template <class F>
+void timed(F build, double& wall, double& cpu, int& reps) {
+    const Timing t = timed_runs(build);
+    wall = t.wall;
+    cpu = t.cpu;
+    reps = t.reps;
 }
 
 // The common command line of the experiments: [--full] [--out DIR].
