@@ -95,8 +95,9 @@ public:
     bool is_valid() { return validate().empty(); }
     // Brute force for small inputs: every finite face's Voronoi circle has no
     // other site in conflict (kappa3 != conflict), every hull face's
-    // half-plane likewise (kappa2 == +1); every hidden site is inside its
-    // hiding site; every site is visible or hidden. "" if valid. O(n * faces).
+    // half-plane likewise (kappa2 == +1), hidden sites included; every hidden
+    // site is inside its hiding site or, hidden by a union, crosses it; every
+    // site is visible or hidden. "" if valid. O(n * faces).
     std::string brute_force_check();
 
     const TraitsStats& predicate_stats() const { return traits_->stats(); }

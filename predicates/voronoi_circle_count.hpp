@@ -1,7 +1,8 @@
 // How many Voronoi circles an ordered triple of sites has (docs/DESIGN.md
 // §2): a circle externally tangent to all three with an empty open disk, its
 // tangency points counter-clockwise in the order E1, E2, E3 (the CCW circle)
-// or E1, E3, E2 (the CW circle). Decided from three kappa2 signs only.
+// or E1, E3, E2 (the CW circle). Decided from three kappa2 signs, and by
+// the complete solver when a site may be covered by the other two.
 #pragma once
 
 #include "predicates/stage.hpp"
@@ -18,16 +19,18 @@ enum class VoronoiCircles {
 
 const char* voronoi_circles_name(VoronoiCircles v);
 
-// Sites must be pairwise separated or externally tangent; a hidden pair gives
-// none. Always decided: for three circles in doubles with a static error
-// bound (circle_semi_static.hpp), else by the exact closed form
-// (circle_predicates.hpp), otherwise from three kappa2 signs; the stage is the
-// latest any of them needed.
+// A nested pair gives none. Always decided: for three circles in doubles
+// with a static error bound (circle_semi_static.hpp), else by the exact
+// closed form (circle_predicates.hpp), otherwise from three kappa2 signs --
+// unless two of them conflict and one site crosses both others with no point
+// certainly outside them: that site may have an empty cell (docs/DESIGN.md
+// §9), and the Voronoi circle solver, which is complete, says "both" or
+// "none". The stage is the latest any of them needed.
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 // Whether no site of the three lies inside another (the premise of a Voronoi
 // circle; a nested pair has none): every pair separated, externally tangent,
-// or -- two circles, whose closed forms take signed distances -- crossing.
+// or crossing.
 Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 }  // namespace ellvor
