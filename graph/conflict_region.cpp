@@ -84,31 +84,40 @@ void ConflictRegion::expand(FaceIndex start) {
     find_swallowed_vertices();
 }
 
-// A site whose cell p empties crosses p (it does not contain p, which would
-// hide p, and shares points with it: p has no say where it is absent), so
-// the costlier test of the faces around it runs for crossing sites only.
+// A vertex is examined only when both of its edges in some region face were
+// crossed (cheap, from the marks: most vertices of the region are on its
+// boundary and fail it), and its site must cross p: a site whose cell p
+// empties does not contain p (that would hide p) and shares points with it
+// (p has no say where it is absent).
 void ConflictRegion::find_swallowed_vertices() {
     swallowed_.clear();
     for (FaceIndex f : faces_)
-        for (VertexIndex v : tds_.face(f).v) {
-            if (v == Triangulation::kInfiniteVertex) continue;
+        for (int k = 0; k < 3; ++k) {
+            const VertexIndex v = tds_.face(f).v[k];
+            const ConflictMarks::Face& mf = *marks_.find(f);
+            if (v == Triangulation::kInfiniteVertex || mf.crossed[ccw(k)] != 1 || mf.crossed[cw(k)] != 1) continue;
             ConflictMarks::Vertex& m = marks_.vertex(v);
-            if (m.swallowed || hides(v) || !predicates_.crosses(p_, predicates_.site(v))) continue;
-            if (every_edge_around_crossed(v)) {
-                m.swallowed = true;
-                swallowed_.push_back(v);
-            }
+            if (m.swallowed != ConflictMarks::kUnknown) continue;
+            m.swallowed = !hides(v) && every_edge_around_crossed(v) && predicates_.crosses(p_, predicates_.site(v));
+            if (m.swallowed) swallowed_.push_back(v);
         }
     std::sort(swallowed_.begin(), swallowed_.end());
 }
 
 bool ConflictRegion::every_edge_around_crossed(VertexIndex v) const {
-    for (FaceIndex f : tds_.incident_faces(v)) {
+    // Around v as Triangulation::incident_faces turns, without its vector:
+    // this runs in every insertion.
+    const FaceIndex start = tds_.vertex(v).face;
+    FaceIndex f = start;
+    std::size_t guard = 0;
+    do {
         const ConflictMarks::Face* m = marks_.find(f);
         if (!m || !m->in_region) return false;
         const int k = tds_.index(f, v);
         if (m->crossed[ccw(k)] != 1 || m->crossed[cw(k)] != 1) return false;
-    }
+        f = tds_.face(f).n[ccw(k)];
+        if (++guard > tds_.number_of_faces()) throw Error("conflict region: the faces around a vertex do not close (internal error)");
+    } while (f != start);
     return true;
 }
 
@@ -171,7 +180,7 @@ void ConflictRegion::check_inner_vertices(const std::vector<Edge>& boundary, con
     for (const Edge& e : boundary) marks_.vertex(tds_.face(e.face).v[ccw(e.index)]).on_boundary = true;
     for (FaceIndex f : faces_)
         for (VertexIndex v : tds_.face(f).v)
-            if (!marks_.vertex(v).on_boundary && !hides(v) && !marks_.vertex(v).swallowed)
+            if (!marks_.vertex(v).on_boundary && !hides(v) && marks_.vertex(v).swallowed != 1)
                 throw Error("site " + std::to_string(predicates_.site(v)) + " would vanish inserting site " +
                             std::to_string(p_) + " (internal error)");
     for (VertexIndex v : vanishing)

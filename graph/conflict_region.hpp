@@ -38,7 +38,7 @@ public:
     struct Vertex {
         std::uint32_t generation = 0;
         signed char hidden = kUnknown;  // 0, 1, or kUnknown
-        bool swallowed = false;
+        signed char swallowed = kUnknown;  // 0, 1, or kUnknown (not examined)
         bool on_boundary = false;
     };
     static constexpr signed char kUnknown = -2;
