@@ -24,7 +24,7 @@ const char* const kHelp =
     "vertex: the common tangent line with E1's contact point before E2's and both sites on\n"
     "its right -- as the tangency parameters t on E1 and E2 (exact isolating intervals, or\n"
     "'inf' for the i-point) and the contact points (approx.).\n"
-    "With a third site Q, also kappa2 = vertex_conflict(E1, E2, Q):\n"
+    "With a third site Q, also kappa2 = infinite_vertex_conflict(E1, E2, Q):\n"
     "  conflict      Q meets the open half-plane beyond L (CGAL's NEGATIVE)\n"
     "  no-conflict   it does not (POSITIVE); ties are broken as in CGAL, never zero\n"
     "and the number of Voronoi circles of the triple (none, ccw, cw, both).\n"

@@ -6,7 +6,7 @@
 #include "graph/delaunay_graph.hpp"
 #include "output/graph_json.hpp"
 #include "output/svg_writer.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -120,10 +120,15 @@ int run(const std::vector<std::string>& args) {
         std::cout << "time per insertion: " << 1e6 * seconds / std::max<std::size_t>(1, sites.size()) << " us\n";
         if (!removals.empty())
             std::cout << "time per removal: " << 1e6 * removal_seconds / static_cast<double>(removals.size()) << " us\n";
-        std::cout << "predicate calls (decided by filter / subdivision / exact):\n";
-        for (const auto& [name, row] : stats["predicates"].items())
-            std::cout << "  " << name << ": " << row["calls"] << " (" << row["filter"] << " / " << row["subdivision"]
-                      << " / " << row["exact"] << ")\n";
+        std::cout << "predicate calls (decided by";
+        for (Stage stage : kStages) std::cout << (stage == kStages.front() ? " " : " / ") << stage_name(stage);
+        std::cout << "):\n";
+        for (const PredicateInfo& p : kPredicates) {
+            const nlohmann::json& row = stats["predicates"][p.name];
+            std::cout << "  " << p.name << ": " << row["calls"] << " (";
+            for (Stage stage : kStages) std::cout << (stage == kStages.front() ? "" : " / ") << row[stage_name(stage)];
+            std::cout << ")\n";
+        }
     }
     if (parsed.has("--json")) {
         const nlohmann::json j = graph_json(graph, sites, stats);

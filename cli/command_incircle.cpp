@@ -16,7 +16,7 @@ namespace {
 const char* const kHelp =
     "usage: ellvor incircle FILE [--cin] [--json] [--max-precision BITS]\n"
     "\n"
-    "InCircle (kappa3, CGAL's vertex_conflict(E1, E2, E3, Q)) for the four sites of FILE in\n"
+    "InCircle (kappa3, incircle(E1, E2, E3, Q); CGAL's Vertex_conflict_2 with four sites) for the four sites of FILE in\n"
     "the order E1 E2 E3 Q. The Voronoi circle of the ordered triple is externally tangent to\n"
     "E1, E2, E3 with its tangency points counter-clockwise in that order. Prints one word:\n"
     "  conflict      Q meets the open Voronoi disk (NEGATIVE)\n"

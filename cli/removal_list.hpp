@@ -4,7 +4,7 @@
 // sites and appear once; the order is kept (the removal order).
 #pragma once
 
-#include "predicates/site_id.hpp"
+#include "decision/site_id.hpp"
 
 #include <string>
 #include <vector>

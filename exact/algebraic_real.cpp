@@ -1,5 +1,6 @@
 #include "exact/algebraic_real.hpp"
 
+#include "exact/real_roots.hpp"
 #include "util/error.hpp"
 
 #include <arb_fmpz_poly.h>
@@ -10,13 +11,6 @@
 namespace ellvor {
 
 namespace {
-
-IntPolynomial normalized(const IntPolynomial& p) {
-    IntPolynomial r;
-    fmpz_poly_primitive_part(r.get(), p.get());
-    if (r.degree() >= 0 && fmpz_sgn(fmpz_poly_lead(r.get())) < 0) fmpz_poly_neg(r.get(), r.get());
-    return r;
-}
 
 IntPolynomial gcd(const IntPolynomial& a, const IntPolynomial& b) {
     IntPolynomial g;
@@ -64,7 +58,7 @@ AlgebraicReal AlgebraicReal::from_interval(const IntPolynomial& p, const Rationa
         return a;
     }
     if (!(lo < hi)) throw Error("AlgebraicReal: empty interval");
-    IntPolynomial q = normalized(p);
+    IntPolynomial q = primitive_normalized(p);
     int sl = sign_at_rational(q, lo), sh = sign_at_rational(q, hi);
     if (sl == 0 || sh == 0 || sl == sh) throw Error("AlgebraicReal: no sign change on the interval");
     if (q.degree() == 1) {
@@ -90,7 +84,7 @@ void AlgebraicReal::set_rational(const Rational& q) {
 }
 
 void AlgebraicReal::set_polynomial(const IntPolynomial& g) {
-    IntPolynomial q = normalized(g);
+    IntPolynomial q = primitive_normalized(g);
     if (q.degree() == 1) {
         set_rational(Rational(-q.coeff(0), q.coeff(1)));
         return;

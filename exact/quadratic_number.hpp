@@ -1,6 +1,6 @@
 // Real numbers of a real quadratic field: a + b sqrt(d) with rationals a, b
 // and a rational radicand d >= 0. The closed-form circle predicates
-// (predicates/circle_predicates.hpp) live in such fields: everything they
+// (circles/circle_predicates.hpp) live in such fields: everything they
 // compare is a rational, one element of Q(sqrt d), or the difference of two
 // elements of different fields.
 //

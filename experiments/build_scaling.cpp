@@ -35,7 +35,7 @@
 #include "experiments/predicate_stages.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
 #include "util/error.hpp"
@@ -300,20 +300,15 @@ int main(int argc, char** argv) {
     // CSV
     std::ostringstream csv;
     csv << "set,n,seconds,cpu_seconds,runs,us_per_insertion,visible,hidden,edges,faces";
-    for (const PredicateColumn& p : kPredicateColumns) csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
+    for (const PredicateInfo& p : kPredicates) csv << predicate_csv_header(p);
     csv << ",walk_steps,conflict_faces,degree2_insertions,validate,brute_force,equals_cgal,kappa1_us_per_call,"
            "peak_rss_growth_bytes\n";
     for (const Row& r : rows) {
         csv << r.set << "," << r.n << "," << fmt("%.6g", r.seconds) << "," << fmt("%.6g", r.cpu_seconds) << "," << r.reps
             << "," << fmt("%.6g", 1e6 * r.seconds / r.n) << "," << r.visible << "," << r.hidden << "," << r.edges << ","
             << (is_cgal(r) ? std::string("") : std::to_string(r.faces));
-        for (const PredicateColumn& p : kPredicateColumns) {
-            const PredicateCount& c = r.stats.*(p.field);
-            if (is_cgal(r))
-                csv << ",,,,";
-            else
-                csv << "," << c.calls << "," << c.stages[Stage::filter] << "," << c.stages[Stage::subdivision] << "," << c.stages[Stage::exact];
-        }
+        for (const PredicateInfo& p : kPredicates)
+            csv << (is_cgal(r) ? predicate_csv_empty() : predicate_csv_values(r.stats[p.predicate]));
         const std::string growth =
             r.memory.peak_kb < 0 || r.memory.start_kb < 0 ? "" : std::to_string((r.memory.peak_kb - r.memory.start_kb) * 1024);
         if (is_cgal(r))
@@ -397,14 +392,14 @@ int main(int argc, char** argv) {
     md << "\n## Predicate calls per stage\n\ncalls (filter / subdivision / exact); memoized answers are not "
           "counted. kappa1 = side_of_bisector (nearest-neighbour walk), kappa2 = infinite Voronoi vertex, kappa3 = "
           "InCircle, kappa4 = edge conflicts.\n\n| set | n |";
-    for (const PredicateColumn& p : kPredicateColumns) md << " " << p.name << " |";
+    for (const PredicateInfo& p : kPredicates) md << " " << p.name << " |";
     md << "\n|---|---:|";
-    for (std::size_t i = 0; i < sizeof kPredicateColumns / sizeof kPredicateColumns[0]; ++i) md << "---|";
+    for (std::size_t i = 0; i < kPredicates.size(); ++i) md << "---|";
     md << "\n";
     for (const Row& r : rows) {
         if (is_cgal(r)) continue;
         md << "| " << r.set << " | " << r.n << " |";
-        for (const PredicateColumn& p : kPredicateColumns) md << " " << stage_triple(r.stats.*(p.field)) << " |";
+        for (const PredicateInfo& p : kPredicates) md << " " << stage_triple(r.stats[p.predicate]) << " |";
         md << "\n";
     }
 
@@ -415,8 +410,8 @@ int main(int argc, char** argv) {
           "|---|---:|---:|---:|---:|---:|---:|\n";
     for (const Row& r : rows) {
         if (is_cgal(r) || r.kappa1_us <= 0) continue;
-        const double calls = double(r.stats.side_of_bisector.calls), est = calls * r.kappa1_us * 1e-6;
-        md << "| " << r.set << " | " << r.n << " | " << r.stats.side_of_bisector.calls << " | "
+        const double calls = double(r.stats[Predicate::side_of_bisector].calls), est = calls * r.kappa1_us * 1e-6;
+        md << "| " << r.set << " | " << r.n << " | " << r.stats[Predicate::side_of_bisector].calls << " | "
            << fmt("%.0f", calls / r.n) << " | " << fmt("%.2f", r.kappa1_us) << " | " << fmt("%.3g", est) << " | "
            << fmt("%.0f%%", 100 * est / r.cpu_seconds) << " |\n";
     }

@@ -36,7 +36,7 @@
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "graph/triangulation_index.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/ellipse.hpp"
@@ -371,15 +371,12 @@ std::vector<Ellipse> through_site_file(const std::vector<Ellipse>& sites) {
 
 // How long the predicates of one build took: the graph's calls through its
 // traits, timed one by one (steady_clock; memoized answers count as calls).
-// The predicates as TimedTraits names them.
-const std::array<const char*, 6> kPredicateNames = {"is_hidden", "kappa1", "kappa2", "kappa3", "kappa4", "kappa4_infinite"};
-enum Predicate { kIsHidden, kKappa1, kKappa2, kKappa3, kKappa4, kKappa4Infinite };
 
 struct CallProfile {
     std::uint64_t calls = 0;
     double seconds = 0, slowest = 0;
-    std::array<std::uint64_t, kPredicateNames.size()> calls_of{};
-    std::array<double, kPredicateNames.size()> seconds_of{};
+    std::array<std::uint64_t, kPredicates.size()> calls_of{};  // indexed by Predicate
+    std::array<double, kPredicates.size()> seconds_of{};
     std::string slowest_call;  // "kappa3(4, 9, 17, 2)"
     // Makes the slowest call again on other traits.
     std::function<void(DelaunayTraits&)> replay_slowest;
@@ -395,33 +392,33 @@ public:
     Sign compare_weight(SiteId a, SiteId b) const override { return inner_.compare_weight(a, b); }
     LocationHint location_hint(SiteId i) const override { return inner_.location_hint(i); }
     bool is_hidden(SiteId p, SiteId q) override {
-        return timed(kIsHidden, {p, q}, [=](DelaunayTraits& t) { return t.is_hidden(p, q); });
+        return timed(Predicate::is_hidden, {p, q}, [=](DelaunayTraits& t) { return t.is_hidden(p, q); });
     }
     bool crosses(SiteId p, SiteId q) override {
-        return timed(kIsHidden, {p, q}, [=](DelaunayTraits& t) { return t.crosses(p, q); });
+        return timed(Predicate::is_hidden, {p, q}, [=](DelaunayTraits& t) { return t.crosses(p, q); });
     }
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override {
-        return timed(kKappa1, {i, j, k}, [=](DelaunayTraits& t) { return t.side_of_bisector(i, j, k); });
+        return timed(Predicate::side_of_bisector, {i, j, k}, [=](DelaunayTraits& t) { return t.side_of_bisector(i, j, k); });
     }
-    Sign vertex_conflict(SiteId i, SiteId j, SiteId q) override {
-        return timed(kKappa2, {i, j, q}, [=](DelaunayTraits& t) { return t.vertex_conflict(i, j, q); });
+    Sign infinite_vertex_conflict(SiteId i, SiteId j, SiteId q) override {
+        return timed(Predicate::infinite_vertex_conflict, {i, j, q}, [=](DelaunayTraits& t) { return t.infinite_vertex_conflict(i, j, q); });
     }
-    Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) override {
-        return timed(kKappa3, {i, j, k, q}, [=](DelaunayTraits& t) { return t.vertex_conflict(i, j, k, q); });
+    Sign incircle(SiteId i, SiteId j, SiteId k, SiteId q) override {
+        return timed(Predicate::incircle, {i, j, k, q}, [=](DelaunayTraits& t) { return t.incircle(i, j, k, q); });
     }
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
-        return timed(kKappa4, {p1, p2, p3, p4, q},
-                     [=](DelaunayTraits& t) { return t.finite_edge_interior(p1, p2, p3, p4, q, b); });
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
+        return timed(Predicate::finite_edge_interior_conflict, {p1, p2, p3, p4, q},
+                     [=](DelaunayTraits& t) { return t.finite_edge_interior_conflict(p1, p2, p3, p4, q, b); });
     }
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override {
-        return timed(kKappa4, {p1, p2, p3, q}, [=](DelaunayTraits& t) { return t.finite_edge_interior(p1, p2, p3, q, b); });
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override {
+        return timed(Predicate::finite_edge_interior_conflict, {p1, p2, p3, q}, [=](DelaunayTraits& t) { return t.finite_edge_interior_conflict(p1, p2, p3, q, b); });
     }
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override {
-        return timed(kKappa4, {p1, p2, q}, [=](DelaunayTraits& t) { return t.finite_edge_interior(p1, p2, q, b); });
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId q, bool b) override {
+        return timed(Predicate::finite_edge_interior_conflict, {p1, p2, q}, [=](DelaunayTraits& t) { return t.finite_edge_interior_conflict(p1, p2, q, b); });
     }
-    bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
-        return timed(kKappa4Infinite, {p2, p3, p4, q},
-                     [=](DelaunayTraits& t) { return t.infinite_edge_interior(p2, p3, p4, q, b); });
+    bool infinite_edge_interior_conflict(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
+        return timed(Predicate::infinite_edge_interior_conflict, {p2, p3, p4, q},
+                     [=](DelaunayTraits& t) { return t.infinite_edge_interior_conflict(p2, p3, p4, q, b); });
     }
     bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override {
         return inner_.is_degenerate_edge(p1, p2, p3, p4);  // deletion only: never called here
@@ -438,11 +435,11 @@ private:
         const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ++profile_.calls;
         profile_.seconds += s;
-        ++profile_.calls_of[which];
-        profile_.seconds_of[which] += s;
+        ++profile_.calls_of[static_cast<std::size_t>(which)];
+        profile_.seconds_of[static_cast<std::size_t>(which)] += s;
         if (s > profile_.slowest) {
             profile_.slowest = s;
-            profile_.slowest_call = std::string(kPredicateNames[which]) + "(";
+            profile_.slowest_call = std::string(predicate_name(which)) + "(";
             for (const SiteId* i = ids.begin(); i != ids.end(); ++i)
                 profile_.slowest_call += (i == ids.begin() ? "" : ", ") + std::to_string(*i);
             profile_.slowest_call += ")";
@@ -719,20 +716,22 @@ void add_memory_row(Table& t, const std::string& grid, const std::string& build,
 
 // Predicate calls per stage, and the slowest call, of every graph built.
 Table stage_table() {
-    return {"graph_predicates", {"graph", "is_hidden", "kappa1", "kappa2", "kappa3", "kappa4 finite", "kappa4 infinite",
-                                 "calls timed", "in predicates", "time by predicate: share (mean)", "mean per call",
-                                 "slowest call (in the build)", "which", "that call alone, cold: CPU (wall)"}};
+    std::vector<std::string> columns = {"graph"};
+    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
+    columns.insert(columns.end(), {"calls timed", "in predicates", "time by predicate: share (mean)", "mean per call",
+                                 "slowest call (in the build)", "which", "that call alone, cold: CPU (wall)"});
+    return {"graph_predicates", columns};
 }
 
 // "kappa3 41% (2.1 µs), kappa4 ...": the predicates by decreasing share of the timed calls' time.
 std::string time_by_predicate(const CallProfile& p) {
     std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < kPredicateNames.size(); ++i)
+    for (std::size_t i = 0; i < kPredicates.size(); ++i)
         if (p.calls_of[i]) order.push_back(i);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.seconds_of[a] > p.seconds_of[b]; });
     std::string out;
     for (std::size_t i : order)
-        out += (out.empty() ? "" : ", ") + std::string(kPredicateNames[i]) + " " +
+        out += (out.empty() ? "" : ", ") + std::string(kPredicates[i].name) + " " +
                fmt("%.0f%%", 100 * p.seconds_of[i] / p.seconds) + " (" + duration(p.seconds_of[i] / p.calls_of[i]) + ")";
     return out;
 }
@@ -741,11 +740,12 @@ void add_stage_row(Table& t, const std::string& graph, const GraphRun& g) {
     const TraitsStats& s = g.stats;
     const CallProfile& p = g.profile;
     const double in_predicates = g.timed_build_wall > 0 ? p.seconds / g.timed_build_wall : 0;
-    t.add({graph, stage_triple(s.is_hidden), stage_triple(s.side_of_bisector), stage_triple(s.vertex_conflict3),
-           stage_triple(s.vertex_conflict4), stage_triple(s.finite_edge), stage_triple(s.infinite_edge),
-           integer(static_cast<long long>(p.calls)), Cell(fmt("%.0f%%", 100 * in_predicates), fmt("%.4g", in_predicates)),
+    std::vector<Cell> row = {graph};
+    for (const PredicateInfo& info : kPredicates) row.push_back(stage_triple(s[info.predicate]));
+    row.insert(row.end(), {integer(static_cast<long long>(p.calls)), Cell(fmt("%.0f%%", 100 * in_predicates), fmt("%.4g", in_predicates)),
            time_by_predicate(p), seconds_cell(p.calls ? p.seconds / p.calls : 0),
            seconds_cell(p.slowest), p.slowest_call, cpu_wall(g.slowest_alone)});
+    t.add(std::move(row));
 }
 
 // The edges of `a` (a sorted multiset) that are not in `b`.
@@ -977,7 +977,8 @@ void invariance_family(const std::string& family, SiteKind kind, const Config& c
     std::vector<std::optional<InCircle>> base;
     for (const Version& v : versions()) {
         std::vector<double> cpu, wall;
-        long answers[4] = {0, 0, 0, 0}, stages[3] = {0, 0, 0}, disagree = 0, max_prec = 0, slowest_index = 0;
+        StageCounters stages;
+        long answers[4] = {0, 0, 0, 0}, disagree = 0, max_prec = 0, slowest_index = 0;
         for (std::size_t i = 0; i < quads.size(); ++i) {
             const std::vector<Ellipse> quad = transformed(quads[i], v);
             const DecisionRun d = decide_incircle(quad, {}, config.runs);
@@ -991,7 +992,7 @@ void invariance_family(const std::string& family, SiteKind kind, const Config& c
             }
             if (d.answer) {
                 ++answers[static_cast<int>(*d.answer)];
-                ++stages[static_cast<int>(d.stage)];
+                stages.record(d.stage);
             }
             max_prec = std::max(max_prec, d.precision);
             if (cpu.empty() || d.time.cpu > *std::max_element(cpu.begin(), cpu.end())) slowest_index = static_cast<long>(i);
@@ -1008,7 +1009,7 @@ void invariance_family(const std::string& family, SiteKind kind, const Config& c
         out.table.add({family, v.name, integer(static_cast<long long>(quads.size())), integer(disagree),
                        std::to_string(answers[0]) + " / " + std::to_string(answers[1]) + " / " +
                            std::to_string(answers[2]) + " / " + std::to_string(answers[3]),
-                       std::to_string(stages[0]) + " / " + std::to_string(stages[1]) + " / " + std::to_string(stages[2]),
+                       stage_counts(stages),
                        integer(max_prec), cpu_wall(med), cpu_wall(mx), integer(slowest_index)});
     }
 }

@@ -47,7 +47,7 @@
 #include "experiments/predicate_stages.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "predicates/relative_position.hpp"
 #include "sites/site_generators.hpp"
 
@@ -421,8 +421,7 @@ int main(int argc, char** argv) {
     std::ostringstream csv;
     csv << "library,sites,set,n,seed,seconds,cpu_seconds,cpu_min_seconds,cpu_max_seconds,runs,crossing_sites,"
            "crossing_pairs,visible,hidden,edges";
-    for (const PredicateColumn& p : kPredicateColumns)
-        csv << "," << p.name << "_calls," << p.name << "_filter," << p.name << "_subdivision," << p.name << "_exact";
+    for (const PredicateInfo& p : kPredicates) csv << predicate_csv_header(p);
     csv << ",union_hidden,hidden_on_insert,global_searches,conflict_faces,walk_steps"
            ",relative_position_cpu_seconds,validate,equals_cgal,peak_rss_growth_bytes\n";
     for (const Row& r : rows) {
@@ -430,14 +429,8 @@ int main(int argc, char** argv) {
             << "," << fmt("%.6g", r.cpu_seconds) << "," << fmt("%.6g", r.cpu_min) << "," << fmt("%.6g", r.cpu_max) << ","
             << r.reps << "," << r.crossing_sites << "," << r.crossing_pairs << "," << r.visible << "," << r.hidden << ","
             << r.edges;
-        for (const PredicateColumn& p : kPredicateColumns) {
-            const PredicateCount& c = r.stats.*(p.field);
-            if (r.library == "cgal")
-                csv << ",,,,";
-            else
-                csv << "," << c.calls << "," << c.stages[Stage::filter] << "," << c.stages[Stage::subdivision] << ","
-                    << c.stages[Stage::exact];
-        }
+        for (const PredicateInfo& p : kPredicates)
+            csv << (r.library == "cgal" ? predicate_csv_empty() : predicate_csv_values(r.stats[p.predicate]));
         if (r.library == "cgal")
             csv << ",,,,,";
         else
@@ -529,14 +522,14 @@ int main(int argc, char** argv) {
               "counted. is_hidden decides the relative position of the pairs the graph meets; kappa1 = "
               "side_of_bisector, kappa2 = infinite Voronoi vertex, kappa3 = InCircle, kappa4 = edge conflicts.\n\n"
               "| set | n |";
-        for (const PredicateColumn& p : kPredicateColumns) md << " " << p.name << " |";
+        for (const PredicateInfo& p : kPredicates) md << " " << p.name << " |";
         md << "\n|---|---:|";
-        for (std::size_t i = 0; i < sizeof kPredicateColumns / sizeof kPredicateColumns[0]; ++i) md << "---|";
+        for (std::size_t i = 0; i < kPredicates.size(); ++i) md << "---|";
         md << "\n";
         for (const Row& r : rows) {
             if (r.library != "ellvor" || r.sites != "circles") continue;
             md << "| " << r.set << " | " << r.n << " |";
-            for (const PredicateColumn& p : kPredicateColumns) md << " " << stage_triple(r.stats.*(p.field)) << " |";
+            for (const PredicateInfo& p : kPredicates) md << " " << stage_triple(r.stats[p.predicate]) << " |";
             md << "\n";
         }
 
@@ -596,14 +589,14 @@ int main(int argc, char** argv) {
 
         md << "\n### Predicate calls per stage\n\ncalls (filter / subdivision / exact), as for circles.\n\n| F | n | "
               "seed |";
-        for (const PredicateColumn& p : kPredicateColumns) md << " " << p.name << " |";
+        for (const PredicateInfo& p : kPredicates) md << " " << p.name << " |";
         md << "\n|---|---:|---:|";
-        for (std::size_t i = 0; i < sizeof kPredicateColumns / sizeof kPredicateColumns[0]; ++i) md << "---|";
+        for (std::size_t i = 0; i < kPredicates.size(); ++i) md << "---|";
         md << "\n";
         for (const Row& r : rows) {
             if (r.sites != "ellipses") continue;
             md << "| " << (r.set == "overlap" ? "0.3" : "0") << " | " << r.n << " | " << r.seed << " |";
-            for (const PredicateColumn& p : kPredicateColumns) md << " " << stage_triple(r.stats.*(p.field)) << " |";
+            for (const PredicateInfo& p : kPredicates) md << " " << stage_triple(r.stats[p.predicate]) << " |";
             md << "\n";
         }
 
@@ -615,9 +608,9 @@ int main(int argc, char** argv) {
               "pair | extra calls past the filter |\n|---:|---:|---:|---:|---:|---:|---:|\n";
         auto past_filter = [](const Row& r) {
             long k = 0;
-            for (const PredicateColumn& p : kPredicateColumns) {
-                const PredicateCount& c = r.stats.*(p.field);
-                k += static_cast<long>(c.stages[Stage::subdivision] + c.stages[Stage::exact]);
+            for (const PredicateInfo& p : kPredicates) {
+                const PredicateCount& c = r.stats[p.predicate];
+                k += static_cast<long>(c.stages.total() - c.stages[Stage::filter]);
             }
             return k;
         };

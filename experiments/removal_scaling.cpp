@@ -25,7 +25,7 @@
 #include "experiments/peak_memory.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -10,7 +10,7 @@
 #pragma once
 
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "sites/site_io.hpp"
 #include "util/error.hpp"
 

@@ -807,12 +807,12 @@ std::string DelaunayGraph::brute_force_check() {
             if (own) continue;
             if (k < 0) {
                 const SiteId a = site_of(F.v[0]), b = site_of(F.v[1]), c = site_of(F.v[2]);
-                if (traits_->vertex_conflict(a, b, c, q) == Sign::negative)
+                if (traits_->incircle(a, b, c, q) == Sign::negative)
                     return "site " + str(q) + " is in conflict with the Voronoi circle of (" + str(a) + " " + str(b) +
                            " " + str(c) + ")";
             } else {
                 const SiteId a = site_of(F.v[ccw(k)]), b = site_of(F.v[cw(k)]);
-                if (traits_->vertex_conflict(a, b, q) == Sign::negative)
+                if (traits_->infinite_vertex_conflict(a, b, q) == Sign::negative)
                     return "site " + str(q) + " is in conflict with the hull edge (" + str(a) + " " + str(b) + ")";
             }
         }

@@ -23,7 +23,7 @@
 #include "graph/site_grid.hpp"
 #include "graph/triangulation.hpp"
 #include "graph/triangulation_predicates.hpp"
-#include "predicates/delaunay_traits.hpp"
+#include "decision/delaunay_traits.hpp"
 
 #include <array>
 #include <functional>

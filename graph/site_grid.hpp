@@ -4,7 +4,7 @@
 // on it -- the walk itself is decided by kappa1 -- so rounding here is harmless.
 #pragma once
 
-#include "predicates/delaunay_traits.hpp"
+#include "decision/delaunay_traits.hpp"
 
 #include <vector>
 

@@ -5,7 +5,7 @@
 // both graphs.
 #pragma once
 
-#include "predicates/delaunay_traits.hpp"
+#include "decision/delaunay_traits.hpp"
 
 #include <utility>
 #include <vector>
@@ -25,21 +25,21 @@ public:
     bool is_hidden(SiteId p, SiteId q) override { return parent_.is_hidden(g(p), g(q)); }
     bool crosses(SiteId p, SiteId q) override { return parent_.crosses(g(p), g(q)); }
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override { return parent_.side_of_bisector(g(i), g(j), g(k)); }
-    Sign vertex_conflict(SiteId i, SiteId j, SiteId q) override { return parent_.vertex_conflict(g(i), g(j), g(q)); }
-    Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) override {
-        return parent_.vertex_conflict(g(i), g(j), g(k), g(q));
+    Sign infinite_vertex_conflict(SiteId i, SiteId j, SiteId q) override { return parent_.infinite_vertex_conflict(g(i), g(j), g(q)); }
+    Sign incircle(SiteId i, SiteId j, SiteId k, SiteId q) override {
+        return parent_.incircle(g(i), g(j), g(k), g(q));
     }
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
-        return parent_.finite_edge_interior(g(p1), g(p2), g(p3), g(p4), g(q), b);
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
+        return parent_.finite_edge_interior_conflict(g(p1), g(p2), g(p3), g(p4), g(q), b);
     }
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override {
-        return parent_.finite_edge_interior(g(p1), g(p2), g(p3), g(q), b);
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override {
+        return parent_.finite_edge_interior_conflict(g(p1), g(p2), g(p3), g(q), b);
     }
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override {
-        return parent_.finite_edge_interior(g(p1), g(p2), g(q), b);
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId q, bool b) override {
+        return parent_.finite_edge_interior_conflict(g(p1), g(p2), g(q), b);
     }
-    bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
-        return parent_.infinite_edge_interior(g(p2), g(p3), g(p4), g(q), b);
+    bool infinite_edge_interior_conflict(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override {
+        return parent_.infinite_edge_interior_conflict(g(p2), g(p3), g(p4), g(q), b);
     }
     bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override {
         return parent_.is_degenerate_edge(g(p1), g(p2), g(p3), g(p4));

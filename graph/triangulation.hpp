@@ -15,7 +15,7 @@
 #pragma once
 
 #include "graph/triangulation_index.hpp"
-#include "predicates/site_id.hpp"
+#include "decision/site_id.hpp"
 
 #include <array>
 #include <cstddef>

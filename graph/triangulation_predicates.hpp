@@ -11,7 +11,7 @@
 #pragma once
 
 #include "graph/triangulation.hpp"
-#include "predicates/delaunay_traits.hpp"
+#include "decision/delaunay_traits.hpp"
 
 namespace ellvor {
 

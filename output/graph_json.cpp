@@ -30,15 +30,10 @@ VoronoiVertexValue voronoi_vertex_value(const std::vector<Ellipse>& sites, const
 nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds) {
     nlohmann::json s = {{"seconds", seconds}, {"inserted", graph.stats().inserted}};
     const TraitsStats& t = graph.predicate_stats();
-    const std::pair<const char*, const PredicateCount*> rows[] = {
-        {"is_hidden", &t.is_hidden},         {"side_of_bisector", &t.side_of_bisector},
-        {"vertex_conflict_3", &t.vertex_conflict3}, {"incircle", &t.vertex_conflict4},
-        {"finite_edge", &t.finite_edge},     {"infinite_edge", &t.infinite_edge},
-        {"degenerate_edge", &t.degenerate_edge}};
-    for (const auto& [name, count] : rows) {
-        nlohmann::json& row = s["predicates"][name];
-        row["calls"] = count->calls;
-        for (Stage stage : kStages) row[stage_name(stage)] = count->stages[stage];
+    for (const PredicateInfo& p : kPredicates) {
+        nlohmann::json& row = s["predicates"][p.name];
+        row["calls"] = t[p.predicate].calls;
+        for (Stage stage : kStages) row[stage_name(stage)] = t[p.predicate].stages[stage];
     }
     return s;
 }

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "predicates/external_bitangent.hpp"
-#include "predicates/staged_refinement.hpp"
+#include "decision/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 

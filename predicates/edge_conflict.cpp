@@ -1,7 +1,7 @@
 #include "predicates/edge_conflict.hpp"
 
 #include "predicates/bisector_order.hpp"
-#include "predicates/circle_predicates.hpp"
+#include "circles/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/support_function.hpp"
 #include "predicates/voronoi_circle_count.hpp"
@@ -182,7 +182,7 @@ Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e
     return decide(e1, e2, q, b, EdgeShape{}, options);
 }
 
-Decision<bool> voronoi_edge_is_degenerate(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+Decision<bool> is_degenerate_edge(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
                                           const RefinementOptions& options) {
     Decision<bool> provenance = Decision<bool>::decided(false, Stage::filter);
     EdgeGeometry geometry(e1, e2, options, provenance);

@@ -18,8 +18,8 @@
 // is b.
 #pragma once
 
-#include "predicates/stage.hpp"
-#include "predicates/staged_refinement.hpp"
+#include "decision/stage.hpp"
+#include "decision/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
 
 namespace ellvor {
@@ -41,7 +41,7 @@ Decision<bool> finite_edge_interior_conflict(const Ellipse& e1, const Ellipse& e
 // Deletion flips such edges first. Equality is proven exactly (the closed
 // form for circles, voronoi_vertex_equality.hpp otherwise); undecided only
 // with options.exact_stage = false.
-Decision<bool> voronoi_edge_is_degenerate(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
+Decision<bool> is_degenerate_edge(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& e4,
                                           const RefinementOptions& options = {});
 
 // kappa4 for the Voronoi edge dual to the Delaunay edge (infinity, E2), whose

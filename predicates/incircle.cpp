@@ -1,7 +1,7 @@
 #include "predicates/incircle.hpp"
 
-#include "predicates/circle_incircle_filter.hpp"
-#include "predicates/circle_predicates.hpp"
+#include "circles/circle_incircle_filter.hpp"
+#include "circles/circle_predicates.hpp"
 #include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
 #include "subdivision/boundary_chart.hpp"
@@ -20,26 +20,6 @@
 #include <vector>
 
 namespace ellvor {
-
-const char* incircle_name(InCircle r) {
-    switch (r) {
-        case InCircle::conflict: return "conflict";
-        case InCircle::no_conflict: return "no-conflict";
-        case InCircle::tangent: return "tangent";
-        case InCircle::no_circle: return "no-circle";
-    }
-    return "?";
-}
-
-Sign incircle_sign(InCircle r) {
-    switch (r) {
-        case InCircle::conflict:
-        case InCircle::no_circle: return Sign::negative;
-        case InCircle::no_conflict: return Sign::positive;
-        case InCircle::tangent: break;
-    }
-    return Sign::zero;
-}
 
 namespace {
 

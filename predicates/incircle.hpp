@@ -4,23 +4,13 @@
 // counter-clockwise E1 -> E2 -> E3.
 #pragma once
 
-#include "predicates/stage.hpp"
-#include "predicates/staged_refinement.hpp"
+#include "decision/stage.hpp"
+#include "decision/predicate_answers.hpp"
+#include "decision/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle.hpp"
 
 namespace ellvor {
-
-enum class InCircle {
-    conflict,     // NEGATIVE: Q meets the open Voronoi disk
-    no_conflict,  // POSITIVE
-    tangent,      // ZERO: Q externally tangent to the circle (proven by the exact stage)
-    no_circle,    // NEGATIVE by CGAL's rule: the triple has no counter-clockwise Voronoi circle
-};
-
-const char* incircle_name(InCircle r);
-// CGAL's sign: NEGATIVE for conflict and no_circle, POSITIVE no_conflict, ZERO tangent.
-Sign incircle_sign(InCircle r);
 
 struct InCircleOptions {
     RefinementOptions refinement;  // the subdivision stage's cap; exact_stage = false stops there undecided

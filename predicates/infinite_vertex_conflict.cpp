@@ -1,7 +1,7 @@
 #include "predicates/infinite_vertex_conflict.hpp"
 
-#include "predicates/circle_predicates.hpp"
-#include "predicates/circle_semi_static.hpp"
+#include "circles/circle_predicates.hpp"
+#include "circles/circle_semi_static.hpp"
 #include "predicates/external_bitangent.hpp"
 #include "predicates/support_function.hpp"
 #include "sites/ellipse_polynomials.hpp"

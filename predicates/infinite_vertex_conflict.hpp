@@ -5,7 +5,7 @@
 // right of L directed from E1's to E2's tangency point).
 #pragma once
 
-#include "predicates/stage.hpp"
+#include "decision/stage.hpp"
 #include "sites/ellipse.hpp"
 
 namespace ellvor {

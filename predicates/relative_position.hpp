@@ -4,7 +4,7 @@
 // the line of the centers, apart.
 #pragma once
 
-#include "predicates/stage.hpp"
+#include "decision/stage.hpp"
 #include "sites/ellipse.hpp"
 
 #include <string>

@@ -3,7 +3,7 @@
 // (positive outside, negative inside, zero on the boundary).
 #pragma once
 
-#include "predicates/stage.hpp"
+#include "decision/stage.hpp"
 #include "sites/ellipse.hpp"
 #include "util/precision.hpp"
 

@@ -1,7 +1,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 
-#include "predicates/circle_predicates.hpp"
-#include "predicates/circle_semi_static.hpp"
+#include "circles/circle_predicates.hpp"
+#include "circles/circle_semi_static.hpp"
 #include "predicates/distance_filter.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
@@ -10,16 +10,6 @@
 #include <tuple>
 
 namespace ellvor {
-
-const char* voronoi_circles_name(VoronoiCircles v) {
-    switch (v) {
-        case VoronoiCircles::none: return "none";
-        case VoronoiCircles::ccw_only: return "ccw";
-        case VoronoiCircles::cw_only: return "cw";
-        case VoronoiCircles::both: return "both";
-    }
-    return "?";
-}
 
 Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     Decision<bool> separated = Decision<bool>::decided(true, Stage::filter);

@@ -5,19 +5,11 @@
 // the complete solver when a site may be covered by the other two.
 #pragma once
 
-#include "predicates/stage.hpp"
+#include "decision/stage.hpp"
+#include "decision/predicate_answers.hpp"
 #include "sites/ellipse.hpp"
 
 namespace ellvor {
-
-enum class VoronoiCircles {
-    none,      // neither orientation
-    ccw_only,  // only the circle of (E1, E2, E3)
-    cw_only,   // only the circle of (E1, E3, E2)
-    both,
-};
-
-const char* voronoi_circles_name(VoronoiCircles v);
 
 // A nested pair gives none. Always decided: for three circles in doubles
 // with a static error bound (circle_semi_static.hpp), else by the exact

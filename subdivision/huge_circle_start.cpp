@@ -1,4 +1,5 @@
 #include "subdivision/huge_circle_start.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,11 +10,9 @@ namespace ellvor {
 
 namespace {
 
-// Precision of the first pass, and the largest one tried: a gap g that no
-// 4096-bit pass separates from 0 belongs to a circle beyond 2^1300 sizes, or
-// to an exactly tangent line (no circle: the search proves that).
-constexpr long kFirstPrecision = 128;
-constexpr long kLastPrecision = 4096;
+// Precision of the first pass, and the largest one tried (util/precision.hpp).
+constexpr long kFirstPrecision = precision::kHugeCircleFirst;
+constexpr long kLastPrecision = precision::kHugeCircleLast;
 // Bits of g needed before the first-order circle is trusted, and the
 // precision a start needs per bit of R / size (the tritangent system's
 // condition grows like (R / size)^2) plus a margin.

@@ -3,7 +3,7 @@
 // (voronoi_circle_in_doubles.hpp), tried once and kept (a few doubles); the
 // Arb solver (voronoi_circle_enclosure.hpp) is made only when a question
 // needs more than doubles, and its charts can be freed between questions. A
-// cache of one per face (predicates/voronoi_circle_cache.hpp) stays small.
+// cache of one per face (traits/voronoi_circle_cache.hpp) stays small.
 #pragma once
 
 #include "sites/ellipse.hpp"

@@ -4,6 +4,7 @@
 #include "subdivision/inscribed_disk.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/error.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -14,8 +15,8 @@ namespace ellvor {
 namespace {
 
 constexpr int kUnknowns = 6;  // t1, t2, t3, rho, x, y
-constexpr long kStartPrecision = 64;
-constexpr long kGuardBits = 32;
+constexpr long kStartPrecision = precision::kStart;
+constexpr long kGuardBits = precision::kSolverGuardBits;
 // Guesses are tried at 5 precisions (64 .. 1024 bits for sites of moderate
 // magnitude), 4 Newton steps each.
 constexpr int kGuessLevels = 5;
@@ -25,9 +26,6 @@ constexpr int kGuessSteps = 4;
 constexpr int kSearchLevels = 3;
 constexpr int kSearchSteps = 6;
 constexpr long kStalledNewtonBits = 16;
-// Circles beyond 2^10 times the sites' size get starts from the tangent
-// line (huge_circle_start.hpp) when no double-precision guess certifies.
-constexpr long kHugeCircleBits = 10;
 // Refinement of a certified circle: precision doublings before giving up.
 constexpr int kRefineLevels = 4;
 
@@ -325,7 +323,7 @@ bool VoronoiCircleSolver::certify() {
         return certified_ = certify_from(guess);
     });
     if (certified_) return true;
-    for_each_huge_circle_start(*work_sites_[0], *work_sites_[1], *work_sites_[2], kHugeCircleBits,
+    for_each_huge_circle_start(*work_sites_[0], *work_sites_[1], *work_sites_[2], precision::kHugeCircleBits,
                                [&](const VoronoiCircleStart& start) { return certified_ = certify_from(start); });
     if (certified_) {
         enclosure_.found_by = CircleStart::tangent_line;

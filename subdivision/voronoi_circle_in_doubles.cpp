@@ -2,6 +2,7 @@
 
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
+#include "util/precision.hpp"
 
 #include <Eigen/Core>
 
@@ -10,10 +11,6 @@
 
 namespace ellvor {
 namespace {
-
-// Circles beyond 2^10 times the sites' size get tangent-line starts (as in
-// voronoi_circle_enclosure.cpp).
-constexpr long kHugeCircleBits = 10;
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -346,7 +343,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
     // models' circles may lead Newton to the clockwise one; the tangent-line
     // starts of huge_circle_start.hpp lead to the right one.
     std::optional<DoubleVoronoiCircle> certified;
-    for_each_huge_circle_start(e1, e2, e3, kHugeCircleBits, [&](const VoronoiCircleStart& start) {
+    for_each_huge_circle_start(e1, e2, e3, precision::kHugeCircleBits, [&](const VoronoiCircleStart& start) {
         std::array<double, 6> x;
         for (int i = 0; i < 3; ++i) x[i] = arf_get_d(arb_midref(start.parameter[i].get()), ARF_RND_NEAR);
         x[3] = arf_get_d(arb_midref(start.radius.get()), ARF_RND_NEAR);

@@ -2,6 +2,7 @@
 
 #include "subdivision/boundary_chart.hpp"
 #include "util/error.hpp"
+#include "util/precision.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -15,15 +16,12 @@ namespace ellvor {
 
 namespace {
 
-// Precision rule. Rounding errors are about 2^-prec times the sites'
-// magnitude; the variation a box of resolution r (widest half-width 2^-r)
-// produces is about 2^-r times the sites' size. Keeping rounding kGuardBits
-// below that variation -- prec = kGuardBits + magnitude bits + r -- keeps
-// every split meaningful (interval widths come from the box, not from
-// rounding), so the precision grows with the data and with the depth and no
-// box is ever too small for its arithmetic. kMinimumPrecision is one limb.
-constexpr long kMinimumPrecision = 64;
-constexpr long kGuardBits = 24;
+// Precision rule (util/precision.hpp): prec = kGuardBits + magnitude bits + r
+// for a box of resolution r (widest half-width 2^-r), at least one limb, so
+// the precision grows with the data and with the depth and no box is ever too
+// small for its arithmetic.
+constexpr long kMinimumPrecision = precision::kStart;
+constexpr long kGuardBits = precision::kSearchGuardBits;
 
 constexpr int kCoordinates = 4;  // t1, t2, t3 (chart parameters) and s (radius)
 

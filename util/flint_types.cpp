@@ -30,7 +30,7 @@ long Rational::bits() const {
 double Rational::to_double() const {
     // One correctly rounded division to 53 bits (no double rounding): the
     // nearest double, which the semi-static filters rely on
-    // (predicates/semi_static.hpp, rounded_input). Exact in the normal range.
+    // (circles/semi_static.hpp, rounded_input). Exact in the normal range.
     Arf x;
     arf_set_fmpz(x.get(), fmpq_numref(v_));
     arf_div_fmpz(x.get(), x.get(), fmpq_denref(v_), 53, ARF_RND_NEAR);

@@ -85,7 +85,7 @@ inline Interval enclose(const Ball& b) {
 }
 
 // An enclosure of a rational: [down(x^), up(x^)] around its nearest double x^
-// (Rational::to_double), so x^ = up(lo) (predicates/semi_static.hpp reads it so).
+// (Rational::to_double), so x^ = up(lo) (circles/semi_static.hpp reads it so).
 inline Interval enclose(const Rational& q) { return Interval::around(q.to_double()); }
 
 }  // namespace ellvor

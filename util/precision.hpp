@@ -43,4 +43,31 @@ constexpr long kSideOfBisectorCap = 512;
 // follows (a distance, an angle) must not eat into what the comparison needs.
 constexpr long kEnclosureGuard = 16;
 
+// The Voronoi circle solver (subdivision/voronoi_circle_enclosure.cpp) keeps
+// this many bits between its working precision and what it trusts: Y and the
+// J(X) term of the Krawczyk operator are computed at half the precision plus
+// these bits, Newton counts as stalled this far below the precision, and a
+// refinement aims this far (twice) above the bits asked for. Rounding in the
+// 6 x 6 system costs a few bits per operation chain; 32 leaves room for them.
+constexpr long kSolverGuardBits = 32;
+
+// The exhaustive search (subdivision/voronoi_circle_search.cpp) evaluates a
+// box at kSearchGuardBits + magnitude bits + the box's resolution: rounding
+// stays this far below the variation the box itself produces, so interval
+// widths come from the box, not from rounding, and every split is meaningful.
+constexpr long kSearchGuardBits = 24;
+
+// Circles beyond 2^kHugeCircleBits times their sites' size get starts from a
+// tangent line (subdivision/huge_circle_start.hpp) when the model circles'
+// starts do not certify: below it, double guesses converge (a circle 2^10
+// sizes away is conditioned like 2^20, well within doubles).
+constexpr long kHugeCircleBits = 10;
+
+// The tangent-line starts of huge circles separate the gap g of the third site
+// from 0 at doubling precisions from kHugeCircleFirst to kHugeCircleLast: a g
+// that no 4096-bit pass separates belongs to a circle beyond 2^1300 sizes, or
+// to an exactly tangent line (no circle: the search proves that).
+constexpr long kHugeCircleFirst = 128;
+constexpr long kHugeCircleLast = 4096;
+
 }  // namespace ellvor::precision

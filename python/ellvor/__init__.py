@@ -15,12 +15,13 @@ in the .ell grammar ("0.1" is exactly 1/10) or a float, taken exactly
 """
 
 from ._errors import Error, InputError
-from ._ellvor import Ellipse, Sites, read_sites, generate
+from ._ellvor import PREDICATES, STAGES, Ellipse, Sites, read_sites, generate
 from ._diagram import Ball, Diagram, Trace, VoronoiCircle, build
 from ._predicates import Answer, incircle, side_of_bisector, voronoi_circle
 from ._plot import plot
 
 __all__ = [
-    "Answer", "Ball", "Diagram", "Ellipse", "Error", "InputError", "Sites", "Trace", "VoronoiCircle",
+    "PREDICATES", "STAGES", "Answer", "Ball", "Diagram", "Ellipse", "Error", "InputError", "Sites", "Trace",
+    "VoronoiCircle",
     "build", "generate", "incircle", "plot", "read_sites", "side_of_bisector", "voronoi_circle",
 ]

@@ -5,7 +5,7 @@
 #include "output/bisector_trace.hpp"
 #include "output/graph_json.hpp"
 #include "output/voronoi_ridges.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "util/error.hpp"
 

@@ -3,6 +3,7 @@
 // pair as attributes, every other C++ exception ellvor.Error (a
 // RuntimeError); Python's own exceptions (KeyboardInterrupt, an exception of
 // a progress callback, TypeError, MemoryError) pass through unchanged.
+#include "decision/predicate_registry.hpp"
 #include "python/src/bindings.hpp"
 
 #include "util/error.hpp"
@@ -57,4 +58,10 @@ PYBIND11_MODULE(_ellvor, m) {
     ellvor::python::bind_sites(m);
     ellvor::python::bind_diagram(m);
     ellvor::python::bind_predicates(m);
+    // The registries of decision/: the names of --stats, the JSON and Diagram.stats.
+    pybind11::list predicates, stages;
+    for (const ellvor::PredicateInfo& p : ellvor::kPredicates) predicates.append(p.name);
+    for (ellvor::Stage s : ellvor::kStages) stages.append(ellvor::stage_name(s));
+    m.attr("PREDICATES") = pybind11::tuple(predicates);
+    m.attr("STAGES") = pybind11::tuple(stages);
 }

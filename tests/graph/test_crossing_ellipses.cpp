@@ -251,7 +251,7 @@ TEST_CASE("four crossing ellipses through one point: a Voronoi vertex of degree 
     CHECK(g.validate() == "");
     CHECK(check_diagram(sites, g) == "");
     CHECK(g.faces().size() == 2);  // the degree-4 vertex split by one diagonal
-    CHECK(g.predicate_stats().vertex_conflict4.stages[Stage::exact] >= 1);  // the fourth site tangent to a face
+    CHECK(g.predicate_stats()[Predicate::incircle].stages[Stage::exact] >= 1);  // the fourth site tangent to a face
 }
 
 TEST_CASE("generated sets of 200 ellipses, 30% crossing another: valid, brute force and oracle agree",

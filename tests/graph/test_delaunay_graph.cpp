@@ -311,10 +311,10 @@ TEST_CASE("graph: the traits keep the Voronoi circles of live faces only", "[gra
         DelaunayGraph g(std::move(traits));
         g.insert_all();
         INFO("nested " << nested << "%, faces " << g.faces().size() << ", cached " << t->cached_circles()
-                       << ", kappa3 calls " << g.predicate_stats().vertex_conflict4.calls);
+                       << ", kappa3 calls " << g.predicate_stats()[Predicate::incircle].calls);
         CHECK(t->cached_circles() > 0);
         CHECK(t->cached_circles() <= g.faces().size());
-        CHECK(g.predicate_stats().vertex_conflict4.calls > 2 * g.faces().size());
+        CHECK(g.predicate_stats()[Predicate::incircle].calls > 2 * g.faces().size());
         if (nested) CHECK(!g.hidden().empty());
         CHECK(g.validate().empty());
         CHECK(g.brute_force_check().empty());

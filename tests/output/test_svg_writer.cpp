@@ -10,7 +10,7 @@
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/svg_writer.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "sites/site_generators.hpp"
 #include "sites/site_io.hpp"
 #include "tests/support/command_runner.hpp"

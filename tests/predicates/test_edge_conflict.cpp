@@ -12,11 +12,12 @@
 // only about edges whose ends agree). CGAL's infinite-edge function does
 // not depend on the ends' status in that way, so both values of b are tried.
 #include "predicates/edge_conflict.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <CGAL/Apollonius_graph_filtered_traits_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -33,6 +34,8 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
@@ -42,7 +45,6 @@ using Traits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
 using CSite = Traits::Site_2;
 using CPoint = Traits::Point_2;
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 // A circle whose center and radius are dyadic with at most 10 fractional
 // bits (exact in doubles and in CGAL).
@@ -96,13 +98,6 @@ std::string replay(std::initializer_list<const Ellipse*> sites, bool b) {
     s << "\n# .ell (argument order)\n";
     for (const Ellipse* e : sites) s << e->str() << "\n";
     s << "# b = " << (b ? "true" : "false") << "\n";
-    return s.str();
-}
-
-std::string show(const Decision<bool>& d) {
-    std::ostringstream s;
-    s << "conflict " << (d.is_decided() ? (*d ? "true" : "false") : "undecided") << " stage "
-      << stage_name(d.stage) << " precision " << d.precision;
     return s.str();
 }
 
@@ -698,20 +693,20 @@ TEST_CASE("degenerate edge: the two Voronoi vertices of an edge are one circle",
     const Ellipse c3 = Ellipse::circle(Rational(0), Rational(10), Rational(1));
     const Ellipse c3_out = Ellipse::circle(Rational(-1, 1000), Rational(10), Rational(1));
     // Edge (c0, c2): faces (c0, c2, c3) and (c0, c1, c2).
-    Decision<bool> d = voronoi_edge_is_degenerate(c0, c2, c3, c1);
+    Decision<bool> d = is_degenerate_edge(c0, c2, c3, c1);
     CHECK(*d);
     CHECK(d.stage == Stage::exact);
-    d = voronoi_edge_is_degenerate(c0, c2, c3_out, c1);
+    d = is_degenerate_edge(c0, c2, c3_out, c1);
     CHECK_FALSE(*d);
     // The same square of identical ellipses (axis-aligned, so the reflections
     // of the square map each onto the others): equal only by the exact stage.
     auto e = [](long x, long y) { return Ellipse(Rational(3), Rational(2), Rational(0), Rational(x), Rational(y)); };
-    d = voronoi_edge_is_degenerate(e(0, 0), e(20, 20), e(0, 20), e(20, 0));
+    d = is_degenerate_edge(e(0, 0), e(20, 20), e(0, 20), e(20, 0));
     CHECK(*d);
     CHECK(d.stage == Stage::exact);
     // Rotated by 1/7 (w): no symmetry left, the enclosures separate.
     const Ellipse tilted(Rational(3), Rational(2), Rational(1, 7), Rational(0), Rational(20));
-    d = voronoi_edge_is_degenerate(e(0, 0), e(20, 20), tilted, e(20, 0));
+    d = is_degenerate_edge(e(0, 0), e(20, 20), tilted, e(20, 0));
     CHECK_FALSE(*d);
     CHECK(d.stage == Stage::subdivision);
 }
@@ -721,8 +716,8 @@ TEST_CASE("degenerate edge in the traits: apart in doubles is the filter's no", 
     // 0..3: the symmetric square (one circle); 4: site 3 tilted.
     EllipseDelaunayTraits traits({e(0, 0, 0), e(20, 0, 0), e(20, 20, 0), e(0, 20, 0), e(0, 20, 1)});
     CHECK_FALSE(traits.is_degenerate_edge(0, 2, 4, 1));
-    CHECK(traits.stats().degenerate_edge.stages[Stage::filter] == 1);
+    CHECK(traits.stats()[Predicate::is_degenerate_edge].stages[Stage::filter] == 1);
     CHECK(traits.is_degenerate_edge(0, 2, 3, 1));
-    CHECK(traits.stats().degenerate_edge.stages[Stage::exact] == 1);
-    CHECK(traits.stats().degenerate_edge.calls == 2);
+    CHECK(traits.stats()[Predicate::is_degenerate_edge].stages[Stage::exact] == 1);
+    CHECK(traits.stats()[Predicate::is_degenerate_edge].calls == 2);
 }

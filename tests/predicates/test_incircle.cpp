@@ -14,6 +14,7 @@
 #include <CGAL/Apollonius_graph_filtered_traits_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include "tests/support/random_sites.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -24,6 +25,8 @@
 #include <tuple>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
@@ -33,7 +36,6 @@ using Traits = CGAL::Apollonius_graph_filtered_traits_2<Kernel>;
 using CSite = Traits::Site_2;
 using CPoint = Traits::Point_2;
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 bool apart(const apollonius::Circle& a, const apollonius::Circle& b) {
     const Rational dx = a.x - b.x, dy = a.y - b.y, r = a.r + b.r;
@@ -44,11 +46,6 @@ CSite cgal_site(long x, long y, long r) { return CSite(CPoint(double(x), double(
 
 int cgal_sign(CGAL::Sign s) { return s == CGAL::NEGATIVE ? -1 : (s == CGAL::POSITIVE ? 1 : 0); }
 
-
-std::string show(const Decision<InCircle>& d) {
-    return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
-           stage_name(d.stage) + " precision " + std::to_string(d.precision);
-}
 
 bool has_ccw(VoronoiCircles v) { return v == VoronoiCircles::ccw_only || v == VoronoiCircles::both; }
 

@@ -19,6 +19,7 @@
 //      circle, at the same parameter t0.
 #include "predicates/incircle.hpp"
 #include "sites/site_generators.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -29,16 +30,12 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
-
-std::string show(const Decision<InCircle>& d) {
-    return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
-           stage_name(d.stage) + " precision " + std::to_string(d.precision);
-}
 
 std::string ell(const std::vector<const Ellipse*>& sites) {
     std::string s;

@@ -3,7 +3,7 @@
 // right of L directed from T1 to T2); ties (Q touching L from the sites' side)
 // broken as in CGAL. Oracles: CGAL's test vectors, the closed form for circles
 // at 256 bits, constructed tangencies, support-function numerics for ellipses.
-#include "predicates/circle_predicates.hpp"
+#include "circles/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "tests/predicates/circle_oracles.hpp"

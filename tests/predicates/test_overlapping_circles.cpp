@@ -6,9 +6,9 @@
 // with signed radii. Each stage is reached and checked: the semi-static and
 // interval filters, the exact closed form, and the certified Voronoi circle
 // in doubles and in Arb balls (the signed-distance certificate, §4.1).
-#include "predicates/circle_incircle_filter.hpp"
-#include "predicates/circle_predicates.hpp"
-#include "predicates/circle_semi_static.hpp"
+#include "circles/circle_incircle_filter.hpp"
+#include "circles/circle_predicates.hpp"
+#include "circles/circle_semi_static.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"

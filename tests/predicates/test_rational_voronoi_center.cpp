@@ -221,5 +221,5 @@ TEST_CASE("graph: the 8 x 8 grid of equal ellipses is valid, its cells decided e
     CHECK(g.validate().empty());
     CHECK(g.brute_force_check().empty());
     // One tangent InCircle per cell (7 x 7), each proven exactly.
-    CHECK(g.predicate_stats().vertex_conflict4.stages[Stage::exact] >= 49);
+    CHECK(g.predicate_stats()[Predicate::incircle].stages[Stage::exact] >= 49);
 }

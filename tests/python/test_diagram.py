@@ -41,8 +41,14 @@ def test_arrays_match_the_json(d300):
     assert d300.vertex_radii.tolist() == [v["radius"] for v in j["voronoi_vertices"]]
     assert d300.vertex_errors.tolist() == [v["error"] for v in j["voronoi_vertices"]]
     assert d300.stats == {**j["stats"], "seconds": d300.stats["seconds"]}
-    assert set(d300.stats["predicates"]) == {"is_hidden", "side_of_bisector", "vertex_conflict_3", "incircle",
-                                             "finite_edge", "infinite_edge", "degenerate_edge"}
+    # The rows come from the registry (decision/predicate_registry.hpp), the same as the CLI's.
+    assert ellvor.PREDICATES == ("is_hidden", "side_of_bisector", "infinite_vertex_conflict", "incircle",
+                                 "finite_edge_interior_conflict", "infinite_edge_interior_conflict",
+                                 "is_degenerate_edge")
+    assert list(d300.stats["predicates"]) == sorted(ellvor.PREDICATES)
+    for row in d300.stats["predicates"].values():
+        assert list(row) == sorted(("calls",) + ellvor.STAGES)
+        assert row["calls"] == sum(row[s] for s in ellvor.STAGES)
 
 
 def test_hidden_and_faces_conventions(d300):

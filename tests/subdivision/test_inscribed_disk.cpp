@@ -7,6 +7,7 @@
 #include "subdivision/inscribed_disk.hpp"
 #include "tests/support/random_sites.hpp"
 #include "tests/support/signed_distance_oracle.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -19,12 +20,13 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
 using Rng = std::mt19937_64;
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 // A center at depth -rho on the inward normal at chart parameter t, as the
 // solver's Krawczyk box would give it: t and rho exact (or widened by

@@ -11,6 +11,7 @@
 #include "tests/predicates/apollonius_oracle.hpp"
 
 #include "tests/support/random_sites.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -22,6 +23,8 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
@@ -37,7 +40,6 @@ Rational rnd_pos(Rng& rng, long lo_num, long hi_num, long den) {
     return Rational(n(rng), static_cast<unsigned long>(den));
 }
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 using ellvor::test::bounding_circles_apart;
 
@@ -51,11 +53,6 @@ bool random_separated_triple(Rng& rng, std::vector<Ellipse>& e) {
         e.push_back(Ellipse(rnd_pos(rng, 2, 40, 10), rnd_pos(rng, 2, 40, 10), rnd(rng, -3, 3, 13), rnd(rng, -12, 12, 11),
                             rnd(rng, -12, 12, 7)));
     return bounding_circles_apart(e[0], e[1]) && bounding_circles_apart(e[0], e[2]) && bounding_circles_apart(e[1], e[2]);
-}
-
-std::string show(const VoronoiCircleEnclosure& e) {
-    return "center_x " + e.center_x.str(25) + "\ncenter_y " + e.center_y.str(25) + "\nradius " + e.radius.str(25) +
-           "\nprecision " + std::to_string(e.precision) + " correct_bits " + std::to_string(e.correct_bits()) + "\n";
 }
 
 // The oracle circle lies in the enclosure (both components and the radius).

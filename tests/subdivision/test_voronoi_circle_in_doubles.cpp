@@ -9,6 +9,7 @@
 #include "subdivision/voronoi_circle_in_doubles.hpp"
 #include "tests/predicates/apollonius_oracle.hpp"
 #include "tests/support/random_sites.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -20,6 +21,8 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
@@ -27,7 +30,6 @@ using Rng = std::mt19937_64;
 using ellvor::test::bounding_circles_apart;
 using ellvor::test::random_fraction;
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 bool meets(const Interval& a, const Interval& b) { return !(a.hi < b.lo || b.hi < a.lo); }
 

@@ -6,13 +6,14 @@
 // kappa2-based count for triples without a counter-clockwise circle, and
 // translation invariance for triples far from the origin; for crossing
 // circles (internal circles, branch (C)) the closed form CircleVoronoiVertex.
-#include "predicates/circle_predicates.hpp"
+#include "circles/circle_predicates.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/rational_parse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/predicates/apollonius_oracle.hpp"
 #include "tests/support/random_sites.hpp"
 #include "util/error.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -26,6 +27,8 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
@@ -33,7 +36,6 @@ using Rng = std::mt19937_64;
 using ellvor::test::bounding_circles_apart;
 using ellvor::test::random_fraction;
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 bool overlaps(const Ball& a, const Ball& b) { return arb_overlaps(a.get(), b.get()) != 0; }
 
@@ -62,11 +64,6 @@ std::array<Ellipse, 3> random_ellipse_triple(Rng& rng) {
             bounding_circles_apart(e[1], e[2]))
             return e;
     }
-}
-
-std::string show(const VoronoiCircleEnclosure& e) {
-    return "center (" + e.center_x.str(20) + ", " + e.center_y.str(20) + ") radius " + e.radius.str(20) +
-           " search boxes " + std::to_string(e.search_boxes) + "\n";
 }
 
 // b is a's circle translated by (dx, dy): every component overlaps.

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "sites/ellipse.hpp"
 
 #include <memory>

@@ -12,33 +12,18 @@
 // every call.
 //
 // Nothing here knows what a site is (this header includes nothing from sites/
-// or subdivision/); predicates/ellipse_delaunay_traits.hpp is the model for
+// or subdivision/); traits/ellipse_delaunay_traits.hpp is the model for
 // ellipses.
 #pragma once
 
-#include "predicates/site_id.hpp"
-#include "predicates/stage.hpp"
+#include "decision/predicate_registry.hpp"
+#include "decision/site_id.hpp"
+#include "decision/stage.hpp"
 
 #include <cstddef>
 #include <cstdint>
 
 namespace ellvor {
-
-// Calls of one predicate and which stage decided them.
-struct PredicateCount {
-    std::uint64_t calls = 0;  // calls that reached the predicate (memoized answers excluded)
-    StageCounters stages;
-};
-
-struct TraitsStats {
-    PredicateCount is_hidden;          // relative position of two sites
-    PredicateCount side_of_bisector;   // kappa1
-    PredicateCount vertex_conflict3;   // kappa2
-    PredicateCount vertex_conflict4;   // kappa3
-    PredicateCount finite_edge;        // kappa4, 6/5/4 sites
-    PredicateCount infinite_edge;      // kappa4, infinite edge
-    PredicateCount degenerate_edge;    // a Voronoi edge of length 0 (deletion)
-};
 
 // A point in doubles near a site (its center). Only the length of the
 // nearest-neighbour walk depends on it, never where the walk ends, so rounding
@@ -72,20 +57,20 @@ public:
     virtual Sign side_of_bisector(SiteId i, SiteId j, SiteId k) = 0;
     // kappa2: the infinite Voronoi vertex of (i, j) -- the half-plane beyond
     // the external bitangent -- against q: NEGATIVE conflict, POSITIVE not; never ZERO.
-    virtual Sign vertex_conflict(SiteId i, SiteId j, SiteId q) = 0;
+    virtual Sign infinite_vertex_conflict(SiteId i, SiteId j, SiteId q) = 0;
     // kappa3: the Voronoi circle of the counter-clockwise triple (i, j, k)
     // against q: NEGATIVE conflict (or no such circle), ZERO tangent, POSITIVE no conflict.
-    virtual Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) = 0;
+    virtual Sign incircle(SiteId i, SiteId j, SiteId k, SiteId q) = 0;
     // kappa4: does q conflict with the interior of the Voronoi edge of (p1, p2)
     // -- with b, the whole edge -- between the Voronoi vertices of (p1, p2, p3)
     // and (p1, p4, p2); without p4 the edge is a ray, without p3 too the whole
     // bisector. Raw: without CGAL's "q hides an endpoint" shortcut, which the
     // graph applies.
-    virtual bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) = 0;
-    virtual bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) = 0;
-    virtual bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) = 0;
+    virtual bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) = 0;
+    virtual bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) = 0;
+    virtual bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId q, bool b) = 0;
     // kappa4 on the Voronoi edge of (infinity, p2), between the hull neighbours p3 and p4.
-    virtual bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) = 0;
+    virtual bool infinite_edge_interior_conflict(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) = 0;
 
     // CGAL's Is_degenerate_edge_2: the faces (p1, p2, p3) and (p1, p4, p2)
     // beside the Delaunay edge (p1, p2) have one Voronoi circle (the Voronoi

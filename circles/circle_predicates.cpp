@@ -1,4 +1,4 @@
-#include "predicates/circle_predicates.hpp"
+#include "circles/circle_predicates.hpp"
 
 #include "util/error.hpp"
 

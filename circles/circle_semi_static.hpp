@@ -10,8 +10,7 @@
 // next stage. None answers tangent or zero.
 #pragma once
 
-#include "predicates/incircle.hpp"
-#include "predicates/voronoi_circle_count.hpp"
+#include "decision/predicate_answers.hpp"
 #include "sites/ellipse.hpp"
 
 namespace ellvor {

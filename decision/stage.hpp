@@ -10,6 +10,7 @@
 #include "util/error.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -20,18 +21,25 @@ enum class Stage : int {
     filter = 0,       // double interval arithmetic with outward rounding, or a closed form
     subdivision = 1,  // Arb balls at adaptive precision
     exact = 2,        // FLINT: exact rationals, resultants, real algebraic numbers
+    end_,             // not a stage: marks the end, so that the tables below are checked complete
 };
 
+// The stages in order of increasing cost, and their names as --stats, the JSON
+// and the Python module print them.
 constexpr std::array<Stage, 3> kStages = {Stage::filter, Stage::subdivision, Stage::exact};
+constexpr std::array<const char*, kStages.size()> kStageNames = {"filter", "subdivision", "exact"};
 
-inline const char* stage_name(Stage s) {
-    switch (s) {
-        case Stage::filter: return "filter";
-        case Stage::subdivision: return "subdivision";
-        case Stage::exact: return "exact";
-    }
-    return "?";
+namespace detail {
+constexpr bool stage_table_is_indexed_by_enum() {
+    for (std::size_t i = 0; i < kStages.size(); ++i)
+        if (static_cast<std::size_t>(kStages[i]) != i) return false;
+    return true;
 }
+}  // namespace detail
+static_assert(kStages.size() == static_cast<std::size_t>(Stage::end_), "every Stage needs its place in kStages");
+static_assert(detail::stage_table_is_indexed_by_enum(), "kStages must follow the enum's order");
+
+inline const char* stage_name(Stage s) { return kStageNames.at(static_cast<std::size_t>(s)); }
 
 // CGAL's Sign.
 enum class Sign : int { negative = -1, zero = 0, positive = 1 };

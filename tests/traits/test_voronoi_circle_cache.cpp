@@ -2,10 +2,11 @@
 // ids up to cyclic rotation, its solver refined in place by incircle and
 // reused by later queries.
 #include "predicates/incircle.hpp"
-#include "predicates/voronoi_circle_cache.hpp"
+#include "traits/voronoi_circle_cache.hpp"
 #include "util/error.hpp"
 
 #include "tests/support/random_sites.hpp"
+#include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -18,21 +19,17 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::show;
+using ellvor::test::verbose;
 
 namespace {
 
-bool verbose() { return std::getenv("ELLVOR_TEST_VERBOSE") != nullptr; }
 
 std::string ell(std::initializer_list<const Ellipse*> sites) {
     std::ostringstream s;
     s << "\n# .ell\n";
     for (const Ellipse* e : sites) s << e->str() << "\n";
     return s.str();
-}
-
-std::string show(const Decision<InCircle>& d) {
-    return std::string("result ") + (d.is_decided() ? incircle_name(*d) : "undecided") + " stage " +
-           stage_name(d.stage) + " precision " + std::to_string(d.precision);
 }
 
 bool overlaps(const Ball& a, const Ball& b) { return arb_overlaps(a.get(), b.get()) != 0; }

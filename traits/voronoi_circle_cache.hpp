@@ -5,7 +5,7 @@
 // to sites that must outlive it; sites are never mutated.
 #pragma once
 
-#include "predicates/triple_key.hpp"
+#include "traits/triple_key.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle.hpp"
 

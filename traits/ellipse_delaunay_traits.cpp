@@ -1,4 +1,4 @@
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 
 #include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
@@ -21,14 +21,16 @@ std::string ids(std::initializer_list<SiteId> list) {
     return s;
 }
 
-// Records the stage that decided and returns the answer (every predicate
-// decides under the default options; an undecided one is an internal error
-// that value() reports, naming the sites here).
+// Counts the call, records the stage that decided and returns the answer
+// (every predicate decides under the default options; an undecided one is an
+// internal error that value() reports, naming the sites here).
 template <class T>
-T counted(PredicateCount& count, const Decision<T>& d, const char* what, std::initializer_list<SiteId> sites) {
+T counted(TraitsStats& stats, Predicate predicate, const Decision<T>& d, std::initializer_list<SiteId> sites) {
+    PredicateCount& count = stats[predicate];
+    ++count.calls;
     count.stages.record(d.stage);
     if (!d.is_decided())
-        throw Error(std::string("undecided predicate: ") + what + " of sites (" + ids(sites) +
+        throw Error(std::string("undecided predicate: ") + predicate_name(predicate) + " of sites (" + ids(sites) +
                     ") could not be certified (precision " + std::to_string(d.precision) + ", internal error)");
     return *d;
 }
@@ -59,15 +61,12 @@ bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     if (p == q) return true;
     // Most pairs are far apart: decided at once, cheaper than the memo.
     if (bounding_circles_apart_in_doubles(site(p), site(q))) {
-        ++stats_.is_hidden.calls;
-        stats_.is_hidden.stages.record(Stage::filter);
-        return false;
+        return counted(stats_, Predicate::is_hidden, Decision<bool>::decided(false, Stage::filter), {p, q});
     }
     const std::uint64_t key = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint64_t>(q);
     auto found = hidden_memo_.find(key);
     if (found != hidden_memo_.end()) return found->second;
-    ++stats_.is_hidden.calls;
-    const RelativePosition r = counted(stats_.is_hidden, relative_position(site(p), site(q)), "relative position", {p, q});
+    const RelativePosition r = counted(stats_, Predicate::is_hidden, relative_position(site(p), site(q)), {p, q});
     if (r == RelativePosition::intersecting) {
         const std::string problem = crossing_pair_problem(site(p), site(q));
         if (!problem.empty()) throw IntersectingSites(std::min(p, q), std::max(p, q), problem);
@@ -96,15 +95,13 @@ bool EllipseDelaunayTraits::crosses(SiteId p, SiteId q) {
 }
 
 Sign EllipseDelaunayTraits::side_of_bisector(SiteId i, SiteId j, SiteId k) {
-    ++stats_.side_of_bisector.calls;
-    return counted(stats_.side_of_bisector, side_of_bisector_at_center(site(i), site(j), site(k)),
-                   "side of bisector", {i, j, k});
+    return counted(stats_, Predicate::side_of_bisector, side_of_bisector_at_center(site(i), site(j), site(k)),
+                   {i, j, k});
 }
 
-Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
-    ++stats_.vertex_conflict3.calls;
-    const Sign s = counted(stats_.vertex_conflict3, infinite_vertex_conflict(site(i), site(j), site(q)),
-                           "infinite vertex conflict", {i, j, q});
+Sign EllipseDelaunayTraits::infinite_vertex_conflict(SiteId i, SiteId j, SiteId q) {
+    const Sign s = counted(stats_, Predicate::infinite_vertex_conflict,
+                           ellvor::infinite_vertex_conflict(site(i), site(j), site(q)), {i, j, q});
     if (s == Sign::zero) throw Error("internal error: infinite vertex conflict returned 0 for sites (" + ids({i, j, q}) + ")");
     return s;
 }
@@ -112,54 +109,48 @@ Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId q) {
 Decision<InCircle> EllipseDelaunayTraits::incircle_of_face(SiteId i, SiteId j, SiteId k, SiteId q) {
     // Four circles take the closed form: no solver to cache.
     if (site(i).is_circle() && site(j).is_circle() && site(k).is_circle() && site(q).is_circle())
-        return incircle(site(i), site(j), site(k), site(q));
+        return ellvor::incircle(site(i), site(j), site(k), site(q));
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached circle is that of the rotated triple entry.ids: ask in that order.
-    const Decision<InCircle> d = incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
+    const Decision<InCircle> d = ellvor::incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
                                           &entry.circle);
     // Later calls on this face read the enclosures; the charts can go.
     entry.circle.release_charts();
     return d;
 }
 
-Sign EllipseDelaunayTraits::vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) {
-    ++stats_.vertex_conflict4.calls;
-    return incircle_sign(counted(stats_.vertex_conflict4, incircle_of_face(i, j, k, q), "incircle", {i, j, k, q}));
+Sign EllipseDelaunayTraits::incircle(SiteId i, SiteId j, SiteId k, SiteId q) {
+    return incircle_sign(counted(stats_, Predicate::incircle, incircle_of_face(i, j, k, q), {i, j, k, q}));
 }
 
-bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
-    ++stats_.finite_edge.calls;
-    return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b),
-                   "finite edge interior conflict", {p1, p2, p3, p4, q});
+bool EllipseDelaunayTraits::finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
+    return counted(stats_, Predicate::finite_edge_interior_conflict,
+                   ellvor::finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(p4), site(q), b), {p1, p2, p3, p4, q});
 }
 
-bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
-    ++stats_.finite_edge.calls;
-    return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b),
-                   "finite edge interior conflict", {p1, p2, p3, q});
+bool EllipseDelaunayTraits::finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) {
+    return counted(stats_, Predicate::finite_edge_interior_conflict,
+                   ellvor::finite_edge_interior_conflict(site(p1), site(p2), site(p3), site(q), b), {p1, p2, p3, q});
 }
 
-bool EllipseDelaunayTraits::finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) {
-    ++stats_.finite_edge.calls;
-    return counted(stats_.finite_edge, finite_edge_interior_conflict(site(p1), site(p2), site(q), b),
-                   "finite edge interior conflict", {p1, p2, q});
+bool EllipseDelaunayTraits::finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId q, bool b) {
+    return counted(stats_, Predicate::finite_edge_interior_conflict,
+                   ellvor::finite_edge_interior_conflict(site(p1), site(p2), site(q), b), {p1, p2, q});
 }
 
-bool EllipseDelaunayTraits::infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
-    ++stats_.infinite_edge.calls;
-    return counted(stats_.infinite_edge, infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b),
-                   "infinite edge interior conflict", {p2, p3, p4, q});
+bool EllipseDelaunayTraits::infinite_edge_interior_conflict(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) {
+    return counted(stats_, Predicate::infinite_edge_interior_conflict,
+                   ellvor::infinite_edge_interior_conflict(site(p2), site(p3), site(p4), site(q), b), {p2, p3, p4, q});
 }
 
 bool EllipseDelaunayTraits::is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) {
-    ++stats_.degenerate_edge.calls;
     // One circle touches p4; so unless p4 is tangent to VC(p1, p2, p3) they
     // differ: kappa3 on the face's cached circle proves most edges regular.
     const Decision<InCircle> touch = incircle_of_face(p1, p2, p3, p4);
     if (touch.is_decided() && *touch != InCircle::tangent)
-        return counted(stats_.degenerate_edge, touch.with(false), "degenerate edge", {p1, p2, p3, p4});
-    return counted(stats_.degenerate_edge, voronoi_edge_is_degenerate(site(p1), site(p2), site(p3), site(p4)),
-                   "degenerate edge", {p1, p2, p3, p4});
+        return counted(stats_, Predicate::is_degenerate_edge, touch.with(false), {p1, p2, p3, p4});
+    return counted(stats_, Predicate::is_degenerate_edge,
+                   ellvor::is_degenerate_edge(site(p1), site(p2), site(p3), site(p4)), {p1, p2, p3, p4});
 }
 
 }  // namespace ellvor

@@ -1,6 +1,6 @@
-#include "predicates/circle_semi_static.hpp"
+#include "circles/circle_semi_static.hpp"
 
-#include "predicates/semi_static.hpp"
+#include "circles/semi_static.hpp"
 
 #include <cmath>
 #include <optional>

@@ -44,7 +44,7 @@
 #pragma once
 
 #include "exact/quadratic_number.hpp"
-#include "predicates/voronoi_circle_count.hpp"
+#include "decision/predicate_answers.hpp"
 #include "sites/ellipse.hpp"
 
 #include <array>

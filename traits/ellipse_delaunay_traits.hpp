@@ -4,9 +4,9 @@
 // it), the memo of relative positions and the stage counters.
 #pragma once
 
-#include "predicates/delaunay_traits.hpp"
+#include "decision/delaunay_traits.hpp"
 #include "predicates/incircle.hpp"
-#include "predicates/voronoi_circle_cache.hpp"
+#include "traits/voronoi_circle_cache.hpp"
 #include "sites/ellipse.hpp"
 
 #include <cstdint>
@@ -33,14 +33,14 @@ public:
     // From the same relative position, memoized with it.
     bool crosses(SiteId p, SiteId q) override;
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override;
-    Sign vertex_conflict(SiteId i, SiteId j, SiteId q) override;
-    Sign vertex_conflict(SiteId i, SiteId j, SiteId k, SiteId q) override;
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override;
-    bool finite_edge_interior(SiteId p1, SiteId p2, SiteId q, bool b) override;
-    bool infinite_edge_interior(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
+    Sign infinite_vertex_conflict(SiteId i, SiteId j, SiteId q) override;
+    Sign incircle(SiteId i, SiteId j, SiteId k, SiteId q) override;
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId p3, SiteId q, bool b) override;
+    bool finite_edge_interior_conflict(SiteId p1, SiteId p2, SiteId q, bool b) override;
+    bool infinite_edge_interior_conflict(SiteId p2, SiteId p3, SiteId p4, SiteId q, bool b) override;
     // kappa3 of (p1, p2, p3) against p4 not tangent: no; else
-    // voronoi_edge_is_degenerate.
+    // is_degenerate_edge.
     bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override;
 
     // Drops the face's cached solver: the cache holds live faces only.

@@ -1,4 +1,4 @@
-// The closed-form circle predicates (predicates/circle_predicates.hpp)
+// The closed-form circle predicates (circles/circle_predicates.hpp)
 // against three independent references:
 //  * ellvor's general predicates (incircle, infinite_vertex_conflict,
 //    voronoi_circle_count, order_on_bisector with VoronoiCircleSolvers) on
@@ -14,7 +14,7 @@
 //    form, each named in its section.
 // Every failure prints the sites as a replayable .ell snippet.
 #include "predicates/bisector_order.hpp"
-#include "predicates/circle_predicates.hpp"
+#include "circles/circle_predicates.hpp"
 #include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"

@@ -3,7 +3,7 @@
 // (k, i, j) are the same Voronoi circle; (i, k, j) is another.
 #pragma once
 
-#include "predicates/site_id.hpp"
+#include "decision/site_id.hpp"
 
 #include <algorithm>
 #include <array>

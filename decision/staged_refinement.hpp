@@ -11,7 +11,7 @@
 //     limit turns an internal error into an Error, never into a loop.
 #pragma once
 
-#include "predicates/stage.hpp"
+#include "decision/stage.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
 

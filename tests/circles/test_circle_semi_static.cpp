@@ -1,5 +1,5 @@
-// The semi-static circle predicates (predicates/circle_semi_static.hpp) and
-// their error bound (predicates/semi_static.hpp):
+// The semi-static circle predicates (circles/circle_semi_static.hpp) and
+// their error bound (circles/semi_static.hpp):
 //  * the bound on hand-made cancellations: never a wrong sign;
 //  * random double circles: every decision equals the exact closed form
 //    (circle_predicates.hpp) and CGAL's exact Apollonius traits, and nearly
@@ -9,12 +9,12 @@
 //    stage says undecided or is right, and the cascade behind it decides;
 //  * huge, tiny and non-double inputs: decided, or left to the next stage.
 // Every failure prints the sites as a replayable .ell snippet.
-#include "predicates/circle_incircle_filter.hpp"
-#include "predicates/circle_predicates.hpp"
-#include "predicates/circle_semi_static.hpp"
+#include "circles/circle_incircle_filter.hpp"
+#include "circles/circle_predicates.hpp"
+#include "circles/circle_semi_static.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
-#include "predicates/semi_static.hpp"
+#include "circles/semi_static.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/site_generators.hpp"
 #include "tests/predicates/circle_oracles.hpp"

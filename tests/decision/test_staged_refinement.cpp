@@ -1,7 +1,7 @@
 // The decision core: Decision<T>, StageCounters, and the shared "refine ->
 // exact -> resume" driver, on synthetic stages whose behaviour is known (the
 // predicates' own tests reach each path on geometry).
-#include "predicates/staged_refinement.hpp"
+#include "decision/staged_refinement.hpp"
 
 #include <catch2/catch.hpp>
 

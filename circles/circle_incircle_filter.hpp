@@ -11,7 +11,7 @@
 // cascade.
 #pragma once
 
-#include "predicates/incircle.hpp"
+#include "decision/predicate_answers.hpp"
 #include "sites/ellipse.hpp"
 
 namespace ellvor {

@@ -1,4 +1,4 @@
-#include "predicates/voronoi_circle_cache.hpp"
+#include "traits/voronoi_circle_cache.hpp"
 
 #include "util/error.hpp"
 

@@ -1,6 +1,6 @@
-#include "predicates/circle_incircle_filter.hpp"
+#include "circles/circle_incircle_filter.hpp"
 
-#include "predicates/circle_semi_static.hpp"
+#include "circles/circle_semi_static.hpp"
 #include "util/interval.hpp"
 
 #include <algorithm>
