@@ -156,6 +156,11 @@ int run_check(const std::vector<std::string>& args) {
     std::size_t circles = 0;
     for (const Ellipse& e : sites) circles += e.is_circle() ? 1 : 0;
     std::ostream& out = std::cout;
+    auto report_nested = [&](const PairReport& r, std::size_t inner, std::size_t outer, bool tangent) {
+        out << "hidden: " << inner << " inside " << outer << (tangent ? " tangent" : "") << '\n';
+        hidden.insert(inner);
+        nested.push_back(r);
+    };
     for (const PairReport& r : reports) {
         switch (r.position) {
             case RelativePosition::intersecting: {
@@ -176,17 +181,11 @@ int run_check(const std::vector<std::string>& args) {
                                      std::to_string(r.i) + " (line " + std::to_string(file.lines[r.i]) + ")");
             case RelativePosition::first_inside:
             case RelativePosition::first_inside_tangent:
-                out << "hidden: " << r.i << " inside " << r.j
-                    << (r.position == RelativePosition::first_inside_tangent ? " tangent" : "") << '\n';
-                hidden.insert(r.i);
-                nested.push_back(r);
+                report_nested(r, r.i, r.j, r.position == RelativePosition::first_inside_tangent);
                 break;
             case RelativePosition::second_inside:
             case RelativePosition::second_inside_tangent:
-                out << "hidden: " << r.j << " inside " << r.i
-                    << (r.position == RelativePosition::second_inside_tangent ? " tangent" : "") << '\n';
-                hidden.insert(r.j);
-                nested.push_back(r);
+                report_nested(r, r.j, r.i, r.position == RelativePosition::second_inside_tangent);
                 break;
             case RelativePosition::externally_tangent:
                 out << "tangent: " << r.i << ' ' << r.j << '\n';

@@ -1,6 +1,5 @@
 #include "exact/algebraic_real.hpp"
 
-#include "exact/real_roots.hpp"
 #include "util/error.hpp"
 
 #include <arb_fmpz_poly.h>
@@ -58,7 +57,7 @@ AlgebraicReal AlgebraicReal::from_interval(const IntPolynomial& p, const Rationa
         return a;
     }
     if (!(lo < hi)) throw Error("AlgebraicReal: empty interval");
-    IntPolynomial q = primitive_normalized(p);
+    IntPolynomial q = p.primitive_part();
     int sl = sign_at_rational(q, lo), sh = sign_at_rational(q, hi);
     if (sl == 0 || sh == 0 || sl == sh) throw Error("AlgebraicReal: no sign change on the interval");
     if (q.degree() == 1) {
@@ -84,7 +83,7 @@ void AlgebraicReal::set_rational(const Rational& q) {
 }
 
 void AlgebraicReal::set_polynomial(const IntPolynomial& g) {
-    IntPolynomial q = primitive_normalized(g);
+    IntPolynomial q = g.primitive_part();
     if (q.degree() == 1) {
         set_rational(Rational(-q.coeff(0), q.coeff(1)));
         return;

@@ -268,13 +268,6 @@ bool by_position(const IsolatingInterval& a, const IsolatingInterval& b) {
 
 }  // namespace
 
-IntPolynomial primitive_normalized(const IntPolynomial& p) {
-    IntPolynomial r;
-    fmpz_poly_primitive_part(r.get(), p.get());
-    if (r.degree() >= 0 && fmpz_sgn(fmpz_poly_lead(r.get())) < 0) fmpz_poly_neg(r.get(), r.get());
-    return r;
-}
-
 int sign_at_rational(const IntPolynomial& p, const Rational& x) {
     if (p.is_zero()) return 0;
     long prec = x.bits() + 64;
@@ -300,7 +293,7 @@ std::vector<std::pair<IntPolynomial, int>> squarefree_factors(const IntPolynomia
     for (long i = 0; i < fac.get()->num; ++i) {
         IntPolynomial f(fac.get()->p + i);
         if (f.degree() < 1) continue;
-        result.emplace_back(primitive_normalized(f), static_cast<int>(fac.get()->exp[i]));
+        result.emplace_back(f.primitive_part(), static_cast<int>(fac.get()->exp[i]));
     }
     return result;
 }
@@ -311,7 +304,7 @@ IntPolynomial squarefree_part(const IntPolynomial& p) {
     IntPolynomial d = derivative(p), g, q;
     fmpz_poly_gcd(g.get(), p.get(), d.get());
     fmpz_poly_div(q.get(), p.get(), g.get());
-    return primitive_normalized(q);
+    return q.primitive_part();
 }
 
 std::vector<IsolatingInterval> isolate_real_roots(const std::vector<std::pair<IntPolynomial, int>>& factors) {

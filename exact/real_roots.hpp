@@ -24,10 +24,6 @@ struct IsolatingInterval {
     Rational width() const { return hi - lo; }
 };
 
-// The primitive part of p with a positive leading coefficient: the one
-// representative of p's roots that equality tests compare.
-IntPolynomial primitive_normalized(const IntPolynomial& p);
-
 // The squarefree factorization p = c * prod f_i^{e_i}: each f_i is primitive
 // with positive leading coefficient, of degree >= 1, the e_i are distinct and
 // the f_i pairwise coprime. Throws Error on the zero polynomial.

@@ -41,12 +41,6 @@ IntPolynomial scale(const IntPolynomial& a, const Integer& c) {
     fmpz_poly_scalar_mul_fmpz(r.get(), a.get(), c.get());
     return r;
 }
-// Content-free with a positive leading coefficient (the canonical form).
-IntPolynomial primitive(const IntPolynomial& a) {
-    IntPolynomial r;
-    fmpz_poly_primitive_part(r.get(), a.get());
-    return r;
-}
 // Divided by its (positive) content: the sign of every value is kept.
 IntPolynomial divide_by_positive_content(const IntPolynomial& a) {
     if (a.is_zero()) return a;
@@ -199,7 +193,7 @@ IntPolynomial tangent_side_quadratic(const Ellipse& e, const Point& q) {
 IntPolynomial foot_point_quartic(const Ellipse& e, const Point& q) {
     // Seed eq. (1) at (x, y) = q: W(t) T(t) . (q - P(t)) = 0; formal degree 4
     // (a circle keeps the non-real factor (1 + t^2)).
-    return primitive(line_at(normal_line(e), homogeneous(q)));
+    return line_at(normal_line(e), homogeneous(q)).primitive_part();
 }
 
 IntPolynomial squared_distance_quartic(const Ellipse& e, const Point& q) {
@@ -212,14 +206,14 @@ IntPolynomial squared_distance_quartic(const Ellipse& e, const Point& q) {
     // including t = infinity when deg F drops -- of W(t_i)^2 (s - |q - P(t_i)|^2);
     // at infinity, G's leading coefficient is w2^2 (s - |q - i-point|^2).
     const LinePolynomials n = reduced_normal_line(e);
-    const IntPolynomial F = primitive(line_at(n, homogeneous(q)));
+    const IntPolynomial F = line_at(n, homogeneous(q)).primitive_part();
     if (F.is_zero()) {
         // q is the center of a circle: every point is a foot point, distance a.
         const Rational r2 = e.a() * e.a();
         IntPolynomial p;
         p.set_coeff(1, r2.denominator());
         p.set_coeff(0, -r2.numerator());
-        return primitive(p);
+        return p.primitive_part();
     }
     const long formal_degree = std::max({n.l1.degree(), n.l2.degree(), n.l3.degree()});
 
@@ -240,7 +234,7 @@ IntPolynomial squared_distance_quartic(const Ellipse& e, const Point& q) {
         g[i].set_coeff(0, constant_part.coeff(i));
         g[i].set_coeff(1, s_part.coeff(i));
     }
-    return primitive(sylvester_resultant(f, g));
+    return sylvester_resultant(f, g).primitive_part();
 }
 
 // ===========================================================================
@@ -300,7 +294,7 @@ IntPolynomial parallel_normals_polynomial(const Ellipse& e1, const Ellipse& e2) 
         a[j] = add(add(scale(n1.l1, X2.coeff(j)), scale(n1.l2, Y2.coeff(j))), scale(n1.l3, W2.coeff(j)));
         c[j] = sub(scale(e1.tangent_x(), e2.tangent_y().coeff(j)), scale(e1.tangent_y(), e2.tangent_x().coeff(j)));
     }
-    return primitive(sylvester_resultant(a, c));
+    return sylvester_resultant(a, c).primitive_part();
 }
 
 // ===========================================================================

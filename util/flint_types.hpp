@@ -106,6 +106,13 @@ public:
     void set_coeff(long i, const Integer& c) { fmpz_poly_set_coeff_fmpz(v_, i, c.get()); }
     // Sign of p(x) at a rational x, exactly.
     int sign_at(const Rational& x) const;
+    // p divided by its content, leading coefficient positive (FLINT's
+    // primitive part): the canonical representative of p's roots.
+    IntPolynomial primitive_part() const {
+        IntPolynomial r;
+        fmpz_poly_primitive_part(r.v_, v_);
+        return r;
+    }
     std::string str() const;
 
     friend bool operator==(const IntPolynomial& a, const IntPolynomial& b) { return fmpz_poly_equal(a.v_, b.v_); }
