@@ -2,6 +2,7 @@
 // third one.
 #include "cli/command_list.hpp"
 
+#include "decision/predicate_registry.hpp"
 #include "predicates/external_bitangent.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
@@ -27,7 +28,8 @@ const char* const kHelp =
     "With a third site Q, also kappa2 = infinite_vertex_conflict(E1, E2, Q):\n"
     "  conflict      Q meets the open half-plane beyond L (CGAL's NEGATIVE)\n"
     "  no-conflict   it does not (POSITIVE); ties are broken as in CGAL, never zero\n"
-    "and the number of Voronoi circles of the triple (none, ccw, cw, both).\n"
+    "and the number of Voronoi circles of the triple (none, ccw, cw, both). The JSON names\n"
+    "kappa2 by its predicate name, \"infinite_vertex_conflict\".\n"
     "\n"
     "options:\n"
     "  --cin    read CGAL's circle format 'x y r' instead of .ell\n"
@@ -63,6 +65,7 @@ int run(const std::vector<std::string>& args) {
         throw InputError(file.name + ": sites 0 and 1 are " + relative_position_name(position) +
                          "; an external bitangent needs separated sites");
 
+    const char* const kappa2_key = predicate_name(Predicate::infinite_vertex_conflict);
     nlohmann::json out;
     out["first"] = describe_contact(s[0], external_bitangent_on(s[0], s[1], HullSide::arrival));
     out["second"] = describe_contact(s[1], external_bitangent_on(s[1], s[0], HullSide::departure));
@@ -70,8 +73,8 @@ int run(const std::vector<std::string>& args) {
         const auto start = std::chrono::steady_clock::now();
         const Decision<Sign> d = infinite_vertex_conflict(s[0], s[1], s[2]);
         const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-        out["kappa2"] = {{"result", *d == Sign::negative ? "conflict" : "no-conflict"}, {"sign", to_int(*d)},
-                         {"stage", stage_name(d.stage)}, {"time_us", us}};
+        out[kappa2_key] = {{"result", *d == Sign::negative ? "conflict" : "no-conflict"},
+                           {"sign", to_int(*d)}, {"stage", stage_name(d.stage)}, {"time_us", us}};
         out["voronoi_circles"] = voronoi_circles_name(*voronoi_circle_count(s[0], s[1], s[2]));
     }
     if (parsed.has("--json")) {
@@ -86,7 +89,7 @@ int run(const std::vector<std::string>& args) {
                   << ")\n";
     }
     if (s.size() == 3) {
-        std::cout << out["kappa2"]["result"].get<std::string>() << "\n";
+        std::cout << out[kappa2_key]["result"].get<std::string>() << "\n";
         std::cout << "voronoi circles: " << out["voronoi_circles"].get<std::string>() << "\n";
     }
     return kExitOk;

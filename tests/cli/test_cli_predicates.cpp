@@ -128,7 +128,7 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
     CHECK(j.at("first").at("t") == "0");
     CHECK(j.at("first").at("point_approx") == json::array({50.0, 100.0}));
     CHECK(j.at("second").at("point_approx") == json::array({50.0, -100.0}));
-    CHECK(!j.contains("kappa2"));
+    CHECK(!j.contains("infinite_vertex_conflict"));
 
     // q = (40, 0, 10) touches the line at (50, 0), between the contacts -> conflict.
     const std::string between = s.file("between.cin", "1 100 49\n0 -100 50\n40 0 10\n");
@@ -146,14 +146,14 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
     CHECK(has(r.out, "\nno-conflict\n"));
     CHECK(has(r.out, "voronoi circles: "));
     j = parse(s.ellvor("bitangent " + outside + " --cin --json"));
-    CHECK(j.at("kappa2").at("result") == "no-conflict");
-    CHECK(j.at("kappa2").at("sign") == 1);
-    CHECK(j.at("kappa2").contains("stage"));
+    CHECK(j.at("infinite_vertex_conflict").at("result") == "no-conflict");
+    CHECK(j.at("infinite_vertex_conflict").at("sign") == 1);
+    CHECK(j.at("infinite_vertex_conflict").contains("stage"));
     const std::string circles = j.at("voronoi_circles");
     CHECK((circles == "none" || circles == "ccw" || circles == "cw" || circles == "both"));
     j = parse(s.ellvor("bitangent " + between + " --cin --json"));
-    CHECK(j.at("kappa2").at("result") == "conflict");
-    CHECK(j.at("kappa2").at("sign") == -1);
+    CHECK(j.at("infinite_vertex_conflict").at("result") == "conflict");
+    CHECK(j.at("infinite_vertex_conflict").at("sign") == -1);
 
     // Three unit circles counter-clockwise around the origin: one Voronoi
     // circle in that orientation; reversed: the other.
