@@ -19,7 +19,7 @@
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/voronoi_circle_count.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 #include "util/error.hpp"
 
 #include <CGAL/Apollonius_graph_traits_2.h>

@@ -17,7 +17,7 @@
 #include "circles/semi_static.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/site_generators.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 
 #include <CGAL/Apollonius_graph_traits_2.h>
 #include <CGAL/Gmpq.h>

@@ -16,9 +16,6 @@ using Run = ellvor::test::CommandResult;
 using TempDir = ellvor::test::ScratchDirectory;
 using ellvor::test::read_file;
 
-Run run_ellvor(const TempDir& dir, const std::string& args, const std::string& stdin_file = "/dev/null") {
-    return dir.ellvor(args, stdin_file);
-}
 
 struct Malformed {
     const char* kind;
@@ -73,7 +70,7 @@ TEST_CASE("malformed site files exit 2 with file:line:column and what was expect
     for (const Malformed& m : cases) {
         INFO("case: " << m.kind);
         const std::string file = dir.write("case" + std::to_string(n++) + (m.cin ? ".cin" : ".ell"), m.content);
-        const Run r = run_ellvor(dir, "check '" + file + "'" + (m.cin ? " --cin" : ""));
+        const Run r = dir.ellvor("check '" + file + "'" + (m.cin ? " --cin" : ""));
         INFO("stderr: " << r.err.substr(0, 300));
         CHECK(r.status == 2);
         CHECK(r.err.find("ellvor: " + file + ":" + m.location + ": ") == 0);
@@ -90,7 +87,7 @@ TEST_CASE("crossing pairs are all listed by id, the invalid ones with their reas
                                        "1 1 0 11 0\n"      // crosses 1
                                        "3 1 0 30 0\n"      // a cross with the next:
                                        "1 3 0 30 0\n");    // 4 points
-    const Run r = run_ellvor(dir, "check " + file + " --describe");
+    const Run r = dir.ellvor("check " + file + " --describe");
     CHECK(r.status == 2);
     CHECK(r.out.find("crossing: 0 2\n") != std::string::npos);
     CHECK(r.out.find("crossing: 1 3\n") != std::string::npos);
@@ -100,7 +97,7 @@ TEST_CASE("crossing pairs are all listed by id, the invalid ones with their reas
     CHECK(r.err.find(":6:1: site 5 crosses site 4 (line 5): their boundaries meet in 4 points") != std::string::npos);
     // Crossing circles alone are a valid file.
     const std::string circles = dir.write("c.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 1 0\n1 1 0 11 0\n");
-    const Run ok = run_ellvor(dir, "check " + circles);
+    const Run ok = dir.ellvor("check " + circles);
     CHECK(ok.status == 0);
     CHECK(ok.out.find("4 sites (4 circles), 0 hidden, 2 crossing pairs, OK") != std::string::npos);
 }
@@ -122,7 +119,7 @@ TEST_CASE("every predicate command rejects crossing sites at the later site's li
         std::string line;
         for (int i = 0; i < c.sites && std::getline(lines, line); ++i) content += line + "\n";
         const std::string file = dir.write(std::string(c.command) + ".ell", content);
-        const Run r = run_ellvor(dir, std::string(c.command) + " " + file + c.extra);
+        const Run r = dir.ellvor(std::string(c.command) + " " + file + c.extra);
         INFO(c.command << "\nstdout: " << r.out << "\nstderr: " << r.err);
         CHECK(r.status == 2);
         CHECK(r.out.empty());
@@ -133,11 +130,11 @@ TEST_CASE("every predicate command rejects crossing sites at the later site's li
 
 TEST_CASE("unreadable files and bad command lines exit 2", "[cli]") {
     TempDir dir;
-    Run r = run_ellvor(dir, "check " + dir.path() + "/missing.ell");
+    Run r = dir.ellvor("check " + dir.path() + "/missing.ell");
     CHECK(r.status == 2);
     CHECK(r.err.find("ellvor: " + dir.path() + "/missing.ell:1:1: cannot open file") == 0);
 
-    r = run_ellvor(dir, "check " + dir.path());
+    r = dir.ellvor("check " + dir.path());
     CHECK(r.status == 2);
     CHECK(r.err.find("is a directory") != std::string::npos);
 
@@ -176,7 +173,7 @@ TEST_CASE("unreadable files and bad command lines exit 2", "[cli]") {
                            Usage{"generate paper-dataset kappa1", "missing option --set"},
                            Usage{"generate paper-dataset kappa1 --set 4", "option --set"}}) {
         INFO("ellvor " << u.args);
-        r = run_ellvor(dir, u.args);
+        r = dir.ellvor(u.args);
         INFO("stderr: " << r.err);
         CHECK(r.status == 2);
         CHECK(r.err.find(u.phrase) != std::string::npos);

@@ -19,13 +19,8 @@ using nlohmann::json;
 using Run = ellvor::test::CommandResult;
 using ellvor::test::read_file;
 
-// The shared scratch directory, under the names these tests use.
-class Scratch : public ellvor::test::ScratchDirectory {
-public:
-    std::string file(const std::string& name, const std::string& content) const { return write(name, content); }
-};
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using Scratch = ellvor::test::ScratchDirectory;
+using ellvor::test::contains;
 
 json parse(const Run& r) {
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
@@ -50,15 +45,15 @@ TEST_CASE("predicate commands: --help exits 0 with the usage line", "[cli]") {
     // The program's help lists them.
     const Run r = s.ellvor("--help");
     CHECK(r.status == 0);
-    for (const char* cmd : {"side-of-bisector", "bitangent", "incircle", "voronoi-circle"}) CHECK(has(r.out, cmd));
+    for (const char* cmd : {"side-of-bisector", "bitangent", "incircle", "voronoi-circle"}) CHECK(contains(r.out, cmd));
 }
 
 TEST_CASE("side-of-bisector: first, second and an exact tie", "[cli]") {
     Scratch s;
     // Circles (3, 4, r = 1) and (-6, 8, r = 6): the origin is at distance
     // 5 - 1 = 4 = 10 - 6 from both, an exact tie.
-    const std::string ell = s.file("pair.ell", "1 1 0 3 4\n6 6 0 -6 8\n");
-    const std::string cin = s.file("pair.cin", "3 4 1\n-6 8 6\n");
+    const std::string ell = s.write("pair.ell", "1 1 0 3 4\n6 6 0 -6 8\n");
+    const std::string cin = s.write("pair.cin", "3 4 1\n-6 8 6\n");
     struct Case {
         std::string args, word;
     };
@@ -101,7 +96,7 @@ TEST_CASE("side-of-bisector: first, second and an exact tie", "[cli]") {
 // options; "--" ends the options too.
 TEST_CASE("side-of-bisector: negative fractions as coordinates", "[cli]") {
     Scratch s;
-    const std::string ell = s.file("pair.ell", "1 1 0 3 4\n6 6 0 -6 8\n");
+    const std::string ell = s.write("pair.ell", "1 1 0 3 4\n6 6 0 -6 8\n");
     const Run workaround = s.ellvor("side-of-bisector " + ell + " -- -1/1000 0");
     CHECK(workaround.status == 0);
     CHECK(workaround.out == "second\n");
@@ -115,15 +110,15 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
     Scratch s;
     // CGAL's kappa2 vectors: p1 = (1, 100, 49), p2 = (0, -100, 50); the
     // bitangent is the line x = 50, touching at (50, 100) and (50, -100).
-    const std::string pair = s.file("pair.cin", "1 100 49\n0 -100 50\n");
+    const std::string pair = s.write("pair.cin", "1 100 49\n0 -100 50\n");
     Run r = s.ellvor("bitangent " + pair + " --cin");
     INFO(r.err);
     REQUIRE(r.status == 0);
-    CHECK(has(r.out, "contact on E1"));
-    CHECK(has(r.out, "contact on E2"));
-    CHECK(has(r.out, "(50, 100)"));
-    CHECK(has(r.out, "(50, -100)"));
-    CHECK(!has(r.out, "conflict"));  // no third site, no kappa2
+    CHECK(contains(r.out, "contact on E1"));
+    CHECK(contains(r.out, "contact on E2"));
+    CHECK(contains(r.out, "(50, 100)"));
+    CHECK(contains(r.out, "(50, -100)"));
+    CHECK(!contains(r.out, "conflict"));  // no third site, no kappa2
     json j = parse(s.ellvor("bitangent " + pair + " --cin --json"));
     CHECK(j.at("first").at("t") == "0");
     CHECK(j.at("first").at("point_approx") == json::array({50.0, 100.0}));
@@ -131,20 +126,20 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
     CHECK(!j.contains("infinite_vertex_conflict"));
 
     // q = (40, 0, 10) touches the line at (50, 0), between the contacts -> conflict.
-    const std::string between = s.file("between.cin", "1 100 49\n0 -100 50\n40 0 10\n");
+    const std::string between = s.write("between.cin", "1 100 49\n0 -100 50\n40 0 10\n");
     r = s.ellvor("bitangent " + between + " --cin");
     INFO(r.err);
     REQUIRE(r.status == 0);
-    CHECK(has(r.out, "contact on E1"));
-    CHECK(has(r.out, "\nconflict\n"));
-    CHECK(has(r.out, "voronoi circles: "));
+    CHECK(contains(r.out, "contact on E1"));
+    CHECK(contains(r.out, "\nconflict\n"));
+    CHECK(contains(r.out, "voronoi circles: "));
     // q = (-1, 200, 51) touches it at (50, 200), outside -> no conflict.
-    const std::string outside = s.file("outside.cin", "1 100 49\n0 -100 50\n-1 200 51\n");
+    const std::string outside = s.write("outside.cin", "1 100 49\n0 -100 50\n-1 200 51\n");
     r = s.ellvor("bitangent " + outside + " --cin");
     INFO(r.err);
     REQUIRE(r.status == 0);
-    CHECK(has(r.out, "\nno-conflict\n"));
-    CHECK(has(r.out, "voronoi circles: "));
+    CHECK(contains(r.out, "\nno-conflict\n"));
+    CHECK(contains(r.out, "voronoi circles: "));
     j = parse(s.ellvor("bitangent " + outside + " --cin --json"));
     CHECK(j.at("infinite_vertex_conflict").at("result") == "no-conflict");
     CHECK(j.at("infinite_vertex_conflict").at("sign") == 1);
@@ -157,14 +152,14 @@ TEST_CASE("bitangent: contacts of two sites, kappa2 with a third", "[cli]") {
 
     // Three unit circles counter-clockwise around the origin: one Voronoi
     // circle in that orientation; reversed: the other.
-    const std::string ccw = s.file("ccw.ell", "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n");
+    const std::string ccw = s.write("ccw.ell", "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n");
     r = s.ellvor("bitangent " + ccw);
     REQUIRE(r.status == 0);
-    CHECK(has(r.out, "voronoi circles: ccw\n"));
-    const std::string cw = s.file("cw.ell", "1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n");
+    CHECK(contains(r.out, "voronoi circles: ccw\n"));
+    const std::string cw = s.write("cw.ell", "1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n");
     r = s.ellvor("bitangent " + cw);
     REQUIRE(r.status == 0);
-    CHECK(has(r.out, "voronoi circles: cw\n"));
+    CHECK(contains(r.out, "voronoi circles: cw\n"));
 }
 
 TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent case", "[cli]") {
@@ -184,7 +179,7 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent c
     };
     int n = 0;
     for (const Case& c : cases) {
-        const std::string file = s.file("q" + std::to_string(n++) + ".ell", c.sites);
+        const std::string file = s.write("q" + std::to_string(n++) + ".ell", c.sites);
         Run r = s.ellvor("incircle " + file);
         INFO(c.sites << r.err);
         CHECK(r.status == 0);
@@ -203,7 +198,7 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent c
     }
     // 10^-30 away from tangency (the degenerate quadruple below, Q moved
     // away): beyond doubles, Arb decides.
-    const std::string near = s.file("near.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5.000000000000000000000000000001\n");
+    const std::string near = s.write("near.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5.000000000000000000000000000001\n");
     Run near_run = s.ellvor("incircle " + near + " --json");
     REQUIRE(near_run.status == 0);
     const json near_json = parse(near_run);
@@ -211,7 +206,7 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent c
     CHECK(near_json.at("stage") == "subdivision");
     CHECK(near_json.at("newton_steps") > 0);
     // CGAL's .cin form.
-    const std::string cin = s.file("far.cin", "6 0 1\n0 6 1\n-6 0 1\n30 30 1\n");
+    const std::string cin = s.write("far.cin", "6 0 1\n0 6 1\n-6 0 1\n30 30 1\n");
     Run r = s.ellvor("incircle " + cin + " --cin");
     CHECK(r.status == 0);
     CHECK(r.out == "no-conflict\n");
@@ -223,7 +218,7 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent c
     // hands over to the exact stage, which proves "tangent" (the command never
     // says undecided). 2^17 and 2^20 are the caps at which the subdivision
     // loop once stopped before handing over.
-    const std::string degenerate = s.file("degenerate.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5\n");
+    const std::string degenerate = s.write("degenerate.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n2 1 1 0 -5\n");
     for (const long cap : {64L, 256L, 4096L, 1L << 17, 1L << 20}) {
         for (const char* json_flag : {"", " --json"}) {
             if (cap > 4096 && !*json_flag) continue;  // the slow caps once, with JSON
@@ -251,7 +246,7 @@ TEST_CASE("incircle: conflict, no-conflict, no-circle and a degenerate tangent c
 
 TEST_CASE("voronoi-circle: certified JSON, clockwise triples, --bits", "[cli]") {
     Scratch s;
-    const std::string ccw = s.file("ccw.ell", "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n");
+    const std::string ccw = s.write("ccw.ell", "1 1 0 6 0\n1 1 0 0 6\n1 1 0 -6 0\n");
     for (long bits : {53L, 200L}) {
         const Run r = s.ellvor("voronoi-circle " + ccw + " --bits " + std::to_string(bits));
         INFO(r.err);
@@ -277,11 +272,11 @@ TEST_CASE("voronoi-circle: certified JSON, clockwise triples, --bits", "[cli]") 
         CHECK(cx.front() == '[');
     }
     // --cin and an ellipse triple.
-    const std::string cin = s.file("ccw.cin", "6 0 1\n0 6 1\n-6 0 1\n");
+    const std::string cin = s.write("ccw.cin", "6 0 1\n0 6 1\n-6 0 1\n");
     Run r = s.ellvor("voronoi-circle " + cin + " --cin --bits 64");
     REQUIRE(r.status == 0);
     CHECK(parse(r).at("exists") == true);
-    const std::string ellipses = s.file("ellipses.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n");
+    const std::string ellipses = s.write("ellipses.ell", "2 1 0 5 0\n2 1 1 0 5\n2 1 0 -5 0\n");
     r = s.ellvor("voronoi-circle " + ellipses + " --bits 100");
     REQUIRE(r.status == 0);
     json j = parse(r);
@@ -290,7 +285,7 @@ TEST_CASE("voronoi-circle: certified JSON, clockwise triples, --bits", "[cli]") 
     CHECK(j.at("radius").get<std::string>().rfind("[3", 0) == 0);  // the circle of radius 3
 
     // Clockwise: no counter-clockwise circle.
-    const std::string cw = s.file("cw.ell", "1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n");
+    const std::string cw = s.write("cw.ell", "1 1 0 -6 0\n1 1 0 0 6\n1 1 0 6 0\n");
     r = s.ellvor("voronoi-circle " + cw + " --bits 64");
     REQUIRE(r.status == 0);
     j = parse(r);
@@ -300,7 +295,7 @@ TEST_CASE("voronoi-circle: certified JSON, clockwise triples, --bits", "[cli]") 
     // --bits is required and must be an integer.
     r = s.ellvor("voronoi-circle " + ccw);
     CHECK(r.status == 2);
-    CHECK(has(r.err, "--bits"));
+    CHECK(contains(r.err, "--bits"));
     CHECK(r.out.empty());
     r = s.ellvor("voronoi-circle " + ccw + " --bits many");
     CHECK(r.status == 2);
@@ -311,7 +306,7 @@ TEST_CASE("voronoi-circle: a triple 10^30 away from the origin is certified", "[
     // Once undecided (exit 3): the floating-point guesses lost the sites'
     // relative geometry. The same triple at the origin has radius 3.0308...
     Scratch s;
-    const std::string far = s.file("far.ell",
+    const std::string far = s.write("far.ell",
                                    "4 2 0 1000000000000000000000000000000 0\n"
                                    "3 1.5 1/3 1000000000000000000000000000010 0\n"
                                    "2.5 2.5 0 1000000000000000000000000000005 8\n");
@@ -331,17 +326,17 @@ TEST_CASE("voronoi-circle: a triple 10^30 away from the origin is certified", "[
     const std::size_t exit_status = help.out.find("exit status:");
     REQUIRE(exit_status != std::string::npos);
     CHECK(help.out.find('3', exit_status) == std::string::npos);
-    CHECK(has(help.out, "search_boxes"));
+    CHECK(contains(help.out, "search_boxes"));
 }
 
 TEST_CASE("predicate commands: wrong site counts exit 2", "[cli]") {
     Scratch s;
-    const std::string one = s.file("one.ell", "1 1 0 0 0\n");
-    const std::string two = s.file("two.ell", "1 1 0 0 0\n1 1 0 10 0\n");
-    const std::string three = s.file("three.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n");
-    const std::string four = s.file("four.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n# a comment\n\n1 1 0 10 10\n");
+    const std::string one = s.write("one.ell", "1 1 0 0 0\n");
+    const std::string two = s.write("two.ell", "1 1 0 0 0\n1 1 0 10 0\n");
+    const std::string three = s.write("three.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n");
+    const std::string four = s.write("four.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n# a comment\n\n1 1 0 10 10\n");
     const std::string five =
-        s.file("five.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n1 1 0 10 10\n   2 2 0 -10 -10\n");
+        s.write("five.ell", "1 1 0 0 0\n1 1 0 10 0\n1 1 0 0 10\n1 1 0 10 10\n   2 2 0 -10 -10\n");
     struct Case {
         std::string args, location;  // location: ":LINE:" of the surplus site, or "" for too few
     };
@@ -367,7 +362,7 @@ TEST_CASE("predicate commands: wrong site counts exit 2", "[cli]") {
             CHECK(r.err.size() > col + 1);
             CHECK(std::isdigit(static_cast<unsigned char>(r.err[col])));
         }
-        CHECK(has(r.err, "expected"));
-        CHECK(has(r.err, "found"));
+        CHECK(contains(r.err, "expected"));
+        CHECK(contains(r.err, "found"));
     }
 }

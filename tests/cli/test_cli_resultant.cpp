@@ -18,13 +18,8 @@ namespace {
 using Run = ellvor::test::CommandResult;
 using ellvor::test::read_file;
 
-// The shared scratch directory, under the names these tests use.
-class Scratch : public ellvor::test::ScratchDirectory {
-public:
-    std::string file(const std::string& name, const std::string& content) const { return write(name, content); }
-};
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using Scratch = ellvor::test::ScratchDirectory;
+using ellvor::test::contains;
 
 std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> v;
@@ -45,7 +40,7 @@ const char* const kGenericTriple =
 
 TEST_CASE("resultant command: 185 integer coefficients, primitive, positive leading coefficient", "[cli]") {
     Scratch s;
-    const std::string path = s.file("triple.ell", kGenericTriple);
+    const std::string path = s.write("triple.ell", kGenericTriple);
     const Run r = s.ellvor("resultant '" + path + "'");
     INFO("stderr: " << r.err);
     REQUIRE(r.status == 0);
@@ -87,30 +82,30 @@ TEST_CASE("resultant command: 185 integer coefficients, primitive, positive lead
     INFO("stderr: " << st.err);
     REQUIRE(st.status == 0);
     CHECK(st.out == r.out);
-    CHECK(has(st.err, "degree: 184"));
-    CHECK(has(st.err, "expected degree: 184"));
-    CHECK(has(st.err, "seed exponents held: yes"));
-    CHECK(has(st.err, "removed factors: 3\n"));
-    CHECK(has(st.err, "  R2:1+t^2  exponent 52\n"));
-    CHECK(has(st.err, "  R2:parnorm13  exponent 6\n"));
-    CHECK(has(st.err, "  R2:parnorm12  exponent 6\n"));
-    CHECK(has(st.err, "coefficient bound: 2^"));
-    CHECK(has(st.err, "primes used: "));
-    CHECK(has(st.err, "coefficient bits: "));
-    CHECK(has(st.err, "seconds: "));
+    CHECK(contains(st.err, "degree: 184"));
+    CHECK(contains(st.err, "expected degree: 184"));
+    CHECK(contains(st.err, "seed exponents held: yes"));
+    CHECK(contains(st.err, "removed factors: 3\n"));
+    CHECK(contains(st.err, "  R2:1+t^2  exponent 52\n"));
+    CHECK(contains(st.err, "  R2:parnorm13  exponent 6\n"));
+    CHECK(contains(st.err, "  R2:parnorm12  exponent 6\n"));
+    CHECK(contains(st.err, "coefficient bound: 2^"));
+    CHECK(contains(st.err, "primes used: "));
+    CHECK(contains(st.err, "coefficient bits: "));
+    CHECK(contains(st.err, "seconds: "));
 }
 
 TEST_CASE("resultant command: circles give lower degrees, --cin is read", "[cli]") {
     Scratch s;
     // Three circles in CGAL's 'x y r' format: expected degree 8.
-    const std::string path = s.file("circles.cin", "0 0 1\n7 1 2\n2 9 3/2\n");
+    const std::string path = s.write("circles.cin", "0 0 1\n7 1 2\n2 9 3/2\n");
     const Run r = s.ellvor("resultant --cin --stats '" + path + "'");
     INFO("stderr: " << r.err);
     REQUIRE(r.status == 0);
     const std::vector<std::string> coeffs = lines(r.out);
     CHECK(coeffs.size() >= 2);
     CHECK(coeffs.size() <= 9);
-    CHECK(has(r.err, "expected degree: 8"));
+    CHECK(contains(r.err, "expected degree: 8"));
     REQUIRE(!coeffs.empty());
     CHECK(coeffs.back().rfind('-', 0) != 0);
 }
@@ -118,7 +113,7 @@ TEST_CASE("resultant command: circles give lower degrees, --cin is read", "[cli]
 TEST_CASE("resultant command: bad input and --help", "[cli]") {
     Scratch s;
     {
-        const std::string path = s.file("two.ell", "2 1 0 0 0\n1 1 0 9 0\n");
+        const std::string path = s.write("two.ell", "2 1 0 0 0\n1 1 0 9 0\n");
         const Run r = s.ellvor("resultant '" + path + "'");
         INFO("stderr: " << r.err);
         CHECK(r.status == 2);
@@ -126,7 +121,7 @@ TEST_CASE("resultant command: bad input and --help", "[cli]") {
         CHECK(!r.err.empty());
     }
     {
-        const std::string path = s.file("four.ell", std::string(kGenericTriple) + "1 1 0 -20 -20\n");
+        const std::string path = s.write("four.ell", std::string(kGenericTriple) + "1 1 0 -20 -20\n");
         const Run r = s.ellvor("resultant '" + path + "'");
         CHECK(r.status == 2);
         CHECK(r.out.empty());
@@ -136,7 +131,7 @@ TEST_CASE("resultant command: bad input and --help", "[cli]") {
         CHECK(r.status == 2);
     }
     {
-        const Run r = s.ellvor("resultant '" + s.file("t.ell", kGenericTriple) + "' --no-such-option");
+        const Run r = s.ellvor("resultant '" + s.write("t.ell", kGenericTriple) + "' --no-such-option");
         CHECK(r.status == 2);
     }
     for (const char* form : {" --help", " -h"}) {
@@ -144,10 +139,10 @@ TEST_CASE("resultant command: bad input and --help", "[cli]") {
         INFO(form << "\n" << r.err);
         CHECK(r.status == 0);
         CHECK(r.out.rfind("usage: ellvor resultant", 0) == 0);
-        CHECK(has(r.out, "--stats"));
+        CHECK(contains(r.out, "--stats"));
         CHECK(r.err.empty());
     }
     // Listed in the program help.
     const Run all = s.ellvor("--help");
-    CHECK(has(all.out, "  resultant "));
+    CHECK(contains(all.out, "  resultant "));
 }

@@ -9,7 +9,7 @@
 // there. So CGAL is compared only where the CCW circle exists.
 #include "predicates/incircle.hpp"
 #include "predicates/voronoi_circle_count.hpp"
-#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 
 #include <CGAL/Apollonius_graph_filtered_traits_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

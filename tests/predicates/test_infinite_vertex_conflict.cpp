@@ -6,7 +6,7 @@
 #include "circles/circle_predicates.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 #include "util/error.hpp"
 
 #include <catch2/catch.hpp>

@@ -15,7 +15,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "subdivision/voronoi_circle_in_doubles.hpp"
-#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 
 #include <CGAL/Apollonius_graph_traits_2.h>
 #include <CGAL/Gmpq.h>

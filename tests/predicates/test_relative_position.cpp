@@ -1,7 +1,7 @@
 // relative_position / is_hidden: every class, the deciding stage, and a
 // random comparison against the exact closed form for circles.
 #include "predicates/relative_position.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 // brute-force distance for ellipses, and ties built by symmetry.
 #include "predicates/relative_position.hpp"
 #include "predicates/side_of_bisector.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 
 #include "tests/support/random_sites.hpp"
 

@@ -5,7 +5,7 @@
 #include "predicates/edge_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "predicates/support_function.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -3,7 +3,7 @@
 // (circle_oracles.hpp) and hand cases, CGAL's collinear three-site tests
 // among them.
 #include "predicates/voronoi_circle_count.hpp"
-#include "tests/predicates/circle_oracles.hpp"
+#include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -12,7 +12,7 @@
 // experiments/near_degenerate.cpp.)
 #include "predicates/incircle.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 #include "util/ball_arithmetic.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,14 +1,14 @@
 // VoronoiCircleSolver: the certified enclosure of the counter-clockwise
 // Voronoi circle of an ordered triple. Oracles: the closed-form Apollonius
-// solution for circles (tests/predicates/apollonius_oracle.hpp, Arb at 4096
+// solution for circles (tests/support/apollonius_oracle.hpp, Arb at 4096
 // bits), symmetric ellipse configurations whose circle is known exactly, and
 // self-consistency (nested enclosures across precisions, tangency points on
 // the ellipses along the outward normals).
 #include "predicates/voronoi_circle_count.hpp"
 #include "predicates/relative_position.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-#include "tests/predicates/circle_oracles.hpp"
-#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/circle_oracles.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 
 #include "tests/support/random_sites.hpp"
 #include "tests/support/diagnostics.hpp"

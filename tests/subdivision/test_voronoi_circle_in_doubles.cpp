@@ -7,7 +7,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle.hpp"
 #include "subdivision/voronoi_circle_in_doubles.hpp"
-#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 #include "tests/support/random_sites.hpp"
 #include "tests/support/diagnostics.hpp"
 

@@ -10,7 +10,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/rational_parse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-#include "tests/predicates/apollonius_oracle.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 #include "tests/support/random_sites.hpp"
 #include "util/error.hpp"
 #include "tests/support/diagnostics.hpp"
