@@ -6,7 +6,7 @@
 // The operations are those of CGAL's Apollonius_graph_2 traits (Compare_weight_2,
 // Is_hidden_2, Oriented_side_of_bisector_2, Vertex_conflict_2,
 // Finite_edge_interior_conflict_2, Infinite_edge_interior_conflict_2) on site
-// ids; README.md, "Conventions", fixes their signs. A model certifies every
+// ids; docs/DESIGN.md §2 fixes their signs. A model certifies every
 // answer; one it cannot certify is never guessed: the call throws Error naming
 // the sites. The predicates are not const: a model may memoize and counts
 // every call.
