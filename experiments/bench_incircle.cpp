@@ -30,6 +30,7 @@
 // Each instance's ellvor calls are first run once in a forked child with a
 // 20 s limit: a crash or hang of the library becomes an "error" row.
 // Options: --reps N, --random N, --seed S, --bits B (random quadruples), --out DIR.
+#include "experiments/random_sites.hpp"
 #include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "predicates/incircle.hpp"
@@ -103,13 +104,6 @@ struct Row {
 
 
 
-// Nearest-rank percentile.
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    std::size_t k = static_cast<std::size_t>(std::ceil(p / 100 * v.size()));
-    return v[std::min(v.size(), std::max<std::size_t>(k, 1)) - 1];
-}
 
 CSite to_cgal(const Ellipse& c) { return CSite(CPoint(c.xc().to_double(), c.yc().to_double()), c.a().to_double()); }
 
@@ -121,23 +115,9 @@ volatile long sink = 0;
 
 Dataset random_quadruples(long count, std::uint64_t seed, long bits, long& dropped) {
     Dataset ds{"random-ellipses", false, {}};
-    dropped = 0;
-    for (std::uint64_t s = seed; static_cast<long>(ds.instances.size()) < count; ++s) {
-        GeneratorOptions o;
-        o.kind = SiteKind::ellipses;
-        o.count = 4;
-        o.seed = s;
-        o.bits = bits;
-        o.box = Rational(10);
-        std::vector<Ellipse> e = generate_sites(o);
+    for (std::vector<Ellipse>& e : incircle_quadruples(SiteKind::ellipses, count, seed, bits, &dropped)) {
         Ellipse q = e.back();
         e.pop_back();
-        const VoronoiCircles c = *voronoi_circle_count(e[0], e[1], e[2]);
-        if (c == VoronoiCircles::cw_only) std::swap(e[1], e[2]);
-        if (c == VoronoiCircles::none) {
-            ++dropped;
-            continue;
-        }
         ds.instances.push_back({std::move(e), std::move(q)});
     }
     return ds;
@@ -463,8 +443,8 @@ Table time_table(const std::vector<Dataset>& datasets, const std::vector<Dataset
         const double em = median(s.ellvor), cm = s.cgal.empty() ? NAN : median(s.cgal);
         const bool cgal = !s.cgal.empty();
         t.add({ds.name, integer(static_cast<long long>(ds.instances.size())), fmt("%.1f", em),
-               fmt("%.1f", percentile(s.ellvor, 99)), or_dash(cgal, fmt("%.2f", cm)),
-               or_dash(cgal, fmt("%.2f", percentile(s.cgal, 99))), or_dash(cgal, fmt("%.1f×", em / cm)),
+               fmt("%.1f", quantile(s.ellvor, 0.99)), or_dash(cgal, fmt("%.2f", cm)),
+               or_dash(cgal, fmt("%.2f", quantile(s.cgal, 0.99))), or_dash(cgal, fmt("%.1f×", em / cm)),
                paper_ratio(ds.name), or_dash(!s.warm.empty(), fmt("%.1f", median(s.warm))),
                or_dash(!s.cold_same.empty(), fmt("%.1f", median(s.cold_same))),
                or_dash(ds.circles, fmt("%.3f", cgal_pass_us[k]))});
@@ -491,7 +471,7 @@ Table breakdown_table(const std::vector<Dataset>& datasets, const std::vector<Da
         const bool dbl = !s.doubles.empty(), sol = !s.solver.empty();
         t.add({datasets[k].name, fmt("%.1f", median(s.count)), or_dash(dbl, fmt("%.1f", median(s.doubles))),
                or_dash(dbl, std::to_string(s.certified_in_doubles) + " / " + std::to_string(s.doubles.size())),
-               or_dash(sol, fmt("%.1f", median(s.solver))), or_dash(sol, fmt("%.1f", percentile(s.solver, 99)))});
+               or_dash(sol, fmt("%.1f", median(s.solver))), or_dash(sol, fmt("%.1f", quantile(s.solver, 0.99)))});
     }
     return t;
 }
@@ -647,11 +627,6 @@ int main(int argc, char** argv) {
                    "tangent, disagreement with CGAL where the CCW circle exists)");
     report.text(anomaly_lines(rows, 20));
 
-    const std::string md = report.markdown();
-    std::cout << md;
-    if (!o.out_dir.empty()) {
-        write_result(o.out_dir, "incircle.csv", instance_table(rows).csv());
-        write_result(o.out_dir, "incircle.md", md);
-    }
+    report.publish(o.out_dir, "incircle.md", {{"incircle.csv", instance_table(rows).csv()}});
     return 0;
 }

@@ -34,6 +34,7 @@
 // snippet and makes the program exit with status 1.
 #include "experiments/peak_memory.hpp"
 #include "experiments/predicate_stages.hpp"
+#include "experiments/random_sites.hpp"
 #include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
@@ -660,7 +661,7 @@ void add_stage_row(Table& t, const std::string& graph, const GraphRun& g) {
     const CallProfile& p = g.profile;
     const double in_predicates = g.timed_build_wall > 0 ? p.seconds / g.timed_build_wall : 0;
     std::vector<Cell> row = {graph};
-    for (const PredicateInfo& info : kPredicates) row.push_back(stage_triple(s[info.predicate]));
+    for (const std::string& cell : predicate_stage_triples(s)) row.push_back(cell);
     row.insert(row.end(), {integer(static_cast<long long>(p.calls)), Cell(fmt("%.0f%%", 100 * in_predicates), fmt("%.4g", in_predicates)),
            time_by_predicate(p), seconds_cell(p.calls ? p.seconds / p.calls : 0),
            seconds_cell(p.slowest), p.slowest_call, cpu_wall(g.slowest_alone)});
@@ -860,27 +861,6 @@ std::vector<Ellipse> transformed(const std::vector<Ellipse>& sites, const Versio
     return out;
 }
 
-// `count` quadruples E1 E2 E3 Q from generate_sites(kind, 4, bits 8, box 10,
-// seeds 1, 2, ...) as bench_incircle draws them: E2, E3 swapped when only the
-// clockwise circle exists, skipped when neither does.
-std::vector<std::vector<Ellipse>> random_quadruples(SiteKind kind, long count) {
-    std::vector<std::vector<Ellipse>> out;
-    for (std::uint64_t seed = 1; static_cast<long>(out.size()) < count; ++seed) {
-        GeneratorOptions o;
-        o.kind = kind;
-        o.count = 4;
-        o.seed = seed;
-        o.bits = 8;
-        o.box = Rational(10);
-        std::vector<Ellipse> e = generate_sites(o);
-        const VoronoiCircles c = *voronoi_circle_count(e[0], e[1], e[2]);
-        if (c == VoronoiCircles::none) continue;
-        if (c == VoronoiCircles::cw_only) std::swap(e[1], e[2]);
-        out.push_back(std::move(e));
-    }
-    return out;
-}
-
 struct InvarianceResults {
     Table table{"invariance", {"quadruples", "version", "n", "disagreements", "conflict / no-conflict / tangent / no-circle",
                                "filter / subdivision / exact", "max precision", "median CPU (wall)", "max CPU (wall)",
@@ -892,7 +872,7 @@ struct InvarianceResults {
 void invariance_family(const std::string& family, SiteKind kind, const Config& config, InvarianceResults& out,
                        Anomalies& anomalies) {
     std::cerr << "[near_degenerate] translation and scaling, random " << family << "\n";
-    const auto quads = random_quadruples(kind, config.quadruples);
+    const auto quads = incircle_quadruples(kind, config.quadruples, 1, 8);
     std::vector<std::optional<InCircle>> base;
     for (const Version& v : versions()) {
         std::vector<double> cpu, wall;
@@ -1055,8 +1035,8 @@ int main(int argc, char** argv) {
                 "- CGAL 5.5: `Apollonius_graph_hierarchy_2` and `Apollonius_graph_2` with "
                 "`Apollonius_graph_filtered_traits_2<Simple_cartesian<double>>`, bulk `insert`. The hexagonal grid "
                 "(13/5 is not a double) goes to CGAL scaled by 5, a similar copy exact in double.\n"
-                "- Build times exclude site conversion and teardown. \"Edges only in ...\": the finite Delaunay edges "
-                "one graph has and the other lacks; \"ties\": every differing edge is a diagonal of four cocircular "
+                "- Build times exclude site conversion and teardown; ratios are on CPU time. \"Edges only in ...\": the "
+                "finite Delaunay edges one graph has and the other lacks; \"ties\": every differing edge is a diagonal of four cocircular "
                 "sites, which the insertion order decides (any other difference is an anomaly).\n\n");
     report.table(grids.times);
     report.text("\n");
@@ -1108,13 +1088,9 @@ int main(int argc, char** argv) {
                  "up to the cap, then the exact stage proves the tangency (its resultant runs on every hardware "
                  "thread, so its CPU time may exceed its wall time).");
 
-    const std::string md = report.markdown();
-    std::cout << md;
-    if (!args.out_dir.empty()) {
-        write_result(args.out_dir, "near_degenerate.csv",
+    report.publish(args.out_dir, "near_degenerate.md",
+                   {{"near_degenerate.csv",
                      long_csv({&grids.times, &grids.memory, &stages, &collinear.circles, &collinear.incircle,
-                               &rows.builds, &invariance.table, &caps.table}));
-        write_result(args.out_dir, "near_degenerate.md", md);
-    }
+                               &rows.builds, &invariance.table, &caps.table})}});
     return anomalies.count() ? 1 : 0;
 }

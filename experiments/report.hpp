@@ -40,6 +40,15 @@ inline std::string one_line(std::string s, std::size_t limit = 160) {
     return s;
 }
 
+// A check's message as a table cell and a plain CSV field: one line of at
+// most 120 characters, without commas.
+inline std::string check_message(const std::string& s) {
+    std::string t = one_line(s, 120);
+    for (char& c : t)
+        if (c == ',') c = ' ';
+    return t;
+}
+
 // A CSV field, quoted when it holds a comma, a quote or a line break.
 inline std::string csv_field(const std::string& s) {
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -198,6 +207,11 @@ public:
         return md.str();
     }
 
+    // Prints the report and, when out_dir is not empty, writes it to
+    // out_dir/md_name and each further file (name, text) beside it.
+    void publish(const std::string& out_dir, const std::string& md_name,
+                 const std::vector<std::pair<std::string, std::string>>& files = {});
+
 private:
     std::string title_, program_, command_, load_before_, load_after_, intro_, notes_, machine_note_;
     std::ostringstream body_;
@@ -207,6 +221,15 @@ private:
 inline void write_result(const std::string& dir, const std::string& name, const std::string& text) {
     std::ofstream(dir + "/" + name) << text;
     std::cerr << "[" << name << "] written to " << dir << "/" << name << "\n";
+}
+
+inline void Report::publish(const std::string& out_dir, const std::string& md_name,
+                            const std::vector<std::pair<std::string, std::string>>& files) {
+    const std::string md = markdown();
+    std::cout << md;
+    if (out_dir.empty()) return;
+    for (const auto& [name, text] : files) write_result(out_dir, name, text);
+    write_result(out_dir, md_name, md);
 }
 
 }  // namespace ellvor::experiments
