@@ -589,7 +589,7 @@ std::string ellipse_target_lines(const std::vector<Row>& rows, const std::vector
 }
 
 void report_circles(Report& report, const std::vector<Row>& rows, const std::vector<long>& ns, bool full) {
-    report.text("Site sets (circles):\n\n"
+    report.text("\nSite sets (circles):\n\n"
                 "- **disjoint**: " + describe_set("circles") + " (build_scaling's circles)\n"
                 "- **overlap**: " + describe_set("circles-cross30") +
                 ": exactly round(0.3 n) circles cross at least one other (counted exactly below); the same grid and "
@@ -624,7 +624,7 @@ void report_circles(Report& report, const std::vector<Row>& rows, const std::vec
     report.heading("Target");
     report.text("An overlapping build within 2× of a disjoint set of the same size. On circles, ellvor:\n\n" +
                 target_lines(circle_targets(rows, ns)) +
-                (full ? "" : "\nCircles: n = 10^4 and 10^5 skipped (run with --full).\n") + "\n");
+                (full ? "" : "\nCircles: n = 10^4 and 10^5 skipped (run with --full).\n"));
 }
 
 void report_ellipses(Report& report, const std::vector<Row>& rows, const std::vector<EllipseCase>& ecases, bool full) {
@@ -662,7 +662,7 @@ void report_ellipses(Report& report, const std::vector<Row>& rows, const std::ve
     report.text("10^4 random ellipses, 30% of them crossing another, built within 2× of a disjoint set of the same "
                 "size. ellvor (CPU time, medians):\n\n" +
                 ellipse_target_lines(rows, ecases) +
-                (full ? "" : "\nEllipses: n = 10^4 and 10^5 skipped (run with --full).\n") + "\n");
+                (full ? "" : "\nEllipses: n = 10^4 and 10^5 skipped (run with --full).\n"));
 }
 
 }  // namespace
@@ -714,10 +714,9 @@ int main(int argc, char** argv) {
                 "`--full` runs circles n = 10^3, 10^4 and 10^5 and ellipses n = 10^3, 10^4 and 10^5 (seeds 1, 2, 3), "
                 "`--out DIR` writes `overlap.csv` and this file; `--only circles` or `--only ellipses` runs one part "
                 "and prints it.");
-    report.text("\n");
     if (run_circles) report_circles(report, rows, plan.ns, args.full);
     if (run_ellipses) report_ellipses(report, rows, plan.ecases, args.full);
-    report.text("Anomalies (wrong crossing count, invalid graph, disagreement with CGAL, exception): " +
+    report.text("\nAnomalies (wrong crossing count, invalid graph, disagreement with CGAL, exception): " +
                 std::to_string(anomalies) + ".\n");
 
     report.publish(args.out_dir, "overlap.md", {{"overlap.csv", csv_table(rows).csv()}});
