@@ -1035,9 +1035,10 @@ int main(int argc, char** argv) {
                 "- CGAL 5.5: `Apollonius_graph_hierarchy_2` and `Apollonius_graph_2` with "
                 "`Apollonius_graph_filtered_traits_2<Simple_cartesian<double>>`, bulk `insert`. The hexagonal grid "
                 "(13/5 is not a double) goes to CGAL scaled by 5, a similar copy exact in double.\n"
-                "- Build times exclude site conversion and teardown; ratios are on CPU time. \"Edges only in ...\": the "
-                "finite Delaunay edges one graph has and the other lacks; \"ties\": every differing edge is a diagonal of four cocircular "
-                "sites, which the insertion order decides (any other difference is an anomaly).\n\n");
+                "- Build times exclude site conversion and teardown; ratios are on CPU time. \"Edges only in ...\": "
+                "the finite Delaunay edges one graph has and the other lacks; \"ties\": every differing edge is a "
+                "diagonal of four cocircular sites, which the insertion order decides (any other difference is an "
+                "anomaly).\n\n");
     report.table(grids.times);
     report.text("\n");
     report.table(grids.memory, "Peak memory of one build, each in a child forked before any other work (VmHWM after "
