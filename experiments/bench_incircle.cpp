@@ -3,8 +3,8 @@
 //       that (E1, E2, E3) has its counter-clockwise Voronoi circle;
 //   (b) the paper's InCircle circle datasets (1), (2a), (2b), (2c), (3)
 //       (generate_paper_dataset), side by side with CGAL's Apollonius
-//       Vertex_conflict_2 on the same circles (seed Table 2, last five columns:
-//       "Our code" 4.22 / 6.01 / 6.09 / 7.02 / 11.18 ms, Apollonius 0.040 /
+//       Vertex_conflict_2 on the same circles (the paper's Table 2, last five
+//       columns: "Our code" 4.22 / 6.01 / 6.09 / 7.02 / 11.18 ms, Apollonius 0.040 /
 //       0.052 / 0.057 / 0.069 / 0.295 ms).
 //
 // Per instance: the median of `reps` timed calls (ellvor: one call each, the
@@ -30,6 +30,8 @@
 // Each instance's ellvor calls are first run once in a forked child with a
 // 20 s limit: a crash or hang of the library becomes an "error" row.
 // Options: --reps N, --random N, --seed S, --bits B (random quadruples), --out DIR.
+#include "experiments/random_sites.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/voronoi_circle_count.hpp"
@@ -100,18 +102,8 @@ struct Row {
     std::string replay;        // the four sites
 };
 
-double now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 
-// Nearest-rank percentile.
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    std::size_t k = static_cast<std::size_t>(std::ceil(p / 100 * v.size()));
-    return v[std::min(v.size(), std::max<std::size_t>(k, 1)) - 1];
-}
 
 CSite to_cgal(const Ellipse& c) { return CSite(CPoint(c.xc().to_double(), c.yc().to_double()), c.a().to_double()); }
 
@@ -123,23 +115,9 @@ volatile long sink = 0;
 
 Dataset random_quadruples(long count, std::uint64_t seed, long bits, long& dropped) {
     Dataset ds{"random-ellipses", false, {}};
-    dropped = 0;
-    for (std::uint64_t s = seed; static_cast<long>(ds.instances.size()) < count; ++s) {
-        GeneratorOptions o;
-        o.kind = SiteKind::ellipses;
-        o.count = 4;
-        o.seed = s;
-        o.bits = bits;
-        o.box = Rational(10);
-        std::vector<Ellipse> e = generate_sites(o);
+    for (std::vector<Ellipse>& e : incircle_quadruples(SiteKind::ellipses, count, seed, bits, &dropped)) {
         Ellipse q = e.back();
         e.pop_back();
-        const VoronoiCircles c = *voronoi_circle_count(e[0], e[1], e[2]);
-        if (c == VoronoiCircles::cw_only) std::swap(e[1], e[2]);
-        if (c == VoronoiCircles::none) {
-            ++dropped;
-            continue;
-        }
         ds.instances.push_back({std::move(e), std::move(q)});
     }
     return ds;
@@ -230,9 +208,9 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
     }
     try {
         for (int r = 0; r < reps; ++r) {
-            const double t0 = now();
+            const double t0 = now_wall();
             d = incircle(e1, e2, e3, q);
-            t.push_back(now() - t0);
+            t.push_back(now_wall() - t0);
             sink += static_cast<int>((*d));
         }
         row.result = (d.is_decided() ? incircle_name(*d) : "undecided");
@@ -256,9 +234,9 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
             std::vector<double> w;
             Decision<InCircle> d2;
             for (int r = 0; r < reps; ++r) {
-                const double t0 = now();
+                const double t0 = now_wall();
                 d2 = incircle(e1, e2, e3, q2, {}, &circle);
-                w.push_back(now() - t0);
+                w.push_back(now_wall() - t0);
                 sink += static_cast<int>((*d2));
             }
             row.warm_us = median(w) * 1e6;
@@ -273,17 +251,17 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
     {
         std::vector<double> a, b, c;
         for (int r = 0; r < reps; ++r) {
-            double t0 = now();
+            double t0 = now_wall();
             sink += static_cast<int>(*voronoi_circle_count(e1, e2, e3));
-            a.push_back(now() - t0);
+            a.push_back(now_wall() - t0);
             if (!has_ccw) continue;
-            t0 = now();
+            t0 = now_wall();
             row.doubles_certified = certify_voronoi_circle_in_doubles(e1, e2, e3).has_value();
-            c.push_back(now() - t0);
-            t0 = now();
+            c.push_back(now_wall() - t0);
+            t0 = now_wall();
             VoronoiCircleSolver solver(e1, e2, e3);
             sink += solver.refine(48);
-            b.push_back(now() - t0);
+            b.push_back(now_wall() - t0);
         }
         row.count_us = median(a) * 1e6;
         if (!b.empty()) row.solver_us = median(b) * 1e6;
@@ -299,14 +277,14 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
         std::vector<double> c;
         CGAL::Sign s = CGAL::ZERO;
         for (int r = 0; r < reps; ++r) {
-            const double t0 = now();
+            const double t0 = now_wall();
             for (int k = 0; k < kBatch; ++k) {
                 // The sites escape and memory is clobbered: every call is evaluated anew.
                 asm volatile("" : : "r"(&p1), "r"(&p2), "r"(&p3), "r"(&cq) : "memory");
                 s = vc(p1, p2, p3, cq);
                 asm volatile("" : : "r"(&s) : "memory");
             }
-            c.push_back((now() - t0) / kBatch);
+            c.push_back((now_wall() - t0) / kBatch);
             sink += static_cast<int>(s);
         }
         row.cgal_sign = static_cast<int>(s);
@@ -326,12 +304,6 @@ Row run_instance(const std::string& dataset, long index, const Instance& in, boo
 
 
 
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
-
 // Rows whose sites go into the CSV (the others are replayed from dataset and
 // index: the generators are deterministic).
 bool notable(const Row& r) {
@@ -339,79 +311,51 @@ bool notable(const Row& r) {
            r.warm_result == "undecided" || r.warm_result == "tangent" || r.warm_result.rfind("error", 0) == 0;
 }
 
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"") == std::string::npos) return s;
-    std::string o = "\"";
-    for (char ch : s) o += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-    return o + "\"";
-}
+// ------------------------------------------------------------ measurements --
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
     int reps = 3;
     long random_count = 500, bits = 8;
     std::uint64_t seed = 1;
     bool full = false;
-    std::string out_dir;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto next = [&]() -> const char* {
-            if (i + 1 >= argc) {
-                std::cerr << "missing value after " << a << "\n";
-                std::exit(2);
-            }
-            return argv[++i];
-        };
-        if (a == "--full") {
-            full = true;
-        } else if (a == "--reps") {
-            reps = std::atoi(next());
-        } else if (a == "--random") {
-            random_count = std::atol(next());
-        } else if (a == "--seed") {
-            seed = std::strtoull(next(), nullptr, 10);
-        } else if (a == "--bits") {
-            bits = std::atol(next());
-        } else if (a == "--out") {
-            out_dir = next();
-        } else {
-            std::cerr << "usage: bench_incircle [--full] [--reps N] [--random N] [--seed S] [--bits B] [--out DIR]\n";
-            return 2;
-        }
-    }
-    if (full) {
-        reps = std::max(reps, 11);
-        random_count = std::max(random_count, 2000L);
-    }
-    if (reps < 1 || random_count < 1) {
-        std::cerr << "reps and random must be positive\n";
-        return 2;
-    }
-    std::string command = "build/experiments/bench_incircle";
-    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
-    const std::string load_before = loadavg();
+    std::string out_dir, command;
+};
 
-    std::vector<Dataset> datasets;
-    long dropped = 0;
-    datasets.push_back(random_quadruples(random_count, seed, bits, dropped));
-    std::vector<long> swapped_count;
+// The random quadruples, then the paper's five InCircle sets.
+struct Datasets {
+    std::vector<Dataset> sets;
+    long dropped = 0;                 // random quadruples without either circle
+    std::vector<long> swapped_count;  // per paper set: instances with E2, E3 swapped
+};
+
+Datasets make_datasets(const Options& o) {
+    Datasets d;
+    d.sets.push_back(random_quadruples(o.random_count, o.seed, o.bits, d.dropped));
     for (const char* s : {"1", "2a", "2b", "2c", "3"}) {
         long swapped = 0;
-        datasets.push_back(paper_set(s, seed, swapped));
-        swapped_count.push_back(swapped);
+        d.sets.push_back(paper_set(s, o.seed, swapped));
+        d.swapped_count.push_back(swapped);
     }
+    return d;
+}
 
+// Every instance of every dataset, one row each.
+std::vector<Row> measure_instances(const std::vector<Dataset>& datasets, int reps) {
     std::vector<Row> rows;
     for (const Dataset& ds : datasets) {
         std::cerr << "[bench_incircle] " << ds.name << ": " << ds.instances.size() << " instances\n";
-        const double t0 = now();
+        const double t0 = now_wall();
         for (std::size_t i = 0; i < ds.instances.size(); ++i)
             rows.push_back(run_instance(ds.name, static_cast<long>(i), ds.instances[i], ds.circles, reps));
-        std::cerr << "  done in " << fmt("%.2f", now() - t0) << " s\n";
+        std::cerr << "  done in " << fmt("%.2f", now_wall() - t0) << " s\n";
     }
-    // Cross-check of CGAL's per-call time: whole passes over a dataset (a new
-    // input every call), best of `reps` passes, divided by the instance count.
+    return rows;
+}
+
+// Cross-check of CGAL's per-call time: whole passes over a dataset (a new
+// input every call), best of max(reps, 5) passes, divided by the instance
+// count (NAN for the ellipse sets).
+std::vector<double> cgal_pass_times(const std::vector<Dataset>& datasets, int reps) {
     std::vector<double> cgal_pass_us(datasets.size(), NAN);
     for (std::size_t k = 0; k < datasets.size(); ++k) {
         const Dataset& ds = datasets[k];
@@ -423,155 +367,266 @@ int main(int argc, char** argv) {
         const auto vc = traits.vertex_conflict_2_object();
         double best = 1e300;
         for (int r = 0; r < std::max(reps, 5); ++r) {
-            const double t0 = now();
+            const double t0 = now_wall();
             long acc = 0;
             for (const auto& s4 : sites) acc += static_cast<int>(vc(s4[0], s4[1], s4[2], s4[3]));
-            best = std::min(best, now() - t0);
+            best = std::min(best, now_wall() - t0);
             sink += acc;
         }
         cgal_pass_us[k] = best / sites.size() * 1e6;
     }
-    const std::string load_after = loadavg();
+    return cgal_pass_us;
+}
 
-    // Summary per dataset
-    std::ostringstream md;
-    md << "# InCircle: time per call, ellvor vs CGAL Apollonius\n\n"
-       << "- Machine: " << cpu_model() << "\n"
-       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
-       << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/bench_incircle && " << command << "`\n"
-       << "- Repetitions per instance: " << reps
-       << " (per-instance time = median of the repetitions; ellvor: one call each, the circle certified afresh; CGAL: "
-          "batches of 32 calls / 32); median and p99 (nearest rank) over instances. \"CGAL pass\": best of "
-       << std::max(reps, 5) << " whole passes over the dataset (a new input every call) / n, a cross-check.\n"
-       << "- Random ellipses: generate_sites(ellipses, count 4, bits " << bits << ", box 10, seeds " << seed << ", "
-       << seed + 1 << ", ...): E1 E2 E3 | Q, E2 and E3 swapped when only the clockwise circle exists; " << dropped
-       << " quadruples without either circle skipped.\n"
-       << "- Paper sets: generate_paper_dataset(incircle, set, seed " << seed
-       << "), circles; where the generated order (E1, E2, E3) has only the clockwise circle, E2 and E3 are "
-          "swapped for both libraries (instances swapped: 1: "
-       << swapped_count[0] << ", 2a: " << swapped_count[1] << ", 2b: " << swapped_count[2] << ", 2c: "
-       << swapped_count[3] << ", 3: " << swapped_count[4]
-       << "). CGAL: Apollonius_graph_filtered_traits_2<Epick>::Vertex_conflict_2 on the circles rounded "
-          "to double (exact input only for set (1), which is dyadic).\n"
-       << "- Warm: a second call on the same triple with Q' = Q with halved semi-axes, reusing the triple's "
-          "VoronoiCircle (last argument of incircle, as the graph caches it); only where the CCW circle exists. \"cold (same)\" is the "
-          "cold median over those same instances.\n"
-       << "- Agreement: sign of ellvor (conflict -1, no-conflict +1, tangent 0) vs CGAL's sign, only where "
-          "voronoi_circle_count is ccw or both.\n\n";
-    md << "| dataset | n | ellvor median µs | ellvor p99 µs | CGAL median µs | CGAL p99 µs | ratio (medians) | "
-          "paper ratio | warm median µs | cold (same) median µs | CGAL pass µs/call |\n"
-       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    const std::vector<std::pair<std::string, double>> paper_ratio = {
+// ----------------------------------------------------------------- summary --
+
+// One dataset's rows, gathered.
+struct DatasetSummary {
+    std::vector<double> ellvor, cgal, warm, cold_same, count, doubles, solver;
+    long certified_in_doubles = 0;
+    long circles[4] = {0, 0, 0, 0}, results[6] = {0, 0, 0, 0, 0, 0}, agree = 0, compared = 0, disagree = 0,
+         max_precision = 0;
+    StageCounters stages;
+};
+
+DatasetSummary summarize(const Dataset& ds, const std::vector<Row>& rows) {
+    DatasetSummary s;
+    for (const Row& r : rows) {
+        if (r.dataset != ds.name) continue;
+        if (r.result != "error") s.ellvor.push_back(r.ellvor_us);
+        if (r.cgal_us >= 0) s.cgal.push_back(r.cgal_us);
+        if (r.count_us >= 0) s.count.push_back(r.count_us);
+        if (r.solver_us >= 0) s.solver.push_back(r.solver_us);
+        if (r.doubles_us >= 0) s.doubles.push_back(r.doubles_us);
+        s.certified_in_doubles += r.doubles_certified;
+        if (r.warm_us >= 0) {
+            s.warm.push_back(r.warm_us);
+            s.cold_same.push_back(r.ellvor_us);
+        }
+        const char* names[4] = {"none", "ccw", "cw", "both"};
+        for (int k = 0; k < 4; ++k) s.circles[k] += r.circles == names[k];
+        const char* rn[6] = {"conflict", "no-conflict", "tangent", "no-circle", "undecided", "error"};
+        for (int k = 0; k < 6; ++k) s.results[k] += r.result == rn[k];
+        if (r.result != "undecided" && r.result != "error")
+            for (Stage stage : kStages)
+                if (r.stage == stage_name(stage)) s.stages.record(stage);
+        s.max_precision = std::max(s.max_precision, r.precision);
+        if (r.agree == "yes" || r.agree == "no") ++s.compared;
+        s.agree += r.agree == "yes";
+        s.disagree += r.agree == "no";
+    }
+    return s;
+}
+
+// The paper's ratio ellvor / Apollonius per circle set (Emiris, Tsigaridas,
+// Tzoumas 2007, Table 2, ms per call: 4.22 / 6.01 / 6.09 / 7.02 / 11.18
+// against 0.040 / 0.052 / 0.057 / 0.069 / 0.295).
+std::string paper_ratio(const std::string& dataset) {
+    const std::vector<std::pair<std::string, double>> ratios = {
         {"paper-1", 4.220 / 0.040}, {"paper-2a", 6.010 / 0.052}, {"paper-2b", 6.090 / 0.057},
         {"paper-2c", 7.017 / 0.069}, {"paper-3", 11.180 / 0.295}};
-    std::ostringstream stages;
-    stages << "| dataset | circles none/ccw/cw/both | conflict | no-conflict | tangent | no-circle | undecided | error | "
-              "decided by filter/subdivision/exact | max precision | agree / compared | disagree |\n"
-           << "|---|---|---:|---:|---:|---:|---:|---:|---|---:|---|---:|\n";
-    std::ostringstream breakdown;
-    breakdown << "| dataset | voronoi_circle_count median µs | double-interval certificate median µs | certified "
-                 "in doubles | solver refine(48) median µs | solver p99 µs |\n"
-              << "|---|---:|---:|---:|---:|---:|\n";
-    std::vector<const Row*> anomalies;
-    int bad_targets = 0;
-    for (std::size_t dk = 0; dk < datasets.size(); ++dk) {
-        const Dataset& ds = datasets[dk];
-        std::vector<double> e, c, w, cw, cnt, dbl, sol;
-        long certified_in_doubles = 0;
-        long n_circ[4] = {0, 0, 0, 0}, res[6] = {0, 0, 0, 0, 0, 0}, st[3] = {0, 0, 0}, agree = 0, compared = 0,
-             disagree = 0, maxprec = 0;
-        for (const Row& r : rows) {
-            if (r.dataset != ds.name) continue;
-            if (r.result != "error") e.push_back(r.ellvor_us);
-            if (r.cgal_us >= 0) c.push_back(r.cgal_us);
-            if (r.count_us >= 0) cnt.push_back(r.count_us);
-            if (r.solver_us >= 0) sol.push_back(r.solver_us);
-            if (r.doubles_us >= 0) dbl.push_back(r.doubles_us);
-            certified_in_doubles += r.doubles_certified;
-            if (r.warm_us >= 0) {
-                w.push_back(r.warm_us);
-                cw.push_back(r.ellvor_us);
-            }
-            const char* names[4] = {"none", "ccw", "cw", "both"};
-            for (int k = 0; k < 4; ++k) n_circ[k] += r.circles == names[k];
-            const char* rn[6] = {"conflict", "no-conflict", "tangent", "no-circle", "undecided", "error"};
-            for (int k = 0; k < 6; ++k) res[k] += r.result == rn[k];
-            if (r.result != "undecided" && r.result != "error")
-                for (int k = 0; k < 3; ++k) st[k] += r.stage == stage_name(static_cast<Stage>(k));
-            maxprec = std::max(maxprec, r.precision);
-            if (r.agree == "yes" || r.agree == "no") ++compared;
-            agree += r.agree == "yes";
-            disagree += r.agree == "no";
-            if (r.agree == "no" || r.result == "undecided" || r.result == "error" || r.result == "tangent" ||
-                r.warm_result == "undecided" || r.warm_result.rfind("error", 0) == 0)
-                anomalies.push_back(&r);
-        }
-        const double em = median(e), cm = c.empty() ? NAN : median(c);
-        std::string pr = "—";
-        for (const auto& [name, ratio] : paper_ratio)
-            if (name == ds.name) pr = fmt("%.0f×", ratio);
-        md << "| " << ds.name << " | " << ds.instances.size() << " | " << fmt("%.1f", em) << " | "
-           << fmt("%.1f", percentile(e, 99)) << " | " << (c.empty() ? "—" : fmt("%.2f", cm)) << " | "
-           << (c.empty() ? "—" : fmt("%.2f", percentile(c, 99))) << " | " << (c.empty() ? "—" : fmt("%.1f×", em / cm))
-           << " | " << pr << " | " << (w.empty() ? "—" : fmt("%.1f", median(w))) << " | "
-           << (cw.empty() ? "—" : fmt("%.1f", median(cw))) << " | "
-           << (ds.circles ? fmt("%.3f", cgal_pass_us[dk]) : std::string("—")) << " |\n";
-        breakdown << "| " << ds.name << " | " << fmt("%.1f", median(cnt)) << " | "
-                  << (dbl.empty() ? "—" : fmt("%.1f", median(dbl))) << " | "
-                  << (dbl.empty() ? "—" : std::to_string(certified_in_doubles) + " / " + std::to_string(dbl.size()))
-                  << " | " << (sol.empty() ? "—" : fmt("%.1f", median(sol))) << " | " << (sol.empty() ? "—" : fmt("%.1f", percentile(sol, 99)))
-                  << " |\n";
-        stages << "| " << ds.name << " | " << n_circ[0] << "/" << n_circ[1] << "/" << n_circ[2] << "/" << n_circ[3]
-               << " | " << res[0] << " | " << res[1] << " | " << res[2] << " | " << res[3] << " | " << res[4] << " | "
-               << res[5] << " | " << st[0] << "/" << st[1] << "/" << st[2] << " | " << maxprec << " | "
-               << (ds.circles ? std::to_string(agree) + " / " + std::to_string(compared) : std::string("—")) << " | "
-               << (ds.circles ? std::to_string(disagree) : std::string("—")) << " |\n";
-        if (ds.name == "random-ellipses" && em > 5) ++bad_targets;
-        if (ds.circles && em > 3 * cm) ++bad_targets;
+    for (const auto& [name, ratio] : ratios)
+        if (name == dataset) return fmt("%.0f×", ratio);
+    return "—";
+}
+
+std::string or_dash(bool have, const std::string& s) { return have ? s : "—"; }
+
+Table time_table(const std::vector<Dataset>& datasets, const std::vector<DatasetSummary>& sums,
+                 const std::vector<double>& cgal_pass_us) {
+    Table t("times", {"dataset", "n", "ellvor median µs", "ellvor p99 µs", "CGAL median µs", "CGAL p99 µs",
+                      "ratio (medians)", "paper ratio", "warm median µs", "cold (same) median µs",
+                      "CGAL pass µs/call"});
+    for (std::size_t k = 0; k < datasets.size(); ++k) {
+        const Dataset& ds = datasets[k];
+        const DatasetSummary& s = sums[k];
+        const double em = median(s.ellvor), cm = s.cgal.empty() ? NAN : median(s.cgal);
+        const bool cgal = !s.cgal.empty();
+        t.add({ds.name, integer(static_cast<long long>(ds.instances.size())), fmt("%.1f", em),
+               fmt("%.1f", quantile(s.ellvor, 0.99)), or_dash(cgal, fmt("%.2f", cm)),
+               or_dash(cgal, fmt("%.2f", quantile(s.cgal, 0.99))), or_dash(cgal, fmt("%.1f×", em / cm)),
+               paper_ratio(ds.name), or_dash(!s.warm.empty(), fmt("%.1f", median(s.warm))),
+               or_dash(!s.cold_same.empty(), fmt("%.1f", median(s.cold_same))),
+               or_dash(ds.circles, fmt("%.3f", cgal_pass_us[k]))});
     }
-    md << "\nTargets (issue 10): median ≤ 5 µs on random ellipses; ≤ 3× CGAL on circles (seed: 38–116× slower than "
-          "CGAL). "
-       << "Rows missing a target: " << bad_targets << ".\n\n"
-       << "## Where the cold time goes\n\n"
-       << "Each part timed alone (median of the repetitions per instance, median over instances; the certificates "
-          "only where the CCW circle exists). A cold incircle call on ellipses = the double-interval certificate + "
-          "the distance d(V, Q) in double intervals; only when that does not decide, the count + the Arb solver + "
-          "the certified distance at 64 bits (+ more precision when needed). Four circles take the closed form.\n\n"
-       << breakdown.str() << "\n"
-       << "## Which stage decided\n\n"
-       << stages.str()
-       << "\nStages of answered calls (conflict / no-conflict / tangent / no-circle) by the last stage that ran; "
-          "max precision = largest Arb precision any call used (the cap is 4096).\n\n"
-       << "## Anomalies and degenerate cases (undecided, error = crash/timeout/exception in a child run, tangent, "
-          "disagreement with CGAL where the CCW circle exists)\n\n";
-    if (anomalies.empty()) md << "None.\n";
-    const std::size_t kShown = 20;
-    for (std::size_t k = 0; k < anomalies.size() && k < kShown; ++k) {
+    return t;
+}
+
+// Targets: median <= 5 µs on random ellipses, <= 3x CGAL on circles.
+long rows_missing_a_target(const std::vector<Dataset>& datasets, const std::vector<DatasetSummary>& sums) {
+    long bad = 0;
+    for (std::size_t k = 0; k < datasets.size(); ++k) {
+        const double em = median(sums[k].ellvor), cm = sums[k].cgal.empty() ? NAN : median(sums[k].cgal);
+        if (datasets[k].name == "random-ellipses" && em > 5) ++bad;
+        if (datasets[k].circles && em > 3 * cm) ++bad;
+    }
+    return bad;
+}
+
+Table breakdown_table(const std::vector<Dataset>& datasets, const std::vector<DatasetSummary>& sums) {
+    Table t("breakdown", {"dataset", "voronoi_circle_count median µs", "double-interval certificate median µs",
+                          "certified in doubles", "solver refine(48) median µs", "solver p99 µs"});
+    for (std::size_t k = 0; k < datasets.size(); ++k) {
+        const DatasetSummary& s = sums[k];
+        const bool dbl = !s.doubles.empty(), sol = !s.solver.empty();
+        t.add({datasets[k].name, fmt("%.1f", median(s.count)), or_dash(dbl, fmt("%.1f", median(s.doubles))),
+               or_dash(dbl, std::to_string(s.certified_in_doubles) + " / " + std::to_string(s.doubles.size())),
+               or_dash(sol, fmt("%.1f", median(s.solver))), or_dash(sol, fmt("%.1f", quantile(s.solver, 0.99)))});
+    }
+    return t;
+}
+
+Table stage_table(const std::vector<Dataset>& datasets, const std::vector<DatasetSummary>& sums) {
+    Table t("stages", {"dataset", "circles none/ccw/cw/both", "conflict", "no-conflict", "tangent", "no-circle",
+                       "undecided", "error", "decided by filter/subdivision/exact", "max precision",
+                       "agree / compared", "disagree"},
+            "llrrrrrrlrlr");
+    for (std::size_t k = 0; k < datasets.size(); ++k) {
+        const Dataset& ds = datasets[k];
+        const DatasetSummary& s = sums[k];
+        std::string decided;
+        for (Stage stage : kStages) decided += (decided.empty() ? "" : "/") + std::to_string(s.stages[stage]);
+        TableRow row = {ds.name, std::to_string(s.circles[0]) + "/" + std::to_string(s.circles[1]) + "/" +
+                                     std::to_string(s.circles[2]) + "/" + std::to_string(s.circles[3])};
+        for (long n : s.results) row.push_back(integer(n));
+        row.insert(row.end(), {decided, integer(s.max_precision),
+                               or_dash(ds.circles, std::to_string(s.agree) + " / " + std::to_string(s.compared)),
+                               or_dash(ds.circles, std::to_string(s.disagree))});
+        t.add(std::move(row));
+    }
+    return t;
+}
+
+// Undecided, error, tangent, a disagreement with CGAL: at most `shown` lines.
+std::string anomaly_lines(const std::vector<Row>& rows, std::size_t shown) {
+    std::vector<const Row*> anomalies;
+    for (const Row& r : rows)
+        if (r.agree == "no" || r.result == "undecided" || r.result == "error" || r.result == "tangent" ||
+            r.warm_result == "undecided" || r.warm_result.rfind("error", 0) == 0)
+            anomalies.push_back(&r);
+    if (anomalies.empty()) return "None.\n";
+    std::ostringstream md;
+    for (std::size_t k = 0; k < anomalies.size() && k < shown; ++k) {
         const Row& r = *anomalies[k];
         md << "- " << r.dataset << " #" << r.index << ": ellvor " << r.result << " (" << r.stage << ", prec "
            << r.precision << "), warm " << (r.warm_result.empty() ? "—" : r.warm_result) << ", CGAL "
            << (r.cgal_sign == 2 ? std::string("—") : std::to_string(r.cgal_sign)) << ", circles " << r.circles
            << " — `" << r.replay << "`\n";
     }
-    if (anomalies.size() > kShown)
-        md << "- … " << anomalies.size() - kShown << " more (see incircle.csv)\n";
+    if (anomalies.size() > shown) md << "- … " << anomalies.size() - shown << " more (see incircle.csv)\n";
+    return md.str();
+}
 
-    std::cout << md.str();
-    if (!out_dir.empty()) {
-        std::ofstream csv(out_dir + "/incircle.csv");
-        csv << "dataset,index,circles,result,stage,precision,newton_steps,ellvor_us,warm_us,warm_result,cgal_sign,"
-               "cgal_us,agree,count_us,solver_us,sites\n";
-        for (const Row& r : rows)
-            csv << r.dataset << "," << r.index << "," << r.circles << "," << r.result << "," << csv_field(r.stage)
-                << "," << r.precision << "," << r.newton_steps << "," << fmt("%.3f", r.ellvor_us) << ","
-                << (r.warm_us >= 0 ? fmt("%.3f", r.warm_us) : std::string()) << "," << csv_field(r.warm_result) << ","
-                << (r.cgal_sign == 2 ? std::string() : std::to_string(r.cgal_sign)) << ","
-                << (r.cgal_us >= 0 ? fmt("%.4f", r.cgal_us) : std::string()) << "," << r.agree << ","
-                << fmt("%.3f", r.count_us) << "," << (r.solver_us >= 0 ? fmt("%.3f", r.solver_us) : std::string())
-                << "," << (notable(r) ? csv_field(r.replay) : std::string()) << "\n";
-        std::ofstream(out_dir + "/incircle.md") << md.str();
-        std::cerr << "[bench_incircle] wrote " << out_dir << "/incircle.{csv,md}\n";
+// incircle.csv: one line per instance; the sites only for notable rows.
+Table instance_table(const std::vector<Row>& rows) {
+    Table t("incircle", {"dataset", "index", "circles", "result", "stage", "precision", "newton_steps", "ellvor_us",
+                         "warm_us", "warm_result", "cgal_sign", "cgal_us", "agree", "count_us", "solver_us", "sites"});
+    for (const Row& r : rows)
+        t.add({r.dataset, integer(r.index), r.circles, r.result, r.stage, integer(r.precision), integer(r.newton_steps),
+               fmt("%.3f", r.ellvor_us), r.warm_us >= 0 ? fmt("%.3f", r.warm_us) : std::string(), r.warm_result,
+               r.cgal_sign == 2 ? std::string() : std::to_string(r.cgal_sign),
+               r.cgal_us >= 0 ? fmt("%.4f", r.cgal_us) : std::string(), r.agree, fmt("%.3f", r.count_us),
+               r.solver_us >= 0 ? fmt("%.3f", r.solver_us) : std::string(), notable(r) ? r.replay : std::string()});
+    return t;
+}
+
+bool parse_options(int argc, char** argv, Options& o) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> const char* {
+            if (i + 1 >= argc) {
+                std::cerr << "missing value after " << a << "\n";
+                std::exit(2);
+            }
+            return argv[++i];
+        };
+        if (a == "--full") {
+            o.full = true;
+        } else if (a == "--reps") {
+            o.reps = std::atoi(next());
+        } else if (a == "--random") {
+            o.random_count = std::atol(next());
+        } else if (a == "--seed") {
+            o.seed = std::strtoull(next(), nullptr, 10);
+        } else if (a == "--bits") {
+            o.bits = std::atol(next());
+        } else if (a == "--out") {
+            o.out_dir = next();
+        } else {
+            std::cerr << "usage: bench_incircle [--full] [--reps N] [--random N] [--seed S] [--bits B] [--out DIR]\n";
+            return false;
+        }
     }
+    if (o.full) {
+        o.reps = std::max(o.reps, 11);
+        o.random_count = std::max(o.random_count, 2000L);
+    }
+    if (o.reps < 1 || o.random_count < 1) {
+        std::cerr << "reps and random must be positive\n";
+        return false;
+    }
+    o.command = "build/experiments/bench_incircle";
+    for (int i = 1; i < argc; ++i) o.command += std::string(" ") + argv[i];
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    if (!parse_options(argc, argv, o)) return 2;
+    Report report("InCircle: time per call, ellvor vs CGAL Apollonius", "bench_incircle", o.command);
+
+    // The measurements.
+    const Datasets data = make_datasets(o);
+    const std::vector<Row> rows = measure_instances(data.sets, o.reps);
+    const std::vector<double> cgal_pass_us = cgal_pass_times(data.sets, o.reps);
+    std::vector<DatasetSummary> sums;
+    for (const Dataset& ds : data.sets) sums.push_back(summarize(ds, rows));
+
+    // The report.
+    const std::vector<long>& sw = data.swapped_count;
+    report.note("Repetitions per instance: " + std::to_string(o.reps) +
+                " (per-instance time = median of the repetitions; ellvor: one call each, the circle certified afresh; "
+                "CGAL: batches of 32 calls / 32); median and p99 (nearest rank) over instances. \"CGAL pass\": best "
+                "of " + std::to_string(std::max(o.reps, 5)) +
+                " whole passes over the dataset (a new input every call) / n, a cross-check.");
+    report.note("Random ellipses: generate_sites(ellipses, count 4, bits " + std::to_string(o.bits) + ", box 10, seeds " +
+                std::to_string(o.seed) + ", " + std::to_string(o.seed + 1) +
+                ", ...): E1 E2 E3 | Q, E2 and E3 swapped when only the clockwise circle exists; " +
+                std::to_string(data.dropped) + " quadruples without either circle skipped.");
+    report.note("Paper sets: generate_paper_dataset(incircle, set, seed " + std::to_string(o.seed) +
+                "), circles; E2 and E3 swapped for both libraries where only the clockwise circle exists (instances "
+                "swapped: 1: " + std::to_string(sw[0]) + ", 2a: " + std::to_string(sw[1]) + ", 2b: " +
+                std::to_string(sw[2]) + ", 2c: " + std::to_string(sw[3]) + ", 3: " + std::to_string(sw[4]) +
+                "). CGAL: Apollonius_graph_filtered_traits_2<Epick>::Vertex_conflict_2 on the circles rounded to "
+                "double (exact input only for set (1), which is dyadic).");
+    report.note("Warm: a second call on the same triple with Q' = Q with halved semi-axes, reusing the triple's "
+                "VoronoiCircle (as the graph caches it); only where the CCW circle exists. \"cold (same)\" is the "
+                "cold median over those same instances.");
+    report.note("Agreement: sign of ellvor (conflict -1, no-conflict +1, tangent 0) vs CGAL's sign, only where "
+                "voronoi_circle_count is ccw or both. Paper ratio: Emiris, Tsigaridas, Tzoumas 2007, Table 2.");
+    report.table(time_table(data.sets, sums, cgal_pass_us));
+    report.text("\nTargets: median ≤ 5 µs on random ellipses; ≤ 3× CGAL on circles (the paper: 38–116× slower "
+                "than CGAL). Rows missing a target: " +
+                std::to_string(rows_missing_a_target(data.sets, sums)) + ".\n");
+
+    report.heading("Where the cold time goes");
+    report.table(breakdown_table(data.sets, sums),
+                 "Each part of a cold call timed alone (median of the repetitions per instance, median over instances; "
+                 "the certificates only where the CCW circle exists). On ellipses a cold call is the double-interval "
+                 "certificate + d(V, Q) in double intervals; only when that does not decide, the count + the Arb "
+                 "solver + the distance at 64 bits. Four circles take the closed form.");
+
+    report.heading("Which stage decided");
+    report.table(stage_table(data.sets, sums));
+    report.text("\nStages of answered calls by the last stage that ran; max precision = largest Arb precision any "
+                "call used (the cap is 4096).\n");
+
+    report.heading("Anomalies and degenerate cases (undecided, error = crash/timeout/exception in a child run, "
+                   "tangent, disagreement with CGAL where the CCW circle exists)");
+    report.text(anomaly_lines(rows, 20));
+
+    report.publish(o.out_dir, "incircle.md", {{"incircle.csv", instance_table(rows).csv()}});
     return 0;
 }

@@ -2,8 +2,8 @@
 // on the paper's circle datasets (section 5.1: (1), (2a), (2b), (2c), (3), 500
 // instances each, fixed seed) and on random ellipses, with the stage that
 // decided, against CGAL's Apollonius_graph_filtered_traits_2 (EPICK) on the same
-// circles (converted to double). Prints a markdown table and writes
-// experiments/results/two_site_predicates.md.
+// circles (converted to double). Prints the report; with --out DIR writes it to
+// DIR/two_site_predicates.md.
 //
 // Dataset reading (the paper leaves details open, see the results file): the
 // "point moving from (0,-100) to (100,0) with step 1/2" is the path up the
@@ -13,6 +13,8 @@
 // every coordinate of every point/center plus a uniform rational in
 // [-10^-k, 10^-k] (k = 2, 4, 6). (3): centers uniform in [-10,10]^2, radii in
 // (0,2], denominators 1000.
+#include "experiments/report.hpp"
+#include "experiments/run_environment.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/side_of_bisector.hpp"
 
@@ -33,6 +35,8 @@
 using namespace ellvor;
 
 namespace {
+
+using namespace ellvor::experiments;
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Traits = CGAL::Apollonius_graph_filtered_traits_2<K>;
@@ -232,78 +236,84 @@ Row bench_kappa2(const std::string& set) {
     return row;
 }
 
-std::string fmt(double v, const char* f = "%.2f") {
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
+// The paper's Table 2 (ms per call, 1.83 GHz Core 2 Duo) for sets (1) .. (3):
+// its own code and Apollonius, for kappa1 and kappa2.
+struct PaperTimes {
+    double ours[5], apollonius[5];
+};
+const PaperTimes kPaperKappa1 = {{0.490, 0.675, 0.850, 1.060, 1.920}, {0.010, 0.015, 0.016, 0.017, 0.016}};
+const PaperTimes kPaperKappa2 = {{1.290, 1.590, 1.740, 2.091, 4.650}, {0.038, 0.047, 0.054, 0.061, 0.096}};
+
+const std::vector<std::string> kSetNames = {"(1)", "(2a)", "(2b)", "(2c)", "(3)", "random ellipses"};
+
+// One row per set of one predicate, with the paper's times beside it.
+void add_rows(Table& t, const std::vector<Row>& rows, const PaperTimes& paper) {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const Row& r = rows[k];
+        std::string stages;
+        for (Stage stage : kStages) stages += (stages.empty() ? "" : "/") + std::to_string(r.stages[stage]);
+        t.add({r.predicate, r.set, fmt("%.2f", r.median_us), fmt("%.2f", r.p99_us), stages, integer(r.errors),
+               r.cgal_us >= 0 ? fmt("%.3f", r.cgal_us) : "—",
+               r.cgal_us > 0 ? fmt("%.0f", r.median_us / r.cgal_us) + "×" : "—",
+               r.cgal_us >= 0 ? std::to_string(r.cgal_disagree) : "—",
+               k < 5 ? fmt("%.3f", paper.ours[k]) : "—", k < 5 ? fmt("%.3f", paper.apollonius[k]) : "—"});
+    }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::vector<std::string> sets = {"(1)", "(2a)", "(2b)", "(2c)", "(3)", "random ellipses"};
-    // Paper, Table 2 (msec per call, 1.83 GHz Core 2 Duo): ours / Apollonius.
-    const double paper1[] = {0.490, 0.675, 0.850, 1.060, 1.920}, apoll1[] = {0.010, 0.015, 0.016, 0.017, 0.016};
-    const double paper2[] = {1.290, 1.590, 1.740, 2.091, 4.650}, apoll2[] = {0.038, 0.047, 0.054, 0.061, 0.096};
-    std::vector<Row> rows;
-    for (const std::string& s : sets) rows.push_back(bench_kappa1(s));
-    for (const std::string& s : sets) rows.push_back(bench_kappa2(s));
-
-    std::ostringstream t;
-    t << "| predicate | set | ellvor median µs | ellvor p99 µs | stages filter/subdiv/exact | errors | CGAL µs/call | ratio ellvor/CGAL | sign disagreements vs CGAL (double input) | paper ours ms | paper Apollonius ms |\n";
-    t << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (size_t i = 0; i < rows.size(); ++i) {
-        const Row& r = rows[i];
-        const size_t k = i % sets.size();
-        const bool k1 = i < sets.size();
-        t << "| " << r.predicate << " | " << r.set << " | " << fmt(r.median_us) << " | " << fmt(r.p99_us) << " | "
-          << r.stages[Stage::filter] << "/" << r.stages[Stage::subdivision] << "/" << r.stages[Stage::exact] << " | " << r.errors << " | "
-          << (r.cgal_us >= 0 ? fmt(r.cgal_us, "%.3f") : "—") << " | "
-          << (r.cgal_us > 0 ? fmt(r.median_us / r.cgal_us, "%.0f") + "×" : "—") << " | "
-          << (r.cgal_us >= 0 ? std::to_string(r.cgal_disagree) : "—") << " | "
-          << (k < 5 ? fmt(k1 ? paper1[k] : paper2[k], "%.3f") : "—") << " | "
-          << (k < 5 ? fmt(k1 ? apoll1[k] : apoll2[k], "%.3f") : "—") << " |\n";
+    const char* const usage =
+        "usage: bench_two_site_predicates [--out DIR]\n"
+        "  --out DIR  write DIR/two_site_predicates.md\n";
+    experiments::BenchArguments args;
+    if (!experiments::parse_bench_arguments(argc, argv, "bench_two_site_predicates", usage, args)) return 2;
+    if (args.full) {  // one size only
+        std::fputs(usage, stderr);
+        return 2;
     }
-    std::printf("%s", t.str().c_str());
+    Report report("Two-site predicates: time per call (κ1, κ2)", "bench_two_site_predicates", args.command);
 
-    // Like the other experiments, results are written only when asked for
-    // (`make bench` just prints): bench_two_site_predicates experiments/results/two_site_predicates.md
-    if (argc < 2) return 0;
-    const char* out = argv[1];
-    std::string cpu = "unknown";
-    if (FILE* p = popen("lscpu | grep -E 'Model name|^CPU\\(s\\)' | tr -s ' ' | paste -sd ';' -", "r")) {
-        char buf[512];
-        if (std::fgets(buf, sizeof buf, p)) { cpu = buf; if (!cpu.empty() && cpu.back() == '\n') cpu.pop_back(); }
-        pclose(p);
-    }
-    std::ofstream f(out);
-    f << "# Two-site predicates: time per call (κ1, κ2)\n\n"
-      << "Command: `make build/experiments/bench_two_site_predicates && build/experiments/bench_two_site_predicates "
-         "experiments/results/two_site_predicates.md` (`make bench` only prints the table), built with "
-         "`-O2 -g -DNDEBUG -frounding-math`.\n\n"
-      << "Machine: " << cpu << " (shared, 2 cores; timings are wall-clock per call, " << kPasses
-      << " passes over 500 instances per set).\n\n"
-      << "Datasets (seed §5.1, 500 instances each, fixed seed 20070501). Our reading of the paper: the query point "
-         "(κ1) or the query circle's center (κ2, radius 1) moves from (0,−100) up the bisector x = 0 to the origin, "
-         "then along the center line to (100,0), step 1/2 (401 positions, both legs degenerate for κ1; for κ2 the "
-         "queries touch the bitangent y = 1 or y = −1), cycled to 500 instances; sites (−2,0) and (2,0) of radius 1. "
-         "(2a/b/c): every coordinate of every point and center plus a uniform rational in [−10⁻ᵏ, 10⁻ᵏ], k = 2, 4, 6. "
-         "(3): centers uniform in [−10,10]², radii in (0,2], denominators 1000 (κ2: E1, E2 disjoint). Random ellipses: "
-         "a, b in (0,3], w in [−2,2], centers in [−10,10]², denominators 100 (κ2: bounding circles pairwise apart).\n\n"
-         "CGAL: `Apollonius_graph_filtered_traits_2<Epick>` `Oriented_side_of_bisector_2` and 3-argument "
-         "`Vertex_conflict_2` on the same circles converted to double; mean per call over 200 repetitions. "
-         "\"Sign disagreements\" compares CGAL's answer on the double-rounded input with ellvor's exact answer on the "
-         "rational input, so disagreements on the perturbed degenerate sets are rounding, not errors.\n\n"
-      << t.str()
-      << "\nPaper (Table 2, msec per call, 1.83 GHz Core 2 Duo): κ1 0.49–1.92 ms (Apollonius 0.010–0.016 ms), "
-         "κ2 1.29–4.65 ms (Apollonius 0.038–0.096 ms).\n\n"
-         "Notes: the κ1 (1) median is dominated by the exact ties on the bisector leg (x = 0), decided by the exact "
-         "stage; the perturbed sets never leave the filter. The one κ2 (1) disagreement with CGAL is the query circle "
-         "identical to E2 (center (2,0) on the path): Q touches L exactly at T2. CGAL's tie-break compares the "
-         "orientations of q's center against the perpendiculars through p1's and p2's centers and answers NEGATIVE "
-         "when q's center is on one of them (`o1 == o2` fails); ellvor's contract says NEGATIVE only strictly between. "
-         "It cannot happen for valid (disjoint, non-hidden) sites. CGAL's κ2 on (2a–c) falls back to its exact "
-         "stage (≈5–7 µs), hence the ratio near 1 there.\n";
-    std::fprintf(stderr, "wrote %s\n", out);
+    // The measurements.
+    std::vector<Row> kappa1, kappa2;
+    for (const std::string& s : kSetNames) kappa1.push_back(bench_kappa1(s));
+    for (const std::string& s : kSetNames) kappa2.push_back(bench_kappa2(s));
+
+    // The report.
+    Table t("times", {"predicate", "set", "ellvor median µs", "ellvor p99 µs", "stages filter/subdiv/exact", "errors",
+                      "CGAL µs/call", "ratio ellvor/CGAL", "sign disagreements vs CGAL (double input)",
+                      "paper ours ms", "paper Apollonius ms"},
+            std::string(11, 'l'));
+    add_rows(t, kappa1, kPaperKappa1);
+    add_rows(t, kappa2, kPaperKappa2);
+    report.machine_note("shared; timings are wall-clock per call, " + std::to_string(kPasses) +
+                        " passes over 500 instances per set");
+    report.intro("Datasets: the paper's section 5.1 (Emiris, Tsigaridas, Tzoumas 2007), 500 instances each, fixed "
+                 "seed 20070501. Our reading of the paper: the query point (κ1) or the query circle's center (κ2, "
+                 "radius 1) moves from (0,−100) up the bisector x = 0 to the origin, then along the center line to "
+                 "(100,0), step 1/2 (401 positions, both legs degenerate for κ1; for κ2 the queries touch the "
+                 "bitangent y = 1 or y = −1), cycled to 500 instances; sites (−2,0) and (2,0) of radius 1. (2a/b/c): "
+                 "every coordinate of every point and center plus a uniform rational in [−10⁻ᵏ, 10⁻ᵏ], k = 2, 4, 6. "
+                 "(3): centers uniform in [−10,10]², radii in (0,2], denominators 1000 (κ2: E1, E2 disjoint). Random "
+                 "ellipses: a, b in (0,3], w in [−2,2], centers in [−10,10]², denominators 100 (κ2: bounding circles "
+                 "pairwise apart).");
+    report.intro("CGAL: `Apollonius_graph_filtered_traits_2<Epick>` `Oriented_side_of_bisector_2` and 3-argument "
+                 "`Vertex_conflict_2` on the same circles converted to double; mean per call over 200 repetitions. "
+                 "\"Sign disagreements\" compares CGAL's answer on the double-rounded input with ellvor's exact "
+                 "answer on the rational input, so disagreements on the perturbed degenerate sets are rounding, not "
+                 "errors.");
+    report.text("\n");
+    report.table(t);
+    report.text("\nPaper (Table 2, msec per call, 1.83 GHz Core 2 Duo): κ1 0.49–1.92 ms (Apollonius 0.010–0.016 ms), "
+                "κ2 1.29–4.65 ms (Apollonius 0.038–0.096 ms).\n\n"
+                "Notes: the κ1 (1) median is dominated by the exact ties on the bisector leg (x = 0), decided by the "
+                "exact stage; the perturbed sets never leave the filter. The one κ2 (1) disagreement with CGAL is the "
+                "query circle identical to E2 (center (2,0) on the path): Q touches L exactly at T2. CGAL's tie-break "
+                "answers NEGATIVE when q's center is on one of the perpendiculars through p1's and p2's centers; "
+                "ellvor's contract says NEGATIVE only strictly between. It cannot happen for valid (disjoint, "
+                "non-hidden) sites. CGAL's κ2 on (2a–c) falls back to its exact stage (≈5–7 µs), hence the ratio "
+                "near 1 there.\n");
+
+    report.publish(args.out_dir, "two_site_predicates.md");
     return 0;
 }

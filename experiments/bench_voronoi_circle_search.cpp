@@ -28,6 +28,8 @@
 //   build/experiments/bench_voronoi_circle_search          # make bench: 30 random triples a row, < 30 s
 //   build/experiments/bench_voronoi_circle_search --full --out experiments/results
 //       # 200 random triples a row, more repetitions; writes voronoi_circle_search.{csv,md}
+#include "experiments/random_sites.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/ellipse.hpp"
@@ -128,13 +130,7 @@ Sample measure(const std::string& row, const Case& c, int repetition) {
 std::vector<Case> random_cases(SiteKind kind, int n, bool (*want)(VoronoiCircles)) {
     std::vector<Case> out;
     for (std::uint64_t seed = 1; static_cast<int>(out.size()) < n; ++seed) {
-        GeneratorOptions o;
-        o.kind = kind;
-        o.count = 3;
-        o.seed = seed;
-        o.bits = 8;
-        o.box = Rational(10);
-        const std::vector<Ellipse> s = generate_sites(o);
+        const std::vector<Ellipse> s = experiments::random_sites(kind, 3, seed, 8, Rational(10));
         const VoronoiCircles count = *voronoi_circle_count(s[0], s[1], s[2]);
         if (want(count)) out.push_back({"seed " + std::to_string(seed), {s[0], s[1], s[2]}, count});
     }
@@ -190,17 +186,8 @@ std::vector<Row> rows(bool full) {
 
 // ---- statistics and output --------------------------------------------------
 
-double quantile(std::vector<double> v, double q) {  // nearest rank
-    std::sort(v.begin(), v.end());
-    const std::size_t r = static_cast<std::size_t>(std::ceil(q * v.size()));
-    return v[std::min(v.size() - 1, r ? r - 1 : 0)];
-}
-
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
+using experiments::fmt;
+using experiments::quantile;
 
 struct Summary {
     std::vector<double> search, fallback, boxes;
@@ -226,22 +213,9 @@ std::string times(const std::vector<double>& ms) {
            fmt("%.2f", quantile(ms, 1.0));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    namespace ex = ellvor::experiments;
-    ex::BenchArguments args;
-    if (!ex::parse_bench_arguments(argc, argv, "bench_voronoi_circle_search",
-                                   "usage: bench_voronoi_circle_search [--full] [--out DIR]\n"
-                                   "  --full     200 random triples a row and more repetitions (minutes)\n"
-                                   "  --out DIR  write DIR/voronoi_circle_search.csv and .md\n",
-                                   args))
-        return 2;
-
-    const std::string load_before = ex::loadavg();
-    const std::vector<Row> all = rows(args.full);
+// Every row: each case `repetitions` times (a case that hits the cap once).
+std::vector<std::vector<Sample>> measure_rows(const std::vector<Row>& all, int& disagreements, int& caps) {
     std::vector<std::vector<Sample>> results;
-    int disagreements = 0, caps = 0;
     for (const Row& row : all) {
         std::vector<Sample> samples;
         for (const Case& c : row.cases)
@@ -265,67 +239,94 @@ int main(int argc, char** argv) {
                   << times(s.search) << " ms, default " << times(s.fallback) << " ms\n";
         results.push_back(std::move(samples));
     }
-    const std::string load_after = ex::loadavg();
+    return results;
+}
 
-    std::ostringstream csv;
-    csv << "row,case,count,repetition,search_seconds,search_boxes,search_result,default_seconds,default_boxes,"
-           "default_result,disagreement\n";
+// voronoi_circle_search.csv: one line per call pair.
+experiments::Table csv_table(const std::vector<std::vector<Sample>>& results) {
+    experiments::Table t("voronoi_circle_search",
+                         {"row", "case", "count", "repetition", "search_seconds", "search_boxes", "search_result",
+                          "default_seconds", "default_boxes", "default_result", "disagreement"});
     for (const auto& samples : results)
         for (const Sample& m : samples)
-            csv << m.row << "," << m.label << "," << m.count << "," << m.repetition << ","
-                << fmt("%.6g", m.search.seconds) << "," << m.search.boxes << "," << m.search.result() << ","
-                << fmt("%.6g", m.fallback.seconds) << "," << m.fallback.boxes << "," << m.fallback.result() << ","
-                << m.disagreement << "\n";
+            t.add({m.row, m.label, m.count, std::to_string(m.repetition), fmt("%.6g", m.search.seconds),
+                   std::to_string(m.search.boxes), m.search.result(), fmt("%.6g", m.fallback.seconds),
+                   std::to_string(m.fallback.boxes), m.fallback.result(), std::to_string(m.disagreement)});
+    return t;
+}
 
-    std::ostringstream md;
-    md << "# Exhaustive certified search for the Voronoi circle\n\n"
-       << "`VoronoiCircleSolver::certify()` first certifies from floating-point guesses; when none certifies it "
-          "falls back to an exhaustive search (`subdivision/voronoi_circle_search.hpp`): boxes of the three "
-          "tangency parameters (both charts of each boundary) and the radius are bisected breadth-first and "
-          "excluded by range tests (equations, orientation, Krawczyk); the midpoint of each surviving box is "
-          "offered to a Newton + Krawczyk certificate. It ends with the certified counter-clockwise circle or, "
-          "once every box is excluded, with a proof that there is none. This measures that search, forced by "
-          "`certify_by_search()` on a fresh solver, beside the default path `certify()` on another fresh solver.\n\n"
-       << "- Machine: " << ex::cpu_model() << "\n"
-       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
-       << "- Source: " << ex::source_state() << "\n"
-       << "- Command: `make build/experiments/bench_voronoi_circle_search && " << args.command << "`\n"
-       << "- Full run: `build/experiments/bench_voronoi_circle_search --full --out experiments/results`; "
-          "without `--full` (as in `make bench`) 30 random triples a row and fewer repetitions.\n"
-       << "- Random triples: `generate_sites(count 3, bits 8, box 10, seed 1, 2, ...)`, classified by "
-          "`voronoi_circle_count` (seeds in the CSV). Offset and line rows: one triple, repeated.\n"
-       << "- Times in ms per call, median / p90 / max; ratio = median search / median default; \"default "
-          "searched\" = calls in which the default path itself fell back to the search. Where it does (always "
-          "for the no-circle rows) the default path is the failing guesses plus the same search, so default minus "
-          "search is the cost of the guesses that did not certify. \"cap hits\" = measurements (a search call and "
-          "a default call) in which a path was stopped by the search's box cap ("
-       << VoronoiCircleSearchOptions{}.max_boxes << " boxes; Error thrown), counted as that many boxes; such a "
-          "case is measured once.\n\n"
-       << "| row | triples | calls | search ms | boxes median / max | default ms | ratio | default searched | "
-          "disagreements | cap hits |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+experiments::Table summary_table(const std::vector<Row>& all, const std::vector<std::vector<Sample>>& results) {
+    experiments::Table t("search", {"row", "triples", "calls", "search ms", "boxes median / max", "default ms",
+                                    "ratio", "default searched", "disagreements", "cap hits"});
     for (std::size_t i = 0; i < all.size(); ++i) {
         const Summary s = summarize(results[i]);
-        md << "| " << all[i].name << " | " << all[i].cases.size() << " | " << s.calls << " | " << times(s.search)
-           << " | " << fmt("%.0f", quantile(s.boxes, 0.5)) << " / " << fmt("%.0f", quantile(s.boxes, 1.0)) << " | "
-           << times(s.fallback) << " | " << fmt("%.1f", quantile(s.search, 0.5) / quantile(s.fallback, 0.5))
-           << " | " << s.fallback_searched << " | " << s.disagreements << " | " << s.caps << " |\n";
+        t.add({all[i].name, std::to_string(all[i].cases.size()), std::to_string(s.calls), times(s.search),
+               fmt("%.0f", quantile(s.boxes, 0.5)) + " / " + fmt("%.0f", quantile(s.boxes, 1.0)), times(s.fallback),
+               fmt("%.1f", quantile(s.search, 0.5) / quantile(s.fallback, 0.5)), std::to_string(s.fallback_searched),
+               std::to_string(s.disagreements), std::to_string(s.caps)});
     }
-    md << "\nRows:\n\n";
-    for (std::size_t i = 0; i < all.size(); ++i)
-        if (i == 0 || all[i].group != all[i - 1].group)
-            md << "- " << all[i].group << ": " << all[i].description << "\n";
-    md << "\nDisagreements (a path certifying when the count says there is no CCW circle or proving absence when "
-          "it says there is one, or search and default enclosures not overlapping in every component): "
-       << disagreements << (disagreements ? " — **NOT ZERO, see the ANOMALY lines on stderr**" : "") << ".\n\n"
-       << "Cap hits (no answer; the solver's contract allows them only for a degenerate triple): " << caps
-       << (caps ? " — **NOT ZERO: the search did not decide a non-degenerate triple**" : "") << ".\n";
+    return t;
+}
 
-    std::cout << md.str();
-    if (!args.out_dir.empty()) {
-        std::ofstream(args.out_dir + "/voronoi_circle_search.csv") << csv.str();
-        std::ofstream(args.out_dir + "/voronoi_circle_search.md") << md.str();
-        std::cerr << "[bench_voronoi_circle_search] wrote " << args.out_dir << "/voronoi_circle_search.{csv,md}\n";
-    }
+// "- group: description" once per group of rows.
+std::string row_groups(const std::vector<Row>& all) {
+    std::string md;
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (i == 0 || all[i].group != all[i - 1].group) md += "- " + all[i].group + ": " + all[i].description + "\n";
+    return md;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    namespace ex = ellvor::experiments;
+    ex::BenchArguments args;
+    if (!ex::parse_bench_arguments(argc, argv, "bench_voronoi_circle_search",
+                                   "usage: bench_voronoi_circle_search [--full] [--out DIR]\n"
+                                   "  --full     200 random triples a row and more repetitions (minutes)\n"
+                                   "  --out DIR  write DIR/voronoi_circle_search.csv and .md\n",
+                                   args))
+        return 2;
+    ex::Report report("Exhaustive certified search for the Voronoi circle", "bench_voronoi_circle_search",
+                      args.command);
+
+    // The measurements.
+    int disagreements = 0, caps = 0;
+    const std::vector<Row> all = rows(args.full);
+    const std::vector<std::vector<Sample>> results = measure_rows(all, disagreements, caps);
+
+    // The report.
+    report.intro("`VoronoiCircleSolver::certify()` first certifies from floating-point guesses; when none certifies "
+                 "it falls back to an exhaustive search (`subdivision/voronoi_circle_search.hpp`): boxes of the three "
+                 "tangency parameters (both charts of each boundary) and the radius are bisected breadth-first and "
+                 "excluded by range tests (equations, orientation, Krawczyk); the midpoint of each surviving box is "
+                 "offered to a Newton + Krawczyk certificate. It ends with the certified counter-clockwise circle or, "
+                 "once every box is excluded, with a proof that there is none. This measures that search, forced by "
+                 "`certify_by_search()` on a fresh solver, beside the default path `certify()` on another fresh "
+                 "solver.");
+    report.note("Full run: `build/experiments/bench_voronoi_circle_search --full --out experiments/results`; without "
+                "`--full` (as in `make bench`) 30 random triples a row and fewer repetitions.");
+    report.note("Random triples: `generate_sites(count 3, bits 8, box 10, seed 1, 2, ...)`, classified by "
+                "`voronoi_circle_count` (seeds in the CSV). Offset and line rows: one triple, repeated.");
+    report.note("Times in ms per call, median / p90 / max; ratio = median search / median default; \"default "
+                "searched\" = calls in which the default path itself fell back to the search. Where it does (always "
+                "for the no-circle rows) the default path is the failing guesses plus the same search, so default "
+                "minus search is the cost of the guesses that did not certify. \"cap hits\" = measurements (a search "
+                "call and a default call) in which a path was stopped by the search's box cap (" +
+                std::to_string(VoronoiCircleSearchOptions{}.max_boxes) +
+                " boxes; Error thrown), counted as that many boxes; such a case is measured once.");
+    report.text("\n");
+    report.table(summary_table(all, results));
+    report.text("\nRows:\n\n" + row_groups(all) +
+                "\nDisagreements (a path certifying when the count says there is no CCW circle or proving absence "
+                "when it says there is one, or search and default enclosures not overlapping in every component): " +
+                std::to_string(disagreements) +
+                (disagreements ? " — **NOT ZERO, see the ANOMALY lines on stderr**" : "") +
+                ".\n\nCap hits (no answer; the solver's contract allows them only for a degenerate triple): " +
+                std::to_string(caps) +
+                (caps ? " — **NOT ZERO: the search did not decide a non-degenerate triple**" : "") + ".\n");
+
+    report.publish(args.out_dir, "voronoi_circle_search.md", {{"voronoi_circle_search.csv", csv_table(results).csv()}});
     if (disagreements || caps)
         std::cerr << "\n*** " << disagreements << " DISAGREEMENTS, " << caps << " CAP HITS ***\n";
     return disagreements || caps ? 1 : 0;

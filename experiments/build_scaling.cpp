@@ -1,4 +1,4 @@
-// Build time of the Delaunay graph against the number of sites (seed paper,
+// Build time of the Delaunay graph against the number of sites (the paper,
 // Table 1, row "insertion": 0.752 / 5.916 / 13.000 / 19.200 / 25.602 s for
 // 5 / 10 / 15 / 20 / 25 ellipses, P4 2.6 GHz), and ellvor against CGAL's
 // Apollonius_graph_hierarchy_2 (what CGAL's manual advises above about 10^3
@@ -33,6 +33,7 @@
 #include "experiments/apollonius_comparison.hpp"
 #include "experiments/peak_memory.hpp"
 #include "experiments/predicate_stages.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
@@ -69,12 +70,6 @@ namespace {
 
 using namespace ellvor::experiments;
 
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
-
 struct Row {
     std::string set;
     long n = 0;
@@ -90,18 +85,7 @@ struct Row {
 
 bool is_cgal(const Row& r) { return r.set.rfind("cgal-", 0) == 0; }
 
-// The growth of a child's resident memory over its build, in MB ("—" when not measured).
-std::string growth_mb(const PeakMemory& m) {
-    if (m.peak_kb < 0 || m.start_kb < 0) return "—";
-    return fmt("%.1f", (m.peak_kb - m.start_kb) / 1024.0);
-}
 
-std::string one_line(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == ',' || c == '|') c = ' ';
-    if (s.size() > 120) s = s.substr(0, 120) + "...";
-    return s;
-}
 
 // CGAL's graph of the circles (bulk insertion; Graph: AG or AGH), its build
 // time, and its summary in ellvor's ids.
@@ -140,14 +124,14 @@ Row run_ellvor(const std::string& set, const std::string& label, const std::vect
         r.stats = g->predicate_stats();
         r.gstats = g->stats();
         std::string v = g->validate();
-        r.validate = v.empty() ? "ok" : one_line(v);
+        r.validate = v.empty() ? "ok" : check_message(v);
         if (!v.empty()) {
             std::cerr << "ANOMALY: " << label << " n = " << n << ": validate: " << v << "\n";
             ++anomalies;
         }
         if (n <= 300) {
             std::string b = g->brute_force_check();
-            r.brute = b.empty() ? "ok" : one_line(b);
+            r.brute = b.empty() ? "ok" : check_message(b);
             if (!b.empty()) {
                 std::cerr << "ANOMALY: " << label << " n = " << n << ": brute force: " << b << "\n";
                 ++anomalies;
@@ -156,7 +140,7 @@ Row run_ellvor(const std::string& set, const std::string& label, const std::vect
         if (summary) *summary = summary_of(*g);
     } catch (const std::exception& e) {
         std::cerr << "ANOMALY: " << label << " n = " << n << ": " << e.what() << "\n";
-        r.validate = std::string("exception: ") + one_line(e.what());
+        r.validate = std::string("exception: ") + check_message(e.what());
         ++anomalies;
     }
     (void)set;
@@ -186,29 +170,12 @@ double kappa1_seconds(const std::vector<Ellipse>& sites) {
     return (c1 - c0) / calls;
 }
 
-}  // namespace
+constexpr long kHuge = 1000000;  // from here: no nested set, no plain CGAL graph
+const std::vector<std::string> kSets = {"ellipses", "ellipses-nest10", "circles"};
 
-int main(int argc, char** argv) {
-    ellvor::experiments::BenchArguments args;
-    if (!ellvor::experiments::parse_bench_arguments(argc, argv, "build_scaling",
-                                                    "usage: build_scaling [--full] [--out DIR]\n"
-                         "  --full     also n = 10^4, 10^5 and 10^6 (about 20 minutes)\n"
-                         "  --out DIR  write DIR/build_scaling.csv, .md and .png\n",
-                                                    args))
-        return 2;
-    const bool full = args.full;
-    const std::string& out_dir = args.out_dir;
-    const std::string& command = args.command;
-
-    std::vector<long> ns = {5, 10, 15, 20, 25, 100, 1000};
-    if (full) ns.insert(ns.end(), {10000, 100000, 1000000});
-    constexpr long kHuge = 1000000;  // from here: no nested set, no plain CGAL graph
-    const std::vector<double> paper = {0.752, 5.916, 13.000, 19.200, 25.602};
-    const std::vector<std::string> sets = {"ellipses", "ellipses-nest10", "circles"};
-
-    const std::string load_before = loadavg();
-    // Peak memory first, before this program has built anything: each build in
-    // its own child, which generates its sites and then builds.
+// Peak memory first, before this program has built anything: each build in
+// its own child, which generates its sites and then builds (n >= 1000).
+std::map<std::pair<std::string, long>, PeakMemory> measure_peak_memory(const std::vector<long>& ns) {
     std::map<std::pair<std::string, long>, PeakMemory> memory;
     for (long n : ns) {
         if (n < 1000) continue;
@@ -229,10 +196,48 @@ int main(int argc, char** argv) {
                                                              });
         std::cerr << "[build_scaling] peak memory measured, n = " << n << "\n";
     }
+    return memory;
+}
+
+// CGAL's plain graph and its hierarchy on the circles of ellvor's row `r`;
+// ellvor's graph `mine` must equal both.
+std::vector<Row> cgal_rows(const std::vector<Ellipse>& sites, long n, Row& r, const Summary& mine,
+                           const std::map<std::pair<std::string, long>, PeakMemory>& memory, int& anomalies) {
     std::vector<Row> rows;
-    int anomalies = 0;
+    for (const bool hierarchy : {false, true}) {
+        if (n >= kHuge && !hierarchy) continue;
+        Row c;
+        c.set = hierarchy ? "cgal-hierarchy" : "cgal-circles";
+        c.n = n;
+        const Summary want = hierarchy ? cgal_graph<AGH>(sites, c.seconds, c.cpu_seconds, c.reps)
+                                       : cgal_graph<AG>(sites, c.seconds, c.cpu_seconds, c.reps);
+        c.edges = want.edges.size();
+        c.hidden = want.hidden.size();
+        c.visible = want.visible.size();
+        if (r.validate.rfind("exception", 0) != 0) {
+            c.cgal = compare(mine, want);
+            if (c.cgal != "ok") {
+                std::cerr << "ANOMALY: circles n = " << n << ": ellvor differs from " << c.set << ": " << c.cgal
+                          << "\n";
+                ++anomalies;
+            }
+        }
+        if (memory.count({c.set, n})) c.memory = memory.at({c.set, n});
+        std::cerr << "[build_scaling] " << c.set << " n = " << n << ": " << fmt("%.5f", c.seconds) << " s wall, "
+                  << fmt("%.5f", c.cpu_seconds) << " s cpu (" << c.reps << " runs); ellvor / CGAL (cpu) = "
+                  << fmt("%.1f", r.cpu_seconds / c.cpu_seconds) << "; graphs " << c.cgal << "\n";
+        rows.push_back(c);
+    }
+    r.cgal = std::all_of(rows.begin(), rows.end(), [](const Row& c) { return c.cgal == "ok"; }) ? "ok" : "differs";
+    return rows;
+}
+
+// Every set at every n: ellvor's build (and CGAL's on the circles).
+std::vector<Row> measure_builds(const std::vector<long>& ns,
+                                const std::map<std::pair<std::string, long>, PeakMemory>& memory, int& anomalies) {
+    std::vector<Row> rows;
     for (long n : ns) {
-        for (const std::string& set : sets) {
+        for (const std::string& set : kSets) {
             if (n >= kHuge && set == "ellipses-nest10") continue;
             std::vector<Ellipse> sites;
             try {
@@ -251,218 +256,253 @@ int main(int argc, char** argv) {
                       << fmt("%.4f", r.cpu_seconds) << " s cpu (" << r.reps << " runs), " << r.edges << " edges, "
                       << r.hidden << " hidden, validate " << r.validate << ", brute force " << r.brute << "\n";
             if (set == "circles") {
-                // CGAL's plain graph and its hierarchy on the same circles; ellvor's
-                // graph must equal both.
-                std::vector<Row> cgal_rows;
-                for (const bool hierarchy : {false, true}) {
-                    if (n >= kHuge && !hierarchy) continue;
-                    Row c;
-                    c.set = hierarchy ? "cgal-hierarchy" : "cgal-circles";
-                    c.n = n;
-                    const Summary want = hierarchy ? cgal_graph<AGH>(sites, c.seconds, c.cpu_seconds, c.reps)
-                                                   : cgal_graph<AG>(sites, c.seconds, c.cpu_seconds, c.reps);
-                    c.edges = want.edges.size();
-                    c.hidden = want.hidden.size();
-                    c.visible = want.visible.size();
-                    if (r.validate.rfind("exception", 0) != 0) {
-                        c.cgal = compare(mine, want);
-                        if (c.cgal != "ok") {
-                            std::cerr << "ANOMALY: circles n = " << n << ": ellvor differs from " << c.set << ": "
-                                      << c.cgal << "\n";
-                            ++anomalies;
-                        }
-                    }
-                    if (memory.count({c.set, n})) c.memory = memory.at({c.set, n});
-                    std::cerr << "[build_scaling] " << c.set << " n = " << n << ": " << fmt("%.5f", c.seconds)
-                              << " s wall, " << fmt("%.5f", c.cpu_seconds) << " s cpu (" << c.reps
-                              << " runs); ellvor / CGAL (cpu) = " << fmt("%.1f", r.cpu_seconds / c.cpu_seconds)
-                              << "; graphs " << c.cgal << "\n";
-                    cgal_rows.push_back(c);
-                }
-                r.cgal = std::all_of(cgal_rows.begin(), cgal_rows.end(), [](const Row& c) { return c.cgal == "ok"; })
-                             ? "ok"
-                             : "differs";
+                const std::vector<Row> cgal = cgal_rows(sites, n, r, mine, memory, anomalies);
                 rows.push_back(r);
-                rows.insert(rows.end(), cgal_rows.begin(), cgal_rows.end());
+                rows.insert(rows.end(), cgal.begin(), cgal.end());
             } else {
                 rows.push_back(r);
             }
         }
     }
-    const std::string load_after = loadavg();
+    return rows;
+}
 
-    auto find = [&](const std::string& set, long n) -> const Row* {
-        for (const Row& r : rows)
-            if (r.set == set && r.n == n) return &r;
-        return nullptr;
-    };
+// ------------------------------------------------------------------ tables --
 
-    // CSV
-    std::ostringstream csv;
-    csv << "set,n,seconds,cpu_seconds,runs,us_per_insertion,visible,hidden,edges,faces";
-    for (const PredicateInfo& p : kPredicates) csv << predicate_csv_header(p);
-    csv << ",walk_steps,conflict_faces,degree2_insertions,validate,brute_force,equals_cgal,kappa1_us_per_call,"
-           "peak_rss_growth_bytes\n";
+const Row* find(const std::vector<Row>& rows, const std::string& set, long n) {
+    for (const Row& r : rows)
+        if (r.set == set && r.n == n) return &r;
+    return nullptr;
+}
+
+long growth_kb(const PeakMemory& m) { return m.peak_kb - m.start_kb; }
+
+// build_scaling.csv: every row, every count.
+Table csv_table(const std::vector<Row>& rows) {
+    std::vector<std::string> columns = {"set", "n", "seconds", "cpu_seconds", "runs", "us_per_insertion", "visible",
+                                        "hidden", "edges", "faces"};
+    const std::vector<std::string> predicate_columns = predicate_csv_columns();
+    columns.insert(columns.end(), predicate_columns.begin(), predicate_columns.end());
+    columns.insert(columns.end(), {"walk_steps", "conflict_faces", "degree2_insertions", "validate", "brute_force",
+                                   "equals_cgal", "kappa1_us_per_call", "peak_rss_growth_bytes"});
+    Table t("build_scaling", columns);
     for (const Row& r : rows) {
-        csv << r.set << "," << r.n << "," << fmt("%.6g", r.seconds) << "," << fmt("%.6g", r.cpu_seconds) << "," << r.reps
-            << "," << fmt("%.6g", 1e6 * r.seconds / r.n) << "," << r.visible << "," << r.hidden << "," << r.edges << ","
-            << (is_cgal(r) ? std::string("") : std::to_string(r.faces));
-        for (const PredicateInfo& p : kPredicates)
-            csv << (is_cgal(r) ? predicate_csv_empty() : predicate_csv_values(r.stats[p.predicate]));
+        const bool cgal = is_cgal(r);
+        TableRow row = {r.set, integer(r.n), fmt("%.6g", r.seconds), fmt("%.6g", r.cpu_seconds), integer(r.reps),
+                        fmt("%.6g", 1e6 * r.seconds / r.n), integer(static_cast<long long>(r.visible)),
+                        integer(static_cast<long long>(r.hidden)), integer(static_cast<long long>(r.edges)),
+                        cgal ? std::string() : std::to_string(r.faces)};
+        for (const std::string& v : predicate_csv_values(cgal ? nullptr : &r.stats)) row.push_back(v);
         const std::string growth =
-            r.memory.peak_kb < 0 || r.memory.start_kb < 0 ? "" : std::to_string((r.memory.peak_kb - r.memory.start_kb) * 1024);
-        if (is_cgal(r))
-            csv << ",,,," << "-,-," << r.cgal << ",," << growth << "\n";
+            r.memory.peak_kb < 0 || r.memory.start_kb < 0 ? "" : std::to_string(growth_kb(r.memory) * 1024);
+        if (cgal)
+            row.insert(row.end(), {"", "", "", "-", "-", r.cgal, "", growth});
         else
-            csv << "," << r.gstats.walk_steps << "," << r.gstats.conflict_faces << "," << r.gstats.degree_2_insertions
-                << "," << r.validate << "," << r.brute << "," << r.cgal << "," << fmt("%.4g", r.kappa1_us) << ","
-                << growth << "\n";
+            row.insert(row.end(), {std::to_string(r.gstats.walk_steps), std::to_string(r.gstats.conflict_faces),
+                                   std::to_string(r.gstats.degree_2_insertions), r.validate, r.brute, r.cgal,
+                                   fmt("%.4g", r.kappa1_us), growth});
+        t.add(std::move(row));
     }
+    return t;
+}
 
-    // Markdown
-    std::ostringstream md;
-    md << "# Build time against the number of sites\n\n"
-       << "Total time of `DelaunayGraph::insert_all` (every site, largest area first) from a fresh graph; site "
-          "generation and the checks are not timed. Below 0.3 s a build is repeated and the median taken (at most "
-          "20 runs). Paper: seed Table 1, row \"insertion\" (P4 2.6 GHz, 2007; its ellipses are not given, so only "
-          "n matches).\n\n"
-       << "- Machine: " << cpu_model() << " (shared with other jobs: compare CPU seconds)\n"
-       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
-       << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/build_scaling && " << command << "`; plot (`build_scaling.png`): `/usr/bin/python3 "
-          "experiments/plot_results.py build_scaling`\n"
-       << "- By default (`make bench`) n ≤ 1000 and nothing is written; `--full` adds n = 10^4, 10^5 and 10^6 (at "
-          "10^6 without the nested set and CGAL's plain graph), `--out DIR` writes the CSV and this file.\n\n"
-       << "Site sets:\n\n";
-    for (const std::string& set : sets) md << "- **" << (set == "circles" ? "ellvor-circles" : set) << "**: " << describe_set(set) << "\n";
-    md << "- **cgal-circles**, **cgal-hierarchy**: the same circles as ellvor-circles, converted to double (exactly: "
-          "every coordinate and radius is a multiple of 1/2 below 2^20), bulk-inserted into CGAL's "
-          "`Apollonius_graph_2` and `Apollonius_graph_hierarchy_2`, both over "
-          "`Apollonius_graph_filtered_traits_2<Epick>` (bulk insertion also goes by decreasing radius); timed in the "
-          "same program. Above about 10^3 sites the hierarchy is what CGAL's manual advises, so it is the "
-          "reference.\n\n";
-
+Table time_table(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    // The paper's Table 1, row "insertion", for n = 5 .. 25.
+    const std::vector<double> paper = {0.752, 5.916, 13.000, 19.200, 25.602};
     auto ratio = [](const Row* a, const Row* b) {
         return a && b ? fmt("%.1f×", a->cpu_seconds / b->cpu_seconds) : std::string("—");
     };
-    md << "## Times\n\n| n | paper (s) | ellipses (s) | µs / insertion | ellipses-nest10 (s) | ellvor circles (s) | "
-          "CGAL hierarchy (s) | CGAL plain (s) | ellvor / hierarchy | ellvor / plain |\n"
-          "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    auto t = [](const Row* r) {
+        return r ? fmt("%.3g", r->cpu_seconds) + " (" + fmt("%.3g", r->seconds) + ")" : std::string("—");
+    };
+    Table table("times", {"n", "paper (s)", "ellipses (s)", "µs / insertion", "ellipses-nest10 (s)",
+                          "ellvor circles (s)", "CGAL hierarchy (s)", "CGAL plain (s)", "ellvor / hierarchy",
+                          "ellvor / plain"},
+                "rrrrrrrrrr");
     for (std::size_t k = 0; k < ns.size(); ++k) {
         const long n = ns[k];
-        const Row *e = find("ellipses", n), *en = find("ellipses-nest10", n), *ec = find("ellvor-circles", n),
-                  *cc = find("cgal-circles", n), *ch = find("cgal-hierarchy", n);
-        auto t = [](const Row* r) { return r ? fmt("%.3g", r->cpu_seconds) + " (" + fmt("%.3g", r->seconds) + ")" : std::string("—"); };
-        md << "| " << n << " | " << (k < paper.size() ? fmt("%.3f", paper[k]) : std::string("—")) << " | " << t(e)
-           << " | " << (e ? fmt("%.0f", 1e6 * e->cpu_seconds / n) : std::string("—")) << " | " << t(en) << " | " << t(ec)
-           << " | " << t(ch) << " | " << t(cc) << " | " << ratio(ec, ch) << " | " << ratio(ec, cc) << " |\n";
+        const Row *e = find(rows, "ellipses", n), *en = find(rows, "ellipses-nest10", n),
+                  *ec = find(rows, "ellvor-circles", n), *cc = find(rows, "cgal-circles", n),
+                  *ch = find(rows, "cgal-hierarchy", n);
+        table.add({integer(n), k < paper.size() ? fmt("%.3f", paper[k]) : std::string("—"), t(e),
+                   e ? fmt("%.0f", 1e6 * e->cpu_seconds / n) : std::string("—"), t(en), t(ec), t(ch), t(cc),
+                   ratio(ec, ch), ratio(ec, cc)});
     }
-    md << "\nCPU seconds, wall seconds in parentheses; ratios on CPU time.\n\n";
+    return table;
+}
 
-    md << "## Peak memory\n\nOne more build each, in a child forked from this program before it builds anything "
-          "else; the child generates its sites, then builds. The growth of the child's resident memory over the "
-          "build (VmHWM after it minus VmRSS before it). ellvor's includes its traits' copy of the sites; CGAL's is "
-          "its graph (the vector of double circles is made before).\n\n"
-          "| n | ellipses (MB) | per site (KB) | ellvor circles (MB) | CGAL hierarchy (MB) | ellvor / hierarchy |\n"
-          "|---:|---:|---:|---:|---:|---:|\n";
+// The growth of a child's resident memory over its build, in MB ("—" when not measured).
+std::string growth_mb(const PeakMemory& m) {
+    if (m.peak_kb < 0 || m.start_kb < 0) return "—";
+    return fmt("%.1f", growth_kb(m) / 1024.0);
+}
+
+Table memory_table(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    Table table("memory", {"n", "ellipses (MB)", "per site (KB)", "ellvor circles (MB)", "CGAL hierarchy (MB)",
+                           "ellvor / hierarchy"},
+                "rrrrrr");
     for (long n : ns) {
-        const Row *e = find("ellipses", n), *ec = find("ellvor-circles", n), *ch = find("cgal-hierarchy", n);
+        const Row *e = find(rows, "ellipses", n), *ec = find(rows, "ellvor-circles", n),
+                  *ch = find(rows, "cgal-hierarchy", n);
         if (!e || e->memory.peak_kb < 0) continue;
-        const long e_kb = e->memory.peak_kb - e->memory.start_kb;
-        md << "| " << n << " | " << growth_mb(e->memory) << " | " << fmt("%.1f", double(e_kb) / n) << " | "
-           << (ec ? growth_mb(ec->memory) : "—") << " | " << (ch ? growth_mb(ch->memory) : "—") << " | ";
+        std::string ratio = "—";
         if (ec && ch && ch->memory.peak_kb > ch->memory.start_kb && ec->memory.peak_kb >= 0)
-            md << fmt("%.1f×", double(ec->memory.peak_kb - ec->memory.start_kb) /
-                                   double(ch->memory.peak_kb - ch->memory.start_kb));
-        else
-            md << "—";
-        md << " |\n";
+            ratio = fmt("%.1f×", double(growth_kb(ec->memory)) / double(growth_kb(ch->memory)));
+        table.add({integer(n), growth_mb(e->memory), fmt("%.1f", double(growth_kb(e->memory)) / n),
+                   ec ? growth_mb(ec->memory) : "—", ch ? growth_mb(ch->memory) : "—", ratio});
     }
-    md << "\n";
+    return table;
+}
 
-    md << "## Graphs and checks\n\n| set | n | visible | hidden | Delaunay edges | faces | walk steps | validate() | "
-          "brute force (n ≤ 300) | equals CGAL |\n|---|---:|---:|---:|---:|---:|---:|---|---|---|\n";
+Table graph_table(const std::vector<Row>& rows) {
+    Table table("graphs", {"set", "n", "visible", "hidden", "Delaunay edges", "faces", "walk steps", "validate()",
+                           "brute force (n ≤ 300)", "equals CGAL"},
+                "lrrrrrrlll");
+    for (const Row& r : rows)
+        if (!is_cgal(r))
+            table.add({r.set, integer(r.n), integer(static_cast<long long>(r.visible)),
+                       integer(static_cast<long long>(r.hidden)), integer(static_cast<long long>(r.edges)),
+                       integer(static_cast<long long>(r.faces)), integer(static_cast<long long>(r.gstats.walk_steps)),
+                       r.validate, r.brute, r.cgal});
+    return table;
+}
+
+Table predicate_table(const std::vector<Row>& rows) {
+    std::vector<std::string> columns = {"set", "n"};
+    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
+    Table table("predicates", columns, "lr" + std::string(kPredicates.size(), 'l'));
     for (const Row& r : rows) {
         if (is_cgal(r)) continue;
-        md << "| " << r.set << " | " << r.n << " | " << r.visible << " | " << r.hidden << " | " << r.edges << " | "
-           << r.faces << " | " << r.gstats.walk_steps << " | " << r.validate << " | " << r.brute << " | " << r.cgal
-           << " |\n";
+        TableRow row = {r.set, integer(r.n)};
+        for (const std::string& cell : predicate_stage_triples(r.stats)) row.push_back(cell);
+        table.add(std::move(row));
     }
+    return table;
+}
 
-    md << "\n## Predicate calls per stage\n\ncalls (filter / subdivision / exact); memoized answers are not "
-          "counted. kappa1 = side_of_bisector (nearest-neighbour walk), kappa2 = infinite Voronoi vertex, kappa3 = "
-          "InCircle, kappa4 = edge conflicts.\n\n| set | n |";
-    for (const PredicateInfo& p : kPredicates) md << " " << p.name << " |";
-    md << "\n|---|---:|";
-    for (std::size_t i = 0; i < kPredicates.size(); ++i) md << "---|";
-    md << "\n";
-    for (const Row& r : rows) {
-        if (is_cgal(r)) continue;
-        md << "| " << r.set << " | " << r.n << " |";
-        for (const PredicateInfo& p : kPredicates) md << " " << stage_triple(r.stats[p.predicate]) << " |";
-        md << "\n";
-    }
-
-    md << "\n## Where the time goes: the nearest-neighbour walk (kappa1)\n\nkappa1 calls × the mean CPU time of "
-          "one kappa1 call (micro-benchmark: 20000 calls on random site triples with fresh EllipseDelaunayTraits), "
-          "against the whole build's CPU time. An estimate: the walk's triples are neighbours, not random sites.\n\n"
-          "| set | n | kappa1 calls | per insertion | µs / call | estimated kappa1 time (s) | share of build |\n"
-          "|---|---:|---:|---:|---:|---:|---:|\n";
+Table walk_table(const std::vector<Row>& rows) {
+    Table table("walk", {"set", "n", "kappa1 calls", "per insertion", "µs / call", "estimated kappa1 time (s)",
+                         "share of build"});
     for (const Row& r : rows) {
         if (is_cgal(r) || r.kappa1_us <= 0) continue;
         const double calls = double(r.stats[Predicate::side_of_bisector].calls), est = calls * r.kappa1_us * 1e-6;
-        md << "| " << r.set << " | " << r.n << " | " << r.stats[Predicate::side_of_bisector].calls << " | "
-           << fmt("%.0f", calls / r.n) << " | " << fmt("%.2f", r.kappa1_us) << " | " << fmt("%.3g", est) << " | "
-           << fmt("%.0f%%", 100 * est / r.cpu_seconds) << " |\n";
+        table.add({r.set, integer(r.n), integer(static_cast<long long>(r.stats[Predicate::side_of_bisector].calls)),
+                   fmt("%.0f", calls / r.n), fmt("%.2f", r.kappa1_us), fmt("%.3g", est),
+                   fmt("%.0f%%", 100 * est / r.cpu_seconds)});
     }
+    return table;
+}
 
-    md << "\n## Targets\n\n";
-    if (const Row* e = find("ellipses", 10000))
-        md << "- 10^4 random ellipses in ≤ 30 s: " << fmt("%.2f", e->cpu_seconds) << " s CPU (" << fmt("%.2f", e->seconds)
-           << " s wall) — " << (e->seconds <= 30 ? "met" : "MISSED") << "\n";
+std::string target_list(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    std::string md;
+    if (const Row* e = find(rows, "ellipses", 10000))
+        md += "- 10^4 random ellipses in ≤ 30 s: " + fmt("%.2f", e->cpu_seconds) + " s CPU (" + fmt("%.2f", e->seconds) +
+              " s wall) — " + (e->seconds <= 30 ? "met" : "MISSED") + "\n";
     else
-        md << "- 10^4 random ellipses in ≤ 30 s: not run (use --full)\n";
+        md += "- 10^4 random ellipses in ≤ 30 s: not run (use --full)\n";
+    std::vector<Target> targets;
     for (long n : ns) {
-        const Row *ec = find("ellvor-circles", n), *cc = find("cgal-circles", n);
+        const Row *ec = find(rows, "ellvor-circles", n), *cc = find(rows, "cgal-circles", n);
         if (!ec || !cc || n < 100) continue;
         const double ratio = ec->cpu_seconds / cc->cpu_seconds;
-        md << "- random circles within 5× of CGAL's plain graph, n = " << n << ": " << fmt("%.1f×", ratio) << " — "
-           << (ratio <= 5 ? "met" : "MISSED") << "\n";
+        targets.push_back({"random circles within 5× of CGAL's plain graph, n = " + std::to_string(n),
+                           fmt("%.1f×", ratio), ratio <= 5});
     }
     for (long n : ns) {
-        const Row *ec = find("ellvor-circles", n), *ch = find("cgal-hierarchy", n);
+        const Row *ec = find(rows, "ellvor-circles", n), *ch = find(rows, "cgal-hierarchy", n);
         if (!ec || !ch || n < 10000) continue;
         const double ratio = ec->cpu_seconds / ch->cpu_seconds;
-        md << "- random circles within 2.5× of CGAL's hierarchy, n = " << n << ": " << fmt("%.1f×", ratio) << " — "
-           << (ratio <= 2.5 ? "met" : "MISSED") << "\n";
-        const long mine = ec->memory.peak_kb - ec->memory.start_kb, theirs = ch->memory.peak_kb - ch->memory.start_kb;
+        targets.push_back({"random circles within 2.5× of CGAL's hierarchy, n = " + std::to_string(n),
+                           fmt("%.1f×", ratio), ratio <= 2.5});
+        const long mine = growth_kb(ec->memory), theirs = growth_kb(ch->memory);
         if (ec->memory.peak_kb >= 0 && ch->memory.peak_kb >= 0 && theirs > 0)
-            md << "- random circles, peak memory within 2× of CGAL's hierarchy, n = " << n << ": "
-               << fmt("%.1f×", double(mine) / theirs) << " — " << (mine <= 2 * theirs ? "met" : "MISSED") << "\n";
+            targets.push_back({"random circles, peak memory within 2× of CGAL's hierarchy, n = " + std::to_string(n),
+                               fmt("%.1f×", double(mine) / theirs), mine <= 2 * theirs});
     }
-    if (const Row* e = find("ellipses", 100000)) {
-        const double mb = e->memory.peak_kb < 0 ? -1 : (e->memory.peak_kb - e->memory.start_kb) / 1024.0;
-        md << "- 10^5 random ellipses in ≤ 15 s: " << fmt("%.1f", e->cpu_seconds) << " s CPU — "
-           << (e->cpu_seconds <= 15 ? "met" : "MISSED") << "; in ≤ 600 MB: " << fmt("%.0f", mb) << " MB — "
-           << (mb >= 0 && mb <= 600 ? "met" : "MISSED") << "\n";
+    md += target_lines(targets);
+    if (const Row* e = find(rows, "ellipses", 100000)) {
+        const double mb = e->memory.peak_kb < 0 ? -1 : growth_kb(e->memory) / 1024.0;
+        md += "- 10^5 random ellipses in ≤ 15 s: " + fmt("%.1f", e->cpu_seconds) + " s CPU — " +
+              (e->cpu_seconds <= 15 ? "met" : "MISSED") + "; in ≤ 600 MB: " + fmt("%.0f", mb) + " MB — " +
+              (mb >= 0 && mb <= 600 ? "met" : "MISSED") + "\n";
     }
-    if (const Row* e = find("ellipses", kHuge)) {
-        const double gb = e->memory.peak_kb < 0 ? -1 : (e->memory.peak_kb - e->memory.start_kb) / 1048576.0;
-        md << "- 10^6 random ellipses in ≤ 4 min: " << fmt("%.0f", e->cpu_seconds) << " s CPU — "
-           << (e->cpu_seconds <= 240 ? "met" : "MISSED") << "; in ≤ 6 GB: " << fmt("%.2f", gb) << " GB — "
-           << (gb >= 0 && gb <= 6 ? "met" : "MISSED") << "; validate(): " << e->validate << "\n";
+    if (const Row* e = find(rows, "ellipses", kHuge)) {
+        const double gb = e->memory.peak_kb < 0 ? -1 : growth_kb(e->memory) / 1048576.0;
+        md += "- 10^6 random ellipses in ≤ 4 min: " + fmt("%.0f", e->cpu_seconds) + " s CPU — " +
+              (e->cpu_seconds <= 240 ? "met" : "MISSED") + "; in ≤ 6 GB: " + fmt("%.2f", gb) + " GB — " +
+              (gb >= 0 && gb <= 6 ? "met" : "MISSED") + "; validate(): " + e->validate + "\n";
     }
-    md << "\nAnomalies (invalid graph, disagreement with CGAL, exception): " << anomalies << ".\n";
-    if (!full) md << "\nn = 10^4, 10^5 and 10^6 skipped (run with --full).\n";
+    return md;
+}
 
-    std::cout << md.str();
-    if (!out_dir.empty()) {
-        std::ofstream(out_dir + "/build_scaling.csv") << csv.str();
-        std::ofstream(out_dir + "/build_scaling.md") << md.str();
+}  // namespace
+
+int main(int argc, char** argv) {
+    BenchArguments args;
+    if (!parse_bench_arguments(argc, argv, "build_scaling",
+                               "usage: build_scaling [--full] [--out DIR]\n"
+                               "  --full     also n = 10^4, 10^5 and 10^6 (about 20 minutes)\n"
+                               "  --out DIR  write DIR/build_scaling.csv, .md and .png\n",
+                               args))
+        return 2;
+    std::vector<long> ns = {5, 10, 15, 20, 25, 100, 1000};
+    if (args.full) ns.insert(ns.end(), {10000, 100000, 1000000});
+    Report report("Build time against the number of sites", "build_scaling", args.command);
+
+    // The measurements.
+    int anomalies = 0;
+    const auto memory = measure_peak_memory(ns);
+    const std::vector<Row> rows = measure_builds(ns, memory, anomalies);
+
+    // The report.
+    report.intro("Total time of `DelaunayGraph::insert_all` (every site, largest area first) from a fresh graph; "
+                 "site generation and the checks are not timed. Below 0.3 s a build is repeated and the median taken "
+                 "(at most 20 runs). Paper: Emiris, Tsigaridas, Tzoumas 2007, Table 1, row \"insertion\" (P4 2.6 "
+                 "GHz; its ellipses are not given, so only n matches).");
+    report.machine_note("shared with other jobs: compare CPU seconds");
+    report.note("Plot (`build_scaling.png`): `/usr/bin/python3 experiments/plot_results.py build_scaling`");
+    report.note("By default (`make bench`) n ≤ 1000 and nothing is written; `--full` adds n = 10^4, 10^5 and 10^6 "
+                "(at 10^6 without the nested set and CGAL's plain graph), `--out DIR` writes the CSV and this file.");
+    std::string sets = "Site sets:\n\n";
+    for (const std::string& set : kSets)
+        sets += "- **" + (set == "circles" ? std::string("ellvor-circles") : set) + "**: " + describe_set(set) + "\n";
+    report.text(sets +
+                "- **cgal-circles**, **cgal-hierarchy**: the same circles converted to double (exactly: multiples "
+                "of 1/2 below 2^20), bulk-inserted into CGAL's `Apollonius_graph_2` and "
+                "`Apollonius_graph_hierarchy_2` over `Apollonius_graph_filtered_traits_2<Epick>` (bulk insertion also "
+                "goes by decreasing radius), in the same program. Above about 10^3 sites the hierarchy is what CGAL's "
+                "manual advises, so it is the reference.\n");
+
+    report.heading("Times");
+    report.table(time_table(rows, ns));
+    report.text("\nCPU seconds, wall seconds in parentheses; ratios on CPU time.\n");
+
+    report.heading("Peak memory");
+    report.table(memory_table(rows, ns), std::string(kPeakMemoryMethod) +
+                                             "; ellvor's includes its traits' copy of the sites, CGAL's is its graph.");
+
+    report.heading("Graphs and checks");
+    report.table(graph_table(rows));
+
+    report.heading("Predicate calls per stage");
+    report.table(predicate_table(rows), "calls (filter / subdivision / exact); memoized answers are not counted.");
+
+    report.heading("Where the time goes: the nearest-neighbour walk (kappa1)");
+    report.table(walk_table(rows),
+                 "kappa1 calls × the mean CPU time of one kappa1 call (20000 calls on random site triples with fresh "
+                 "EllipseDelaunayTraits), against the whole build's CPU time. An estimate: the walk's triples are "
+                 "neighbours, not random sites.");
+
+    report.heading("Targets");
+    report.text(target_list(rows, ns) + "\nAnomalies (invalid graph, disagreement with CGAL, exception): " +
+                std::to_string(anomalies) + ".\n" +
+                (args.full ? "" : "\nn = 10^4, 10^5 and 10^6 skipped (run with --full).\n"));
+
+    report.publish(args.out_dir, "build_scaling.md", {{"build_scaling.csv", csv_table(rows).csv()}});
+    if (!args.out_dir.empty()) {
         // matplotlib is Debian's: its python3, not one earlier on PATH.
-        const std::string plot = "/usr/bin/python3 experiments/plot_results.py --dir '" + out_dir + "' build_scaling";
+        const std::string plot = "/usr/bin/python3 experiments/plot_results.py --dir '" + args.out_dir + "' build_scaling";
         if (std::system(plot.c_str()) != 0) std::cerr << "[build_scaling] plot failed: " << plot << "\n";
-        std::cerr << "[build_scaling] wrote " << out_dir << "/build_scaling.{csv,md,png}\n";
     }
     return anomalies ? 1 : 0;
 }

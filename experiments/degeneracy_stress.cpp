@@ -2,7 +2,7 @@
 //
 // (i) The InCircle resultant (exact/incircle_resultant.hpp) of a generic
 //     ellipse triple whose 15 parameters are each perturbed by +-10^-e
-//     (independent seeded signs), e = 4, 8, 12, 16, 20 -- beside the paper
+//     (independent seeded signs), e = 4, 8, 12, 16, 20 -- beside the
 //     paper's Table 1 row "resultant" (25.12 / 57.24 / 102.63 / 160.44 /
 //     231.19 s on a P4 2.6 GHz), with degree, primes and coefficient bits.
 // (ii) incircle() on exactly degenerate quadruples (Q externally tangent to
@@ -27,6 +27,7 @@
 //       # more bit sizes and exponents (a few minutes); writes degeneracy_stress.csv,
 //       # .md, and .png (via experiments/plot_results.py) into the folder
 // Options: --reps N, --seed S, --out DIR, --full.
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "exact/incircle_resultant.hpp"
 #include "predicates/incircle.hpp"
@@ -242,69 +243,76 @@ void incircle_rows(int reps, bool full, std::vector<Row>& rows) {
 // ---- output -----------------------------------------------------------------
 
 
-void write_csv(const std::string& path, const std::vector<Row>& rows) {
-    std::ofstream out(path);
-    out << "part,series,family,bits,e,direction,cap,result,stage,precision,seconds,degree,primes,coefficient_bits,"
-           "seed_exponents,paper_seconds,paper_ratio\n";
+// degeneracy_stress.csv: every row of both parts.
+Table csv_table(const std::vector<Row>& rows) {
+    Table t("degeneracy_stress", {"part", "series", "family", "bits", "e", "direction", "cap", "result", "stage",
+                                  "precision", "seconds", "degree", "primes", "coefficient_bits", "seed_exponents",
+                                  "paper_seconds", "paper_ratio"});
     for (const Row& r : rows) {
-        out << r.part << ',' << r.series << ',' << r.family << ',' << r.bits << ',' << r.e << ',' << r.direction << ','
-            << r.cap << ',' << r.result << ',' << r.stage << ',' << r.precision << ',' << r.seconds << ',' << r.degree
-            << ',' << r.primes << ',' << r.coefficient_bits << ',' << r.exponents << ',';
-        if (r.paper_seconds > 0) out << r.paper_seconds << ',' << r.paper_seconds / r.seconds;
-        else out << ',';
-        out << '\n';
+        const bool paper = r.paper_seconds > 0;
+        t.add({r.part, r.series, r.family, integer(r.bits), integer(r.e), r.direction, integer(r.cap), r.result, r.stage,
+               integer(r.precision), fmt("%g", r.seconds), integer(r.degree), integer(r.primes),
+               integer(r.coefficient_bits), r.exponents, paper ? fmt("%g", r.paper_seconds) : std::string(),
+               paper ? fmt("%g", r.paper_seconds / r.seconds) : std::string()});
     }
+    return t;
 }
 
-std::string fmt(double x, const char* f = "%.4f") {
-    char b[64];
-    std::snprintf(b, sizeof b, f, x);
-    return b;
-}
-
-void write_md(const std::string& path, const std::vector<Row>& rows, const std::string& command, bool full,
-              int reps) {
-    std::ofstream out(path);
-    out << "# Degenerate and near-degenerate InCircle inputs\n\n"
-        << "Machine: " << cpu_model() << " (shared; medians of " << reps
-        << " calls, one call for the exact stage on perturbed inputs)\n\n"
-        << "Command: `" << command << "`" << (full ? " (full run)" : "") << "\n\n"
-        << "Plot: `degeneracy_stress.png` (seconds against e, log-log; the paper's Table 1 row as markers; "
-           "`/usr/bin/python3 experiments/plot_results.py degeneracy_stress`).\n\n"
-        << "## (i) InCircle resultant, generic ellipse triple with every parameter perturbed by +-10^-e\n\n"
-        << "Sites before perturbation: `2 1 1/3 0 0`, `3/2 1 2 9 1`, `1 5/2 -1/2 2 10`; signs from a seeded "
-           "generator. Paper (seed Table 1, P4 2.6 GHz): 25.12 / 57.24 / 102.63 / 160.44 / "
-           "231.19 s for e = 4 .. 20. The paper's ellipses and their bit sizes are not given, so the ratio compares "
-           "like-for-like only in e.\n\n"
-        << "| e | input bits | degree | seed exponents | primes | coefficient bits | ellvor s | paper s | paper / ellvor |\n"
-        << "|---|---|---|---|---|---|---|---|---|\n";
+Table resultant_table(const std::vector<Row>& rows) {
+    Table t("resultant", {"e", "input bits", "degree", "seed exponents", "primes", "coefficient bits", "ellvor s",
+                          "paper s", "paper / ellvor"},
+            "lllllllll");
     for (const Row& r : rows) {
         if (r.part != "resultant") continue;
-        out << "| " << r.e << " | " << r.bits << " | " << r.degree << " | " << r.exponents << " | " << r.primes << " | "
-            << r.coefficient_bits << " | " << fmt(r.seconds) << " | "
-            << (r.paper_seconds > 0 ? fmt(r.paper_seconds, "%.2f") : "-") << " | "
-            << (r.paper_seconds > 0 ? fmt(r.paper_seconds / r.seconds, "%.0f") : "-") << " |\n";
+        t.add({integer(r.e), integer(r.bits), integer(r.degree), r.exponents, integer(r.primes),
+               integer(r.coefficient_bits), fmt("%.4f", r.seconds),
+               r.paper_seconds > 0 ? fmt("%.2f", r.paper_seconds) : std::string("-"),
+               r.paper_seconds > 0 ? fmt("%.0f", r.paper_seconds / r.seconds) : std::string("-")});
     }
-    out << "\n## (ii) incircle() on exactly tangent quadruples and their 10^-e perturbations\n\n"
-        << "`axial`: (2,1,0) at (5,0) and its quarter turns, touching |x| = 3 at i-points. `rot-B`: a (2,1,1/3+2^-B) "
-           "ellipse and three copies rotated about a rational V by angles with rational tan(phi/2), all tangent to "
-           "one circle at t = 1/2. `exact` = Q tangent (answer: tangent); `away`/`toward` = Q's center moved by "
-           "10^-e (answers: no-conflict / conflict). cap = InCircleOptions::max_precision.\n\n"
-        << "| family | input bits | e | Q | cap | result | stage | precision | seconds |\n"
-        << "|---|---|---|---|---|---|---|---|---|\n";
-    std::vector<double> tangent_times;
+    return t;
+}
+
+Table incircle_table(const std::vector<Row>& rows) {
+    Table t("incircle", {"family", "input bits", "e", "Q", "cap", "result", "stage", "precision", "seconds"},
+            "lllllllll");
     for (const Row& r : rows) {
         if (r.part != "incircle") continue;
         const bool right = r.result == (r.direction == "exact" ? "tangent" : r.direction == "away" ? "no-conflict"
                                                                                                     : "conflict");
-        out << "| " << r.family << " | " << r.bits << " | " << (r.e ? std::to_string(r.e) : "-") << " | "
-            << r.direction << " | " << r.cap << " | " << r.result << (right ? "" : " (WRONG)") << " | " << r.stage
-            << " | " << r.precision << " | " << fmt(r.seconds) << " |\n";
-        if (r.direction == "exact") tangent_times.push_back(r.seconds);
+        t.add({r.family, integer(r.bits), r.e ? std::to_string(r.e) : std::string("-"), r.direction, integer(r.cap),
+               r.result + (right ? "" : " (WRONG)"), r.stage, integer(r.precision), fmt("%.4f", r.seconds)});
     }
+    return t;
+}
+
+std::string report_markdown(Report& report, const std::vector<Row>& rows, bool full, int reps) {
+    report.machine_note("shared; medians of " + std::to_string(reps) +
+                        " calls, one call for the exact stage on perturbed inputs");
+    if (full) report.note("Full run (`--full`).");
+    report.note("Plot: `degeneracy_stress.png` (seconds against e, log-log; the paper's Table 1 row as markers; "
+                "`/usr/bin/python3 experiments/plot_results.py degeneracy_stress`).");
+
+    report.heading("(i) InCircle resultant, generic ellipse triple with every parameter perturbed by +-10^-e");
+    report.table(resultant_table(rows),
+                 "Sites before perturbation: `2 1 1/3 0 0`, `3/2 1 2 9 1`, `1 5/2 -1/2 2 10`; signs from a seeded "
+                 "generator. Paper (Emiris, Tsigaridas, Tzoumas 2007, Table 1, P4 2.6 GHz): 25.12 / 57.24 / 102.63 / "
+                 "160.44 / 231.19 s for e = 4 .. 20; its ellipses and their bit sizes are not given, so the ratio "
+                 "compares like-for-like only in e.");
+
+    report.heading("(ii) incircle() on exactly tangent quadruples and their 10^-e perturbations");
+    report.table(incircle_table(rows),
+                 "`axial`: (2,1,0) at (5,0) and its quarter turns, touching |x| = 3 at i-points. `rot-B`: a "
+                 "(2,1,1/3+2^-B) ellipse and three copies rotated about a rational V by angles with rational "
+                 "tan(phi/2), all tangent to one circle at t = 1/2. `exact` = Q tangent (answer: tangent); "
+                 "`away`/`toward` = Q's center moved by 10^-e (answers: no-conflict / conflict). cap = "
+                 "InCircleOptions::max_precision.");
+    std::vector<double> tangent_times;
+    for (const Row& r : rows)
+        if (r.part == "incircle" && r.direction == "exact") tangent_times.push_back(r.seconds);
     if (!tangent_times.empty())
-        out << "\nMedian time of the exactly degenerate calls (all families and caps): "
-            << fmt(median(tangent_times)) << " s.\n";
+        report.text("\nMedian time of the exactly degenerate calls (all families and caps): " +
+                    fmt("%.4f", median(tangent_times)) + " s.\n");
+    return report.markdown();
 }
 
 }  // namespace
@@ -339,13 +347,14 @@ int main(int argc, char** argv) {
         }
     }
     try {
+        Report report("Degenerate and near-degenerate InCircle inputs", "degeneracy_stress", command);
         std::vector<Row> rows;
         resultant_rows(reps, seed, full, rows);
         incircle_rows(reps, full, rows);
         if (!out_dir.empty()) {
             const std::string base = out_dir + "/degeneracy_stress";
-            write_csv(base + ".csv", rows);
-            write_md(base + ".md", rows, command, full, reps);
+            write_result(out_dir, "degeneracy_stress.csv", csv_table(rows).csv());
+            write_result(out_dir, "degeneracy_stress.md", report_markdown(report, rows, full, reps));
             // matplotlib is Debian's: its python3, not one earlier on PATH.
             const std::string plot =
                 "/usr/bin/python3 experiments/plot_results.py --dir '" + out_dir + "' degeneracy_stress";

@@ -1,5 +1,6 @@
-// Degenerate and nearly degenerate input, in one run: the figures of the issue
-// "every decision certified and <= 1 s; degenerate circle input at CGAL's cost".
+// Degenerate and nearly degenerate input, in one run: is every decision
+// certified and made within 1 s, and does degenerate circle input cost what it
+// costs CGAL?
 //
 //  1. Degenerate circle grids against CGAL 5.5, same run: the 30 x 30 grid of
 //     unit circles at spacing 3 (every cell four cocircular sites) and a
@@ -33,6 +34,8 @@
 // snippet and makes the program exit with status 1.
 #include "experiments/peak_memory.hpp"
 #include "experiments/predicate_stages.hpp"
+#include "experiments/random_sites.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "graph/triangulation_index.hpp"
@@ -161,92 +164,9 @@ struct Slowest {
     }
 };
 
-// --------------------------------------------------------------- formatting --
-
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
-
-// A duration with a unit chosen for it.
-std::string duration(double s) {
-    if (s >= 1) return fmt("%.3g s", s);
-    if (s >= 1e-3) return fmt("%.3g ms", 1e3 * s);
-    return fmt("%.3g µs", 1e6 * s);
-}
-
-
-std::string one_line(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == '|') c = ' ';
-    if (s.size() > 160) s = s.substr(0, 160) + "...";
-    return s;
-}
-
-// ------------------------------------------------------------------- tables --
-
-// A table cell: what the Markdown shows and what the CSV keeps (raw numbers in
-// SI units, or the same text). A cell of several numbers keeps each under the
-// column's name with a suffix ("... [cpu_s]").
-struct Cell {
-    std::string text, raw;
-    std::vector<std::pair<std::string, std::string>> parts;  // (suffix, raw value)
-    Cell(std::string t) : text(t), raw(std::move(t)) {}  // NOLINT: text cells are the common case
-    Cell(const char* t) : Cell(std::string(t)) {}        // NOLINT
-    Cell(std::string t, std::string r) : text(std::move(t)), raw(std::move(r)) {}
-};
-Cell integer(long long v) { return Cell(std::to_string(v)); }
-Cell seconds_cell(double s) { return Cell(duration(s), fmt("%.6g", s)); }
-// "CPU (wall)".
-Cell cpu_wall(double cpu, double wall) {
-    Cell c(duration(cpu) + " (" + duration(wall) + ")");
-    c.parts = {{"cpu_s", fmt("%.6g", cpu)}, {"wall_s", fmt("%.6g", wall)}};
-    return c;
-}
+using experiments::cpu_wall;
+// "CPU (wall)" of a timing.
 Cell cpu_wall(const Timing& t) { return cpu_wall(t.cpu, t.wall); }
-
-struct Table {
-    Table(std::string id_, std::vector<std::string> columns_) : id(std::move(id_)), columns(std::move(columns_)) {}
-
-    std::string id;  // the CSV's table name
-    std::vector<std::string> columns;
-    std::vector<std::vector<Cell>> rows;
-
-    void add(std::vector<Cell> row) { rows.push_back(std::move(row)); }
-
-    std::string markdown() const {
-        std::ostringstream md;
-        md << "|";
-        for (const std::string& c : columns) md << " " << c << " |";
-        md << "\n|";
-        for (std::size_t i = 0; i < columns.size(); ++i) md << (i == 0 ? "---|" : "---:|");
-        md << "\n";
-        for (const auto& row : rows) {
-            md << "|";
-            for (const Cell& c : row) md << " " << c.text << " |";
-            md << "\n";
-        }
-        return md.str();
-    }
-    // Long format: table,row,column,value.
-    void csv(std::ostream& out) const {
-        for (std::size_t r = 0; r < rows.size(); ++r)
-            for (std::size_t c = 0; c < rows[r].size() && c < columns.size(); ++c) {
-                const Cell& cell = rows[r][c];
-                if (cell.parts.empty())
-                    out << id << "," << r << "," << quoted(columns[c]) << "," << quoted(cell.raw) << "\n";
-                for (const auto& [suffix, value] : cell.parts)
-                    out << id << "," << r << "," << quoted(columns[c] + " [" + suffix + "]") << "," << quoted(value) << "\n";
-            }
-    }
-    static std::string quoted(const std::string& s) {
-        if (s.find_first_of(",\"\n") == std::string::npos) return s;
-        std::string o = "\"";
-        for (char ch : s) o += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        return o + "\"";
-    }
-};
 
 // ---------------------------------------------------------------- anomalies --
 
@@ -741,7 +661,7 @@ void add_stage_row(Table& t, const std::string& graph, const GraphRun& g) {
     const CallProfile& p = g.profile;
     const double in_predicates = g.timed_build_wall > 0 ? p.seconds / g.timed_build_wall : 0;
     std::vector<Cell> row = {graph};
-    for (const PredicateInfo& info : kPredicates) row.push_back(stage_triple(s[info.predicate]));
+    for (const std::string& cell : predicate_stage_triples(s)) row.push_back(cell);
     row.insert(row.end(), {integer(static_cast<long long>(p.calls)), Cell(fmt("%.0f%%", 100 * in_predicates), fmt("%.4g", in_predicates)),
            time_by_predicate(p), seconds_cell(p.calls ? p.seconds / p.calls : 0),
            seconds_cell(p.slowest), p.slowest_call, cpu_wall(g.slowest_alone)});
@@ -941,27 +861,6 @@ std::vector<Ellipse> transformed(const std::vector<Ellipse>& sites, const Versio
     return out;
 }
 
-// `count` quadruples E1 E2 E3 Q from generate_sites(kind, 4, bits 8, box 10,
-// seeds 1, 2, ...) as bench_incircle draws them: E2, E3 swapped when only the
-// clockwise circle exists, skipped when neither does.
-std::vector<std::vector<Ellipse>> random_quadruples(SiteKind kind, long count) {
-    std::vector<std::vector<Ellipse>> out;
-    for (std::uint64_t seed = 1; static_cast<long>(out.size()) < count; ++seed) {
-        GeneratorOptions o;
-        o.kind = kind;
-        o.count = 4;
-        o.seed = seed;
-        o.bits = 8;
-        o.box = Rational(10);
-        std::vector<Ellipse> e = generate_sites(o);
-        const VoronoiCircles c = *voronoi_circle_count(e[0], e[1], e[2]);
-        if (c == VoronoiCircles::none) continue;
-        if (c == VoronoiCircles::cw_only) std::swap(e[1], e[2]);
-        out.push_back(std::move(e));
-    }
-    return out;
-}
-
 struct InvarianceResults {
     Table table{"invariance", {"quadruples", "version", "n", "disagreements", "conflict / no-conflict / tangent / no-circle",
                                "filter / subdivision / exact", "max precision", "median CPU (wall)", "max CPU (wall)",
@@ -973,7 +872,7 @@ struct InvarianceResults {
 void invariance_family(const std::string& family, SiteKind kind, const Config& config, InvarianceResults& out,
                        Anomalies& anomalies) {
     std::cerr << "[near_degenerate] translation and scaling, random " << family << "\n";
-    const auto quads = random_quadruples(kind, config.quadruples);
+    const auto quads = incircle_quadruples(kind, config.quadruples, 1, 8);
     std::vector<std::optional<InCircle>> base;
     for (const Version& v : versions()) {
         std::vector<double> cpu, wall;
@@ -1050,48 +949,15 @@ CapResults cap_section(const Config& config, Anomalies& anomalies) {
 
 // ------------------------------------------------------------------ targets --
 
-struct Target {
-    std::string what, measured;
-    bool met;
-};
-
-std::string target_lines(const std::vector<Target>& targets) {
-    std::string s;
-    for (const Target& t : targets) s += "- " + t.what + ": " + t.measured + " — " + (t.met ? "met" : "MISSED") + "\n";
-    return s;
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-    ellvor::experiments::BenchArguments args;
-    if (!ellvor::experiments::parse_bench_arguments(
-            argc, argv, "near_degenerate",
-            "usage: near_degenerate [--full] [--out DIR]\n"
-            "  --full     every k (12, 16, 20, 30, 40), the hexagonal grid, more runs (a few minutes)\n"
-            "  --out DIR  write DIR/near_degenerate.md and DIR/near_degenerate.csv\n",
-            args))
-        return 2;
-    const Config config = make_config(args.full);
-    const std::string load_before = loadavg();
-    Anomalies anomalies;
-
-    Table stages = stage_table();
-    Slowest grid_slowest_call;
-    const GridResults grids = grid_section(config, stages, grid_slowest_call, anomalies);
-    const CollinearResults collinear = collinear_section(config, anomalies);
-    const RowResults rows = row_section(config, stages, anomalies);
-    const InvarianceResults invariance = invariance_section(config, anomalies);
-    const CapResults caps = cap_section(config, anomalies);
-    const std::string load_after = loadavg();
-
-    // Targets.
-    std::vector<Target> targets;
+std::vector<Target> targets(const GridResults& grids, const Slowest& grid_slowest_call, const CollinearResults& collinear,
+                            const RowResults& rows, const InvarianceResults& invariance, const CapResults& caps,
+                            const Anomalies& anomalies) {
+    std::vector<Target> out;
     for (const auto& [grid, ratio] : grids.ratios)
-        targets.push_back({"ellvor within " + fmt("%.0f", kGridRatioTarget) + "× of CGAL's hierarchy, " + grid + " grid",
-                           fmt("%.1f×", ratio) + " (CPU)", ratio <= kGridRatioTarget});
-    targets.push_back({"every decision certified (no wrong or undecided answer, exception or invalid graph)",
-                       std::to_string(anomalies.count()) + " anomalies", anomalies.count() == 0});
+        out.push_back({"ellvor within " + fmt("%.0f", kGridRatioTarget) + "× of CGAL's hierarchy, " + grid + " grid",
+                       fmt("%.1f×", ratio) + " (CPU)", ratio <= kGridRatioTarget});
+    out.push_back({"every decision certified (no wrong or undecided answer, exception or invalid graph)",
+                   std::to_string(anomalies.count()) + " anomalies", anomalies.count() == 0});
     std::vector<std::pair<std::string, Slowest>> slow = {
         {"grids: slowest predicate call in the build", grid_slowest_call},
         {"nearly collinear triples: slowest run of refine(64) or InCircle", collinear.slowest},
@@ -1101,129 +967,131 @@ int main(int argc, char** argv) {
         if (cap <= precision::kDefaultCap)
             slow.push_back({"tangent quadruple at cap " + std::to_string(cap) + ", slowest run", {d.time.max_wall, ""}});
     for (const auto& [where, s] : slow)
-        targets.push_back({"every decision ≤ 1 s (default cap; wall time), " + where,
-                           duration(s.seconds) + (s.what.empty() ? "" : " (" + s.what + ")"), s.seconds <= kDecisionBudget});
-    targets.push_back({"translated and scaled quadruples answer as the originals",
-                       std::to_string(invariance.disagreements) + " disagreements", invariance.disagreements == 0});
+        out.push_back({"every decision ≤ 1 s (default cap; wall time), " + where,
+                       duration(s.seconds) + (s.what.empty() ? "" : " (" + s.what + ")"), s.seconds <= kDecisionBudget});
+    out.push_back({"translated and scaled quadruples answer as the originals",
+                   std::to_string(invariance.disagreements) + " disagreements", invariance.disagreements == 0});
     bool all_tangent = true;
     for (const auto& [cap, d] : caps.runs) all_tangent = all_tangent && d.answer == InCircle::tangent;
-    targets.push_back({"the tangent quadruple is tangent at every cap", all_tangent ? "yes" : "no", all_tangent});
+    out.push_back({"the tangent quadruple is tangent at every cap", all_tangent ? "yes" : "no", all_tangent});
     for (const auto& [cap, d] : caps.runs)
         if (cap > precision::kDefaultCap)
-            targets.push_back({"(beyond the default cap) the tangent quadruple at cap " + std::to_string(cap) + " ≤ 1 s",
-                               duration(d.time.max_wall) + " wall, " + duration(d.time.max_cpu) + " CPU (slowest run)",
-                               d.time.max_wall <= kDecisionBudget});
+            out.push_back({"(beyond the default cap) the tangent quadruple at cap " + std::to_string(cap) + " ≤ 1 s",
+                           duration(d.time.max_wall) + " wall, " + duration(d.time.max_cpu) + " CPU (slowest run)",
+                           d.time.max_wall <= kDecisionBudget});
+    return out;
+}
 
-    // Markdown.
-    std::ostringstream md;
-    md << "# Degenerate and nearly degenerate input\n\n"
-       << "The figures of the issue \"every decision certified and ≤ 1 s; degenerate circle input at CGAL's cost\", "
-          "in one run of `experiments/near_degenerate.cpp`.\n\n"
-       << "- Machine: " << cpu_model() << " (shared with other jobs: compare CPU times)\n"
-       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
-       << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/near_degenerate && " << args.command << "`\n"
-       << "- Times: median of the runs, CPU time (CLOCK_PROCESS_CPUTIME_ID) with wall time in parentheses; every "
-          "InCircle call and every refine(64) is cold (a fresh solver).\n"
-       << "- By default (`make bench`) k = 12 and 40, the square grid only, " << make_config(false).runs
-       << " runs, and nothing is written; `--full` runs every k and the hexagonal grid with "
-       << make_config(true).runs << " runs (" << make_config(true).build_runs
-       << " for the row of ellipses), `--out DIR` writes this file and `near_degenerate.csv` (one line per table "
-          "cell: table, row, column, value; times in seconds, a \"CPU (wall)\" cell as two lines, [cpu_s] and "
-          "[wall_s]; memory in bytes).\n\n";
+}  // namespace
 
-    md << "## Targets\n\nThe ratio to CGAL is on CPU time; the \"≤ 1 s\" targets are on wall time (what a caller "
-          "waits; the exact stage's resultant runs on every hardware thread), the slowest run or call.\n\n"
-       << target_lines(targets) << "\nAnomalies: " << anomalies.count() << ".\n";
-    for (const std::string& a : anomalies.list()) md << "\n" << a << "\n";
+int main(int argc, char** argv) {
+    BenchArguments args;
+    if (!parse_bench_arguments(argc, argv, "near_degenerate",
+                               "usage: near_degenerate [--full] [--out DIR]\n"
+                               "  --full     every k (12, 16, 20, 30, 40), the hexagonal grid, more runs (a few minutes)\n"
+                               "  --out DIR  write DIR/near_degenerate.md and DIR/near_degenerate.csv\n",
+                               args))
+        return 2;
+    const Config config = make_config(args.full);
+    Report report("Degenerate and nearly degenerate input", "near_degenerate", args.command);
+    Anomalies anomalies;
 
-    md << "\n## 1. Degenerate circle grids against CGAL\n\n";
-    for (const GridCase& g : grid_cases(config)) md << "- **" << g.name << "**: " << g.description << ".\n";
-    md << "- ellvor: `DelaunayGraph` with `EllipseDelaunayTraits`, `insert_all` (largest first, ties in id order), "
-          "the sites read through the .ell input checks as `ellvor build` reads them (not timed); then `validate()` "
-          "and `brute_force_check()` (every Voronoi circle against every site).\n"
-       << "- CGAL 5.5: `Apollonius_graph_hierarchy_2` and `Apollonius_graph_2`, both with "
-          "`Apollonius_graph_filtered_traits_2<Simple_cartesian<double>>` (the hierarchy is what CGAL's manual advises "
-          "above about 10^3 sites), bulk `insert(first, last)` (which sorts by decreasing radius). The square grid is "
-          "exact in double; the hexagonal grid is not (13/5), so CGAL gets it scaled by 5 (radius 5, spacing 15, shift "
-          "15/2, row height 13), a similar copy that is exact in double: both libraries solve the same degenerate "
-          "problem exactly.\n"
-       << "- Build times exclude site conversion and teardown; ratios are on CPU time. \"Edges only in ...\": the "
-          "finite Delaunay edges (multisets of site-id pairs) one graph has and the other lacks (\"same\": "
-          "identical graphs); on the square grid each cell's diagonal is a tie (four cocircular sites) that the "
-          "insertion order breaks, so differences there are not errors (\"ties\": every differing edge is such a "
-          "diagonal; any other difference is an anomaly).\n\n"
-       << grids.times.markdown()
-       << "\nPeak memory of one build, each in its own child forked before any other work of this program (the "
-          "child's VmHWM after the build; its VmRSS at the fork, inherited from this program, is the baseline; "
-          "\"growth\" is the difference):\n\n"
-       << grids.memory.markdown();
+    // The measurements.
+    Table stages = stage_table();
+    Slowest grid_slowest_call;
+    const GridResults grids = grid_section(config, stages, grid_slowest_call, anomalies);
+    const CollinearResults collinear = collinear_section(config, anomalies);
+    const RowResults rows = row_section(config, stages, anomalies);
+    const InvarianceResults invariance = invariance_section(config, anomalies);
+    const CapResults caps = cap_section(config, anomalies);
 
-    md << "\n## Predicate calls of the graphs\n\ncalls (filter / subdivision / exact) of the build alone (before "
-          "`validate()`), memoized answers excluded, from the traits' counters. \"calls timed\": every call the graph "
-          "made through its traits in one extra build in which each call is timed (wall time, steady clock; memoized "
-          "answers included), with the mean and the slowest call (its site ids). A single call's wall time includes "
-          "whatever the machine did meanwhile, so the slowest call is made again alone on fresh traits (cold: no "
-          "memo, no cached Voronoi circle; median of the runs).\n\n"
-       << stages.markdown();
+    // The report.
+    report.intro("Is every decision on degenerate and nearly degenerate input certified and made within 1 s, and "
+                 "does a degenerate circle input cost ellvor what it costs CGAL? One run of "
+                 "`experiments/near_degenerate.cpp`.");
+    report.machine_note("shared with other jobs: compare CPU times");
+    report.note("Times: median of the runs, CPU time (CLOCK_PROCESS_CPUTIME_ID) with wall time in parentheses; every "
+                "InCircle call and every refine(64) is cold (a fresh solver).");
+    report.note("By default (`make bench`) k = 12 and 40, the square grid only, " + std::to_string(make_config(false).runs) +
+                " runs, and nothing is written; `--full` runs every k and the hexagonal grid with " +
+                std::to_string(make_config(true).runs) + " runs (" + std::to_string(make_config(true).build_runs) +
+                " for the row of ellipses), `--out DIR` writes this file and `near_degenerate.csv` (one line per table "
+                "cell: table, row, column, value; times in seconds, a \"CPU (wall)\" cell as two lines, [cpu_s] and "
+                "[wall_s]; memory in bytes).");
 
-    md << "\n## 2. Nearly collinear sites\n\nTriples in the order of their counter-clockwise Voronoi circle:\n\n"
-          "- circles, horizontal: unit circles (0, 0), (6, 0), (3, 10^-k) (the circle lies below);\n"
-          "- circles, tilted: unit circles (0, 0), (6, 8), (3, 4 + 10^-k);\n"
-          "- ellipses: `3/4 4/3 1/2 0 0`, `1/2 1 0 3 -10^-k`, `2 1 0 6 0` (E1, E3, E2 of "
-          "tests/subdivision/test_huge_circle_start.cpp; the circle lies above).\n\n"
-          "The certified Voronoi circle: `VoronoiCircleSolver::refine(64)` on a fresh solver; how the certificate "
-          "started (`enclosure().found_by`), its working precision, the radius, the Newton steps. Check (circles): "
-          "ellvor's enclosure at 256 bits holds the circumcircle of the centres shrunk by 1, computed here exactly "
-          "(centre) and in Arb (radius).\n\n"
-       << collinear.circles.markdown()
-       << "\nInCircle (`incircle`, default options, cold) with a unit circle Q whose centre lies at distance R + 1 ± 1 "
-          "from the Voronoi circle's centre V, on the far side from the sites (along the ray from E1's centre through "
-          "V), computed in Arb at 1024 bits and rounded to 320 bits (an error far below 10^-20 units): \"1 unit outside\" must be no-conflict, \"1 unit inside\" "
-          "conflict. V and R come from the exact circumcircle (circles) or from ellvor's certified enclosure at 256 "
-          "bits (ellipses).\n\n"
-       << collinear.incircle.markdown();
+    report.heading("Targets");
+    report.paragraph("The ratio to CGAL is on CPU time; the \"≤ 1 s\" targets are on wall time (what a caller waits; "
+                     "the exact stage's resultant runs on every hardware thread), the slowest run or call.");
+    report.text(target_lines(targets(grids, grid_slowest_call, collinear, rows, invariance, caps, anomalies)) +
+                "\nAnomalies: " + std::to_string(anomalies.count()) + ".\n");
+    for (const std::string& a : anomalies.list()) report.text("\n" + a + "\n");
 
-    md << "\n### Rows of 20 sites\n\nSite i = 0..19 centred at (6i, e_i 10^-k) with e_i = (-1)^i (1 + i mod 9) (offsets "
-          "±1..±9, alternating): unit circles `1 1 0 6i e_i·10^-k`, and ellipses cycling the shapes `3/4 4/3 1/2`, "
-          "`1/2 1 0`, `2 1 0`. Each shape centred on the x-axis lies below y = 1 and touches it (its support value "
-          "sqrt(a² sin²ω + b² cos²ω) in the direction (0, 1) is exactly 1: "
-       << (row_shapes_touch_the_line() ? "checked" : "CHECK FAILED")
-       << "), so with e_i = 0 every site touches y = 1 (and the circles y = -1). A whole build as `ellvor build "
-          "--validate` does it: the .ell input checks, `insert_all` (timed), `validate()`, `brute_force_check()`. "
-          "The slowest predicate call and the mean per call come from the extra timed-traits build (predicate table "
-          "above).\n\n"
-       << rows.builds.markdown();
+    report.heading("1. Degenerate circle grids against CGAL");
+    std::string grid_list;
+    for (const GridCase& g : grid_cases(config)) grid_list += "- **" + g.name + "**: " + g.description + ".\n";
+    report.text(grid_list +
+                "- ellvor: `DelaunayGraph` with `EllipseDelaunayTraits`, `insert_all`, the sites read through the .ell "
+                "input checks (not timed); then `validate()` and `brute_force_check()`.\n"
+                "- CGAL 5.5: `Apollonius_graph_hierarchy_2` and `Apollonius_graph_2` with "
+                "`Apollonius_graph_filtered_traits_2<Simple_cartesian<double>>`, bulk `insert`. The hexagonal grid "
+                "(13/5 is not a double) goes to CGAL scaled by 5, a similar copy exact in double.\n"
+                "- Build times exclude site conversion and teardown; ratios are on CPU time. \"Edges only in ...\": "
+                "the finite Delaunay edges one graph has and the other lacks; \"ties\": every differing edge is a "
+                "diagonal of four cocircular sites, which the insertion order decides (any other difference is an "
+                "anomaly).\n\n");
+    report.table(grids.times);
+    report.text("\n");
+    report.table(grids.memory, "Peak memory of one build, each in a child forked before any other work (VmHWM after "
+                               "the build; the VmRSS at the fork is the baseline; \"growth\" is the difference):");
 
-    md << "\n## 3. Translation and scaling\n\n" << config.quadruples
-       << " random ellipse and " << config.quadruples
-       << " random circle quadruples E1 E2 E3 | Q, drawn as bench_incircle draws them (generate_sites(kind, 4, bits 8, "
-          "box 10, seeds 1, 2, ...); E2 and E3 swapped when only the clockwise circle exists, skipped when neither "
-          "does), each as is, translated by 10^30 or 10^-30 in both coordinates, and scaled by 10^100 or 10^-100 "
-          "(exact rationals). Disagreements: answers that differ from the untransformed quadruple's. Time per "
-          "decision: the median of "
-       << config.runs
-       << " cold calls per quadruple; median and maximum over the quadruples (\"slowest #\": the quadruple of the "
-          "maximum).\n\n"
-       << invariance.table.markdown();
+    report.heading("Predicate calls of the graphs");
+    report.table(stages, "calls (filter / subdivision / exact) of the build alone, memoized answers excluded. \"calls "
+                         "timed\": every call of one extra build with each call timed (wall time; memoized answers "
+                         "included), with the mean and the slowest call (its site ids), which is then made again alone "
+                         "on fresh traits (cold; median of the runs).");
 
-    md << "\n## 4. Precision caps\n\n`incircle` on the exactly tangent quadruple `2 1 0 5 0`, `2 1 1 0 5`, `2 1 0 -5 0`, "
-          "`2 1 1 0 -5` (the circle of radius 3 about the origin touches all four) with `options.refinement.cap` = "
-          "64, 4096 (the default), 2^17, 2^20: the subdivision stage refines up to the cap, then the exact stage "
-          "proves the tangency. The exact stage's resultant runs on every hardware thread "
-          "(std::thread::hardware_concurrency(), 2 here), so on an idle machine its CPU time exceeds its wall time.\n\n"
-       << caps.table.markdown();
+    report.heading("2. Nearly collinear sites");
+    report.text("Triples in the order of their counter-clockwise Voronoi circle:\n\n"
+                "- circles, horizontal: unit circles (0, 0), (6, 0), (3, 10^-k) (the circle lies below);\n"
+                "- circles, tilted: unit circles (0, 0), (6, 8), (3, 4 + 10^-k);\n"
+                "- ellipses: `3/4 4/3 1/2 0 0`, `1/2 1 0 3 -10^-k`, `2 1 0 6 0` (E1, E3, E2 of "
+                "tests/subdivision/test_huge_circle_start.cpp; the circle lies above).\n\n");
+    report.table(collinear.circles,
+                 "The certified Voronoi circle: `VoronoiCircleSolver::refine(64)` on a fresh solver: how the "
+                 "certificate started, its precision, the radius, the Newton steps. Check (circles): ellvor's "
+                 "enclosure at 256 bits holds the circumcircle of the centres shrunk by 1, computed here.");
+    report.text("\n");
+    report.table(collinear.incircle,
+                 "InCircle (default options, cold) with a unit circle Q 1 unit outside (must be no-conflict) or 1 unit "
+                 "inside (conflict) the Voronoi circle, on the far side from E1, placed in Arb at 1024 bits and "
+                 "rounded to 320 bits.");
 
-    std::cout << md.str();
-    if (!args.out_dir.empty()) {
-        std::ostringstream csv;
-        csv << "table,row,column,value\n";
-        for (const Table* t : std::vector<const Table*>{&grids.times, &grids.memory, &stages, &collinear.circles, &collinear.incircle,
-                               &rows.builds, &invariance.table, &caps.table})
-            t->csv(csv);
-        std::ofstream(args.out_dir + "/near_degenerate.csv") << csv.str();
-        std::ofstream(args.out_dir + "/near_degenerate.md") << md.str();
-        std::cerr << "[near_degenerate] wrote " << args.out_dir << "/near_degenerate.{md,csv}\n";
-    }
+    report.heading("Rows of 20 sites", 3);
+    report.table(rows.builds,
+                 "Site i = 0..19 centred at (6i, e_i 10^-k), e_i = (-1)^i (1 + i mod 9): unit circles, and ellipses "
+                 "cycling the shapes `3/4 4/3 1/2`, `1/2 1 0`, `2 1 0`, each touching y = 1 from below when e_i = 0 (" +
+                     std::string(row_shapes_touch_the_line() ? "checked" : "CHECK FAILED") +
+                     "). A whole build as `ellvor build --validate` does it (`insert_all` timed); the slowest call "
+                     "and the mean per call come from the timed-traits build.");
+
+    report.heading("3. Translation and scaling");
+    report.table(invariance.table,
+                 std::to_string(config.quadruples) + " random ellipse and " + std::to_string(config.quadruples) +
+                     " random circle InCircle quadruples (drawn as bench_incircle draws them), each as is, translated "
+                     "by 10^30 or 10^-30 and scaled by 10^100 or 10^-100 (exact rationals). Disagreements: answers "
+                     "that differ from the untransformed quadruple's. Time per decision: the median of " +
+                     std::to_string(config.runs) + " cold calls; median and maximum over the quadruples.");
+
+    report.heading("4. Precision caps");
+    report.table(caps.table,
+                 "`incircle` on the exactly tangent quadruple `2 1 0 5 0`, `2 1 1 0 5`, `2 1 0 -5 0`, `2 1 1 0 -5` "
+                 "with `options.refinement.cap` = 64, 4096 (the default), 2^17, 2^20: the subdivision stage refines "
+                 "up to the cap, then the exact stage proves the tangency (its resultant runs on every hardware "
+                 "thread, so its CPU time may exceed its wall time).");
+
+    report.publish(args.out_dir, "near_degenerate.md",
+                   {{"near_degenerate.csv",
+                     long_csv({&grids.times, &grids.memory, &stages, &collinear.circles, &collinear.incircle,
+                               &rows.builds, &invariance.table, &caps.table})}});
     return anomalies.count() ? 1 : 0;
 }

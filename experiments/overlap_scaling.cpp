@@ -27,8 +27,8 @@
 // peak memory (as for circles), the ratios F = 0.3 / F = 0; the graph's
 // statistics (sites hidden by a union, insertions searched over the whole
 // graph) and the predicate calls per deciding stage, which explain the cost;
-// relative_position alone on the crossing pairs. The target: an
-// overlapping build within 2x of a disjoint set of the same size, 10^4 sites.
+// relative_position alone on the crossing pairs. The target: an overlapping
+// build within 2x of a disjoint set of the same size, 10^4 sites.
 //
 // Checks: the crossing sites are counted exactly (sites_cross) and must be
 // round(0.3 n); ellvor's graph passes validate() on every set, and on circles
@@ -45,6 +45,7 @@
 #include "experiments/apollonius_comparison.hpp"
 #include "experiments/peak_memory.hpp"
 #include "experiments/predicate_stages.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
@@ -73,12 +74,6 @@ namespace {
 const char* const kSets[] = {"disjoint", "overlap"};
 
 std::string generator_set(const std::string& set) { return set == "overlap" ? "circles-cross30" : "circles"; }
-
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
 
 // CPU seconds of relative_position (the exact stage: the intersection quartic)
 // on the crossing pairs: what the graph's is_hidden pays for them once each.
@@ -142,12 +137,6 @@ struct Row {
     long memory_kb() const { return memory.peak_kb < 0 || memory.start_kb < 0 ? -1 : memory.peak_kb - memory.start_kb; }
 };
 
-std::string one_line(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == ',' || c == '|') c = ' ';
-    if (s.size() > 120) s = s.substr(0, 120) + "...";
-    return s;
-}
 
 void set_timing(Row& r, const Timing& t) {
     r.seconds = t.wall;
@@ -179,7 +168,7 @@ Row run_ellvor(const std::string& set, const std::vector<Ellipse>& sites, Summar
         r.stats = g->predicate_stats();
         r.graph = g->stats();
         const std::string v = g->validate();
-        r.validate = v.empty() ? "ok" : one_line(v);
+        r.validate = v.empty() ? "ok" : check_message(v);
         if (!v.empty()) {
             std::cerr << "ANOMALY: ellvor " << kind << " " << set << " n = " << r.n << ": validate: " << v << "\n";
             ++anomalies;
@@ -187,7 +176,7 @@ Row run_ellvor(const std::string& set, const std::vector<Ellipse>& sites, Summar
         summary = summary_of(*g);
     } catch (const std::exception& e) {
         std::cerr << "ANOMALY: ellvor " << kind << " " << set << " n = " << r.n << ": " << e.what() << "\n";
-        r.validate = std::string("exception: ") + one_line(e.what());
+        r.validate = std::string("exception: ") + check_message(e.what());
         ++anomalies;
     }
     return r;
@@ -244,43 +233,21 @@ struct EllipseCase {
 
 std::string ellipse_set(const std::string& set) { return set == "overlap" ? "ellipses-cross30" : "ellipses"; }
 
-}  // namespace
+// What is measured: circles at every n, ellipses at every (n, seed).
+struct Plan {
+    std::vector<long> ns;
+    std::vector<EllipseCase> ecases;
+};
 
-int main(int argc, char** argv) {
-    // --only circles|ellipses (one part, stdout only), then the common arguments.
-    std::string only;
-    std::vector<char*> rest{argv[0]};
-    for (int i = 1; i < argc; ++i) {
-        if (std::string(argv[i]) == "--only" && i + 1 < argc) only = argv[++i];
-        else rest.push_back(argv[i]);
-    }
-    const char* const usage =
-        "usage: overlap_scaling [--full] [--out DIR | --only circles|ellipses]\n"
-        "  --full     circles n = 10^3, 10^4, 10^5 (instead of 10^2, 10^3); ellipses n = 10^3, 10^4 and 10^5\n"
-        "             (seeds 1, 2, 3; instead of 10^3): about 7 minutes\n"
-        "  --out DIR  write DIR/overlap.csv and DIR/overlap.md\n"
-        "  --only P   run one part (circles or ellipses), print only\n";
-    BenchArguments args;
-    if (!parse_bench_arguments(static_cast<int>(rest.size()), rest.data(), "overlap_scaling", usage, args)) return 2;
-    if (!(only.empty() || only == "circles" || only == "ellipses") || (!only.empty() && !args.out_dir.empty())) {
-        std::fputs(usage, stderr);
-        return 2;
-    }
-    const bool run_circles = only != "ellipses", run_ellipses = only != "circles";
-    const std::vector<long> ns = !run_circles ? std::vector<long>{}
-                                 : args.full  ? std::vector<long>{1000, 10000, 100000}
-                                              : std::vector<long>{100, 1000};
-    const std::vector<EllipseCase> ecases = !run_ellipses ? std::vector<EllipseCase>{}
-                                            : args.full ? std::vector<EllipseCase>{{1000, 1}, {10000, 1}, {10000, 2}, {10000, 3},
-                                                                         {100000, 1}, {100000, 2}, {100000, 3}}
-                                                        : std::vector<EllipseCase>{{1000, 1}};
-    const int ellipse_min_reps = 3;
+constexpr int kEllipseMinReps = 3;
 
-    const std::string load_before = loadavg();
-    // Peak memory first, before this program has built anything: each build in
-    // its own child, which generates its sites and then builds.
-    std::map<std::tuple<std::string, std::string, std::string, long, std::uint64_t>, PeakMemory> memory;
-    for (long n : ns) {
+using MemoryKey = std::tuple<std::string, std::string, std::string, long, std::uint64_t>;  // library, sites, set, n, seed
+
+// Peak memory first, before this program has built anything: each build in
+// its own child, which generates its sites and then builds.
+std::map<MemoryKey, PeakMemory> measure_peak_memory(const Plan& plan) {
+    std::map<MemoryKey, PeakMemory> memory;
+    for (long n : plan.ns) {
         for (const std::string set : kSets) {
             std::vector<Ellipse> sites;
             memory[{"ellvor", "circles", set, n, 1}] =
@@ -299,7 +266,7 @@ int main(int argc, char** argv) {
         }
         std::cerr << "[overlap_scaling] peak memory measured, circles n = " << n << "\n";
     }
-    for (const EllipseCase& c : ecases) {
+    for (const EllipseCase& c : plan.ecases) {
         for (const std::string set : kSets) {
             std::vector<Ellipse> sites;
             memory[{"ellvor", "ellipses", set, c.n, c.seed}] =
@@ -311,23 +278,29 @@ int main(int argc, char** argv) {
         }
         std::cerr << "[overlap_scaling] peak memory measured, ellipses n = " << c.n << " seed " << c.seed << "\n";
     }
+    return memory;
+}
 
-    std::vector<Row> rows;
-    int anomalies = 0;
-    auto count_crossings = [&](const std::string& what, const std::string& set, long n, const std::vector<Ellipse>& sites,
-                               Row& r) {
-        const auto [crossing_sites, pairs] = crossings(sites);
-        r.crossing_sites = crossing_sites;
-        r.crossing_pairs = static_cast<long>(pairs.size());
-        r.relative_position_cpu = relative_position_seconds(sites, pairs, anomalies);
-        const long expected = set == "overlap" ? (3 * n + 5) / 10 : 0;  // round(0.3 n), halves up
-        if (crossing_sites != expected) {
-            std::cerr << "ANOMALY: " << what << " " << set << " n = " << n << ": " << crossing_sites
-                      << " crossing sites, expected " << expected << "\n";
-            ++anomalies;
-        }
-    };
-    for (long n : ns) {
+// The crossing sites and pairs of a set (checked: round(0.3 n) for an
+// overlap set, none otherwise) and relative_position's time on the pairs.
+void count_crossings(const std::string& what, const std::string& set, long n, const std::vector<Ellipse>& sites,
+                     Row& r, int& anomalies) {
+    const auto [crossing_sites, pairs] = crossings(sites);
+    r.crossing_sites = crossing_sites;
+    r.crossing_pairs = static_cast<long>(pairs.size());
+    r.relative_position_cpu = relative_position_seconds(sites, pairs, anomalies);
+    const long expected = set == "overlap" ? (3 * n + 5) / 10 : 0;  // round(0.3 n), halves up
+    if (crossing_sites != expected) {
+        std::cerr << "ANOMALY: " << what << " " << set << " n = " << n << ": " << crossing_sites
+                  << " crossing sites, expected " << expected << "\n";
+        ++anomalies;
+    }
+}
+
+// Circles: ellvor's and CGAL's builds of both sets at every n.
+void measure_circles(const Plan& plan, const std::map<MemoryKey, PeakMemory>& memory, std::vector<Row>& rows,
+                     int& anomalies) {
+    for (long n : plan.ns) {
         for (const std::string set : kSets) {
             std::vector<Ellipse> sites;
             try {
@@ -338,7 +311,7 @@ int main(int argc, char** argv) {
                 continue;
             }
             Row counts;
-            count_crossings("circles", set, n, sites, counts);
+            count_crossings("circles", set, n, sites, counts, anomalies);
             Summary mine, want;
             Row e = run_ellvor(set, sites, mine, anomalies);
             Row c = run_cgal(set, sites, want);
@@ -364,7 +337,12 @@ int main(int argc, char** argv) {
             rows.push_back(c);
         }
     }
-    for (const EllipseCase& ec : ecases) {
+}
+
+// Ellipses: ellvor's builds of both sets at every (n, seed).
+void measure_ellipses(const Plan& plan, const std::map<MemoryKey, PeakMemory>& memory, std::vector<Row>& rows,
+                      int& anomalies) {
+    for (const EllipseCase& ec : plan.ecases) {
         for (const std::string set : kSets) {
             std::vector<Ellipse> sites;
             try {
@@ -376,9 +354,9 @@ int main(int argc, char** argv) {
                 continue;
             }
             Row counts;
-            count_crossings("ellipses", set, ec.n, sites, counts);
+            count_crossings("ellipses", set, ec.n, sites, counts, anomalies);
             Summary mine;
-            Row e = run_ellvor(set, sites, mine, anomalies, "ellipses", ec.seed, ellipse_min_reps);
+            Row e = run_ellvor(set, sites, mine, anomalies, "ellipses", ec.seed, kEllipseMinReps);
             e.crossing_sites = counts.crossing_sites;
             e.crossing_pairs = counts.crossing_pairs;
             e.relative_position_cpu = counts.relative_position_cpu;
@@ -392,258 +370,355 @@ int main(int argc, char** argv) {
             rows.push_back(e);
         }
     }
-    const std::string load_after = loadavg();
+}
 
-    auto find = [&](const std::string& library, const std::string& set, long n, const std::string& kind = "circles",
-                    std::uint64_t seed = 1) -> const Row* {
-        for (const Row& r : rows)
-            if (r.library == library && r.set == set && r.n == n && r.sites == kind && r.seed == seed) return &r;
-        return nullptr;
-    };
-    auto time_ratio = [](const Row* a, const Row* b) {
-        return a && b && b->cpu_seconds > 0 ? fmt("%.2f×", a->cpu_seconds / b->cpu_seconds) : std::string("—");
-    };
-    auto memory_ratio = [](const Row* a, const Row* b) {
-        return a && b && a->memory_kb() >= 0 && b->memory_kb() > 0 ? fmt("%.2f×", double(a->memory_kb()) / b->memory_kb())
-                                                                    : std::string("—");
-    };
-    auto mb = [](const Row* r) { return r && r->memory_kb() >= 0 ? fmt("%.1f", r->memory_kb() / 1024.0) : std::string("—"); };
-    auto secs = [](const Row* r) {
-        return r ? fmt("%.3g", r->cpu_seconds) + " (" + fmt("%.3g", r->seconds) + ")" : std::string("—");
-    };
-    auto secs_spread = [](const Row* r) {
-        return r ? fmt("%.3g", r->cpu_seconds) + " [" + fmt("%.3g", r->cpu_min) + "–" + fmt("%.3g", r->cpu_max) + ", " +
-                       std::to_string(r->reps) + "]"
-                 : std::string("—");
-    };
+// ------------------------------------------------------------------ tables --
 
-    // CSV
-    std::ostringstream csv;
-    csv << "library,sites,set,n,seed,seconds,cpu_seconds,cpu_min_seconds,cpu_max_seconds,runs,crossing_sites,"
-           "crossing_pairs,visible,hidden,edges";
-    for (const PredicateInfo& p : kPredicates) csv << predicate_csv_header(p);
-    csv << ",union_hidden,hidden_on_insert,global_searches,conflict_faces,walk_steps"
-           ",relative_position_cpu_seconds,validate,equals_cgal,peak_rss_growth_bytes\n";
+const Row* find(const std::vector<Row>& rows, const std::string& library, const std::string& set, long n,
+                const std::string& kind = "circles", std::uint64_t seed = 1) {
+    for (const Row& r : rows)
+        if (r.library == library && r.set == set && r.n == n && r.sites == kind && r.seed == seed) return &r;
+    return nullptr;
+}
+std::string time_ratio(const Row* a, const Row* b) {
+    return a && b && b->cpu_seconds > 0 ? fmt("%.2f×", a->cpu_seconds / b->cpu_seconds) : std::string("—");
+}
+std::string memory_ratio(const Row* a, const Row* b) {
+    return a && b && a->memory_kb() >= 0 && b->memory_kb() > 0 ? fmt("%.2f×", double(a->memory_kb()) / b->memory_kb())
+                                                                : std::string("—");
+}
+std::string mb(const Row* r) { return r && r->memory_kb() >= 0 ? fmt("%.1f", r->memory_kb() / 1024.0) : std::string("—"); }
+std::string secs(const Row* r) {
+    return r ? fmt("%.3g", r->cpu_seconds) + " (" + fmt("%.3g", r->seconds) + ")" : std::string("—");
+}
+std::string secs_spread(const Row* r) {
+    return r ? fmt("%.3g", r->cpu_seconds) + " [" + fmt("%.3g", r->cpu_min) + "–" + fmt("%.3g", r->cpu_max) + ", " +
+                   std::to_string(r->reps) + "]"
+             : std::string("—");
+}
+
+// overlap.csv: every row.
+Table csv_table(const std::vector<Row>& rows) {
+    std::vector<std::string> columns = {"library", "sites", "set", "n", "seed", "seconds", "cpu_seconds",
+                                        "cpu_min_seconds", "cpu_max_seconds", "runs", "crossing_sites",
+                                        "crossing_pairs", "visible", "hidden", "edges"};
+    const std::vector<std::string> predicate_columns = predicate_csv_columns();
+    columns.insert(columns.end(), predicate_columns.begin(), predicate_columns.end());
+    columns.insert(columns.end(), {"union_hidden", "hidden_on_insert", "global_searches", "conflict_faces", "walk_steps",
+                                   "relative_position_cpu_seconds", "validate", "equals_cgal", "peak_rss_growth_bytes"});
+    Table t("overlap", columns);
     for (const Row& r : rows) {
-        csv << r.library << "," << r.sites << "," << r.set << "," << r.n << "," << r.seed << "," << fmt("%.6g", r.seconds)
-            << "," << fmt("%.6g", r.cpu_seconds) << "," << fmt("%.6g", r.cpu_min) << "," << fmt("%.6g", r.cpu_max) << ","
-            << r.reps << "," << r.crossing_sites << "," << r.crossing_pairs << "," << r.visible << "," << r.hidden << ","
-            << r.edges;
-        for (const PredicateInfo& p : kPredicates)
-            csv << (r.library == "cgal" ? predicate_csv_empty() : predicate_csv_values(r.stats[p.predicate]));
-        if (r.library == "cgal")
-            csv << ",,,,,";
+        const bool cgal = r.library == "cgal";
+        TableRow row = {r.library, r.sites, r.set, integer(r.n), integer(static_cast<long long>(r.seed)),
+                        fmt("%.6g", r.seconds), fmt("%.6g", r.cpu_seconds), fmt("%.6g", r.cpu_min),
+                        fmt("%.6g", r.cpu_max), integer(r.reps), integer(r.crossing_sites), integer(r.crossing_pairs),
+                        integer(static_cast<long long>(r.visible)), integer(static_cast<long long>(r.hidden)),
+                        integer(static_cast<long long>(r.edges))};
+        for (const std::string& v : predicate_csv_values(cgal ? nullptr : &r.stats)) row.push_back(v);
+        if (cgal)
+            row.insert(row.end(), {"", "", "", "", ""});
         else
-            csv << "," << r.graph.union_hidden << "," << r.graph.hidden_on_insert << "," << r.graph.global_searches << ","
-                << r.graph.conflict_faces << "," << r.graph.walk_steps;
-        csv << "," << fmt("%.6g", r.relative_position_cpu) << "," << r.validate << "," << r.cgal << ","
-            << (r.memory_kb() < 0 ? std::string() : std::to_string(r.memory_kb() * 1024)) << "\n";
+            row.insert(row.end(), {std::to_string(r.graph.union_hidden), std::to_string(r.graph.hidden_on_insert),
+                                   std::to_string(r.graph.global_searches), std::to_string(r.graph.conflict_faces),
+                                   std::to_string(r.graph.walk_steps)});
+        row.insert(row.end(), {fmt("%.6g", r.relative_position_cpu), r.validate, r.cgal,
+                               r.memory_kb() < 0 ? std::string() : std::to_string(r.memory_kb() * 1024)});
+        t.add(std::move(row));
     }
+    return t;
+}
 
-    // Markdown
-    std::ostringstream md;
-    md << "# Crossing sites against disjoint ones\n\n"
-       << "Build time and peak memory of the Delaunay graph of n sites of which 30% cross another, against n "
-          "disjoint sites from the same generator: circles (ellvor and CGAL's `Apollonius_graph_hierarchy_2` in the "
-          "same program), then ellipses (section \"Crossing ellipses\": ellvor alone, no peer exists). CPU time of the "
-          "build only (site generation and checks excluded); below 0.3 s a build is repeated and the median taken (at "
-          "most 20 runs; ellipses at least " << ellipse_min_reps << " runs).\n\n"
-       << "- Machine: " << cpu_model() << ", " << machine_memory_and_os()
-       << " (a VM shared with other jobs: compare CPU seconds)\n"
-       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
-       << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/overlap_scaling && " << args.command << "`\n"
-       << "- By default (`make bench`) circles n = 10^2 and 10^3, ellipses n = 10^3, and nothing is written; `--full` "
-          "runs circles n = 10^3, 10^4 and 10^5 and ellipses n = 10^3, 10^4 and 10^5 (seeds 1, 2, 3), `--out DIR` "
-          "writes `overlap.csv` and this file; `--only circles` or `--only ellipses` runs one part and prints it.\n\n";
-    if (run_circles) {
-        md << "Site sets (circles):\n\n"
-           << "- **disjoint**: " << describe_set("circles") << " (build_scaling's circles)\n"
-           << "- **overlap**: " << describe_set("circles-cross30")
-           << ": exactly round(0.3 n) circles cross at least one other (counted exactly below); the same grid and "
-              "radius range, and 85% of the circles are the disjoint set's first ones, the other 15% the partners "
-              "drawn to cross them\n"
-           << "- **CGAL**: the same circles in double (exact), bulk-inserted into `Apollonius_graph_hierarchy_2` over "
-              "`Apollonius_graph_filtered_traits_2<Epick>`\n\n";
-
-        md << "## Times\n\n| n | ellvor disjoint (s) | ellvor overlap (s) | ellvor overlap / disjoint | CGAL disjoint (s) | "
-              "CGAL overlap (s) | CGAL overlap / disjoint | ellvor / CGAL, disjoint | ellvor / CGAL, overlap |\n"
-              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (long n : ns) {
-            const Row *ed = find("ellvor", "disjoint", n), *eo = find("ellvor", "overlap", n),
-                      *cd = find("cgal", "disjoint", n), *co = find("cgal", "overlap", n);
-            md << "| " << n << " | " << secs(ed) << " | " << secs(eo) << " | " << time_ratio(eo, ed) << " | " << secs(cd)
-               << " | " << secs(co) << " | " << time_ratio(co, cd) << " | " << time_ratio(ed, cd) << " | "
-               << time_ratio(eo, co) << " |\n";
-        }
-        md << "\nCPU seconds, wall seconds in parentheses; ratios on CPU time.\n\n";
-
-        md << "## Peak memory\n\nOne more build each, in a child forked from this program before it builds anything "
-              "else; the child generates its sites, then builds. The growth of the child's resident memory over the "
-              "build (VmHWM after it minus VmRSS before it).\n\n"
-              "| n | ellvor disjoint (MB) | ellvor overlap (MB) | ellvor overlap / disjoint | CGAL disjoint (MB) | "
-              "CGAL overlap (MB) | ellvor / CGAL, disjoint | ellvor / CGAL, overlap |\n"
-              "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (long n : ns) {
-            const Row *ed = find("ellvor", "disjoint", n), *eo = find("ellvor", "overlap", n),
-                      *cd = find("cgal", "disjoint", n), *co = find("cgal", "overlap", n);
-            md << "| " << n << " | " << mb(ed) << " | " << mb(eo) << " | " << memory_ratio(eo, ed) << " | " << mb(cd)
-               << " | " << mb(co) << " | " << memory_ratio(ed, cd) << " | " << memory_ratio(eo, co) << " |\n";
-        }
-        md << "\n";
-
-        md << "## Graphs and checks\n\n| set | n | crossing sites | crossing pairs | visible | hidden | edges, ellvor | "
-              "edges, CGAL | validate() | equals CGAL |\n|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
-        for (long n : ns)
-            for (const std::string set : kSets) {
-                const Row *e = find("ellvor", set, n), *c = find("cgal", set, n);
-                if (!e || !c) continue;
-                md << "| " << set << " | " << n << " | " << e->crossing_sites << " | " << e->crossing_pairs << " | "
-                   << e->visible << " | " << e->hidden << " | " << e->edges << " | " << c->edges << " | " << e->validate
-                   << " | " << e->cgal << " |\n";
-            }
-        md << "\n\"equals CGAL\": the visible sites, the hidden pairs, the finite edges (as a multiset) and the hull.\n";
-
-        md << "\n## Where ellvor's extra time goes\n\nThe overlap set's extra CPU time against the disjoint set, and "
-              "the CPU time of `relative_position` alone (its exact stage, for two circles a closed form: no filter "
-              "decides a crossing pair) on the set's crossing pairs, "
-              "which the graph's is_hidden meets about once each (see is_hidden's exact calls below).\n\n"
-              "| n | crossing pairs | extra build time (s) | relative_position on the crossing pairs (s) | µs a pair |\n"
-              "|---:|---:|---:|---:|---:|\n";
-        for (long n : ns) {
-            const Row *ed = find("ellvor", "disjoint", n), *eo = find("ellvor", "overlap", n);
-            if (!ed || !eo || eo->crossing_pairs == 0) continue;
-            md << "| " << n << " | " << eo->crossing_pairs << " | " << fmt("%.3g", eo->cpu_seconds - ed->cpu_seconds)
-               << " | " << fmt("%.3g", eo->relative_position_cpu) << " | "
-               << fmt("%.1f", 1e6 * eo->relative_position_cpu / double(eo->crossing_pairs)) << " |\n";
-        }
-
-        md << "\n## Predicate calls per stage (ellvor)\n\ncalls (filter / subdivision / exact); memoized answers are not "
-              "counted. is_hidden decides the relative position of the pairs the graph meets; kappa1 = "
-              "side_of_bisector, kappa2 = infinite Voronoi vertex, kappa3 = InCircle, kappa4 = edge conflicts.\n\n"
-              "| set | n |";
-        for (const PredicateInfo& p : kPredicates) md << " " << p.name << " |";
-        md << "\n|---|---:|";
-        for (std::size_t i = 0; i < kPredicates.size(); ++i) md << "---|";
-        md << "\n";
-        for (const Row& r : rows) {
-            if (r.library != "ellvor" || r.sites != "circles") continue;
-            md << "| " << r.set << " | " << r.n << " |";
-            for (const PredicateInfo& p : kPredicates) md << " " << stage_triple(r.stats[p.predicate]) << " |";
-            md << "\n";
-        }
-
-        md << "\n## Target\n\nThe issue's target: an overlapping build within 2× of a disjoint set of the same size. "
-              "On circles, ellvor:\n\n";
-        for (long n : ns) {
-            const Row *ed = find("ellvor", "disjoint", n), *eo = find("ellvor", "overlap", n);
-            if (!ed || !eo || ed->cpu_seconds <= 0) continue;
-            const double ratio = eo->cpu_seconds / ed->cpu_seconds;
-            md << "- n = " << n << ": " << fmt("%.2f×", ratio) << " — " << (ratio <= 2 ? "met" : "MISSED") << "\n";
-        }
-        if (!args.full) md << "\nCircles: n = 10^4 and 10^5 skipped (run with --full).\n";
-        md << "\n";
+Table circle_time_table(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    Table t("circle_times", {"n", "ellvor disjoint (s)", "ellvor overlap (s)", "ellvor overlap / disjoint",
+                             "CGAL disjoint (s)", "CGAL overlap (s)", "CGAL overlap / disjoint",
+                             "ellvor / CGAL, disjoint", "ellvor / CGAL, overlap"},
+            std::string(9, 'r'));
+    for (long n : ns) {
+        const Row *ed = find(rows, "ellvor", "disjoint", n), *eo = find(rows, "ellvor", "overlap", n),
+                  *cd = find(rows, "cgal", "disjoint", n), *co = find(rows, "cgal", "overlap", n);
+        t.add({integer(n), secs(ed), secs(eo), time_ratio(eo, ed), secs(cd), secs(co), time_ratio(co, cd),
+               time_ratio(ed, cd), time_ratio(eo, co)});
     }
+    return t;
+}
 
-    if (run_ellipses) {
-        md << "## Crossing ellipses\n\n"
-           << "Site sets, for each n and seed S (the same generator and options but the crossing fraction; "
-              "`ellvor generate ellipses --count n --seed S` and the same with `--crossing 0.3` write them):\n\n"
-           << "- **F = 0** (disjoint): generate_sites(ellipses, seed S, bits 8, box 100) — build_scaling's ellipses\n"
-           << "- **F = 0.3** (overlap): generate_sites(ellipses, seed S, bits 8, box 100, crossing fraction 3/10): "
-              "exactly round(0.3 n) ellipses cross at least one other in two points (counted exactly below with "
-              "`sites_cross`), deep and shallow, half the partners thin (aspect ratio up to 16); the other sites are "
-              "the F = 0 set's first separated ones, on the same grid and size range\n\n"
-           << "**No peer.** CGAL has no Voronoi diagram of ellipses (its Apollonius graph takes circles), and vorell "
-              "(Emiris–Tsigaridas–Tzoumas) has published no timings on crossing ellipses, so these rows have no "
-              "reference column; the circle rows above compare with CGAL.\n\n";
-
-        md << "### Times and peak memory\n\nCPU seconds of `DelaunayGraph::insert_all`: the median, [fastest–slowest, "
-              "runs]; ratios on the medians. Peak memory as for circles (a forked child per build, VmHWM after minus "
-              "VmRSS before the build).\n\n"
-              "| n | seed | F = 0 (s) | F = 0.3 (s) | time F = 0.3 / F = 0 | F = 0 (MB) | F = 0.3 (MB) | memory F = 0.3 / "
-              "F = 0 |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (const EllipseCase& c : ecases) {
-            const Row *d = find("ellvor", "disjoint", c.n, "ellipses", c.seed),
-                      *o = find("ellvor", "overlap", c.n, "ellipses", c.seed);
-            md << "| " << c.n << " | " << c.seed << " | " << secs_spread(d) << " | " << secs_spread(o) << " | "
-               << time_ratio(o, d) << " | " << mb(d) << " | " << mb(o) << " | " << memory_ratio(o, d) << " |\n";
-        }
-
-        md << "\n### Graphs and checks\n\nunion-hidden: sites hidden by a union of crossing sites (none contains them "
-              "alone); global searches: insertions whose first conflict was sought over the whole graph (a site with no "
-              "conflict near its nearest site, before it may be declared hidden); conflict faces: faces removed by "
-              "conflict regions, in all.\n\n"
-              "| F | n | seed | crossing sites | crossing pairs | visible | hidden | union-hidden | global searches | "
-              "edges | conflict faces | walk steps | validate() |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
-        for (const EllipseCase& c : ecases)
-            for (const std::string set : kSets) {
-                const Row* r = find("ellvor", set, c.n, "ellipses", c.seed);
-                if (!r) continue;
-                md << "| " << (set == "overlap" ? "0.3" : "0") << " | " << c.n << " | " << c.seed << " | "
-                   << r->crossing_sites << " | " << r->crossing_pairs << " | " << r->visible << " | " << r->hidden
-                   << " | " << r->graph.union_hidden << " | " << r->graph.global_searches << " | " << r->edges << " | "
-                   << r->graph.conflict_faces << " | " << r->graph.walk_steps << " | " << r->validate << " |\n";
-            }
-
-        md << "\n### Predicate calls per stage\n\ncalls (filter / subdivision / exact), as for circles.\n\n| F | n | "
-              "seed |";
-        for (const PredicateInfo& p : kPredicates) md << " " << p.name << " |";
-        md << "\n|---|---:|---:|";
-        for (std::size_t i = 0; i < kPredicates.size(); ++i) md << "---|";
-        md << "\n";
-        for (const Row& r : rows) {
-            if (r.sites != "ellipses") continue;
-            md << "| " << (r.set == "overlap" ? "0.3" : "0") << " | " << r.n << " | " << r.seed << " |";
-            for (const PredicateInfo& p : kPredicates) md << " " << stage_triple(r.stats[p.predicate]) << " |";
-            md << "\n";
-        }
-
-        md << "\n### Where the extra time goes\n\nThe F = 0.3 set's extra CPU time against F = 0, the CPU time of "
-              "`relative_position` alone on its crossing pairs (for ellipses the exact stage, the intersection "
-              "quartic: no filter decides a crossing pair; is_hidden meets each about once), and the extra calls "
-              "decided past the filter (subdivision + exact, F = 0.3 minus F = 0, all predicates).\n\n"
-              "| n | seed | crossing pairs | extra build time (s) | relative_position on the crossing pairs (s) | µs a "
-              "pair | extra calls past the filter |\n|---:|---:|---:|---:|---:|---:|---:|\n";
-        auto past_filter = [](const Row& r) {
-            long k = 0;
-            for (const PredicateInfo& p : kPredicates) {
-                const PredicateCount& c = r.stats[p.predicate];
-                k += static_cast<long>(c.stages.total() - c.stages[Stage::filter]);
-            }
-            return k;
-        };
-        for (const EllipseCase& c : ecases) {
-            const Row *d = find("ellvor", "disjoint", c.n, "ellipses", c.seed),
-                      *o = find("ellvor", "overlap", c.n, "ellipses", c.seed);
-            if (!d || !o || o->crossing_pairs == 0) continue;
-            md << "| " << c.n << " | " << c.seed << " | " << o->crossing_pairs << " | "
-               << fmt("%.3g", o->cpu_seconds - d->cpu_seconds) << " | " << fmt("%.3g", o->relative_position_cpu) << " | "
-               << fmt("%.1f", 1e6 * o->relative_position_cpu / double(o->crossing_pairs)) << " | "
-               << past_filter(*o) - past_filter(*d) << " |\n";
-        }
-
-        md << "\n### Target\n\nThe issue's target: 10^4 random ellipses, 30% of them crossing another, built within "
-              "2× of a disjoint set of the same size. ellvor (CPU time, medians):\n\n";
-        for (const EllipseCase& c : ecases) {
-            const Row *d = find("ellvor", "disjoint", c.n, "ellipses", c.seed),
-                      *o = find("ellvor", "overlap", c.n, "ellipses", c.seed);
-            if (!d || !o || d->cpu_seconds <= 0) continue;
-            const double ratio = o->cpu_seconds / d->cpu_seconds;
-            md << "- n = " << c.n << ", seed " << c.seed << ": " << fmt("%.2f×", ratio) << " — "
-               << (ratio <= 2 ? "met" : "MISSED") << "; memory " << memory_ratio(o, d) << "\n";
-        }
-        if (!args.full) md << "\nEllipses: n = 10^4 and 10^5 skipped (run with --full).\n";
-        md << "\n";
+Table circle_memory_table(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    Table t("circle_memory", {"n", "ellvor disjoint (MB)", "ellvor overlap (MB)", "ellvor overlap / disjoint",
+                              "CGAL disjoint (MB)", "CGAL overlap (MB)", "ellvor / CGAL, disjoint",
+                              "ellvor / CGAL, overlap"},
+            std::string(8, 'r'));
+    for (long n : ns) {
+        const Row *ed = find(rows, "ellvor", "disjoint", n), *eo = find(rows, "ellvor", "overlap", n),
+                  *cd = find(rows, "cgal", "disjoint", n), *co = find(rows, "cgal", "overlap", n);
+        t.add({integer(n), mb(ed), mb(eo), memory_ratio(eo, ed), mb(cd), mb(co), memory_ratio(ed, cd),
+               memory_ratio(eo, co)});
     }
-    md << "Anomalies (wrong crossing count, invalid graph, disagreement with CGAL, exception): " << anomalies << ".\n";
+    return t;
+}
 
-    std::cout << md.str();
-    if (!args.out_dir.empty()) {
-        std::ofstream(args.out_dir + "/overlap.csv") << csv.str();
-        std::ofstream(args.out_dir + "/overlap.md") << md.str();
-        std::cerr << "[overlap_scaling] wrote " << args.out_dir << "/overlap.{csv,md}\n";
+Table circle_graph_table(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    Table t("circle_graphs", {"set", "n", "crossing sites", "crossing pairs", "visible", "hidden", "edges, ellvor",
+                              "edges, CGAL", "validate()", "equals CGAL"},
+            "lrrrrrrrll");
+    for (long n : ns)
+        for (const std::string set : kSets) {
+            const Row *e = find(rows, "ellvor", set, n), *c = find(rows, "cgal", set, n);
+            if (!e || !c) continue;
+            t.add({set, integer(n), integer(e->crossing_sites), integer(e->crossing_pairs),
+                   integer(static_cast<long long>(e->visible)), integer(static_cast<long long>(e->hidden)),
+                   integer(static_cast<long long>(e->edges)), integer(static_cast<long long>(c->edges)), e->validate,
+                   e->cgal});
+        }
+    return t;
+}
+
+Table circle_extra_time_table(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    Table t("circle_extra_time", {"n", "crossing pairs", "extra build time (s)",
+                                  "relative_position on the crossing pairs (s)", "µs a pair"},
+            std::string(5, 'r'));
+    for (long n : ns) {
+        const Row *ed = find(rows, "ellvor", "disjoint", n), *eo = find(rows, "ellvor", "overlap", n);
+        if (!ed || !eo || eo->crossing_pairs == 0) continue;
+        t.add({integer(n), integer(eo->crossing_pairs), fmt("%.3g", eo->cpu_seconds - ed->cpu_seconds),
+               fmt("%.3g", eo->relative_position_cpu),
+               fmt("%.1f", 1e6 * eo->relative_position_cpu / double(eo->crossing_pairs))});
     }
+    return t;
+}
+
+// "0.3" or "0": the crossing fraction of a set.
+std::string fraction(const std::string& set) { return set == "overlap" ? "0.3" : "0"; }
+
+// Calls per stage of ellvor's graphs of one kind of site.
+Table predicate_table(const std::vector<Row>& rows, const std::string& kind) {
+    const bool ellipses = kind == "ellipses";
+    std::vector<std::string> columns = ellipses ? std::vector<std::string>{"F", "n", "seed"}
+                                                : std::vector<std::string>{"set", "n"};
+    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
+    Table t(kind + "_predicates", columns, (ellipses ? "lrr" : "lr") + std::string(kPredicates.size(), 'l'));
+    for (const Row& r : rows) {
+        if (r.library != "ellvor" || r.sites != kind) continue;
+        TableRow row = ellipses ? TableRow{fraction(r.set), integer(r.n), integer(static_cast<long long>(r.seed))}
+                                : TableRow{r.set, integer(r.n)};
+        for (const std::string& cell : predicate_stage_triples(r.stats)) row.push_back(cell);
+        t.add(std::move(row));
+    }
+    return t;
+}
+
+std::vector<Target> circle_targets(const std::vector<Row>& rows, const std::vector<long>& ns) {
+    std::vector<Target> out;
+    for (long n : ns) {
+        const Row *ed = find(rows, "ellvor", "disjoint", n), *eo = find(rows, "ellvor", "overlap", n);
+        if (!ed || !eo || ed->cpu_seconds <= 0) continue;
+        const double ratio = eo->cpu_seconds / ed->cpu_seconds;
+        out.push_back({"n = " + std::to_string(n), fmt("%.2f×", ratio), ratio <= 2});
+    }
+    return out;
+}
+
+Table ellipse_time_table(const std::vector<Row>& rows, const std::vector<EllipseCase>& ecases) {
+    Table t("ellipse_times", {"n", "seed", "F = 0 (s)", "F = 0.3 (s)", "time F = 0.3 / F = 0", "F = 0 (MB)",
+                              "F = 0.3 (MB)", "memory F = 0.3 / F = 0"},
+            std::string(8, 'r'));
+    for (const EllipseCase& c : ecases) {
+        const Row *d = find(rows, "ellvor", "disjoint", c.n, "ellipses", c.seed),
+                  *o = find(rows, "ellvor", "overlap", c.n, "ellipses", c.seed);
+        t.add({integer(c.n), integer(static_cast<long long>(c.seed)), secs_spread(d), secs_spread(o), time_ratio(o, d),
+               mb(d), mb(o), memory_ratio(o, d)});
+    }
+    return t;
+}
+
+Table ellipse_graph_table(const std::vector<Row>& rows, const std::vector<EllipseCase>& ecases) {
+    Table t("ellipse_graphs", {"F", "n", "seed", "crossing sites", "crossing pairs", "visible", "hidden", "union-hidden",
+                               "global searches", "edges", "conflict faces", "walk steps", "validate()"},
+            "lrrrrrrrrrrrl");
+    for (const EllipseCase& c : ecases)
+        for (const std::string set : kSets) {
+            const Row* r = find(rows, "ellvor", set, c.n, "ellipses", c.seed);
+            if (!r) continue;
+            t.add({fraction(set), integer(c.n), integer(static_cast<long long>(c.seed)), integer(r->crossing_sites),
+                   integer(r->crossing_pairs), integer(static_cast<long long>(r->visible)),
+                   integer(static_cast<long long>(r->hidden)), integer(static_cast<long long>(r->graph.union_hidden)),
+                   integer(static_cast<long long>(r->graph.global_searches)), integer(static_cast<long long>(r->edges)),
+                   integer(static_cast<long long>(r->graph.conflict_faces)),
+                   integer(static_cast<long long>(r->graph.walk_steps)), r->validate});
+        }
+    return t;
+}
+
+// Calls decided past the filter (subdivision + exact), all predicates.
+long past_filter(const Row& r) {
+    long k = 0;
+    for (const PredicateInfo& p : kPredicates) {
+        const PredicateCount& c = r.stats[p.predicate];
+        k += static_cast<long>(c.stages.total() - c.stages[Stage::filter]);
+    }
+    return k;
+}
+
+Table ellipse_extra_time_table(const std::vector<Row>& rows, const std::vector<EllipseCase>& ecases) {
+    Table t("ellipse_extra_time", {"n", "seed", "crossing pairs", "extra build time (s)",
+                                   "relative_position on the crossing pairs (s)", "µs a pair",
+                                   "extra calls past the filter"},
+            std::string(7, 'r'));
+    for (const EllipseCase& c : ecases) {
+        const Row *d = find(rows, "ellvor", "disjoint", c.n, "ellipses", c.seed),
+                  *o = find(rows, "ellvor", "overlap", c.n, "ellipses", c.seed);
+        if (!d || !o || o->crossing_pairs == 0) continue;
+        t.add({integer(c.n), integer(static_cast<long long>(c.seed)), integer(o->crossing_pairs),
+               fmt("%.3g", o->cpu_seconds - d->cpu_seconds), fmt("%.3g", o->relative_position_cpu),
+               fmt("%.1f", 1e6 * o->relative_position_cpu / double(o->crossing_pairs)),
+               integer(past_filter(*o) - past_filter(*d))});
+    }
+    return t;
+}
+
+std::string ellipse_target_lines(const std::vector<Row>& rows, const std::vector<EllipseCase>& ecases) {
+    std::string md;
+    for (const EllipseCase& c : ecases) {
+        const Row *d = find(rows, "ellvor", "disjoint", c.n, "ellipses", c.seed),
+                  *o = find(rows, "ellvor", "overlap", c.n, "ellipses", c.seed);
+        if (!d || !o || d->cpu_seconds <= 0) continue;
+        const double ratio = o->cpu_seconds / d->cpu_seconds;
+        md += "- n = " + std::to_string(c.n) + ", seed " + std::to_string(c.seed) + ": " + fmt("%.2f×", ratio) + " — " +
+              (ratio <= 2 ? "met" : "MISSED") + "; memory " + memory_ratio(o, d) + "\n";
+    }
+    return md;
+}
+
+void report_circles(Report& report, const std::vector<Row>& rows, const std::vector<long>& ns, bool full) {
+    report.text("\nSite sets (circles):\n\n"
+                "- **disjoint**: " + describe_set("circles") + " (build_scaling's circles)\n"
+                "- **overlap**: " + describe_set("circles-cross30") +
+                ": exactly round(0.3 n) circles cross at least one other (counted exactly below); the same grid and "
+                "radius range, and 85% of the circles are the disjoint set's first ones, the other 15% the partners "
+                "drawn to cross them\n"
+                "- **CGAL**: the same circles in double (exact), bulk-inserted into `Apollonius_graph_hierarchy_2` over "
+                "`Apollonius_graph_filtered_traits_2<Epick>`\n");
+
+    report.heading("Times");
+    report.table(circle_time_table(rows, ns));
+    report.text("\nCPU seconds, wall seconds in parentheses; ratios on CPU time.\n");
+
+    report.heading("Peak memory");
+    report.table(circle_memory_table(rows, ns), std::string(kPeakMemoryMethod) + ".");
+
+    report.heading("Graphs and checks");
+    report.table(circle_graph_table(rows, ns));
+    report.text("\n\"equals CGAL\": the visible sites, the hidden pairs, the finite edges (as a multiset) and the "
+                "hull.\n");
+
+    report.heading("Where ellvor's extra time goes");
+    report.table(circle_extra_time_table(rows, ns),
+                 "The overlap set's extra CPU time against the disjoint set, and the CPU time of `relative_position` "
+                 "alone (for two circles a closed form: no filter decides a crossing pair) on the set's crossing "
+                 "pairs, which the graph's is_hidden meets about once each.");
+
+    report.heading("Predicate calls per stage (ellvor)");
+    report.table(predicate_table(rows, "circles"),
+                 "calls (filter / subdivision / exact); memoized answers are not counted. is_hidden decides the "
+                 "relative position of the pairs the graph meets.");
+
+    report.heading("Target");
+    report.text("An overlapping build within 2× of a disjoint set of the same size. On circles, ellvor:\n\n" +
+                target_lines(circle_targets(rows, ns)) +
+                (full ? "" : "\nCircles: n = 10^4 and 10^5 skipped (run with --full).\n"));
+}
+
+void report_ellipses(Report& report, const std::vector<Row>& rows, const std::vector<EllipseCase>& ecases, bool full) {
+    report.heading("Crossing ellipses");
+    report.text("Site sets, for each n and seed S (`ellvor generate ellipses --count n --seed S`, and the same with "
+                "`--crossing 0.3`):\n\n"
+                "- **F = 0** (disjoint): generate_sites(ellipses, seed S, bits 8, box 100) — build_scaling's ellipses\n"
+                "- **F = 0.3** (overlap): the same with crossing fraction 3/10: exactly round(0.3 n) ellipses cross "
+                "at least one other in two points (counted exactly with `sites_cross`), deep and shallow, half the "
+                "partners thin (aspect ratio up to 16); the other sites are the F = 0 set's first separated ones\n\n"
+                "**No peer.** CGAL has no Voronoi diagram of ellipses (its Apollonius graph takes circles), and the "
+                "paper's program published no timings on crossing ellipses, so these rows have no reference column.\n");
+
+    report.heading("Times and peak memory", 3);
+    report.table(ellipse_time_table(rows, ecases),
+                 "CPU seconds of `DelaunayGraph::insert_all`: the median, [fastest–slowest, runs]; ratios on the "
+                 "medians. Peak memory as for circles.");
+
+    report.heading("Graphs and checks", 3);
+    report.table(ellipse_graph_table(rows, ecases),
+                 "union-hidden: sites hidden by a union of crossing sites (none contains them alone); global searches: "
+                 "insertions whose first conflict was sought over the whole graph; conflict faces: faces removed by "
+                 "conflict regions, in all.");
+
+    report.heading("Predicate calls per stage", 3);
+    report.table(predicate_table(rows, "ellipses"), "calls (filter / subdivision / exact), as for circles.");
+
+    report.heading("Where the extra time goes", 3);
+    report.table(ellipse_extra_time_table(rows, ecases),
+                 "The F = 0.3 set's extra CPU time against F = 0, the CPU time of `relative_position` alone on its "
+                 "crossing pairs (the intersection quartic: no filter decides a crossing pair; is_hidden meets each "
+                 "about once), and the extra calls decided past the filter (subdivision + exact, all predicates).");
+
+    report.heading("Target", 3);
+    report.text("10^4 random ellipses, 30% of them crossing another, built within 2× of a disjoint set of the same "
+                "size. ellvor (CPU time, medians):\n\n" +
+                ellipse_target_lines(rows, ecases) +
+                (full ? "" : "\nEllipses: n = 10^4 and 10^5 skipped (run with --full).\n"));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // --only circles|ellipses (one part, stdout only), then the common arguments.
+    std::string only;
+    std::vector<char*> rest{argv[0]};
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--only" && i + 1 < argc) only = argv[++i];
+        else rest.push_back(argv[i]);
+    }
+    const char* const usage =
+        "usage: overlap_scaling [--full] [--out DIR | --only circles|ellipses]\n"
+        "  --full     circles n = 10^3, 10^4, 10^5 (instead of 10^2, 10^3); ellipses n = 10^3, 10^4 and 10^5\n"
+        "             (seeds 1, 2, 3; instead of 10^3): about 7 minutes\n"
+        "  --out DIR  write DIR/overlap.csv and DIR/overlap.md\n"
+        "  --only P   run one part (circles or ellipses), print only\n";
+    BenchArguments args;
+    if (!parse_bench_arguments(static_cast<int>(rest.size()), rest.data(), "overlap_scaling", usage, args)) return 2;
+    if (!(only.empty() || only == "circles" || only == "ellipses") || (!only.empty() && !args.out_dir.empty())) {
+        std::fputs(usage, stderr);
+        return 2;
+    }
+    const bool run_circles = only != "ellipses", run_ellipses = only != "circles";
+    Plan plan;
+    if (run_circles) plan.ns = args.full ? std::vector<long>{1000, 10000, 100000} : std::vector<long>{100, 1000};
+    if (run_ellipses)
+        plan.ecases = args.full ? std::vector<EllipseCase>{{1000, 1}, {10000, 1}, {10000, 2}, {10000, 3},
+                                                           {100000, 1}, {100000, 2}, {100000, 3}}
+                                : std::vector<EllipseCase>{{1000, 1}};
+    Report report("Crossing sites against disjoint ones", "overlap_scaling", args.command);
+
+    // The measurements.
+    int anomalies = 0;
+    const std::map<MemoryKey, PeakMemory> memory = measure_peak_memory(plan);
+    std::vector<Row> rows;
+    measure_circles(plan, memory, rows, anomalies);
+    measure_ellipses(plan, memory, rows, anomalies);
+
+    // The report.
+    report.intro("Build time and peak memory of the Delaunay graph of n sites of which 30% cross another, against n "
+                 "disjoint sites from the same generator: circles (ellvor and CGAL's `Apollonius_graph_hierarchy_2` in "
+                 "the same program), then ellipses (ellvor alone, no peer exists). CPU time of the build only (site "
+                 "generation and checks excluded); below 0.3 s a build is repeated and the median taken (at most 20 "
+                 "runs; ellipses at least " + std::to_string(kEllipseMinReps) + " runs).");
+    report.machine_note("a VM with " + machine_memory_and_os() + ", shared with other jobs: compare CPU seconds");
+    report.note("By default (`make bench`) circles n = 10^2 and 10^3, ellipses n = 10^3, and nothing is written; "
+                "`--full` runs circles n = 10^3, 10^4 and 10^5 and ellipses n = 10^3, 10^4 and 10^5 (seeds 1, 2, 3), "
+                "`--out DIR` writes `overlap.csv` and this file; `--only circles` or `--only ellipses` runs one part "
+                "and prints it.");
+    if (run_circles) report_circles(report, rows, plan.ns, args.full);
+    if (run_ellipses) report_ellipses(report, rows, plan.ecases, args.full);
+    report.text("\nAnomalies (wrong crossing count, invalid graph, disagreement with CGAL, exception): " +
+                std::to_string(anomalies) + ".\n");
+
+    report.publish(args.out_dir, "overlap.md", {{"overlap.csv", csv_table(rows).csv()}});
     return anomalies ? 1 : 0;
 }

@@ -14,6 +14,12 @@
 
 namespace ellvor::experiments {
 
+// How the benchmarks measure a build's peak memory, for their reports.
+constexpr const char* kPeakMemoryMethod =
+    "One more build each, in a child forked before this program builds anything else; the child generates its "
+    "sites, then builds. The growth of the child's resident memory over the build (VmHWM after it minus VmRSS "
+    "before it)";
+
 inline long status_kb(const char* field) {
     std::ifstream in("/proc/self/status");
     std::string line;

@@ -1,4 +1,4 @@
-// Precision versus time of the certified Voronoi circle (seed paper, Table 1,
+// Precision versus time of the certified Voronoi circle (the paper, Table 1,
 // row "subdivision": 2^-b reached in 0.20 / 0.58 / 1.06 / 10.65 / 31.61 s for
 // b = 53 / 900 / 2000 / 12000 / 24000).
 //
@@ -16,6 +16,8 @@
 // Every enclosure is checked against the most accurate one of its triple
 // (all six components must overlap); a failed certificate or a mismatch is
 // printed as an ANOMALY and makes the program exit with status 1.
+#include "experiments/random_sites.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/ellipse.hpp"
@@ -73,37 +75,23 @@ std::string sites_text(const std::vector<Ellipse>& s) {
     return out;
 }
 
+// The first random triple of `kind` (count 3, bits 4, box 10, seeds 1, 2, ...)
+// that has a certifiable counter-clockwise circle, ordered for it.
+Triple first_random_triple(SiteKind kind, const std::string& name, const std::string& kind_name) {
+    for (std::uint64_t seed = 1;; ++seed) {
+        std::vector<Ellipse> s = random_sites(kind, 3, seed, 4, Rational(10));
+        if (!orient(s) || !certifies(s)) continue;
+        return {name, "generate_sites(" + kind_name + ", count 3, bits 4, box 10, seed " + std::to_string(seed) + ")",
+                std::move(s)};
+    }
+}
+
 std::vector<Triple> triples() {
     std::vector<Triple> out;
-    // (1) Paper style: random ellipses with small rational parameters (the
-    // first generator seed whose triple has a certifiable CCW circle).
-    for (std::uint64_t seed = 1;; ++seed) {
-        GeneratorOptions o;
-        o.kind = SiteKind::ellipses;
-        o.count = 3;
-        o.seed = seed;
-        o.bits = 4;
-        o.box = Rational(10);
-        std::vector<Ellipse> s = generate_sites(o);
-        if (!orient(s) || !certifies(s)) continue;
-        out.push_back({"random", "generate_sites(ellipses, count 3, bits 4, box 10, seed " + std::to_string(seed) + ")",
-                       std::move(s)});
-        break;
-    }
+    // (1) Paper style: random ellipses with small rational parameters.
+    out.push_back(first_random_triple(SiteKind::ellipses, "random", "ellipses"));
     // (2) Circles: random circles with small rational parameters (generic).
-    for (std::uint64_t seed = 1;; ++seed) {
-        GeneratorOptions o;
-        o.kind = SiteKind::circles;
-        o.count = 3;
-        o.seed = seed;
-        o.bits = 4;
-        o.box = Rational(10);
-        std::vector<Ellipse> s = generate_sites(o);
-        if (!orient(s) || !certifies(s)) continue;
-        out.push_back({"circles", "generate_sites(circles, count 3, bits 4, box 10, seed " + std::to_string(seed) + ")",
-                       std::move(s)});
-        break;
-    }
+    out.push_back(first_random_triple(SiteKind::circles, "circles", "circles"));
     // (2') The base triple of the paper's InCircle dataset (1): its Voronoi
     // circle is the unit circle centered at 0 (rational, several parameters
     // exactly 0), a special rather than a typical case.
@@ -173,36 +161,11 @@ bool overlaps(const VoronoiCircleEnclosure& a, const VoronoiCircleEnclosure& b) 
 }
 
 
-
-
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-    ellvor::experiments::BenchArguments args;
-    if (!ellvor::experiments::parse_bench_arguments(argc, argv, "precision_vs_time",
-                                                    "usage: precision_vs_time [--full] [--out DIR]\n"
-                         "  --full     also certify 10^6 bits (once per triple; minutes in total)\n"
-                         "  --out DIR  write DIR/precision_vs_time.csv and DIR/precision_vs_time.md\n",
-                                                    args))
-        return 2;
-    const bool full = args.full;
-    const std::string& out_dir = args.out_dir;
-    const std::string& command = args.command;
-
-    std::vector<long> bit_list = {53, 900, 2000, 12000, 24000, 100000};
-    if (full) bit_list.push_back(1000000);
-    const std::vector<double> paper = {0.20, 0.58, 1.06, 10.65, 31.61};  // b = 53 ... 24000
-
-    const std::string load_before = loadavg();
-    const std::vector<Triple> ts = triples();
+// Every triple at every precision; an enclosure must overlap the most
+// accurate one of its triple.
+std::vector<std::vector<Measurement>> measure_all(const std::vector<Triple>& ts, const std::vector<long>& bit_list,
+                                                  int& anomalies) {
     std::vector<std::vector<Measurement>> results;
-    int anomalies = 0;
     for (const Triple& t : ts) {
         std::cerr << "[precision_vs_time] " << t.name << ": " << sites_text(t.sites) << "\n";
         std::vector<Measurement> row;
@@ -226,33 +189,23 @@ int main(int argc, char** argv) {
             }
         results.push_back(std::move(row));
     }
-    const std::string load_after = loadavg();
+    return results;
+}
 
-    // CSV
-    std::ostringstream csv;
-    csv << "triple,bits,seconds,newton_steps,correct_bits,precision,repetitions,cpu_seconds\n";
+// precision_vs_time.csv: one line per triple and precision.
+Table csv_table(const std::vector<std::vector<Measurement>>& results) {
+    Table t("precision_vs_time",
+            {"triple", "bits", "seconds", "newton_steps", "correct_bits", "precision", "repetitions", "cpu_seconds"});
     for (const auto& row : results)
         for (const Measurement& m : row)
-            csv << m.triple << "," << m.bits << "," << fmt("%.6g", m.seconds) << "," << m.newton_steps << ","
-                << m.correct_bits << "," << m.precision << "," << m.repetitions << "," << fmt("%.6g", m.cpu_seconds)
-                << "\n";
+            t.add({m.triple, integer(m.bits), fmt("%.6g", m.seconds), integer(m.newton_steps), integer(m.correct_bits),
+                   integer(m.precision), integer(m.repetitions), fmt("%.6g", m.cpu_seconds)});
+    return t;
+}
 
-    // Markdown
+// "- **name**: description — `sites`; circle ...": the triples and their circles.
+std::string triple_list(const std::vector<Triple>& ts, const std::vector<std::vector<Measurement>>& results) {
     std::ostringstream md;
-    md << "# Precision versus time: certified Voronoi circle\n\n"
-       << "Wall time of a fresh `VoronoiCircleSolver(e1, e2, e3).refine(b)` (floating-point guess, Krawczyk "
-          "certificate at 64 bits, Newton at doubling precision, final certificate), until every component of "
-          "the enclosure (three tangency parameters, radius, center) has at least b correct bits. Median of "
-          "repetitions (repeat until 0.2 s measured and at least 3 runs, at most 50); b = 10^6 once. Paper: seed Table 1, row "
-          "\"subdivision\" (mpfr, 2007 hardware: P4 2.6 GHz); ratio = paper / ours.\n\n"
-       << "- Machine: " << cpu_model() << "\n"
-       << "- Load average before / after: " << load_before << " / " << load_after << "\n"
-       << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/precision_vs_time && " << command << "`"
-       << "; plot (`precision_vs_time.png`): `/usr/bin/python3 experiments/plot_results.py precision_vs_time`\n"
-       << "- By default (`make bench`) b = 10^6 is skipped and nothing is written; `--full` adds it, `--out DIR` "
-          "writes the CSV and this file.\n\n"
-       << "Triples (ordered E1 E2 E3 with a counter-clockwise Voronoi circle; ellipse = `a b w xc yc`):\n\n";
     for (std::size_t i = 0; i < ts.size(); ++i) {
         const Triple& t = ts[i];
         const VoronoiCircleEnclosure& e = results[i].front().enclosure;
@@ -264,52 +217,93 @@ int main(int argc, char** argv) {
                << fmt("%.4g", e.parameter[j].mid_double());
         md << " (u = -1/t; u = 0 is the i-point)\n";
     }
-    md << "\n| b | paper (s) |";
-    for (const Triple& t : ts) md << " " << t.name << " (ms) | ratio |";
-    md << "\n|---:|---:|";
-    for (std::size_t i = 0; i < ts.size(); ++i) md << "---:|---:|";
-    md << "\n";
+    return md.str();
+}
+
+// The paper's Table 1, row "subdivision" (s), for b = 53 ... 24000.
+const std::vector<double> kPaper = {0.20, 0.58, 1.06, 10.65, 31.61};
+
+Table time_table(const std::vector<Triple>& ts, const std::vector<long>& bit_list,
+                 const std::vector<std::vector<Measurement>>& results) {
+    std::vector<std::string> columns = {"b", "paper (s)"};
+    for (const Triple& t : ts) columns.insert(columns.end(), {t.name + " (ms)", "ratio"});
+    Table table("times", columns, std::string(columns.size(), 'r'));
     for (std::size_t k = 0; k < bit_list.size(); ++k) {
-        md << "| " << bit_list[k] << " | " << (k < paper.size() ? fmt("%.2f", paper[k]) : std::string("—")) << " |";
-        for (const auto& row : results) {
-            const Measurement& m = row[k];
-            md << " " << fmt("%.3f", m.seconds * 1e3) << " | "
-               << (k < paper.size() ? fmt("%.0f×", paper[k] / m.seconds) : std::string("—")) << " |";
+        TableRow row = {integer(bit_list[k]), k < kPaper.size() ? fmt("%.2f", kPaper[k]) : std::string("—")};
+        for (const auto& r : results) {
+            row.push_back(fmt("%.3f", r[k].seconds * 1e3));
+            row.push_back(k < kPaper.size() ? fmt("%.0f×", kPaper[k] / r[k].seconds) : std::string("—"));
         }
-        md << "\n";
+        table.add(std::move(row));
     }
-    md << "\nNewton steps (cumulative, all precisions) / final working precision (bits):\n\n| b |";
-    for (const Triple& t : ts) md << " " << t.name << " |";
-    md << "\n|---:|";
-    for (std::size_t i = 0; i < ts.size(); ++i) md << "---:|";
-    md << "\n";
+    return table;
+}
+
+Table newton_table(const std::vector<Triple>& ts, const std::vector<long>& bit_list,
+                   const std::vector<std::vector<Measurement>>& results) {
+    std::vector<std::string> columns = {"b"};
+    for (const Triple& t : ts) columns.push_back(t.name);
+    Table table("newton", columns, std::string(columns.size(), 'r'));
     for (std::size_t k = 0; k < bit_list.size(); ++k) {
-        md << "| " << bit_list[k] << " |";
-        for (const auto& row : results) md << " " << row[k].newton_steps << " / " << row[k].precision << " |";
-        md << "\n";
+        TableRow row = {integer(bit_list[k])};
+        for (const auto& r : results) row.push_back(std::to_string(r[k].newton_steps) + " / " + std::to_string(r[k].precision));
+        table.add(std::move(row));
     }
-    md << "\nTargets: 24,000 bits ≤ 10 ms";
-    if (full) md << "; 10^6 bits ≤ 1 s";
-    md << ".\n\n";
-    for (const auto& row : results) {
+    return table;
+}
+
+std::vector<Target> targets(const std::vector<std::vector<Measurement>>& results) {
+    std::vector<Target> out;
+    for (const auto& row : results)
         for (const Measurement& m : row) {
             if (m.bits == 24000)
-                md << "- " << m.triple << ": 24,000 bits in " << fmt("%.2f", m.seconds * 1e3) << " ms — "
-                   << (m.seconds <= 0.010 ? "met" : "MISSED") << "\n";
+                out.push_back({m.triple, "24,000 bits in " + fmt("%.2f", m.seconds * 1e3) + " ms", m.seconds <= 0.010});
             if (m.bits == 1000000)
-                md << "- " << m.triple << ": 10^6 bits in " << fmt("%.3f", m.seconds) << " s — "
-                   << (m.seconds <= 1.0 ? "met" : "MISSED") << "\n";
+                out.push_back({m.triple, "10^6 bits in " + fmt("%.3f", m.seconds) + " s", m.seconds <= 1.0});
         }
-    }
-    md << "\nAnomalies (failed certificate, fewer bits than asked, enclosures disagreeing across b): " << anomalies
-       << ".\n";
-    if (!full) md << "\nb = 10^6 skipped (run with --full).\n";
+    return out;
+}
 
-    std::cout << md.str();
-    if (!out_dir.empty()) {
-        std::ofstream(out_dir + "/precision_vs_time.csv") << csv.str();
-        std::ofstream(out_dir + "/precision_vs_time.md") << md.str();
-        std::cerr << "[precision_vs_time] wrote " << out_dir << "/precision_vs_time.{csv,md}\n";
-    }
+}  // namespace
+
+int main(int argc, char** argv) {
+    BenchArguments args;
+    if (!parse_bench_arguments(argc, argv, "precision_vs_time",
+                               "usage: precision_vs_time [--full] [--out DIR]\n"
+                               "  --full     also certify 10^6 bits (once per triple; minutes in total)\n"
+                               "  --out DIR  write DIR/precision_vs_time.csv and DIR/precision_vs_time.md\n",
+                               args))
+        return 2;
+    std::vector<long> bit_list = {53, 900, 2000, 12000, 24000, 100000};
+    if (args.full) bit_list.push_back(1000000);
+    Report report("Precision versus time: certified Voronoi circle", "precision_vs_time", args.command);
+
+    // The measurements.
+    int anomalies = 0;
+    const std::vector<Triple> ts = triples();
+    const std::vector<std::vector<Measurement>> results = measure_all(ts, bit_list, anomalies);
+
+    // The report.
+    report.intro("Wall time of a fresh `VoronoiCircleSolver(e1, e2, e3).refine(b)` (floating-point guess, Krawczyk "
+                 "certificate at 64 bits, Newton at doubling precision, final certificate), until every component of "
+                 "the enclosure (three tangency parameters, radius, center) has at least b correct bits. Median of "
+                 "repetitions (repeat until 0.2 s measured and at least 3 runs, at most 50); b = 10^6 once. Paper: "
+                 "Emiris, Tsigaridas, Tzoumas 2007, Table 1, row \"subdivision\" (mpfr, P4 2.6 GHz); ratio = paper / "
+                 "ours.");
+    report.note("Plot (`precision_vs_time.png`): `/usr/bin/python3 experiments/plot_results.py precision_vs_time`");
+    report.note("By default (`make bench`) b = 10^6 is skipped and nothing is written; `--full` adds it, `--out DIR` "
+                "writes the CSV and this file.");
+    report.text("\nTriples (ordered E1 E2 E3 with a counter-clockwise Voronoi circle; ellipse = `a b w xc yc`):\n\n" +
+                triple_list(ts, results) + "\n");
+    report.table(time_table(ts, bit_list, results));
+    report.text("\n");
+    report.table(newton_table(ts, bit_list, results),
+                 "Newton steps (cumulative, all precisions) / final working precision (bits):");
+    report.text(std::string("\nTargets: 24,000 bits ≤ 10 ms") + (args.full ? "; 10^6 bits ≤ 1 s" : "") + ".\n\n" +
+                target_lines(targets(results)) +
+                "\nAnomalies (failed certificate, fewer bits than asked, enclosures disagreeing across b): " +
+                std::to_string(anomalies) + ".\n" + (args.full ? "" : "\nb = 10^6 skipped (run with --full).\n"));
+
+    report.publish(args.out_dir, "precision_vs_time.md", {{"precision_vs_time.csv", csv_table(results).csv()}});
     return anomalies ? 1 : 0;
 }

@@ -6,6 +6,7 @@
 #include "decision/predicate_registry.hpp"
 
 #include <string>
+#include <vector>
 
 namespace ellvor::experiments {
 
@@ -24,20 +25,33 @@ inline std::string stage_triple(const PredicateCount& p) {
     return s + ")";
 }
 
-// The CSV columns of one predicate: NAME_calls, then NAME_STAGE per stage.
-inline std::string predicate_csv_header(const PredicateInfo& p) {
-    std::string s = std::string(",") + p.name + "_calls";
-    for (Stage stage : kStages) s += std::string(",") + p.name + "_" + stage_name(stage);
-    return s;
+// The CSV columns of the predicates: NAME_calls, then NAME_STAGE per stage,
+// for every predicate of kPredicates.
+inline std::vector<std::string> predicate_csv_columns() {
+    std::vector<std::string> columns;
+    for (const PredicateInfo& p : kPredicates) {
+        columns.push_back(std::string(p.name) + "_calls");
+        for (Stage stage : kStages) columns.push_back(std::string(p.name) + "_" + stage_name(stage));
+    }
+    return columns;
 }
 
-inline std::string predicate_csv_values(const PredicateCount& c) {
-    std::string s = "," + std::to_string(c.calls);
-    for (Stage stage : kStages) s += "," + std::to_string(c.stages[stage]);
-    return s;
+// The values of those columns (all empty for a graph without the counts).
+inline std::vector<std::string> predicate_csv_values(const TraitsStats* stats) {
+    std::vector<std::string> values;
+    for (const PredicateInfo& p : kPredicates) {
+        const PredicateCount* c = stats ? &(*stats)[p.predicate] : nullptr;
+        values.push_back(c ? std::to_string(c->calls) : "");
+        for (Stage stage : kStages) values.push_back(c ? std::to_string(c->stages[stage]) : "");
+    }
+    return values;
 }
 
-// As many empty CSV cells as predicate_csv_values writes.
-inline std::string predicate_csv_empty() { return std::string(1 + kStages.size(), ','); }
+// The predicates' calls per stage of a graph as table cells ("15 (12/3/0)").
+inline std::vector<std::string> predicate_stage_triples(const TraitsStats& stats) {
+    std::vector<std::string> cells;
+    for (const PredicateInfo& p : kPredicates) cells.push_back(stage_triple(stats[p.predicate]));
+    return cells;
+}
 
 }  // namespace ellvor::experiments

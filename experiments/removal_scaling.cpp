@@ -8,7 +8,7 @@
 // ellvor builds the graph (insert_all), then removes a tenth of the sites, in
 // a random order (seed 7) -- the same sites, in the same order, for every
 // library. Reported: CPU time per insertion, per removal, and their ratio
-// (issue 12's target: a removal costs at most 3 insertions). On circles,
+// (the target: a removal costs at most 3 insertions). On circles,
 // CGAL's Apollonius_graph_hierarchy_2 (and, up to 10^4, Apollonius_graph_2),
 // both with Apollonius_graph_filtered_traits_2<Epick>, build by bulk insertion
 // and remove the same sites by their vertex handles; the ratios ellvor / CGAL.
@@ -23,6 +23,7 @@
 //   build/experiments/removal_scaling --full --out experiments/results   # adds 10^5; removal.csv, .md
 #include "experiments/apollonius_comparison.hpp"
 #include "experiments/peak_memory.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
@@ -45,12 +46,6 @@ namespace {
 
 constexpr long kRemovedFraction = 10;  // one site in ten
 constexpr std::uint64_t kRemovalSeed = 7;
-
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
 
 // A tenth of the ids 0 .. n-1 in a random order (our own shuffle: the same
 // everywhere for a seed).
@@ -180,19 +175,8 @@ std::string memory_mb(const PeakMemory& m) {
     return fmt("%.1f", m.peak_kb / 1024.0) + " (+" + fmt("%.1f", (m.peak_kb - m.start_kb) / 1024.0) + ")";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    BenchArguments args;
-    if (!parse_bench_arguments(argc, argv, "removal_scaling",
-                               "usage: removal_scaling [--full] [--out DIR]\n"
-                               "  --full     also n = 10^5 (minutes)\n"
-                               "  --out DIR  write DIR/removal.csv and DIR/removal.md\n",
-                               args))
-        return 2;
-    std::vector<long> sizes = {1000, 10000};
-    if (args.full) sizes.push_back(100000);
-    // Peak memory first, in children of a process that has done no large work yet.
+// Peak memory first, in children of a process that has done no large work yet (n >= 10^4).
+std::vector<std::pair<std::string, PeakMemory>> measure_peak_memory(const std::vector<long>& sizes) {
     std::vector<std::pair<std::string, PeakMemory>> memory;
     for (long n : sizes) {
         if (n < 10000) continue;
@@ -200,7 +184,11 @@ int main(int argc, char** argv) {
         memory.push_back({"ellvor circles " + std::to_string(n), ellvor_memory("circles", n)});
         memory.push_back({"cgal-hierarchy circles " + std::to_string(n), cgal_memory(n)});
     }
-    int anomalies = 0;
+    return memory;
+}
+
+// Build and removals of every set at every n: ellvor, and CGAL on the circles.
+std::vector<Row> measure_removals(const std::vector<long>& sizes, int& anomalies) {
     std::vector<Row> rows;
     for (long n : sizes)
         for (const std::string set : {"ellipses", "circles"}) {
@@ -217,54 +205,97 @@ int main(int argc, char** argv) {
                       << " us, removal " << fmt("%.1f", r.remove_us()) << " us (" << fmt("%.2f", r.remove_us() / r.insert_us())
                       << "x), " << r.check << "\n";
         }
+    return rows;
+}
 
-    std::ostringstream csv, md;
-    csv << "library,set,n,removed,insert_cpu_seconds,insert_us_per_site,remove_cpu_seconds,remove_us_per_site,"
-           "remove_over_insert,check\n";
+// removal.csv: every row.
+Table csv_table(const std::vector<Row>& rows) {
+    Table t("removal", {"library", "set", "n", "removed", "insert_cpu_seconds", "insert_us_per_site",
+                        "remove_cpu_seconds", "remove_us_per_site", "remove_over_insert", "check"});
     for (const Row& r : rows)
-        csv << r.library << "," << r.set << "," << r.n << "," << r.removed << "," << fmt("%.6g", r.insert_cpu) << ","
-            << fmt("%.4g", r.insert_us()) << "," << fmt("%.6g", r.remove_cpu) << "," << fmt("%.4g", r.remove_us()) << ","
-            << fmt("%.3g", r.remove_us() / r.insert_us()) << "," << r.check << "\n";
-    md << "# Deletion: removal against insertion, and against CGAL's remove\n\n"
-       << "- Machine: " << cpu_model() << "; load average " << loadavg() << "\n"
-       << "- Source: " << source_state() << "\n"
-       << "- Command: `make build/experiments/removal_scaling && " << args.command << "`\n"
-       << "- Sets: ellipses: " << describe_set("ellipses") << "; circles: " << describe_set("circles") << "\n"
-       << "- Each library builds the graph, then removes the same tenth of the sites in the same random order (seed "
-       << kRemovalSeed << "). CPU time of all insertions and of all removals, once; per site.\n"
-       << "- Checks: ellvor's graph after the removals passes validate(), equals the graph built from the remaining "
-          "sites (n <= 10^4), and on circles equals CGAL's after the same removals.\n\n"
-       << "| library | set | n | removed | insertion (us / site) | removal (us / site) | removal / insertion | check |\n"
-       << "|---|---|---:|---:|---:|---:|---:|---|\n";
+        t.add({r.library, r.set, integer(r.n), integer(static_cast<long long>(r.removed)), fmt("%.6g", r.insert_cpu),
+               fmt("%.4g", r.insert_us()), fmt("%.6g", r.remove_cpu), fmt("%.4g", r.remove_us()),
+               fmt("%.3g", r.remove_us() / r.insert_us()), r.check});
+    return t;
+}
+
+Table time_table(const std::vector<Row>& rows) {
+    Table t("times", {"library", "set", "n", "removed", "insertion (us / site)", "removal (us / site)",
+                      "removal / insertion", "check"},
+            "llrrrrrl");
     for (const Row& r : rows)
-        md << "| " << r.library << " | " << r.set << " | " << r.n << " | " << r.removed << " | " << fmt("%.1f", r.insert_us())
-           << " | " << fmt("%.1f", r.remove_us()) << " | " << fmt("%.2f", r.remove_us() / r.insert_us()) << " | " << r.check
-           << " |\n";
-    md << "\nellvor against CGAL on circles, the same run (ratio of times per site; > 1: ellvor slower):\n\n"
-       << "| n | peer | insertion ratio | removal ratio |\n|---:|---|---:|---:|\n";
+        t.add({r.library, r.set, integer(r.n), integer(static_cast<long long>(r.removed)), fmt("%.1f", r.insert_us()),
+               fmt("%.1f", r.remove_us()), fmt("%.2f", r.remove_us() / r.insert_us()), r.check});
+    return t;
+}
+
+Table cgal_ratio_table(const std::vector<Row>& rows) {
+    Table t("against_cgal", {"n", "peer", "insertion ratio", "removal ratio"}, "rlrr");
     for (const Row& mine : rows) {
         if (mine.library != "ellvor" || mine.set != "circles") continue;
         for (const Row& peer : rows)
             if (peer.library != "ellvor" && peer.n == mine.n)
-                md << "| " << mine.n << " | " << peer.library << " | " << fmt("%.2f", mine.insert_us() / peer.insert_us())
-                   << " | " << fmt("%.2f", mine.remove_us() / peer.remove_us()) << " |\n";
+                t.add({integer(mine.n), peer.library, fmt("%.2f", mine.insert_us() / peer.insert_us()),
+                       fmt("%.2f", mine.remove_us() / peer.remove_us())});
     }
-    md << "\nHow ellvor removed the vertices (GraphStats): removals through the neighbours' small graph / edges of "
-          "length 0 flipped / rebuilds:\n\n| set | n | small graph | flips | rebuilds |\n|---|---:|---:|---:|---:|\n";
+    return t;
+}
+
+Table removal_kind_table(const std::vector<Row>& rows) {
+    Table t("removal_kinds", {"set", "n", "small graph", "flips", "rebuilds"});
     for (const Row& r : rows)
         if (r.library == "ellvor")
-            md << "| " << r.set << " | " << r.n << " | " << r.graph.small_graph_removals << " | " << r.graph.degenerate_flips
-               << " | " << r.graph.removal_rebuilds << " |\n";
+            t.add({r.set, integer(r.n), integer(static_cast<long long>(r.graph.small_graph_removals)),
+                   integer(static_cast<long long>(r.graph.degenerate_flips)),
+                   integer(static_cast<long long>(r.graph.removal_rebuilds))});
+    return t;
+}
+
+Table memory_table(const std::vector<std::pair<std::string, PeakMemory>>& memory) {
+    Table t("memory", {"run", "peak RSS"});
+    for (const auto& [name, m] : memory) t.add({name, memory_mb(m)});
+    return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    BenchArguments args;
+    if (!parse_bench_arguments(argc, argv, "removal_scaling",
+                               "usage: removal_scaling [--full] [--out DIR]\n"
+                               "  --full     also n = 10^5 (minutes)\n"
+                               "  --out DIR  write DIR/removal.csv and DIR/removal.md\n",
+                               args))
+        return 2;
+    std::vector<long> sizes = {1000, 10000};
+    if (args.full) sizes.push_back(100000);
+    Report report("Deletion: removal against insertion, and against CGAL's remove", "removal_scaling", args.command);
+
+    // The measurements.
+    int anomalies = 0;
+    const auto memory = measure_peak_memory(sizes);
+    const std::vector<Row> rows = measure_removals(sizes, anomalies);
+
+    // The report.
+    report.note("Sets: ellipses: " + describe_set("ellipses") + "; circles: " + describe_set("circles"));
+    report.note("Each library builds the graph, then removes the same tenth of the sites in the same random order "
+                "(seed " + std::to_string(kRemovalSeed) +
+                "). CPU time of all insertions and of all removals, once; per site.");
+    report.note("Checks: ellvor's graph after the removals passes validate(), equals the graph built from the "
+                "remaining sites (n <= 10^4), and on circles equals CGAL's after the same removals.");
+    report.table(time_table(rows));
+    report.text("\n");
+    report.table(cgal_ratio_table(rows),
+                 "ellvor against CGAL on circles, the same run (ratio of times per site; > 1: ellvor slower):");
+    report.text("\n");
+    report.table(removal_kind_table(rows), "How ellvor removed the vertices (GraphStats): removals through the "
+                                           "neighbours' small graph / edges of length 0 flipped / rebuilds:");
     if (!memory.empty()) {
-        md << "\nPeak RSS (MB) of the build plus the removals in a forked child (growth over the child's start in "
-              "parentheses):\n\n| run | peak RSS |\n|---|---:|\n";
-        for (const auto& [name, m] : memory) md << "| " << name << " | " << memory_mb(m) << " |\n";
+        report.text("\n");
+        report.table(memory_table(memory), "Peak RSS (MB) of the build plus the removals in a forked child (growth "
+                                           "over the child's start in parentheses):");
     }
-    std::cout << md.str();
-    if (!args.out_dir.empty()) {
-        std::ofstream(args.out_dir + "/removal.csv") << csv.str();
-        std::ofstream(args.out_dir + "/removal.md") << md.str();
-        std::cerr << "[removal_scaling] wrote " << args.out_dir << "/removal.{csv,md}\n";
-    }
+
+    report.publish(args.out_dir, "removal.md", {{"removal.csv", csv_table(rows).csv()}});
     return anomalies ? 1 : 0;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -67,6 +68,14 @@ inline double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+// The nearest-rank quantile q in (0, 1] (NAN for none).
+inline double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    const std::size_t r = static_cast<std::size_t>(std::ceil(q * v.size()));
+    return v[std::min(v.size() - 1, r ? r - 1 : 0)];
 }
 
 // Runs `build` until 0.3 s of wall time and at least min_reps runs (at most

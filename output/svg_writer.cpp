@@ -76,178 +76,263 @@ std::map<SiteId, std::vector<SiteId>> crossing_pairs(const std::vector<Ellipse>&
     return pairs;
 }
 
-}  // namespace
+// Where the drawing goes on the page: the world's scale and offset (y up),
+// the legend's place and the page's size, in pixels.
+struct PageLayout {
+    double s = 1;  // pixels per world unit
+    double pad = 20, top = 48, legend_width = 250;
+    double legend_x = 0, legend_h = 0, width = 0, height = 0;
+    double tx = 0, ty = 0;  // the world's origin on the page
 
-void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
-                const TracedDiagram& d, const SvgOptions& o) {
-    const auto edges = graph.edges();
-    const auto faces = graph.faces();
-    const auto hidden = graph.hidden();
-    std::set<SiteId> hidden_ids;
-    for (const auto& h : hidden) hidden_ids.insert(h.first);
-    const std::map<SiteId, std::vector<SiteId>> crossing = crossing_pairs(sites, hidden_ids);
-    std::size_t overlaps = 0;
-    for (const auto& [i, later] : crossing) overlaps += later.size();
+    double px(double pixels) const { return pixels / s; }  // a length of `pixels` pixels in world units
+    double screen_x(double x) const { return tx + s * x; }
+    double screen_y(double y) const { return ty - s * y; }
+};
 
-    const DrawingBox& box = d.box;
-    const double s = o.pixels / box.size();           // pixels per world unit
-    const double pad = 20, top = 48, legend_width = 250;
-    const double draw_w = s * box.width(), draw_h = s * box.height();
-    const double legend_x = pad + draw_w + pad;
-    const double legend_h = 22 + (overlaps > 0 ? 6 : 5) * 24 + 14 + (d.failed_edges > 0 ? 18 : 0);
-    const double width = legend_x + legend_width;
-    const double height = std::max(top + draw_h + pad, top + legend_h + pad);
-    const double tx = pad - s * box.xmin, ty = top + s * box.ymax;
-    auto px = [&](double world) { return world / s; };  // a length of `world` pixels in world units
-    auto screen_x = [&](double x) { return tx + s * x; };
-    auto screen_y = [&](double y) { return ty - s * y; };
+PageLayout page_layout(const DrawingBox& box, const SvgOptions& o, bool has_overlaps, bool has_failed_edges) {
+    PageLayout l;
+    l.s = o.pixels / box.size();
+    const double draw_w = l.s * box.width(), draw_h = l.s * box.height();
+    l.legend_x = l.pad + draw_w + l.pad;
+    l.legend_h = 22 + (has_overlaps ? 6 : 5) * 24 + 14 + (has_failed_edges ? 18 : 0);
+    l.width = l.legend_x + l.legend_width;
+    l.height = std::max(l.top + draw_h + l.pad, l.top + l.legend_h + l.pad);
+    l.tx = l.pad - l.s * box.xmin;
+    l.ty = l.top + l.s * box.ymax;
+    return l;
+}
 
-    const std::string title =
-        o.title.empty() ? "Voronoi diagram of " + std::to_string(sites.size()) + " ellipses" : o.title;
+// One SVG page of a traced diagram, written part by part in document order.
+class SvgPage {
+public:
+    SvgPage(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const TracedDiagram& d,
+            const SvgOptions& o)
+        : out_(out), sites_(sites), d_(d), o_(o), edges_(graph.edges()), vertex_count_(graph.faces().size()) {
+        const auto hidden = graph.hidden();
+        hidden_count_ = hidden.size();
+        for (const auto& h : hidden) hidden_ids_.insert(h.first);
+        crossing_ = crossing_pairs(sites, hidden_ids_);
+        for (const auto& [i, later] : crossing_) overlaps_ += later.size();
+        layout_ = page_layout(d.box, o, overlaps_ > 0, d.failed_edges > 0);
+        title_ = o.title.empty() ? "Voronoi diagram of " + std::to_string(sites.size()) + " ellipses" : o.title;
+    }
 
-    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    out << "<!-- ellvor: Voronoi diagram of ellipses (floating-point drawing). Voronoi edges are traced\n"
-           "     bisector arcs: every point is equidistant from its two sites up to a floating-point\n"
-           "     root solve (~1e-12 relative); consecutive points are closer than the tolerance "
-        << num(d.tolerance) << "\n     (" << num(100 * o.tolerance_fraction)
-        << "% of the drawing box's larger side). Drawing box: [" << num(box.xmin) << ", " << num(box.xmax) << "] x ["
-        << num(box.ymin) << ", " << num(box.ymax) << "]; y points up. -->\n";
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
-        << "\" viewBox=\"0 0 " << num(width) << " " << num(height) << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n";
-    out << "<title>" << escape(title) << "</title>\n";
+    void write() {
+        header();
+        defs();
+        background_and_title();
+        world();
+        if (o_.show_ids) site_ids();
+        legend();
+        out_ << "</svg>\n";
+    }
+
+private:
+    std::ostream& out_;
+    const std::vector<Ellipse>& sites_;
+    const TracedDiagram& d_;
+    const SvgOptions& o_;
+    const std::vector<std::pair<SiteId, SiteId>> edges_;
+    const std::size_t vertex_count_;
+    std::size_t hidden_count_ = 0;
+    std::set<SiteId> hidden_ids_;
+    std::map<SiteId, std::vector<SiteId>> crossing_;
+    std::size_t overlaps_ = 0;
+    PageLayout layout_;
+    std::string title_;
+
     // An ellipse element's geometry (world coordinates).
-    auto geometry = [&](SiteId i) {
-        const EllipseShape e = EllipseShape::of(sites[i]);
+    std::string geometry(SiteId i) const {
+        const EllipseShape e = EllipseShape::of(sites_[i]);
         const double degrees = std::atan2(e.s, e.c) * 180 / kPi;
         std::string g = " cx=\"" + num(e.xc) + "\" cy=\"" + num(e.yc) + "\" rx=\"" + num(e.a) + "\" ry=\"" + num(e.b) + "\"";
         if (degrees != 0) g += " transform=\"rotate(" + num(degrees) + " " + num(e.xc) + " " + num(e.yc) + ")\"";
         return g;
-    };
-    out << "<defs><clipPath id=\"drawing-box\"><rect x=\"" << num(box.xmin) << "\" y=\"" << num(box.ymin)
-        << "\" width=\"" << num(box.width()) << "\" height=\"" << num(box.height()) << "\"/></clipPath>";
-    // Each site that crosses a later one clips the later ones to itself.
-    for (const auto& [i, later] : crossing) out << "\n<clipPath id=\"site-" << i << "\"><ellipse" << geometry(i) << "/></clipPath>";
-    out << "</defs>\n";
-    out << "<rect x=\"0\" y=\"0\" width=\"" << num(width) << "\" height=\"" << num(height) << "\" fill=\"white\"/>\n";
-    out << "<text x=\"" << num(pad) << "\" y=\"30\" font-size=\"18\" font-weight=\"bold\" fill=\"#222\">" << escape(title)
-        << "</text>\n";
+    }
 
-    // The world, y up.
-    out << "<g id=\"world\" transform=\"matrix(" << num(s) << " 0 0 " << num(-s) << " " << num(tx) << " " << num(ty)
-        << ")\">\n";
-    out << "<rect x=\"" << num(box.xmin) << "\" y=\"" << num(box.ymin) << "\" width=\"" << num(box.width())
-        << "\" height=\"" << num(box.height()) << "\" fill=\"#fcfcfa\" stroke=\"#bbbbbb\" stroke-width=\"" << num(px(1))
-        << "\"/>\n";
-    out << "<g clip-path=\"url(#drawing-box)\">\n";
+    void header() {
+        const DrawingBox& box = d_.box;
+        out_ << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+        out_ << "<!-- ellvor: Voronoi diagram of ellipses (floating-point drawing). Voronoi edges are traced\n"
+                "     bisector arcs: every point is equidistant from its two sites up to a floating-point\n"
+                "     root solve (~1e-12 relative); consecutive points are closer than the tolerance "
+             << num(d_.tolerance) << "\n     (" << num(100 * o_.tolerance_fraction)
+             << "% of the drawing box's larger side). Drawing box: [" << num(box.xmin) << ", " << num(box.xmax)
+             << "] x [" << num(box.ymin) << ", " << num(box.ymax) << "]; y points up. -->\n";
+        out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(layout_.width) << "\" height=\""
+             << num(layout_.height) << "\" viewBox=\"0 0 " << num(layout_.width) << " " << num(layout_.height)
+             << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n";
+        out_ << "<title>" << escape(title_) << "</title>\n";
+    }
 
-    auto ellipse = [&](SiteId i, bool is_hidden) {
-        out << "<ellipse data-site=\"" << i << "\"" << geometry(i);
+    // The drawing box's clip and, for each site that crosses later ones, its
+    // outline as a clip of those.
+    void defs() {
+        const DrawingBox& box = d_.box;
+        out_ << "<defs><clipPath id=\"drawing-box\"><rect x=\"" << num(box.xmin) << "\" y=\"" << num(box.ymin)
+             << "\" width=\"" << num(box.width()) << "\" height=\"" << num(box.height()) << "\"/></clipPath>";
+        for (const auto& [i, later] : crossing_)
+            out_ << "\n<clipPath id=\"site-" << i << "\"><ellipse" << geometry(i) << "/></clipPath>";
+        out_ << "</defs>\n";
+    }
+
+    void background_and_title() {
+        out_ << "<rect x=\"0\" y=\"0\" width=\"" << num(layout_.width) << "\" height=\"" << num(layout_.height)
+             << "\" fill=\"white\"/>\n";
+        out_ << "<text x=\"" << num(layout_.pad) << "\" y=\"30\" font-size=\"18\" font-weight=\"bold\" fill=\"#222\">"
+             << escape(title_) << "</text>\n";
+    }
+
+    // Everything in world coordinates (y up), clipped to the drawing box.
+    void world() {
+        const DrawingBox& box = d_.box;
+        out_ << "<g id=\"world\" transform=\"matrix(" << num(layout_.s) << " 0 0 " << num(-layout_.s) << " "
+             << num(layout_.tx) << " " << num(layout_.ty) << ")\">\n";
+        out_ << "<rect x=\"" << num(box.xmin) << "\" y=\"" << num(box.ymin) << "\" width=\"" << num(box.width())
+             << "\" height=\"" << num(box.height()) << "\" fill=\"#fcfcfa\" stroke=\"#bbbbbb\" stroke-width=\""
+             << num(layout_.px(1)) << "\"/>\n";
+        out_ << "<g clip-path=\"url(#drawing-box)\">\n";
+        sites();
+        delaunay_edges();
+        voronoi_edges();
+        voronoi_vertices();
+        out_ << "</g>\n</g>\n";  // clip, world
+    }
+
+    void ellipse(SiteId i, bool is_hidden) {
+        out_ << "<ellipse data-site=\"" << i << "\"" << geometry(i);
         if (is_hidden)
-            out << " fill=\"none\" stroke=\"" << kHiddenStroke << "\" stroke-width=\"" << num(px(1.1))
-                << "\" stroke-dasharray=\"" << num(px(4)) << " " << num(px(3)) << "\"/>\n";
+            out_ << " fill=\"none\" stroke=\"" << kHiddenStroke << "\" stroke-width=\"" << num(layout_.px(1.1))
+                 << "\" stroke-dasharray=\"" << num(layout_.px(4)) << " " << num(layout_.px(3)) << "\"/>\n";
         else
-            out << " fill=\"" << kSiteFill << "\" stroke=\"" << kSiteStroke << "\" stroke-width=\"" << num(px(1.3))
-                << "\"/>\n";
-    };
-    out << "<g id=\"sites\">\n";
-    for (SiteId i = 0; i < sites.size(); ++i)
-        if (!hidden_ids.count(i)) ellipse(i, false);
-    out << "</g>\n";
-    if (overlaps > 0) {
-        // The lens of each crossing pair: the later site clipped to the
-        // earlier (the clip in a <g>: on the ellipse it would be rotated with it).
-        out << "<g id=\"overlaps\" fill=\"" << kOverlapFill << "\" fill-opacity=\"" << kOverlapOpacity << "\">\n";
-        for (const auto& [i, later] : crossing) {
-            out << "<g clip-path=\"url(#site-" << i << ")\">";
-            for (SiteId j : later) out << "<ellipse data-sites=\"" << i << " " << j << "\"" << geometry(j) << "/>";
-            out << "</g>\n";
+            out_ << " fill=\"" << kSiteFill << "\" stroke=\"" << kSiteStroke << "\" stroke-width=\""
+                 << num(layout_.px(1.3)) << "\"/>\n";
+    }
+
+    // The visible sites, the lenses of crossing pairs, the hidden sites.
+    void sites() {
+        out_ << "<g id=\"sites\">\n";
+        for (SiteId i = 0; i < sites_.size(); ++i)
+            if (!hidden_ids_.count(i)) ellipse(i, false);
+        out_ << "</g>\n";
+        if (overlaps_ > 0) {
+            // The lens of each crossing pair: the later site clipped to the
+            // earlier (the clip in a <g>: on the ellipse it would be rotated with it).
+            out_ << "<g id=\"overlaps\" fill=\"" << kOverlapFill << "\" fill-opacity=\"" << kOverlapOpacity << "\">\n";
+            for (const auto& [i, later] : crossing_) {
+                out_ << "<g clip-path=\"url(#site-" << i << ")\">";
+                for (SiteId j : later) out_ << "<ellipse data-sites=\"" << i << " " << j << "\"" << geometry(j) << "/>";
+                out_ << "</g>\n";
+            }
+            out_ << "</g>\n";
         }
-        out << "</g>\n";
+        out_ << "<g id=\"hidden-sites\">\n";
+        for (SiteId i : hidden_ids_) ellipse(i, true);
+        out_ << "</g>\n";
     }
-    out << "<g id=\"hidden-sites\">\n";
-    for (SiteId i : hidden_ids) ellipse(i, true);
-    out << "</g>\n";
 
-    out << "<g id=\"delaunay-edges\" stroke=\"" << kDelaunay << "\" stroke-width=\"" << num(px(0.8))
-        << "\" stroke-opacity=\"0.8\" stroke-dasharray=\"" << num(px(5)) << " " << num(px(3)) << "\">\n";
-    for (const auto& [i, j] : edges) {
-        const EllipseShape a = EllipseShape::of(sites[i]), b = EllipseShape::of(sites[j]);
-        out << "<line x1=\"" << num(a.xc) << "\" y1=\"" << num(a.yc) << "\" x2=\"" << num(b.xc) << "\" y2=\"" << num(b.yc)
-            << "\"/>\n";
-    }
-    out << "</g>\n";
-
-    out << "<g id=\"voronoi-edges\" fill=\"none\" stroke=\"" << kVoronoi << "\" stroke-width=\"" << num(px(1.6))
-        << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-    for (const VoronoiEdgeArc& arc : d.arcs) {
-        out << "<path data-sites=\"" << arc.p << " " << arc.q << "\" d=\"";
-        for (std::size_t k = 0; k < arc.points.size(); ++k)
-            out << (k == 0 ? "M" : k == 1 ? " L" : " ") << num(arc.points[k].x) << " " << num(arc.points[k].y);
-        out << "\"/>\n";
-    }
-    out << "</g>\n";
-
-    out << "<g id=\"voronoi-vertices\" fill=\"" << kVertex << "\">\n";
-    for (const VoronoiVertexPoint& v : d.vertices)
-        if (v.certified && box.contains(v.x, v.y))
-            out << "<circle cx=\"" << num(v.x) << "\" cy=\"" << num(v.y) << "\" r=\"" << num(px(2.4)) << "\"/>\n";
-    out << "</g>\n";
-    out << "</g>\n</g>\n";  // clip, world
-
-    if (o.show_ids) {
-        // Hidden sites' ids a line below their center (their host's id is often at the same place).
-        out << "<g id=\"site-ids\" font-size=\"11\" text-anchor=\"middle\" dominant-baseline=\"central\" "
-               "stroke=\"white\" stroke-width=\"3\" stroke-opacity=\"0.8\" paint-order=\"stroke\">\n";
-        for (SiteId i = 0; i < sites.size(); ++i) {
-            const EllipseShape e = EllipseShape::of(sites[i]);
-            const bool h = hidden_ids.count(i) != 0;
-            out << "<text x=\"" << num(screen_x(e.xc)) << "\" y=\"" << num(screen_y(e.yc) + (h ? 12 : 0)) << "\" fill=\""
-                << (h ? "#777777" : "#0d2a47") << "\"" << (h ? " font-style=\"italic\"" : "") << ">" << i << "</text>\n";
+    void delaunay_edges() {
+        out_ << "<g id=\"delaunay-edges\" stroke=\"" << kDelaunay << "\" stroke-width=\"" << num(layout_.px(0.8))
+             << "\" stroke-opacity=\"0.8\" stroke-dasharray=\"" << num(layout_.px(5)) << " " << num(layout_.px(3))
+             << "\">\n";
+        for (const auto& [i, j] : edges_) {
+            const EllipseShape a = EllipseShape::of(sites_[i]), b = EllipseShape::of(sites_[j]);
+            out_ << "<line x1=\"" << num(a.xc) << "\" y1=\"" << num(a.yc) << "\" x2=\"" << num(b.xc) << "\" y2=\""
+                 << num(b.yc) << "\"/>\n";
         }
-        out << "</g>\n";
+        out_ << "</g>\n";
     }
 
-    // Legend.
-    out << "<g id=\"legend\" data-sites=\"" << sites.size() << "\" data-hidden=\"" << hidden.size()
-        << "\" data-delaunay-edges=\"" << edges.size() << "\" data-voronoi-vertices=\"" << faces.size()
-        << "\" data-voronoi-edges=\"" << d.arcs.size() << "\" data-overlaps=\"" << overlaps << "\" font-size=\"13\" fill=\"#222\">\n";
-    const double lx = legend_x, ly = top;
-    out << "<rect x=\"" << num(lx) << "\" y=\"" << num(ly) << "\" width=\"" << num(legend_width - pad) << "\" height=\""
-        << num(legend_h) << "\" fill=\"white\" stroke=\"#cccccc\"/>\n";
-    double row = ly + 22;
-    auto text = [&](const std::string& t) {
-        out << "<text x=\"" << num(lx + 44) << "\" y=\"" << num(row + 4) << "\">" << escape(t) << "</text>\n";
-        row += 24;
-    };
-    const double sx = lx + 10, ex = lx + 34;
-    out << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" rx=\"7\" fill=\""
-        << kSiteFill << "\" stroke=\"" << kSiteStroke << "\" stroke-width=\"1.3\"/>\n";
-    text("sites: " + std::to_string(sites.size()));
-    out << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" rx=\"7\" fill=\"none\" stroke=\""
-        << kHiddenStroke << "\" stroke-width=\"1.1\" stroke-dasharray=\"4 3\"/>\n";
-    text("hidden: " + std::to_string(hidden.size()));
-    if (overlaps > 0) {
-        out << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" fill=\"" << kSiteFill
-            << "\"/>\n<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" fill=\""
-            << kOverlapFill << "\" fill-opacity=\"" << kOverlapOpacity << "\"/>\n";
-        text("overlapping pairs: " + std::to_string(overlaps));
+    void voronoi_edges() {
+        out_ << "<g id=\"voronoi-edges\" fill=\"none\" stroke=\"" << kVoronoi << "\" stroke-width=\""
+             << num(layout_.px(1.6)) << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+        for (const VoronoiEdgeArc& arc : d_.arcs) {
+            out_ << "<path data-sites=\"" << arc.p << " " << arc.q << "\" d=\"";
+            for (std::size_t k = 0; k < arc.points.size(); ++k)
+                out_ << (k == 0 ? "M" : k == 1 ? " L" : " ") << num(arc.points[k].x) << " " << num(arc.points[k].y);
+            out_ << "\"/>\n";
+        }
+        out_ << "</g>\n";
     }
-    out << "<line x1=\"" << num(sx) << "\" y1=\"" << num(row) << "\" x2=\"" << num(ex) << "\" y2=\"" << num(row)
-        << "\" stroke=\"" << kDelaunay << "\" stroke-width=\"1\" stroke-dasharray=\"5 3\"/>\n";
-    text("Delaunay edges: " + std::to_string(edges.size()));
-    out << "<line x1=\"" << num(sx) << "\" y1=\"" << num(row) << "\" x2=\"" << num(ex) << "\" y2=\"" << num(row)
-        << "\" stroke=\"" << kVoronoi << "\" stroke-width=\"2\"/>\n";
-    text("Voronoi edges: " + std::to_string(d.arcs.size()));
-    out << "<circle cx=\"" << num(0.5 * (sx + ex)) << "\" cy=\"" << num(row) << "\" r=\"3\" fill=\"" << kVertex << "\"/>\n";
-    text("Voronoi vertices: " + std::to_string(faces.size()));
-    out << "<text x=\"" << num(lx + 10) << "\" y=\"" << num(row + 4) << "\" font-size=\"11\" fill=\"#555\">arc tolerance "
-        << num(d.tolerance) << " (" << num(100 * o.tolerance_fraction) << "% of box)</text>\n";
-    row += 18;
-    if (d.failed_edges > 0)
-        out << "<text x=\"" << num(lx + 10) << "\" y=\"" << num(row + 4) << "\" font-size=\"11\" fill=\"#b00\">"
-            << d.failed_edges << " edge(s) not drawn (uncertified vertex)</text>\n";
-    out << "</g>\n";
-    out << "</svg>\n";
+
+    void voronoi_vertices() {
+        out_ << "<g id=\"voronoi-vertices\" fill=\"" << kVertex << "\">\n";
+        for (const VoronoiVertexPoint& v : d_.vertices)
+            if (v.certified && d_.box.contains(v.x, v.y))
+                out_ << "<circle cx=\"" << num(v.x) << "\" cy=\"" << num(v.y) << "\" r=\"" << num(layout_.px(2.4))
+                     << "\"/>\n";
+        out_ << "</g>\n";
+    }
+
+    // Each site's id at its center, in page coordinates; a hidden site's a
+    // line lower (its host's id is often at the same place).
+    void site_ids() {
+        out_ << "<g id=\"site-ids\" font-size=\"11\" text-anchor=\"middle\" dominant-baseline=\"central\" "
+                "stroke=\"white\" stroke-width=\"3\" stroke-opacity=\"0.8\" paint-order=\"stroke\">\n";
+        for (SiteId i = 0; i < sites_.size(); ++i) {
+            const EllipseShape e = EllipseShape::of(sites_[i]);
+            const bool h = hidden_ids_.count(i) != 0;
+            out_ << "<text x=\"" << num(layout_.screen_x(e.xc)) << "\" y=\"" << num(layout_.screen_y(e.yc) + (h ? 12 : 0))
+                 << "\" fill=\"" << (h ? "#777777" : "#0d2a47") << "\"" << (h ? " font-style=\"italic\"" : "") << ">"
+                 << i << "</text>\n";
+        }
+        out_ << "</g>\n";
+    }
+
+    // The legend: one sample and count per kind of mark, then the tolerance.
+    void legend() {
+        out_ << "<g id=\"legend\" data-sites=\"" << sites_.size() << "\" data-hidden=\"" << hidden_count_
+             << "\" data-delaunay-edges=\"" << edges_.size() << "\" data-voronoi-vertices=\"" << vertex_count_
+             << "\" data-voronoi-edges=\"" << d_.arcs.size() << "\" data-overlaps=\"" << overlaps_
+             << "\" font-size=\"13\" fill=\"#222\">\n";
+        const double lx = layout_.legend_x, ly = layout_.top;
+        out_ << "<rect x=\"" << num(lx) << "\" y=\"" << num(ly) << "\" width=\"" << num(layout_.legend_width - layout_.pad)
+             << "\" height=\"" << num(layout_.legend_h) << "\" fill=\"white\" stroke=\"#cccccc\"/>\n";
+        double row = ly + 22;
+        auto text = [&](const std::string& t) {
+            out_ << "<text x=\"" << num(lx + 44) << "\" y=\"" << num(row + 4) << "\">" << escape(t) << "</text>\n";
+            row += 24;
+        };
+        const double sx = lx + 10, ex = lx + 34;
+        out_ << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" rx=\"7\" fill=\""
+             << kSiteFill << "\" stroke=\"" << kSiteStroke << "\" stroke-width=\"1.3\"/>\n";
+        text("sites: " + std::to_string(sites_.size()));
+        out_ << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7)
+             << "\" width=\"24\" height=\"14\" rx=\"7\" fill=\"none\" stroke=\"" << kHiddenStroke
+             << "\" stroke-width=\"1.1\" stroke-dasharray=\"4 3\"/>\n";
+        text("hidden: " + std::to_string(hidden_count_));
+        if (overlaps_ > 0) {
+            out_ << "<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7) << "\" width=\"24\" height=\"14\" fill=\""
+                 << kSiteFill << "\"/>\n<rect x=\"" << num(sx) << "\" y=\"" << num(row - 7)
+                 << "\" width=\"24\" height=\"14\" fill=\"" << kOverlapFill << "\" fill-opacity=\"" << kOverlapOpacity
+                 << "\"/>\n";
+            text("overlapping pairs: " + std::to_string(overlaps_));
+        }
+        out_ << "<line x1=\"" << num(sx) << "\" y1=\"" << num(row) << "\" x2=\"" << num(ex) << "\" y2=\"" << num(row)
+             << "\" stroke=\"" << kDelaunay << "\" stroke-width=\"1\" stroke-dasharray=\"5 3\"/>\n";
+        text("Delaunay edges: " + std::to_string(edges_.size()));
+        out_ << "<line x1=\"" << num(sx) << "\" y1=\"" << num(row) << "\" x2=\"" << num(ex) << "\" y2=\"" << num(row)
+             << "\" stroke=\"" << kVoronoi << "\" stroke-width=\"2\"/>\n";
+        text("Voronoi edges: " + std::to_string(d_.arcs.size()));
+        out_ << "<circle cx=\"" << num(0.5 * (sx + ex)) << "\" cy=\"" << num(row) << "\" r=\"3\" fill=\"" << kVertex
+             << "\"/>\n";
+        text("Voronoi vertices: " + std::to_string(vertex_count_));
+        out_ << "<text x=\"" << num(lx + 10) << "\" y=\"" << num(row + 4)
+             << "\" font-size=\"11\" fill=\"#555\">arc tolerance " << num(d_.tolerance) << " ("
+             << num(100 * o_.tolerance_fraction) << "% of box)</text>\n";
+        row += 18;
+        if (d_.failed_edges > 0)
+            out_ << "<text x=\"" << num(lx + 10) << "\" y=\"" << num(row + 4) << "\" font-size=\"11\" fill=\"#b00\">"
+                 << d_.failed_edges << " edge(s) not drawn (uncertified vertex)</text>\n";
+        out_ << "</g>\n";
+    }
+};
+
+}  // namespace
+
+void render_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                const TracedDiagram& d, const SvgOptions& o) {
+    SvgPage(out, graph, sites, d, o).write();
 }
 
 TracedDiagram write_svg(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites,

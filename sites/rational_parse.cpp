@@ -43,9 +43,16 @@ std::string too_big_message(std::string_view token) {
            std::to_string(kMaxRationalBits) + " bits";
 }
 
-}  // namespace
+// The digits from token[i] on (possibly none); i moves past them.
+std::string_view digits_at(std::string_view token, std::size_t& i) {
+    const std::size_t start = i;
+    while (i < token.size() && is_digit(token[i])) ++i;
+    return token.substr(start, i - start);
+}
 
-bool parse_rational(std::string_view token, Rational& out, std::string& error) {
+// Refuses what is no number before any scanning: nothing, a token too long
+// for big-number arithmetic, NaN and infinities.
+bool check_token(std::string_view token, std::string& error) {
     if (token.empty()) {
         error = std::string(kExpected) + ", found nothing";
         return false;
@@ -55,109 +62,91 @@ bool parse_rational(std::string_view token, Rational& out, std::string& error) {
                 " characters, found " + std::to_string(token.size());
         return false;
     }
-    {
-        std::string l = lower(token);
-        std::string_view body = l;
-        if (!body.empty() && (body[0] == '+' || body[0] == '-')) body.remove_prefix(1);
-        if (body == "nan" || body == "inf" || body == "infinity" || body.rfind("nan(", 0) == 0) {
-            error = "not a finite number: " + shown(token) + "; " + kExpected;
-            return false;
-        }
-    }
-
-    std::size_t i = 0;
-    bool negative = false;
-    if (token[i] == '+' || token[i] == '-') {
-        negative = token[i] == '-';
-        ++i;
-    }
-    const std::size_t int_start = i;
-    while (i < token.size() && is_digit(token[i])) ++i;
-    std::string_view int_digits = token.substr(int_start, i - int_start);
-
-    // Fraction p/q.
-    if (i < token.size() && token[i] == '/') {
-        if (int_digits.empty()) {
-            error = std::string(kExpected) + ", found " + shown(token) + " (no digits before '/')";
-            return false;
-        }
-        const std::size_t den_start = ++i;
-        while (i < token.size() && is_digit(token[i])) ++i;
-        std::string_view den_digits = token.substr(den_start, i - den_start);
-        if (den_digits.empty() || i != token.size()) {
-            error = std::string(kExpected) + ", found " + shown(token) +
-                    " (the denominator of p/q must be unsigned digits only)";
-            return false;
-        }
-        Integer p, q;
-        set_digits(p, int_digits);
-        set_digits(q, den_digits);
-        if (q.is_zero()) {
-            error = "zero denominator in " + shown(token);
-            return false;
-        }
-        if (negative) fmpz_neg(p.get(), p.get());
-        Rational r(p, q);  // canonicalized
-        if (too_big(r)) {
-            error = too_big_message(token);
-            return false;
-        }
-        out = std::move(r);
-        return true;
-    }
-
-    // Decimal: mantissa with optional dot, optional exponent.
-    std::string_view frac_digits;
-    bool has_dot = false;
-    if (i < token.size() && token[i] == '.') {
-        has_dot = true;
-        const std::size_t frac_start = ++i;
-        while (i < token.size() && is_digit(token[i])) ++i;
-        frac_digits = token.substr(frac_start, i - frac_start);
-    }
-    if (int_digits.empty() && frac_digits.empty()) {
-        error = std::string(kExpected) + ", found " + shown(token);
+    const std::string l = lower(token);
+    std::string_view body = l;
+    if (!body.empty() && (body[0] == '+' || body[0] == '-')) body.remove_prefix(1);
+    if (body == "nan" || body == "inf" || body == "infinity" || body.rfind("nan(", 0) == 0) {
+        error = "not a finite number: " + shown(token) + "; " + kExpected;
         return false;
     }
-    long exponent = 0;
-    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
-        ++i;
-        bool exp_negative = false;
-        if (i < token.size() && (token[i] == '+' || token[i] == '-')) {
-            exp_negative = token[i] == '-';
-            ++i;
-        }
-        const std::size_t exp_start = i;
-        while (i < token.size() && is_digit(token[i])) ++i;
-        std::string_view exp_digits = token.substr(exp_start, i - exp_start);
-        if (exp_digits.empty() || i != token.size()) {
-            error = std::string(kExpected) + ", found " + shown(token) + " (malformed exponent)";
-            return false;
-        }
-        // Skip leading zeros, then refuse exponents that cannot possibly fit.
-        std::size_t nz = 0;
-        while (nz + 1 < exp_digits.size() && exp_digits[nz] == '0') ++nz;
-        exp_digits.remove_prefix(nz);
-        if (exp_digits.size() > 7) {
-            error = too_big_message(token) + " (exponent out of range)";
-            return false;
-        }
-        exponent = std::stol(std::string(exp_digits));
-        if (exp_negative) exponent = -exponent;
-    }
-    if (i != token.size()) {
-        if (token[i] == '.' && has_dot)
-            error = std::string(kExpected) + ", found " + shown(token) + " (more than one '.')";
-        else if (token[i] == '/' && has_dot)
-            error = std::string(kExpected) + ", found " + shown(token) +
-                    " (p/q takes integers only; write the decimal alone)";
-        else
-            error = std::string(kExpected) + ", found " + shown(token);
+    return true;
+}
+
+// Stores r in out unless it is beyond kMaxRationalBits.
+bool accept(Rational r, std::string_view token, Rational& out, std::string& error) {
+    if (too_big(r)) {
+        error = too_big_message(token);
         return false;
     }
+    out = std::move(r);
+    return true;
+}
 
-    // value = (int_digits frac_digits) * 10^(exponent - len(frac_digits))
-    std::string mantissa = std::string(int_digits) + std::string(frac_digits);
+// p/q: token[i] is the '/' after the numerator's digits.
+bool parse_fraction(std::string_view token, bool negative, std::string_view int_digits, std::size_t i,
+                    Rational& out, std::string& error) {
+    if (int_digits.empty()) {
+        error = std::string(kExpected) + ", found " + shown(token) + " (no digits before '/')";
+        return false;
+    }
+    ++i;
+    const std::string_view den_digits = digits_at(token, i);
+    if (den_digits.empty() || i != token.size()) {
+        error = std::string(kExpected) + ", found " + shown(token) +
+                " (the denominator of p/q must be unsigned digits only)";
+        return false;
+    }
+    Integer p, q;
+    set_digits(p, int_digits);
+    set_digits(q, den_digits);
+    if (q.is_zero()) {
+        error = "zero denominator in " + shown(token);
+        return false;
+    }
+    if (negative) fmpz_neg(p.get(), p.get());
+    return accept(Rational(p, q), token, out, error);  // canonicalized
+}
+
+// The exponent after 'e' or 'E' (token[i]), which must end the token.
+bool parse_exponent(std::string_view token, std::size_t i, long& exponent, std::string& error) {
+    ++i;
+    bool exp_negative = false;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) {
+        exp_negative = token[i] == '-';
+        ++i;
+    }
+    std::string_view exp_digits = digits_at(token, i);
+    if (exp_digits.empty() || i != token.size()) {
+        error = std::string(kExpected) + ", found " + shown(token) + " (malformed exponent)";
+        return false;
+    }
+    // Skip leading zeros, then refuse exponents that cannot possibly fit.
+    std::size_t nz = 0;
+    while (nz + 1 < exp_digits.size() && exp_digits[nz] == '0') ++nz;
+    exp_digits.remove_prefix(nz);
+    if (exp_digits.size() > 7) {
+        error = too_big_message(token) + " (exponent out of range)";
+        return false;
+    }
+    exponent = std::stol(std::string(exp_digits));
+    if (exp_negative) exponent = -exponent;
+    return true;
+}
+
+// What is wrong with a decimal's character token[i], where the token should
+// have ended.
+std::string trailing_character_message(std::string_view token, std::size_t i, bool has_dot) {
+    if (token[i] == '.' && has_dot) return std::string(kExpected) + ", found " + shown(token) + " (more than one '.')";
+    if (token[i] == '/' && has_dot)
+        return std::string(kExpected) + ", found " + shown(token) +
+               " (p/q takes integers only; write the decimal alone)";
+    return std::string(kExpected) + ", found " + shown(token);
+}
+
+// value = (int_digits frac_digits) * 10^(exponent - len(frac_digits)), exactly.
+bool decimal_value(std::string_view token, bool negative, std::string_view int_digits, std::string_view frac_digits,
+                   long exponent, Rational& out, std::string& error) {
+    const std::string mantissa = std::string(int_digits) + std::string(frac_digits);
     Integer m;
     set_digits(m, mantissa);
     if (negative) fmpz_neg(m.get(), m.get());
@@ -177,20 +166,43 @@ bool parse_rational(std::string_view token, Rational& out, std::string& error) {
     }
     Integer ten_power;
     fmpz_ui_pow_ui(ten_power.get(), 10, static_cast<unsigned long>(shift >= 0 ? shift : -shift));
-    Rational r;
-    if (shift >= 0) {
-        Integer num;
-        fmpz_mul(num.get(), m.get(), ten_power.get());
-        r = Rational(num, Integer(1));
-    } else {
-        r = Rational(m, ten_power);
+    if (shift < 0) return accept(Rational(m, ten_power), token, out, error);
+    Integer num;
+    fmpz_mul(num.get(), m.get(), ten_power.get());
+    return accept(Rational(num, Integer(1)), token, out, error);
+}
+
+}  // namespace
+
+bool parse_rational(std::string_view token, Rational& out, std::string& error) {
+    if (!check_token(token, error)) return false;
+
+    std::size_t i = 0;
+    bool negative = false;
+    if (token[i] == '+' || token[i] == '-') {
+        negative = token[i] == '-';
+        ++i;
     }
-    if (too_big(r)) {
-        error = too_big_message(token);
+    const std::string_view int_digits = digits_at(token, i);
+    if (i < token.size() && token[i] == '/') return parse_fraction(token, negative, int_digits, i, out, error);
+
+    // Decimal: mantissa with optional dot, optional exponent.
+    std::string_view frac_digits;
+    const bool has_dot = i < token.size() && token[i] == '.';
+    if (has_dot) frac_digits = digits_at(token, ++i);
+    if (int_digits.empty() && frac_digits.empty()) {
+        error = std::string(kExpected) + ", found " + shown(token);
         return false;
     }
-    out = std::move(r);
-    return true;
+    long exponent = 0;
+    if (i < token.size() && (token[i] == 'e' || token[i] == 'E'))
+        return parse_exponent(token, i, exponent, error) &&
+               decimal_value(token, negative, int_digits, frac_digits, exponent, out, error);
+    if (i != token.size()) {
+        error = trailing_character_message(token, i, has_dot);
+        return false;
+    }
+    return decimal_value(token, negative, int_digits, frac_digits, exponent, out, error);
 }
 
 Rational parse_rational(std::string_view token) {
