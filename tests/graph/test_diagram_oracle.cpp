@@ -6,6 +6,7 @@
 // reject.
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
+#include "sites/packing_generator.hpp"
 #include "sites/site_generators.hpp"
 #include "tests/support/ellipse_graph.hpp"
 #include "tests/support/graph_shape.hpp"
@@ -230,6 +231,19 @@ TEST_CASE("oracle: graphs of random disjoint ellipses", "[oracle]") {
             INFO(count << " ellipses, seed " << seed);
             CHECK(check_built(generated(SiteKind::ellipses, count, seed, 0, 0)) == "");
         }
+}
+
+TEST_CASE("oracle: graphs of dense packings (gaps 10^-3 and 10^-6, packing fraction 0.58)", "[oracle][packing]") {
+    for (const auto& [count, gap] : {std::pair<long, Rational>{2000, Rational(1, 1000)},
+                                     std::pair<long, Rational>{300, Rational(1, 1000000)}}) {
+        PackingOptions o;
+        o.count = count;
+        o.fraction = Rational(58, 100);
+        o.gap = gap;
+        o.seed = 2;
+        INFO(describe(o));
+        CHECK(check_built(generate_packing(o).sites) == "");
+    }
 }
 
 TEST_CASE("oracle: graphs of thin ellipses (aspect ratio 10 to 100)", "[oracle]") {
