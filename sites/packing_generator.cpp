@@ -1,5 +1,6 @@
 #include "sites/packing_generator.hpp"
 
+#include "sites/separating_slab.hpp"
 #include "sites/site_generators.hpp"
 #include "util/error.hpp"
 
@@ -30,32 +31,13 @@ const Rational& pi_upper() { static const Rational p(Integer(314159265358980L), 
 
 double dyadic(std::int64_t numerator, int bits) { return std::ldexp(static_cast<double>(numerator), -bits); }
 
-// A site during the generation: integer numerators on the grids above and
-// their exact doubles; cos and sin of the rotation as intervals (exact
-// rationals (1 - w^2)/(1 + w^2), 2w/(1 + w^2), rounded outward) and as doubles
-// (for the direction search only).
+// A site during the generation: integer numerators on the grids above (its
+// SlabSite holds their exact doubles).
 struct PackSite {
     std::int64_t m = 0, k = 0, j = 0, x = 0, y = 0;
     std::int64_t m_cap = 0;  // kMaxGrowth times the start
     bool frozen = false;
 };
-
-// What the slab test needs of a site: axes, rotation and center as intervals
-// (exact doubles are point intervals), and doubles for the search.
-struct Frame {
-    Interval a, b, cos, sin, xc, yc;
-    double ad, bd, cd, sd, xd, yd;
-};
-
-Frame frame_of(const Interval& a, const Interval& b, const Interval& c, const Interval& s, const Interval& x,
-               const Interval& y) {
-    return {a, b, c, s, x, y, a.mid(), b.mid(), c.mid(), s.mid(), x.mid(), y.mid()};
-}
-
-Frame frame_of(const Ellipse& e) {
-    const Ellipse::Enclosure& q = e.enclosure();
-    return frame_of(q.a, q.b, q.cos, q.sin, q.xc, q.yc);
-}
 
 // cos and sin of the rotation for w = j / 2^20: w^2, 1 - w^2, 1 + w^2 and 2w
 // are exact doubles, so one outward-rounded division each.
@@ -65,83 +47,8 @@ std::pair<Interval, Interval> rotation(std::int64_t j) {
     return {Interval(1 - w * w) / den, Interval(2 * w) / den};
 }
 
-// Support function of the centered ellipse in the direction (nx, ny), doubles.
-double support(const Frame& f, double nx, double ny) {
-    const double nu = nx * f.cd + ny * f.sd, nv = ny * f.cd - nx * f.sd;
-    return std::sqrt(f.ad * f.ad * nu * nu + f.bd * f.bd * nv * nv);
-}
-// The same, certified (nx, ny exact).
-Interval support_enclosure(const Frame& f, double nx, double ny) {
-    const Interval nu = nx * f.cos + ny * f.sin, nv = ny * f.cos - nx * f.sin;
-    return ((f.a * nu).square() + (f.b * nv).square()).sqrt();
-}
-
-// The direction rotated from d = (dx, dy) by the angle 2 atan(t), unnormalized.
-std::pair<double, double> direction(double dx, double dy, double t) {
-    const double c = 1 - t * t, s = 2 * t;
-    return {c * dx - s * dy, s * dx + c * dy};
-}
-
-// The largest scale of p (about its center) that keeps a slab of width >= gap
-// normal to n between p and q, in doubles (the search) ...
-double slab_scale(const Frame& p, const Frame& q, double gap, double nx, double ny) {
-    const double dx = q.xd - p.xd, dy = q.yd - p.yd;
-    return (nx * dx + ny * dy - support(q, nx, ny) - gap * std::sqrt(nx * nx + ny * ny)) / support(p, nx, ny);
-}
-// ... and a certified lower bound of it (0 when none is proven).
-double slab_scale_lower(const Frame& p, const Frame& q, double gap_upper, double nx, double ny) {
-    const Interval along = nx * (q.xc - p.xc) + ny * (q.yc - p.yc);
-    const Interval norm = (Interval(nx).square() + Interval(ny).square()).sqrt();
-    const Interval room = along - support_enclosure(q, nx, ny) - gap_upper * norm;
-    const Interval hp = support_enclosure(p, nx, ny);
-    if (!room.positive() || !hp.positive()) return 0;
-    return (room / hp).lo;
-}
-
-// The direction (as the parameter t of `direction` from the line of centers)
-// that maximizes slab_scale: every separating direction of two disjoint convex
-// sets lies within a right angle of the line of centers, and those with scale
-// >= s form an arc (quasi-concave), so a coarse scan and a golden-section
-// search find it (the result is only used as a candidate to certify).
-double best_direction(const Frame& p, const Frame& q, double gap) {
-    const double dx = q.xd - p.xd, dy = q.yd - p.yd;
-    auto value = [&](double t) {
-        const auto n = direction(dx, dy, t);
-        return slab_scale(p, q, gap, n.first, n.second);
-    };
-    constexpr int kScan = 16;
-    int best = kScan / 2;
-    double best_value = value(0);
-    for (int i = 0; i <= kScan; ++i) {
-        const double v = value(-1 + 2.0 * i / kScan);
-        if (v > best_value) best_value = v, best = i;
-    }
-    double lo = -1 + 2.0 * std::max(best - 1, 0) / kScan, hi = -1 + 2.0 * std::min(best + 1, kScan) / kScan;
-    const double r = 0.6180339887498949;
-    double t1 = hi - r * (hi - lo), t2 = lo + r * (hi - lo);
-    double v1 = value(t1), v2 = value(t2);
-    for (int it = 0; it < 48; ++it) {
-        if (v1 < v2) {
-            lo = t1, t1 = t2, v1 = v2, t2 = lo + r * (hi - lo), v2 = value(t2);
-        } else {
-            hi = t2, t2 = t1, v2 = v1, t1 = hi - r * (hi - lo), v1 = value(t1);
-        }
-    }
-    return v1 < v2 ? t2 : t1;
-}
-
-// A certified lower bound of the largest scale of p keeping it gap away from
-// q (0 when none is proven); `enough`: stop as soon as this much is proven.
-double certified_scale(const Frame& p, const Frame& q, double gap, double gap_upper, double enough) {
-    const double dx = q.xd - p.xd, dy = q.yd - p.yd;
-    const double along_centers = slab_scale_lower(p, q, gap_upper, dx, dy);
-    if (along_centers >= enough) return along_centers;
-    const auto n = direction(dx, dy, best_direction(p, q, gap));
-    return std::max(along_centers, slab_scale_lower(p, q, gap_upper, n.first, n.second));
-}
-
 // A certified lower bound of the largest scale of p keeping it inside [0, L]^2.
-double wall_scale(const Frame& p, double side) {
+double wall_scale(const SlabSite& p, double side) {
     const Interval hx = support_enclosure(p, 1, 0), hy = support_enclosure(p, 0, 1), L(side);
     return std::min({(p.xc / hx).lo, ((L - p.xc) / hx).lo, (p.yc / hy).lo, ((L - p.yc) / hy).lo});
 }
@@ -212,9 +119,9 @@ std::string describe(const PackingOptions& o) {
 }
 
 bool packing_pair_certified(const Ellipse& e1, const Ellipse& e2, const Rational& gap) {
-    const Frame p = frame_of(e1), q = frame_of(e2);
+    const SlabSite p = SlabSite::of(e1), q = SlabSite::of(e2);
     const Interval g = enclose(gap);
-    return certified_scale(p, q, g.mid(), g.hi, 1) >= 1;
+    return certified_separating_scale(p, q, g.mid(), g.hi, 1) >= 1;
 }
 
 Packing generate_packing(const PackingOptions& o) {
@@ -278,18 +185,18 @@ Packing generate_packing(const PackingOptions& o) {
     double largest_axis = 0;  // of the sites placed, an upper bound
 
     std::vector<PackSite> sites;
-    std::vector<Frame> frames;
+    std::vector<SlabSite> frames;
     sites.reserve(static_cast<std::size_t>(o.count));
     frames.reserve(static_cast<std::size_t>(o.count));
     auto make_frame = [&](const PackSite& s) {
         const auto rot = rotation(s.j);
         const double b = dyadic(s.m, kAxisBits), a = dyadic(s.k * s.m, kAxisBits + kAspectBits);
-        return frame_of(Interval(a), Interval(b), rot.first, rot.second, Interval(dyadic(s.x, kCenterBits)),
+        return SlabSite::of(Interval(a), Interval(b), rot.first, rot.second, Interval(dyadic(s.x, kCenterBits)),
                         Interval(dyadic(s.y, kCenterBits)));
     };
     // The sites that may come within the gap of p when p is scaled by at most
     // `scale` (the others' bounding circles stay apart: certified).
-    auto for_each_near = [&](const Frame& p, double scale, std::size_t self, auto&& visit) {
+    auto for_each_near = [&](const SlabSite& p, double scale, std::size_t self, auto&& visit) {
         const Interval reach_p = scale * p.a;
         const double reach_all = Interval::up(Interval::up(reach_p.hi + largest_axis) + gap_upper);
         const long x0 = cell_of(p.xd - reach_all), x1 = cell_of(p.xd + reach_all);
@@ -298,7 +205,7 @@ Packing generate_packing(const PackingOptions& o) {
             for (long j = y0; j <= y1; ++j)
                 for (std::int32_t id : grid[static_cast<std::size_t>(i * cells + j)]) {
                     if (static_cast<std::size_t>(id) == self) continue;
-                    const Frame& q = frames[static_cast<std::size_t>(id)];
+                    const SlabSite& q = frames[static_cast<std::size_t>(id)];
                     const Interval d2 = (q.xc - p.xc).square() + (q.yc - p.yc).square();
                     const Interval reach = reach_p + q.a + Interval(gap_upper);
                     if (d2.lo > reach.square().hi) continue;
@@ -325,10 +232,10 @@ Packing generate_packing(const PackingOptions& o) {
         for (long attempt = 0; attempt < kPlacementAttempts && !placed; ++attempt) {
             s.x = margin + static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(span) + 1));
             s.y = margin + static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(span) + 1));
-            const Frame f = make_frame(s);
+            const SlabSite f = make_frame(s);
             placed = wall_scale(f, static_cast<double>(side)) >= 1 &&
-                     for_each_near(f, 1.0, sites.size(), [&](std::size_t, const Frame& q) {
-                         return certified_scale(f, q, gap, gap_upper, 1) >= 1;
+                     for_each_near(f, 1.0, sites.size(), [&](std::size_t, const SlabSite& q) {
+                         return certified_separating_scale(f, q, gap, gap_upper, 1) >= 1;
                      });
             if (placed) {
                 grid[static_cast<std::size_t>(cell_of(f.xd) * cells + cell_of(f.yd))].push_back(
@@ -357,10 +264,10 @@ Packing generate_packing(const PackingOptions& o) {
             const std::int64_t wanted = std::min(s.m_cap, s.m * kPassGrowthNum / kPassGrowthDen);
             if (wanted <= s.m) { s.frozen = true; continue; }
             const double want_scale = static_cast<double>(wanted) / static_cast<double>(s.m);
-            const Frame& p = frames[i];
+            const SlabSite& p = frames[i];
             double scale = std::min(want_scale, wall_scale(p, static_cast<double>(side)));
-            for_each_near(p, want_scale, i, [&](std::size_t, const Frame& q) {
-                scale = std::min(scale, certified_scale(p, q, gap, gap_upper, scale));
+            for_each_near(p, want_scale, i, [&](std::size_t, const SlabSite& q) {
+                scale = std::min(scale, certified_separating_scale(p, q, gap, gap_upper, scale));
                 return true;
             });
             // m' <= scale m exactly: the product rounded down.
@@ -387,10 +294,10 @@ Packing generate_packing(const PackingOptions& o) {
     // Every pair and wall again, from the final sizes alone: the guarantee does
     // not rest on the bookkeeping of the passes.
     for (std::size_t i = 0; i < sites.size(); ++i) {
-        const Frame& p = frames[i];
+        const SlabSite& p = frames[i];
         bool ok = wall_scale(p, static_cast<double>(side)) >= 1 &&
-                  for_each_near(p, 1.0, i, [&](std::size_t, const Frame& q) {
-                      return certified_scale(p, q, gap, gap_upper, 1) >= 1;
+                  for_each_near(p, 1.0, i, [&](std::size_t, const SlabSite& q) {
+                      return certified_separating_scale(p, q, gap, gap_upper, 1) >= 1;
                   });
         if (!ok) throw Error("packing: internal error: site " + std::to_string(i) + " not certified at the end");
     }

@@ -20,8 +20,8 @@
 // Certified: a pair is accepted only with a separating slab of width >= G, a
 // direction n with n.(c2 - c1) - h1(n) - h2(n) >= G |n| (h the support
 // functions of the centered ellipses, sqrt(a^2 (n.u)^2 + b^2 (n.v)^2)),
-// evaluated in outward-rounded double intervals (util/interval.hpp) on the
-// exact parameters. Every parameter is a dyadic rational that is an exact
+// evaluated in outward-rounded double intervals on the exact parameters
+// (sites/separating_slab.hpp, which also searches the direction). Every parameter is a dyadic rational that is an exact
 // double: b = m / 2^24, a = k b / 2^12 (the aspect ratio k / 2^12 in
 // [LO, HI] exactly), w = j / 2^20, the center on the grid 2^-40.
 //
