@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
         return 2;
     std::vector<long> sizes = {2000};
     if (args.full) sizes.insert(sizes.end(), {10000, 100000});
-    const std::string started = loadavg();
+    const std::string started = loadavg(), source = source_state();  // before any edit made during the run
     std::vector<Row> rows;
     bool anomaly = false;
     for (long n : sizes) {
@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
        << "Command: `" << args.command << "`  \n"
        << "Machine: " << cpu_model() << ", Debian 12 (VM shared with other jobs); load average " << started
        << " at the start, " << loadavg() << " at the end  \n"
-       << "Source: " << source_state() << "  \n"
+       << "Source: " << source << " (at the start)  \n"
        << "Date: " << date << "\n\n"
        << "packing-G: `ellvor generate packing --count n --packing-fraction 0.58 --gap G --seed 1` (aspect 1..4); "
           "ellipses: `ellvor generate ellipses --count n --seed 1`. Build: DelaunayGraph::insert_all, CPU time of "
