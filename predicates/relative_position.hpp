@@ -26,7 +26,8 @@ enum class RelativePosition {
 const char* relative_position_name(RelativePosition p);
 
 // Always decided: by the filter (bounding circles or extents along the line
-// of the centers apart) or exactly (the intersection quartic).
+// of the centers apart, or a slab between two ellipses along a searched
+// direction) or exactly (the intersection quartic).
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2);
 
 // The filter's first step alone: the circumscribed circles (radius max(a, b))

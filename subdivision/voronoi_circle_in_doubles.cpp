@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ellvor {
 namespace {
@@ -253,14 +254,43 @@ private:
     bool usable_ = false;
 };
 
+// The fraction of the Newton correction to take from x: 1, halved (at most
+// 5 times) while the step does not lower the residual |F|^2. Far from the
+// circle a full step can overshoot around elongated sites that nearly touch
+// (dense packings) and cycle; near it the full step is taken.
+double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<bool, 3>& flipped,
+                   const std::array<double, 6>& x, const std::array<double, 6>& F, const Vector6& correction) {
+    constexpr int kHalvings = 6;
+    double residual = 0;
+    for (double f : F) residual += f * f;
+    double step = 1;
+    for (int halvings = 1; halvings < kHalvings; ++halvings, step /= 2) {
+        std::array<double, 6> trial = x, trial_F;
+        std::array<bool, 3> trial_flipped = flipped;
+        for (int i = 0; i < 6; ++i) trial[i] -= step * correction[i];
+        for (int i = 0; i < 3; ++i)
+            if (std::fabs(trial[i]) > 1) trial[i] = -1 / trial[i], trial_flipped[i] = !trial_flipped[i];
+        std::array<BoundaryPoint<double>, 3> at;
+        tritangent_system<double>(shape, trial_flipped, trial, trial_F, nullptr, at);
+        double trial_residual = 0;
+        for (double f : trial_F) trial_residual += f * f;
+        if (trial_residual < residual) break;
+    }
+    return step;
+}
+
 // Newton in doubles in the charts from x, then the Krawczyk certificate;
 // `shape` and `enclosed` are the sites in doubles and enclosed. Keeps each
-// parameter in the chart where it is at most 1 in magnitude.
+// parameter in the chart where it is at most 1 in magnitude. `damped`: steps
+// by damped_step, and more of them (the retry of a start that did not
+// converge); `diverged` (if given) says whether Newton failed to converge.
 std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<double>, 3>& shape,
                                                        const std::array<Shape<Interval>, 3>& enclosed,
                                                        std::array<bool, 3> flipped, std::array<double, 6> x,
-                                                       double length_scale) {
-    constexpr int kSteps = 12;
+                                                       double length_scale, bool damped = false,
+                                                       bool* diverged = nullptr) {
+    if (diverged) *diverged = true;
+    const int kSteps = damped ? 30 : 12;
     constexpr double kConverged = 1e-13;  // relative step size
     // An ill-conditioned root (a circle 10^4 times the sites' size or more)
     // stops Newton at the rounding noise, far above kConverged: a step that
@@ -281,8 +311,9 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         const Vector6 correction = newton.solve(F);
         if (!correction.allFinite()) return std::nullopt;
         double relative = 0;
+        const double fraction = damped ? damped_step(shape, flipped, x, F, correction) : 1.0;
         for (int i = 0; i < 6; ++i) {
-            x[i] -= correction[i];
+            x[i] -= fraction * correction[i];
             const double unit = i < 3 ? 1.0 : length_scale;
             relative = std::fmax(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
@@ -293,6 +324,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         if (converged) Y = newton.inverse();
     }
     if (!converged || !Y.allFinite()) return std::nullopt;
+    if (diverged) *diverged = false;
     const std::optional<std::array<Interval, 6>> box =
         krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
     if (!box) return std::nullopt;
@@ -321,6 +353,12 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
     // circles, close for a circle large or far against the site):
     // (cos theta, sin theta) = (a d_u, b d_v)/|(a d_u, b d_v)| for the
     // direction d from the site's center in its frame.
+    struct Retry {
+        std::array<bool, 3> flipped;
+        std::array<double, 6> x;
+        double length_scale;
+    };
+    std::vector<Retry> retries;
     for (CircleModel model : kCircleModels)
         for (const std::array<double, 3>& circle : model_apollonius_circles(e1, e2, e3, model)) {
             std::array<double, 6> x;
@@ -336,9 +374,19 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
                 x[i] = flipped[i] ? -s / (1 - c) : s / (1 + c);
             }
             if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) continue;
-            if (auto certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, circle[0])))
+            bool diverged = false;
+            if (auto certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, circle[0]), false,
+                                                     &diverged))
                 return certified;
+            if (diverged) retries.push_back({flipped, x, std::max(size, circle[0])});
         }
+    // The starts where plain Newton did not converge, again with damped steps
+    // (elongated sites that nearly touch, as in dense packings: the full
+    // step overshoots and cycles). Only after every plain start failed, so
+    // the inputs those decide cost the same as before.
+    for (const Retry& r : retries)
+        if (auto certified = newton_then_certify(shape, enclosed, r.flipped, r.x, r.length_scale, true))
+            return certified;
     // Circles far larger than the sites (three sites nearly on a line): the
     // models' circles may lead Newton to the clockwise one; the tangent-line
     // starts of huge_circle_start.hpp lead to the right one.

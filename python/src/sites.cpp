@@ -1,6 +1,7 @@
 // ellvor.Ellipse, ellvor.Sites, read_sites and generate.
 #include "python/src/bindings.hpp"
 
+#include "sites/packing_generator.hpp"
 #include "sites/site_generators.hpp"
 #include "util/error.hpp"
 
@@ -85,11 +86,53 @@ py::array_t<double> sites_array(const Sites& s) {
     return out;
 }
 
+// `ellvor generate packing` (sites/packing_generator.hpp), with its checks as ValueErrors.
+Sites generate_packing_sites(long count, std::uint64_t seed, py::handle packing_fraction, py::handle gap,
+                             py::handle aspect) {
+    if (count < kMinPackingCount || count > 1'000'000)
+        throw py::value_error("count: expected an integer in [" + std::to_string(kMinPackingCount) +
+                              ", 1000000] for 'packing'");
+    if (packing_fraction.is_none()) throw py::value_error("packing_fraction: required for 'packing'");
+    PackingOptions o;
+    o.count = count;
+    o.seed = seed;
+    o.fraction = to_rational(packing_fraction, "packing_fraction");
+    if (o.fraction.sign() <= 0 || o.fraction > max_packing_fraction())
+        throw py::value_error("packing_fraction: expected a rational in (0, " + max_packing_fraction().str() +
+                              "], got " + o.fraction.str());
+    if (!gap.is_none()) o.gap = to_rational(gap, "gap");
+    if (o.gap.sign() < 0 || o.gap > Rational(1, 10))
+        throw py::value_error("gap: expected a rational in [0, 1/10], got " + o.gap.str());
+    if (!aspect.is_none()) {
+        const auto range = aspect.cast<py::tuple>();
+        if (range.size() != 2) throw py::value_error("aspect: expected a pair (lo, hi)");
+        o.aspect_lo = to_rational(range[0], "aspect");
+        o.aspect_hi = to_rational(range[1], "aspect");
+    }
+    if (o.aspect_lo < Rational(1) || o.aspect_hi < o.aspect_lo || o.aspect_hi > Rational(16))
+        throw py::value_error("aspect: expected 1 <= lo <= hi <= 16, got (" + o.aspect_lo.str() + ", " +
+                              o.aspect_hi.str() + ")");
+    Sites s;
+    {
+        py::gil_scoped_release release;
+        try {
+            s.file.sites = generate_packing(o).sites;
+        } catch (const Error& e) {
+            throw py::value_error(e.what());  // a fraction the sites jam below, as for the CLI
+        }
+    }
+    return s;
+}
+
 Sites generate(const std::string& kind, long count, std::uint64_t seed, long bits, py::handle box,
-               py::handle nested_fraction, py::handle crossing) {
+               py::handle nested_fraction, py::handle crossing, py::handle packing_fraction, py::handle gap,
+               py::handle aspect) {
+    if (kind == "packing") return generate_packing_sites(count, seed, packing_fraction, gap, aspect);
+    if (!packing_fraction.is_none() || !gap.is_none() || !aspect.is_none())
+        throw py::value_error("packing_fraction, gap and aspect apply to kind 'packing' only");
     // The checks of `ellvor generate` (cli/command_generate.cpp), as ValueErrors.
     if (kind != "ellipses" && kind != "circles" && kind != "nested")
-        throw py::value_error("kind: expected 'ellipses', 'circles' or 'nested', got '" + kind + "'");
+        throw py::value_error("kind: expected 'ellipses', 'circles', 'nested' or 'packing', got '" + kind + "'");
     if (count < 0 || count > 1'000'000) throw py::value_error("count: expected an integer in [0, 1000000]");
     if (bits < 1 || bits > kMaxGeneratorBits)
         throw py::value_error("bits: expected an integer in [1, " + std::to_string(kMaxGeneratorBits) + "]");
@@ -201,6 +244,7 @@ void bind_sites(py::module_& m) {
     m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");
     m.def("generate", &generate, py::arg("kind") = "ellipses", py::arg("count") = 10, py::arg("seed") = 1,
           py::arg("bits") = 8, py::arg("box") = 100, py::arg("nested_fraction") = py::none(), py::arg("crossing") = 0,
+          py::arg("packing_fraction") = py::none(), py::arg("gap") = py::none(), py::arg("aspect") = py::none(),
           "Random sites as `ellvor generate KIND --count COUNT ...` writes them: the same\n"
           "arguments give the same Sites on every machine. kind is 'ellipses', 'circles'\n"
           "or 'nested' (ellipses, nested_fraction 1/4 by default); numbers are exact (an\n"
@@ -208,7 +252,13 @@ void bind_sites(py::module_& m) {
           "sites lie inside another; exactly round(crossing * count) cross at least one\n"
           "other site, their boundaries meeting in exactly two points, and the others\n"
           "cross none (nested sites never cross; a count of 1 is a ValueError). Raises\n"
-          "ValueError for bad arguments or too many sites for the box.");
+          "ValueError for bad arguments or too many sites for the box.\n"
+          "kind 'packing' (`ellvor generate packing`): count (>= 30) random ellipses in the\n"
+          "box [0, L]^2, L = ceil(sqrt(count)), at packing fraction pi sum(a b) / L^2 >=\n"
+          "packing_fraction (required), every two at distance >= gap (default 1/1000,\n"
+          "certified), aspect ratios in aspect = (lo, hi) (default (1, 4)); a fraction the\n"
+          "sites jam below is a ValueError saying the fraction reached. bits, box,\n"
+          "nested_fraction and crossing do not apply.");
 }
 
 }  // namespace ellvor::python

@@ -721,3 +721,27 @@ TEST_CASE("degenerate edge in the traits: apart in doubles is the filter's no", 
     CHECK(traits.stats()[Predicate::is_degenerate_edge].stages[Stage::exact] == 1);
     CHECK(traits.stats()[Predicate::is_degenerate_edge].calls == 2);
 }
+
+TEST_CASE("kappa4 beside close, not tangent sites: decided by the filter; tangent ones by the exact stage",
+          "[predicates][kappa4][slab]") {
+    // The bisector of two needles 10^-3 apart, side by side and offset (the
+    // line of their centers does not separate them), against a Q above: the
+    // Voronoi circle count needs the sites' relative positions, which the
+    // searched slab proves (relative_position.cpp); before it, the intersection
+    // quartic decided them and made the whole kappa4 call exact.
+    const Ellipse e1(4, Rational(1, 4), 0, 0, 0), e2(4, Rational(1, 4), 0, 3, Rational(501, 1000));
+    const Ellipse q(1, Rational(1, 2), Rational(1, 5), Rational(-2), Rational(3));
+    for (bool b : {false, true}) {
+        const Decision<bool> d = finite_edge_interior_conflict(e1, e2, q, b);
+        INFO("b = " << b);
+        REQUIRE(d.is_decided());
+        CHECK(stage_name(d.stage) == std::string(stage_name(Stage::filter)));
+        // tangent sites (one above the other, touching at (0, 1/4)) need the exact stage
+        const Ellipse touching(4, Rational(1, 4), 0, 0, Rational(1, 2));
+        const Decision<bool> t = finite_edge_interior_conflict(e1, touching, q, b);
+        REQUIRE(t.is_decided());
+        CHECK(stage_name(t.stage) == std::string(stage_name(Stage::exact)));
+    }
+    const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, q);
+    CHECK(stage_name(count.stage) == std::string(stage_name(Stage::filter)));
+}

@@ -263,3 +263,37 @@ TEST_CASE("relative position of two circles (closed form) against the intersecti
     for (int k = 0; k < 8; ++k)  // every position, tangencies included (identical pairs are rare)
         CHECK(seen[k] >= (k == static_cast<int>(RP::identical) ? 1 : 10));
 }
+
+TEST_CASE("relative position: close sites apart off the line of the centers, by the searched slab (filter)",
+          "[predicates][relative-position][slab]") {
+    // Needles 4 by 1/4 side by side, offset along and 10^-3 (then 10^-9)
+    // apart across: the bounding circles and the extents along the line of
+    // the centers overlap; a slab along a searched direction decides.
+    for (const Rational& gap : {q(1, 1000), q(1, 1000000000)}) {
+        const Ellipse low(4, q(1, 4), 0, 0, 0), high(4, q(1, 4), 0, 3, q(1, 2) + gap);
+        CHECK_FALSE(bounding_circles_apart_in_doubles(low, high));
+        expect2(low, high, RP::separated, Stage::filter);
+        // rotated by w = 1/3 about the origin: still decided by the filter
+        const Rational c = q(8, 10), s = q(6, 10);  // cos, sin of the rotation for w = 1/3
+        const Ellipse rlow(4, q(1, 4), q(1, 3), 0, 0),
+            rhigh(4, q(1, 4), q(1, 3), Rational(3) * c - (q(1, 2) + gap) * s, Rational(3) * s + (q(1, 2) + gap) * c);
+        expect2(rlow, rhigh, RP::separated, Stage::filter);
+        CHECK(boundary_meeting_points(rlow, rhigh) == 0);
+        CHECK(is_hidden(rlow, rhigh) == false);
+    }
+}
+
+TEST_CASE("relative position: tangent and nearly tangent needles still reach the exact stage",
+          "[predicates][relative-position][slab]") {
+    const Ellipse low(4, q(1, 4), 0, 0, 0);
+    // touching at (0, 1/4): externally tangent, exactly
+    expect2(low, Ellipse(4, q(1, 4), 0, 0, q(1, 2)), RP::externally_tangent, Stage::exact);
+    // (offset by 3 along, the same needles are 0.036 apart: the slab decides)
+    expect2(low, Ellipse(4, q(1, 4), 0, 3, q(1, 2)), RP::separated, Stage::filter);
+    // 2^-70 apart: below what doubles can prove, so the exact stage says separated
+    Rational tiny(1);
+    fmpq_div_2exp(tiny.get(), tiny.get(), 70);
+    expect2(low, Ellipse(4, q(1, 4), 0, 0, q(1, 2) + tiny), RP::separated, Stage::exact);
+    // 2^-70 overlapping: crossing, exactly
+    expect2(low, Ellipse(4, q(1, 4), 0, 0, q(1, 2) - tiny), RP::intersecting, Stage::exact);
+}

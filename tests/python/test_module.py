@@ -1,6 +1,7 @@
 """The module as a whole: the import line of the README, what build() accepts,
 generate()'s checks, writing sites, and the scripts that use the module."""
 
+import math
 import os
 import pathlib
 import shutil
@@ -206,3 +207,25 @@ def test_the_results_charts(root, tmp_path):
     run_python(str(root / "experiments" / "plot_results.py"), "--dir", str(tmp_path), cwd=tmp_path)
     for name in ("build_scaling", "precision_vs_time", "degeneracy_stress"):
         assert pathlib.Path(tmp_path / f"{name}.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_generate_packing_as_the_cli(cli, write_sites):
+    sites = ellvor.generate("packing", count=300, seed=5, packing_fraction="0.58", gap="1/1000", aspect=(1, 3))
+    _, text, _ = cli("generate", "packing", "--count", 300, "--seed", 5, "--packing-fraction", "0.58", "--gap",
+                     "1/1000", "--aspect", "1..3")
+    assert list(sites) == list(ellvor.read_sites(write_sites(text)))
+    assert list(ellvor.generate("packing", count=300, seed=5, packing_fraction="29/50", aspect=("1", "3"))) == list(sites)
+    # The fraction reached, from the exact parameters: at least 0.58 of the box [0, 18]^2.
+    area = sum(Fraction(e.a) * Fraction(e.b) for e in sites)
+    assert math.pi * float(area) / 18**2 >= 0.58
+    assert all(1 <= Fraction(e.a) / Fraction(e.b) <= 3 for e in sites)
+    assert ellvor.build(sites).validate() == ""
+    for kwargs in ({}, {"packing_fraction": 0}, {"packing_fraction": "0.9"}, {"packing_fraction": "0.84"},
+                   {"packing_fraction": "0.5", "gap": -1}, {"packing_fraction": "0.5", "aspect": (2, 1)},
+                   {"packing_fraction": "0.5", "aspect": (1, 2, 3)}, {"packing_fraction": "0.5", "count": 10}):
+        with pytest.raises(ValueError):
+            ellvor.generate("packing", **{"count": 100, **kwargs})
+    with pytest.raises(ValueError, match="jammed at 0"):
+        ellvor.generate("packing", count=100, packing_fraction="0.84")
+    with pytest.raises(ValueError):
+        ellvor.generate("ellipses", count=10, gap="1/100")
