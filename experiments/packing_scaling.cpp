@@ -1,4 +1,4 @@
-// Dense packings against sparse random ellipses (issue 24): build time per
+// Dense packings against sparse random ellipses: build time per
 // insertion, the stage shares of kappa4 (finite edges) and is_hidden, and
 // peak memory, in the same run.
 //
@@ -21,9 +21,10 @@
 // program exit with status 1.
 #include "experiments/peak_memory.hpp"
 #include "experiments/predicate_stages.hpp"
+#include "experiments/report.hpp"
 #include "experiments/run_environment.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "sites/packing_generator.hpp"
 #include "sites/site_generators.hpp"
 #include "util/error.hpp"
@@ -41,12 +42,6 @@ using namespace ellvor;
 using namespace ellvor::experiments;
 
 namespace {
-
-std::string fmt(const char* f, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, x);
-    return buf;
-}
 
 std::string percent(const PredicateCount& p, Stage s) {
     return p.calls ? fmt("%.2f%%", 100.0 * static_cast<double>(p.stages[s]) / static_cast<double>(p.calls)) : "-";
@@ -85,6 +80,37 @@ Row measure(const std::string& set, const std::vector<Ellipse>& sites, double ge
     return r;
 }
 
+Table build_table(const std::vector<Row>& rows) {
+    Table table("builds", {"set", "n", "fraction reached", "generate (s)", "build CPU (s)", "reps", "per insertion (us)",
+                           "vs ellipses", "peak memory (MB)", "kappa4 finite exact", "is_hidden exact", "graph"},
+                "lrlrrrrrrrrl");
+    for (const Row& r : rows) {
+        double sparse = 0;
+        for (const Row& s : rows)
+            if (s.set == "ellipses" && s.n == r.n) sparse = s.build.cpu;
+        table.add({r.set, integer(r.n), r.fraction.empty() ? "-" : r.fraction,
+                   r.set == "ellipses" ? "-" : fmt("%.2f", r.generate_s), fmt("%.3f", r.build.cpu),
+                   integer(r.build.reps), fmt("%.1f", 1e6 * r.build.cpu / static_cast<double>(r.n)),
+                   sparse > 0 ? fmt("%.2fx", r.build.cpu / sparse) : "-",
+                   r.peak_kb >= 0 ? fmt("%.1f", r.peak_kb / 1024.0) : "-",
+                   percent(r.stats[Predicate::finite_edge_interior_conflict], Stage::exact),
+                   percent(r.stats[Predicate::is_hidden], Stage::exact), r.valid});
+    }
+    return table;
+}
+
+Table predicate_table(const std::vector<Row>& rows) {
+    std::vector<std::string> columns = {"set", "n"};
+    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
+    Table table("predicates", columns, "lr" + std::string(kPredicates.size(), 'l'));
+    for (const Row& r : rows) {
+        TableRow row = {r.set, integer(r.n)};
+        for (const std::string& cell : predicate_stage_triples(r.stats)) row.push_back(cell);
+        table.add(std::move(row));
+    }
+    return table;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,7 +119,7 @@ int main(int argc, char** argv) {
         return 2;
     std::vector<long> sizes = {2000};
     if (args.full) sizes.insert(sizes.end(), {10000, 100000});
-    const std::string started = loadavg(), source = source_state();  // before any edit made during the run
+    Report report("Dense packings against sparse random ellipses", "packing_scaling", args.command);
     std::vector<Row> rows;
     bool anomaly = false;
     for (long n : sizes) {
@@ -123,53 +149,21 @@ int main(int argc, char** argv) {
         }
     }
 
-    std::ostringstream md;
-    const std::time_t now = std::time(nullptr);
-    char date[64];
-    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    md << "# Dense packings against sparse random ellipses (issue 24)\n\n"
-       << "Command: `" << args.command << "`  \n"
-       << "Machine: " << cpu_model() << ", Debian 12 (VM shared with other jobs); load average " << started
-       << " at the start, " << loadavg() << " at the end  \n"
-       << "Source: " << source << " (at the start)  \n"
-       << "Date: " << date << "\n\n"
-       << "packing-G: `ellvor generate packing --count n --packing-fraction 0.58 --gap G --seed 1` (aspect 1..4); "
-          "ellipses: `ellvor generate ellipses --count n --seed 1`. Build: DelaunayGraph::insert_all, CPU time of "
-          "the build only (median of `reps` builds); per insertion = build / n. Peak memory: one build in a forked "
-          "child, VmHWM minus the RSS at the fork (sites already made). Stages: share of the calls decided by the "
-          "exact stage.\n\n"
-       << "| set | n | fraction reached | generate (s) | build CPU (s) | reps | per insertion (us) | vs ellipses | "
-          "peak memory (MB) | kappa4 finite exact | is_hidden exact | graph |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const Row& r : rows) {
-        double sparse = 0;
-        for (const Row& s : rows)
-            if (s.set == "ellipses" && s.n == r.n) sparse = s.build.cpu;
-        md << "| " << r.set << " | " << r.n << " | " << (r.fraction.empty() ? "-" : r.fraction) << " | "
-           << (r.set == "ellipses" ? "-" : fmt("%.2f", r.generate_s)) << " | " << fmt("%.3f", r.build.cpu) << " | "
-           << r.build.reps << " | " << fmt("%.1f", 1e6 * r.build.cpu / static_cast<double>(r.n)) << " | "
-           << (sparse > 0 ? fmt("%.2fx", r.build.cpu / sparse) : "-") << " | "
-           << (r.peak_kb >= 0 ? fmt("%.1f", r.peak_kb / 1024.0) : "-") << " | " << percent(r.stats.finite_edge, Stage::exact)
-           << " | " << percent(r.stats.is_hidden, Stage::exact) << " | " << r.valid << " |\n";
-    }
-    md << "\nPredicate calls, decided by filter / subdivision / exact:\n\n| set | n |";
-    for (const PredicateColumn& c : kPredicateColumns) md << " " << c.name << " |";
-    md << "\n|---|---|";
-    for (std::size_t i = 0; i < std::size(kPredicateColumns); ++i) md << "---|";
-    md << "\n";
-    for (const Row& r : rows) {
-        md << "| " << r.set << " | " << r.n << " |";
-        for (const PredicateColumn& c : kPredicateColumns) md << " " << stage_triple(r.stats.*c.field) << " |";
-        md << "\n";
+    for (const Row& r : rows)
         if (r.valid == "INVALID") {
             std::cout << "ANOMALY: " << r.set << " " << r.n << ": invalid graph\n";
             anomaly = true;
         }
-    }
-    std::cout << md.str();
-    if (!args.out_dir.empty()) {
-        std::ofstream out(args.out_dir + "/packing_scaling.md");
-        out << md.str();
-    }
+    report.intro("packing-G: `ellvor generate packing --count n --packing-fraction 0.58 --gap G --seed 1` (aspect "
+                 "1..4); ellipses: `ellvor generate ellipses --count n --seed 1`. Build: DelaunayGraph::insert_all, "
+                 "CPU time of the build only (median of `reps` builds); per insertion = build / n. Stages: the share "
+                 "of the calls decided by the exact stage.");
+    report.note(std::string("Peak memory: ") + kPeakMemoryMethod);
+    report.machine_note("shared with other jobs: compare CPU seconds");
+    report.heading("Builds");
+    report.table(build_table(rows));
+    report.heading("Predicate calls per stage");
+    report.table(predicate_table(rows), "calls (filter / subdivision / exact); memoized answers are not counted.");
+    report.publish(args.out_dir, "packing_scaling.md");
     return anomaly ? 1 : 0;
 }

@@ -169,7 +169,8 @@ class Report {
 public:
     // `program`: the benchmark's name under build/experiments/.
     Report(std::string title, std::string program, std::string command)
-        : title_(std::move(title)), program_(std::move(program)), command_(std::move(command)), load_before_(loadavg()) {}
+        : title_(std::move(title)), program_(std::move(program)), command_(std::move(command)),
+          load_before_(loadavg()), source_(source_state()) {}  // the source as it is at the start
 
     // A paragraph between the title and the header.
     void intro(const std::string& text) { intro_ += text + "\n\n"; }
@@ -198,7 +199,7 @@ public:
         md << "# " << title_ << "\n\n" << intro_;
         md << "- Machine: " << cpu_model() << (machine_note_.empty() ? "" : " (" + machine_note_ + ")") << "\n"
            << "- Load average before / after: " << load_before_ << " / " << load_after_ << "\n"
-           << "- Source: " << source_state() << "\n"
+           << "- Source: " << source_ << "\n"
            << "- Command: `make build/experiments/" << program_ << " && " << command_ << "`\n"
            << notes_;
         std::string body = body_.str();
@@ -213,7 +214,7 @@ public:
                  const std::vector<std::pair<std::string, std::string>>& files = {});
 
 private:
-    std::string title_, program_, command_, load_before_, load_after_, intro_, notes_, machine_note_;
+    std::string title_, program_, command_, load_before_, source_, load_after_, intro_, notes_, machine_note_;
     std::ostringstream body_;
 };
 

@@ -260,10 +260,10 @@ TEST_CASE("dense packings: close pairs are decided without the exact stage", "[p
         g.insert_all();
         const TraitsStats& s = g.predicate_stats();
         INFO(describe(o));
-        CHECK(s.is_hidden.calls > 2000);
-        CHECK(s.is_hidden.stages[Stage::exact] == 0);
-        CHECK(s.finite_edge.calls > 500);
-        CHECK(s.finite_edge.stages[Stage::exact] == 0);
+        CHECK(s[Predicate::is_hidden].calls > 2000);
+        CHECK(s[Predicate::is_hidden].stages[Stage::exact] == 0);
+        CHECK(s[Predicate::finite_edge_interior_conflict].calls > 500);
+        CHECK(s[Predicate::finite_edge_interior_conflict].stages[Stage::exact] == 0);
     }
 }
 

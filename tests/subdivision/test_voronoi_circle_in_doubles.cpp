@@ -5,7 +5,7 @@
 // Arb's, or hands over. It never certifies a circle where there is none (by
 // the kappa2 signs of predicates/voronoi_circle_count.hpp).
 #include "graph/delaunay_graph.hpp"
-#include "predicates/ellipse_delaunay_traits.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/packing_generator.hpp"
 #include "subdivision/voronoi_circle.hpp"
