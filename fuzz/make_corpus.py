@@ -77,6 +77,31 @@ SMALL = {
     "cin-bad.cin": "1 2\n0 0 0\n",
 }
 
+# Nearly coincident crossing pairs (issue 21): a site and a copy moved by 10^-k, which cross in two
+# points, among other sites; k from 10 to 100, translated, rotated and scaled copies, circles, the
+# whole scene scaled by 10^+-30 or far from the origin, and a copy crossing a third site (an internal
+# circle centred near the copy's medial axis).
+ISSUE_OTHERS = "1 1 0 6 1\n1 1 0 -5 3\n3/2 1/2 1 1 -6\n"
+NEAR_DUPLICATES = {
+    **{f"near-copy-shift-1e-{k}.ell": f"2 1 1/3 0 0\n2 1 1/3 1e-{k} 0\n" + ISSUE_OTHERS for k in (10, 20, 30, 40, 60, 100)},
+    "near-copy-shift-diagonal.ell": "2 1 1/3 0 0\n2 1 1/3 1e-40 -3e-40\n" + ISSUE_OTHERS,
+    # w + 10^-30 (1 + w^2)/2, the center turned about (6, 0) to first order.
+    "near-copy-rotated.ell": "2 1 1/3 0 0\n2 1 " + f"{3 * 10**30 + 5}/{9 * 10**30}" + " 0 -6e-30\n" + ISSUE_OTHERS,
+    "near-copy-scaled-up.ell": "2 1 1/3 0 0\n2.000000000000000000000000000002 1.000000000000000000000000000001 1/3 "
+    "-6e-30 0\n" + ISSUE_OTHERS,
+    "near-copy-scaled-down.ell": "2 1 1/3 0 0\n1.999999999999999999999999999998 0.999999999999999999999999999999 1/3 "
+    "6e-30 0\n" + ISSUE_OTHERS,
+    "near-copy-circles.ell": "1 1 0 0 0\n1 1 0 1e-40 1e-40\n1 1 0 5 1\n2 1 0 -4 3\n1/2 1/2 0 0 -4\n",
+    "near-copy-tiny-scene.ell": "2e-30 1e-30 1/3 0 0\n2e-30 1e-30 1/3 1e-70 0\n1e-30 1e-30 0 6e-30 1e-30\n"
+    "1e-30 1e-30 0 -5e-30 3e-30\n",
+    "near-copy-huge-scene.ell": "2e30 1e30 1/3 0 0\n2e30 1e30 1/3 1 0\n1e30 1e30 0 6e30 1e30\n1e30 1e30 0 -5e30 3e30\n",
+    "near-copy-far.ell": "2 1 1/3 1e20 0\n2 1 1/3 100000000000000000000.00000000000000000001 0\n1 1 0 100000000000000000006 1\n"
+    "1 1 0 99999999999999999995 3\n",
+    "near-copy-crossing-third.ell": "345/127 10/37 -6/35 17909/230 11267/144\n2 363/161 -43/82 9731/121 2128/27\n"
+    "345/127 10/37 -6/35 77.8652173913043478260869565217391304347826086956521739130434782608695652173913043478260869565217392 "
+    "11267/144\n",
+}
+
 # Long files: the parser's seeds only (over the build target's 512 bytes).
 LONG = {
     "cap-numerator.ell": f"1 1 0 {CAP} 0\n",
@@ -104,6 +129,10 @@ def main():
         write(parser, name, text)
         if name.endswith(".ell"):
             write(build, name, text)
+    for name, text in NEAR_DUPLICATES.items():
+        assert len(text.encode()) <= 512, name
+        write(parser, name, text)
+        write(build, name, text)
     for name, text in LONG.items():
         write(parser, name, text)
     data = os.path.join(os.path.dirname(ROOT), "..", "data")

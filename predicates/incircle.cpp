@@ -97,18 +97,31 @@ int distance_minus_radius(const VoronoiCircleEnclosure& c, const Ellipse& q, lon
 }
 
 // The exact stage (docs/DESIGN.md §4.5): Q is externally tangent to the circle
-// of (E1, E2, E3) iff that circle is also a Voronoi circle of (E1, E2, Q) or
-// (E1, Q, E2), i.e. iff one of those touches E1 at the same point. `prec` is
-// the precision the subdivision reached.
+// of (E1, E2, E3) iff that circle is also a Voronoi circle of (S, P, Q) or
+// (S, Q, P) for two consecutive sites S, P of the triple, i.e. iff one of
+// those touches S at the same point. The pair is (E1, E2) unless Q lies in
+// one of them: a hidden Q (validation asks it too) has no Voronoi circle with
+// its host, yet may pass through a circle of radius 0 on the host's boundary
+// (fuzz finding F4, experiments/results/fuzz.md); then the next rotation of
+// the triple whose pair leaves Q outside. `prec` is the precision the
+// subdivision reached.
 bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
                      VoronoiCircleSolver& solver, long prec) {
-    const VoronoiCircles with_q = *voronoi_circle_count(e1, e2, q);
+    const std::array<const Ellipse*, 3> sites{&e1, &e2, &e3};
+    int shared = 0;
+    for (int r = 0; r < 3; ++r)
+        if (*none_inside_another(*sites[r], *sites[(r + 1) % 3], q)) {
+            shared = r;
+            break;
+        }
+    const Ellipse &s = *sites[shared], &p = *sites[(shared + 1) % 3];
+    const VoronoiCircles with_q = *voronoi_circle_count(s, p, q);
     std::vector<std::array<const Ellipse*, 3>> candidates;
-    if (with_q == VoronoiCircles::ccw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &e2, &q});
-    if (with_q == VoronoiCircles::cw_only || with_q == VoronoiCircles::both) candidates.push_back({&e1, &q, &e2});
+    if (with_q == VoronoiCircles::ccw_only || with_q == VoronoiCircles::both) candidates.push_back({&s, &p, &q});
+    if (with_q == VoronoiCircles::cw_only || with_q == VoronoiCircles::both) candidates.push_back({&s, &q, &p});
     for (const auto& triple : candidates) {
         VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2]);  // exists: voronoi_circle_count said so
-        if (ContactComparison({{&e1, &e2, &e3}, &solver, 0}, {triple, &other, 0}).same_contact_point(prec))
+        if (ContactComparison({{&e1, &e2, &e3}, &solver, shared}, {triple, &other, 0}).same_contact_point(prec))
             return true;
     }
     return false;

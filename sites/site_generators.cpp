@@ -455,4 +455,33 @@ PaperDataset generate_paper_dataset(PaperFamily family, const std::string& set, 
     return ds;
 }
 
+const char* near_copy_motion_name(NearCopyMotion m) {
+    switch (m) {
+        case NearCopyMotion::shift_x: return "shift x";
+        case NearCopyMotion::shift_xy: return "shift (1,-3)";
+        case NearCopyMotion::rotation: return "rotation";
+        case NearCopyMotion::scale_up: return "scale 1+";
+        case NearCopyMotion::scale_down: return "scale 1-";
+    }
+    return "?";
+}
+
+Ellipse near_copy(const Ellipse& e, NearCopyMotion motion, long k) {
+    const Rational d = power_of_ten(-k);
+    const Rational px = e.xc() + Rational(3) * e.a(), py = e.yc();  // the pivot
+    switch (motion) {
+        case NearCopyMotion::shift_x: return Ellipse(e.a(), e.b(), e.w(), e.xc() + d, e.yc());
+        case NearCopyMotion::shift_xy: return Ellipse(e.a(), e.b(), e.w(), e.xc() + d, e.yc() - Rational(3) * d);
+        case NearCopyMotion::rotation:
+            return Ellipse(e.a(), e.b(), e.w() + d * (Rational(1) + e.w() * e.w()) / Rational(2), e.xc() - d * (e.yc() - py),
+                           e.yc() + d * (e.xc() - px));
+        case NearCopyMotion::scale_up:
+        case NearCopyMotion::scale_down: {
+            const Rational s = motion == NearCopyMotion::scale_up ? Rational(1) + d : Rational(1) - d;
+            return Ellipse(e.a() * s, e.b() * s, e.w(), px + s * (e.xc() - px), py + s * (e.yc() - py));
+        }
+    }
+    return e;
+}
+
 }  // namespace ellvor

@@ -106,6 +106,20 @@ bool sites_cross(const Ellipse& e1, const Ellipse& e2);
 // A one-line description of the options, for file headers.
 std::string describe(const GeneratorOptions& options);
 
+// ---- Nearly coincident copies (docs/DESIGN.md §4.2, item 3) ------------------------------------------------
+
+// How near_copy moves a site by about 10^-k of its size.
+enum class NearCopyMotion { shift_x, shift_xy, rotation, scale_up, scale_down };
+const char* near_copy_motion_name(NearCopyMotion m);
+
+// e moved by about 10^-k: translated by 10^-k (along x, or by (1, -3) 10^-k),
+// rotated by about 10^-k about the point three semi-axes a from its center
+// (to first order, exactly rational: w by the half-angle formula, the center
+// along the rotation's tangent), or scaled by 1 +- 10^-k about that point. A
+// copy of an ellipse (or circle) of moderate aspect crosses it in two points;
+// a rotated copy of an elongated ellipse can meet it in four (an input error).
+Ellipse near_copy(const Ellipse& e, NearCopyMotion motion, long k);
+
 // ---- The circle datasets of the paper (Emiris, Tsigaridas, Tzoumas 2007), section 5.1 ---------------------
 //
 // family   kappa1:   sites E1 E2, query point q       (side_of_bisector)

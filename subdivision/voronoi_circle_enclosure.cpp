@@ -2,6 +2,7 @@
 
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/inscribed_disk.hpp"
+#include "subdivision/near_duplicate_pair.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <optional>
 
 namespace ellvor {
 
@@ -28,6 +30,9 @@ constexpr int kSearchSteps = 6;
 constexpr long kStalledNewtonBits = 16;
 // Refinement of a certified circle: precision doublings before giving up.
 constexpr int kRefineLevels = 4;
+// The search for the circle of a nearly coincident pair moved apart
+// (certify_near_duplicate): 165 boxes on the crossing triples that need it.
+constexpr long kMovedSearchBoxes = 5000;
 
 // Bits of accuracy of a ball: relative for |mid| >= 1, absolute below.
 long ball_bits(const arb_t x) {
@@ -52,6 +57,7 @@ const char* circle_start_name(CircleStart s) {
     switch (s) {
         case CircleStart::guess: return "guess";
         case CircleStart::tangent_line: return "tangent-line";
+        case CircleStart::near_duplicate: return "near-duplicate";
         case CircleStart::search: return "search";
     }
     return "?";
@@ -246,8 +252,11 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     // times the sites' size has a Jacobian conditioned like R^2 or worse:
     // Newton stalls ~2 log2 R bits short); two limbs are plenty below that.
     constexpr long kLowPrecision = 128, kModerateBits = 16, kConditionFactor = 4;
-    const long low =
-        std::min(prec, kLowPrecision + kConditionFactor * std::max(0L, magnitude_bits(midpoint_) - kModerateBits));
+    // A nearly coincident pair (certify_near_duplicate) makes |Y| about
+    // 2^condition_bits_: Y J(X) needs that many bits more.
+    const long low = std::min(prec, std::max(condition_bits_, kConditionFactor * std::max(0L, magnitude_bits(midpoint_) -
+                                                                                                   kModerateBits)) +
+                                        kLowPrecision);
     BallMatrix Fm(kUnknowns, 1), Flow(kUnknowns, 1), Jm(kUnknowns, kUnknowns), Y(kUnknowns, kUnknowns);
     if (low >= prec) {
         tritangent_system(charts(), midpoint_, Fm, &Jm, prec);
@@ -290,7 +299,8 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     if (arb_is_positive(K.at(3, 0))) {
         // The tangency points' coordinates cancel in the orientation: it needs
         // their magnitude's bits on top of the low precision.
-        const long orientation_prec = std::min(prec, kLowPrecision + magnitude_bits(midpoint_));
+        // (And, for a nearly coincident pair, the closeness of its points.)
+        const long orientation_prec = std::min(prec, kLowPrecision + magnitude_bits(midpoint_) + condition_bits_);
         if (!arb_is_positive(orientation(charts(), K, orientation_prec).get())) return false;
     } else {
         // An internal circle of overlapping sites (rho < 0), or one of radius
@@ -318,6 +328,11 @@ long VoronoiCircleSolver::start_precision() {
 
 bool VoronoiCircleSolver::certify() {
     if (certified_) return true;
+    return certify_from_starts() || certify_by_search();
+}
+
+bool VoronoiCircleSolver::certify_from_starts() {
+    if (certified_) return true;
     set_frame();
     for_each_voronoi_circle_guess(*work_sites_[0], *work_sites_[1], *work_sites_[2], [&](const VoronoiCircleGuess& guess) {
         return certified_ = certify_from(guess);
@@ -329,7 +344,71 @@ bool VoronoiCircleSolver::certify() {
         enclosure_.found_by = CircleStart::tangent_line;
         return true;
     }
-    return certify_by_search();
+    if ((certified_ = certify_near_duplicate())) enclosure_.found_by = CircleStart::near_duplicate;
+    return certified_;
+}
+
+bool VoronoiCircleSolver::certify_near_duplicate() {
+    const std::optional<NearDuplicatePair> pair =
+        closest_near_duplicate_pair(*work_sites_[0], *work_sites_[1], *work_sites_[2], kNearDuplicateBits);
+    if (!pair) return false;
+    const int i = pair->first, j = pair->second;
+    // The pair moved apart to about 2^-kMovedBits of its size: E_i + mu (E_j - E_i).
+    Rational mu(1);
+    fmpq_mul_2exp(mu.get(), mu.get(), static_cast<unsigned long>(pair->bits - kMovedBits));
+    const Ellipse moved = ellipse_moved_apart(*work_sites_[i], *work_sites_[j], mu);
+    std::array<const Ellipse*, 3> sites = work_sites_;
+    sites[j] = &moved;
+    VoronoiCircleSolver apart(*sites[0], *sites[1], *sites[2]);
+    if (!apart.certify_from_starts()) {
+        // Internal circles of a crossing third site are often found by the
+        // search only; moved apart, it takes a few hundred boxes. A search that
+        // proves no circle, or stops at this cap, leaves the triple to ours.
+        VoronoiCircleSearchOptions capped;
+        capped.max_boxes = kMovedSearchBoxes;
+        try {
+            if (!apart.certify_by_search(capped)) return false;
+        } catch (const Error&) {
+            return false;
+        }
+    }
+    const VoronoiCircleEnclosure& c = apart.enclosure();  // in this solver's frame
+    // Two kinds of circle. Contacts on E_i and E_j that nearly coincide (all
+    // external circles): the blown-up unknowns, t_j = t_i + mu^-1 (t_j(mu) -
+    // t_i(mu)) in E_i's chart, the others as they are (all O(2^-kMovedBits)
+    // off). Contacts apart (an internal circle centered near E_i's medial
+    // axis, touching E_i and E_j at nearly mirror points): a regular root,
+    // which moves by O(2^-kMovedBits) only; the moved circle is the start.
+    const long prec = start_precision() + 2 * pair->bits;
+    std::array<Ball, 3> parameter;
+    std::array<bool, 3> flipped = c.flipped;
+    for (int k = 0; k < 3; ++k) arb_get_mid_arb(parameter[k].get(), c.parameter[k].get());
+    Ball other(parameter[j]), offset, mu_ball;
+    if (flipped[j] != flipped[i]) {  // t = -1/u
+        arb_inv(other.get(), other.get(), prec);
+        arb_neg(other.get(), other.get());
+    }
+    arb_sub(offset.get(), other.get(), parameter[i].get(), prec);
+    constexpr long kSameContactBits = kMovedBits / 2;
+    if (arf_cmpabs_2exp_si(arb_midref(offset.get()), -kSameContactBits) < 0) {
+        arb_set_fmpq(mu_ball.get(), mu.get(), prec);
+        arb_div(offset.get(), offset.get(), mu_ball.get(), prec);
+        arb_add(parameter[j].get(), parameter[i].get(), offset.get(), prec);
+        arb_get_mid_arb(parameter[j].get(), parameter[j].get());
+        flipped[j] = flipped[i];
+    }
+    Ball radius, center_x, center_y;
+    arb_get_mid_arb(radius.get(), c.radius.get());
+    arb_get_mid_arb(center_x.get(), c.center_x.get());
+    arb_get_mid_arb(center_y.get(), c.center_y.get());
+    start_at(flipped, parameter, radius, center_x, center_y);
+    condition_bits_ = pair->bits;
+    // Newton from 2^-kMovedBits doubles the correct bits a step: a handful of
+    // steps reach the box width the certificate needs (below 2^-bits).
+    constexpr int kLevels = 2, kSteps = 8;
+    if (certify_here(prec, kLevels, kSteps)) return true;
+    condition_bits_ = 0;
+    return false;
 }
 
 bool VoronoiCircleSolver::certify_near(const std::array<bool, 3>& flipped, const std::array<double, 6>& x) {
@@ -454,7 +533,8 @@ bool VoronoiCircleSolver::refine(long bits) {
     // the precision, then a certificate at the target precision; should that
     // fail, again from the certified midpoint at twice the target.
     const BallMatrix certified_midpoint = midpoint_;
-    long target = bits + 2 * kGuardBits + magnitude_bits(midpoint_);
+    // A nearly coincident pair needs twice its closeness for a certificate.
+    long target = std::max(bits + 2 * kGuardBits + magnitude_bits(midpoint_), 2 * condition_bits_ + kStartPrecision);
     for (int level = 0; level < kRefineLevels; ++level, target *= 2) {
         midpoint_ = certified_midpoint;
         bool singular = false;

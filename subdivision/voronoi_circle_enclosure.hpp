@@ -16,7 +16,8 @@
 // Where the certificate starts (docs/DESIGN.md §4.2): first from
 // floating-point guesses (voronoi_circle_guess.hpp); then, for circles far
 // larger than the sites, from their nearly common tangent line
-// (huge_circle_start.hpp); when none certifies, from the exhaustive search
+// (huge_circle_start.hpp); for a pair of nearly coincident sites, from the
+// circle of the pair moved apart (near_duplicate_pair.hpp); when none certifies, from the exhaustive search
 // (voronoi_circle_search.hpp), which either certifies the circle or proves
 // that there is none. The work happens in a similarity frame of the triple
 // (docs/DESIGN.md §4.3).
@@ -36,8 +37,10 @@ namespace ellvor {
 
 // Where the certificate started: a floating-point guess
 // (voronoi_circle_guess.hpp), the tangent line of a huge circle
-// (huge_circle_start.hpp), or the exhaustive search.
-enum class CircleStart { guess, tangent_line, search };
+// (huge_circle_start.hpp), the circle of the triple with a nearly
+// coincident pair moved apart (near_duplicate_pair.hpp), or the exhaustive
+// search.
+enum class CircleStart { guess, tangent_line, near_duplicate, search };
 const char* circle_start_name(CircleStart s);
 
 struct VoronoiCircleEnclosure {
@@ -107,6 +110,13 @@ public:
     void release_charts();
 
 private:
+    // certify() without the exhaustive search: the guesses, the tangent-line
+    // starts and the near-duplicate start. False means only "not certified".
+    bool certify_from_starts();
+    // A triple with a nearly coincident pair (near_duplicate_pair.hpp): the
+    // circle of the triple with the pair moved apart, certified first, gives
+    // the start; Newton and Krawczyk at about twice the pair's closeness bits.
+    bool certify_near_duplicate();
     bool certify_from(const VoronoiCircleGuess& guess);
     // A cheap attempt from the midpoint of a search box: Newton at the box's
     // precision must converge to a counter-clockwise root of positive radius
@@ -139,6 +149,10 @@ private:
     bool framed_ = false;                       // set_frame() ran
     std::vector<BoundaryChart> site_charts_;  // site i, flipped f at 2 i + f (built by start_at)
     long magnitude_bits_ = -1;  // site_magnitude_bits, computed on first use
+    // Bits the Jacobian's conditioning eats beyond the usual (the closeness
+    // of a nearly coincident pair once its start was used; 0 otherwise): the
+    // low precision of Krawczyk and the orientation test must exceed them.
+    long condition_bits_ = 0;
     BallMatrix midpoint_{6, 1};  // exact midpoint of the current box
     VoronoiCircleEnclosure enclosure_;           // in the frame
     // enclosure_ mapped back by enclosure(), allocated only for a frame that

@@ -159,6 +159,10 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
          "4 2 0 0 0\n1.5 3025 0 133333333333333333333333333330 10\n4 325 0 10 10\n4 3 -0.2 20 10\n1 1 0 0 0\n"
          "1.2 0.8 1/5 2075 10.25\n",
          nullptr},
+        // F4 (campaign 7): validation asked a hidden circle against a face with a Voronoi circle of
+        // radius 0 on its host's boundary; the exact stage paired it with its host ("internal error").
+        {"F4 hidden query through a vertex of radius 0", "5 5 0 -5 0\n5 5 0 0 -5\n5  5 0 5 0\n5 55 0 5 0\n5 5 0 0 5\n",
+         nullptr},
     };
     for (const Finding& f : findings) {
         INFO(f.what << "\n" << f.text);
@@ -171,5 +175,39 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
         } else {
             CHECK(o.kind == Outcome::accepted);
         }
+    }
+}
+
+TEST_CASE("fuzz findings, open: pairs nearly internally tangent at two points", "[.][fuzz-open]") {
+    // Campaign 7 (experiments/results/fuzz.md, F1-F3, F5, F6): mutations of the near-copy seeds in
+    // which one site lies in another touching it at two points (concentric, one semi-axis shared),
+    // then moved by about 10^-30 so that the two cross. Near the tangency points the pair nearly
+    // coincides, the Voronoi circles there defeat the guesses, and the exhaustive search decides in
+    // seconds (F1-F3: 2.6-17 s release, over 10 s under ASan) or stops at its cap (F5, F6: an
+    // Error, no answer). Hidden from the default run: F5 and F6 fail until this class is solved
+    // (docs/DESIGN.md §4.2, item 3); the graph must be valid.
+    const char* findings[] = {
+        // F1: (2, 1) inside (4, 1), touching at the ends of the minor axis, moved by 6e-30.
+        "2 1 1/3 0 0\n4 1 3000000000000000000000000000005/9000000000000000000000000000000 0 -6e-30\n1 1 0 6 1\n"
+        "1 1 0 -2 3\n3/2 1/2 1 1 -6\n",
+        // F2: a nearly round ellipse and one nearly touching it inside at two points.
+        "2 1.99999999999999999991 1/3 0 0\n1.999999999999999999999999999998 0.9999999999999999 1/3 6e-30 0\n"
+        "1 1 0 6 1\n1 1 0 -5 3\n3/2 1/2 1 5 3\n3/2 1/2 1 1 -6\n",
+        // F3: the unit circle in the ellipse (2, 1), touching at (0, +-1), moved by 1e-30.
+        "1 1 1/3 0 0\n2 1 1/3 1e-30 0\n1 1 0 6 1\n1 1 0 -5 3\n3/2 1/2 5.1 1 -6e20\n",
+        // F5: as F2, the inner ellipse's minor semi-axis 1 - 10^-6 (the search's cap).
+        "2 1 1/3 0 0\n1.9999999999999999999999999999999999999999999999999998 0.9999990000000000 1/3 6e-30 0\n"
+        "1 1 0 6 1\n1 1 0 -5 6\n3/2 1/2 1 5 3\n3/2 1/2 1 1 -6\n",
+        // F6: a needle (minor semi-axis 10^-6) and its near copy with the minor semi-axis 10/37,
+        // both crossing a third site (the search's cap).
+        "345/127 10e-7 -6/35 17909/230 11267/144\n2 363/161 -43/82 9731/121 2128/27\n345/127 10/37 -6/35 "
+        "77.8652173913043478260869565217391304000000000000000000000000000000000000000000004010161755154250351 "
+        "11267/144\n",
+    };
+    for (const char* text : findings) {
+        INFO(text);
+        const Outcome o = ellvor::fuzz::build_site_text(text);
+        INFO(o.message);
+        CHECK(o.kind == Outcome::accepted);
     }
 }

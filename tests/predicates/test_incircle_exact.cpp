@@ -18,12 +18,15 @@
 //      with rational tan(phi/2) are rational ellipses tangent to the same
 //      circle, at the same parameter t0.
 #include "predicates/incircle.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
 #include "sites/site_generators.hpp"
 #include "tests/support/diagnostics.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -235,4 +238,36 @@ TEST_CASE("incircle exact stage: perturbations by 10^-k get the strict sign", "[
             }
         }
     }
+}
+
+TEST_CASE("incircle exact: a hidden query through a vertex of radius 0 on its host is tangent (fuzz F4)",
+          "[incircle][exact][crossing]") {
+    // Three circles of radius 5 and the ellipse (5, 55) at (5, 0) pass through the origin: the
+    // faces of those sites have the Voronoi circle of radius 0 there. The circle of radius 5 at
+    // (5, 0) lies in the ellipse (tangent to it at the origin) and passes through the origin too:
+    // tangent. The exact stage used to pair the query with its host, which has no Voronoi
+    // circle with it, and answered "distinct" (then "not separated": an internal error).
+    const Ellipse left = Ellipse::circle(-5, 0, 5), below = Ellipse::circle(0, -5, 5), above = Ellipse::circle(0, 5, 5);
+    const Ellipse host(Rational(5), Rational(55), Rational(0), Rational(5), Rational(0));
+    const Ellipse hidden = Ellipse::circle(5, 0, 5);
+    int tangent = 0;
+    for (const Ellipse* first : {&left, &below})
+        for (const auto& t : {std::array<const Ellipse*, 3>{first, &host, &above},
+                              std::array<const Ellipse*, 3>{first, &above, &host}}) {
+            const Decision<InCircle> d = incircle(*t[0], *t[1], *t[2], hidden);
+            REQUIRE(d.is_decided());
+            if (*d == InCircle::no_circle) continue;
+            // The circle at the origin (radius 0) is tangent to the hidden circle; another one
+            // (some triples' counter-clockwise circle lies elsewhere) is decided as usual.
+            VoronoiCircleSolver solver(*t[0], *t[1], *t[2]);
+            REQUIRE(solver.refine(64));
+            if (std::fabs(solver.enclosure().radius.mid_double()) > 1e-9) {
+                CHECK(*d != InCircle::tangent);
+                continue;
+            }
+            CHECK(*d == InCircle::tangent);
+            CHECK(d.stage == Stage::exact);
+            ++tangent;
+        }
+    CHECK(tangent >= 1);
 }

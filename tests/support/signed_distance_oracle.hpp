@@ -130,7 +130,10 @@ DiagramClaim claim_of(const DelaunayGraph& graph, const std::vector<Ellipse>& si
 //    other inserted site, hidden ones included;
 //  - visible sites own a point: some x with δ(x, E) < δ(x, E') - margin for every
 //    other E' (tried: where the normal from each of E's Voronoi vertices through
-//    its foot meets E's medial axis, then points along the medial axis);
+//    its foot meets E's medial axis, then points along the medial axis); E's
+//    twins (a site whose boundary is provably within margin/2 of E's: a
+//    nearly coincident copy, which no point separates by the margin) are
+//    left out of that comparison;
 //  - hidden sites own none of 200 points of their medial axis (a non-empty cell
 //    reaches it: inward along a normal δ(·, H) falls at rate 1, any other δ at
 //    rate <= 1), nor points of their boundary and between it and the medial axis.
