@@ -5,7 +5,7 @@
 #   make sanitize  the test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #   make bench     build and run the benchmark programs under experiments/
 #   make fuzz      the libFuzzer targets under fuzz/ (clang, ASan + UBSan), FUZZ_SECONDS each;
-#                  findings in build-fuzz/findings/
+#                  findings in build-fuzz/findings/ (fails on new ones; old ones listed apart)
 #   make python    the Python module in-tree: build/python/ellvor (PYTHONPATH=build/python)
 
 BUILD    ?= build
