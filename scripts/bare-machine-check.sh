@@ -65,6 +65,7 @@ mounts_under_root() {
     awk -v r="$root" '$5 == r || index($5, r "/") == 1 { print $5 }' /proc/self/mountinfo | sort -r
 }
 
+declare -a phase_names=() phase_seconds=()
 # Runs at every exit (failure and Ctrl-C too): stops what still runs in the
 # root (only processes started by this script run there), unmounts, removes.
 cleanup() {
@@ -85,14 +86,17 @@ cleanup() {
         # --one-file-system: never into a mount, even one that appeared since.
         rm -rf --one-file-system "$root"
     fi
-    say "total $(seconds_text $(($(date +%s) - started))), exit status $status"
+    say "$([ "$status" -eq 0 ] && echo passed || echo FAILED) (exit status $status); phases:"
+    for i in "${!phase_names[@]}"; do
+        printf '  %-50s %s\n' "${phase_names[$i]}" "$(seconds_text "${phase_seconds[$i]}")"
+    done
+    say "total $(seconds_text $(($(date +%s) - started)))"
     exit "$status"
 }
 trap cleanup EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
 
-declare -a phase_names=() phase_seconds=()
 # phase NAME COMMAND...: runs COMMAND, prints and records its elapsed time.
 phase() {
     local name=$1 t0 status=0
@@ -133,7 +137,8 @@ mount --bind /dev/pts "$root/dev/pts"
 mount -t tmpfs -o mode=1777,nosuid,nodev shm "$root/dev/shm"
 
 phase "git clone (HEAD, from $repo)" \
-    bash -c 'git clone --quiet --no-hardlinks "$1" "$2" && git -C "$2" checkout --quiet --detach "$3"' \
+    bash -c 'git clone --quiet --no-hardlinks "$1" "$2" &&
+             git -C "$2" -c advice.detachedHead=false checkout --quiet --detach "$3"' \
     _ "$repo" "$root/root/ellvor" "$commit"
 
 in_root() {
@@ -144,7 +149,3 @@ in_root() {
 phase "make run" in_root "make run"
 phase "make test" in_root "make test"
 
-say "passed; phases:"
-for i in "${!phase_names[@]}"; do
-    printf '  %-50s %s\n' "${phase_names[$i]}" "$(seconds_text "${phase_seconds[$i]}")"
-done
