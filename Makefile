@@ -36,16 +36,18 @@ TESTS     := $(BUILD)/ellvor_tests
 BENCHES   := $(BENCH_SRC:experiments/%.cpp=$(BUILD)/experiments/%)
 FUZZERS   := $(FUZZ_SRC:fuzz/%.cpp=$(BUILD)/%)
 PY_OBJ    := $(PY_SRC:%.cpp=$(BUILD)/obj/%.o)
-# The package: the pure-Python half copied next to the extension module.
-# PY_EXT (and PY_INCLUDES below) come from the Python that `deps` installs, and
-# make reads them when it parses this file: on a bare machine the first make
-# parses before the install and gets nothing. So they are right only in a make
-# started after the install: every target that needs them depends on
-# $(DEPS_STAMP), then runs a sub-make (which parses again) with goals that name
-# no parse-time value (python-module, never $(PY_MODULE)).
+# PY_EXT and PY_INCLUDES come from the Python that `deps` installs, and make
+# reads them when it parses this file (a target's name must be known then, so
+# the suffix cannot wait for a recipe). On a bare machine the first make parses
+# before the install and gets nothing (PY_EXT falls back to .so). So they are
+# right only in a make started after the install: every target that needs them
+# depends on $(DEPS_STAMP), then runs a sub-make, which parses again, with
+# goals that name no parse-time value (python-module, never $(PY_MODULE)).
+# scripts/bare-machine-check.sh checks this on a fresh Debian 12.
 PY_EXT    := $(or $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_config_var('EXT_SUFFIX'))" 2>/dev/null),.so)
 PY_INCLUDES := $(shell $(PYTHON) -c "import sysconfig; print('-I' + sysconfig.get_paths()['include'])" 2>/dev/null)
 PY_MODULE := $(BUILD)/python/ellvor/_ellvor$(PY_EXT)
+# The package: the pure-Python half copied next to the extension module.
 PY_FILES  := $(patsubst python/%,$(BUILD)/python/%,$(wildcard python/ellvor/*.py))
 DEPS_STAMP := $(BUILD)/.deps-installed
 
