@@ -66,14 +66,20 @@ mounts_under_root() {
 }
 
 declare -a phase_names=() phase_seconds=()
-# Runs at every exit (failure and Ctrl-C too): stops what still runs in the
-# root (only processes started by this script run there), unmounts, removes.
+phase_pid=""
+# Runs at every exit (failure, Ctrl-C, a TERM to this shell alone): stops the
+# running phase and what still runs in the root (only processes started by
+# this script run there), unmounts, removes.
 cleanup() {
-    local status=$? pid m
+    local status=$? pid m pass
     trap - EXIT INT TERM
-    for pid in $(ls /proc | grep -E '^[0-9]+$'); do
-        [ "$(readlink "/proc/$pid/root" 2>/dev/null)" = "$root" ] && kill -KILL "$pid" 2>/dev/null || true
+    for pass in 1 2; do
+        for pid in $(ls /proc | grep -E '^[0-9]+$'); do
+            [ "$(readlink "/proc/$pid/root" 2>/dev/null)" = "$root" ] && kill -KILL "$pid" 2>/dev/null || true
+        done
+        [ -z "$phase_pid" ] || kill -KILL "$phase_pid" 2>/dev/null || true
     done
+    [ -z "$phase_pid" ] || wait "$phase_pid" 2>/dev/null || true
     for m in $(mounts_under_root); do
         umount "$m" 2>/dev/null || umount --lazy "$m" || say "could not unmount $m"
     done
@@ -98,12 +104,16 @@ trap 'exit 130' INT
 trap 'exit 143' TERM
 
 # phase NAME COMMAND...: runs COMMAND, prints and records its elapsed time.
+# In the background, so that a signal's trap runs at once, not when it ends.
 phase() {
     local name=$1 t0 status=0
     shift
     say "== $name"
     t0=$(date +%s)
-    "$@" || status=$?
+    "$@" &
+    phase_pid=$!
+    wait "$phase_pid" || status=$?
+    phase_pid=""
     phase_names+=("$name")
     phase_seconds+=($(($(date +%s) - t0)))
     say "== $name: $(seconds_text "${phase_seconds[-1]}")$([ $status -eq 0 ] || echo ", FAILED (exit $status)")"
