@@ -80,6 +80,7 @@ cleanup() {
         [ -z "$phase_pid" ] || kill -KILL "$phase_pid" 2>/dev/null || true
     done
     [ -z "$phase_pid" ] || wait "$phase_pid" 2>/dev/null || true
+    rm -f "$root.debootstrap.log"
     for m in $(mounts_under_root); do
         umount "$m" 2>/dev/null || umount --lazy "$m" || say "could not unmount $m"
     done
