@@ -5,7 +5,7 @@
 #   make sanitize  the test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #   make bench     build and run the benchmark programs under experiments/
 #   make fuzz      the libFuzzer targets under fuzz/ (clang, ASan + UBSan), FUZZ_SECONDS each;
-#                  findings in build-fuzz/findings/
+#                  findings in build-fuzz/findings/ (fails on new ones; old ones listed apart)
 #   make python    the Python module in-tree: build/python/ellvor (PYTHONPATH=build/python)
 
 BUILD    ?= build
@@ -36,13 +36,22 @@ TESTS     := $(BUILD)/ellvor_tests
 BENCHES   := $(BENCH_SRC:experiments/%.cpp=$(BUILD)/experiments/%)
 FUZZERS   := $(FUZZ_SRC:fuzz/%.cpp=$(BUILD)/%)
 PY_OBJ    := $(PY_SRC:%.cpp=$(BUILD)/obj/%.o)
-# The package: the pure-Python half copied next to the extension module.
+# PY_EXT and PY_INCLUDES come from the Python that `deps` installs, and make
+# reads them when it parses this file (a target's name must be known then, so
+# the suffix cannot wait for a recipe). On a bare machine the first make parses
+# before the install and gets nothing (PY_EXT falls back to .so). So they are
+# right only in a make started after the install: every target that needs them
+# depends on $(DEPS_STAMP), then runs a sub-make, which parses again, with
+# goals that name no parse-time value (python-module, never $(PY_MODULE)).
+# scripts/bare-machine-check.sh checks this on a fresh Debian 12.
 PY_EXT    := $(or $(shell $(PYTHON) -c "import sysconfig; print(sysconfig.get_config_var('EXT_SUFFIX'))" 2>/dev/null),.so)
+PY_INCLUDES := $(shell $(PYTHON) -c "import sysconfig; print('-I' + sysconfig.get_paths()['include'])" 2>/dev/null)
 PY_MODULE := $(BUILD)/python/ellvor/_ellvor$(PY_EXT)
+# The package: the pure-Python half copied next to the extension module.
 PY_FILES  := $(patsubst python/%,$(BUILD)/python/%,$(wildcard python/ellvor/*.py))
 DEPS_STAMP := $(BUILD)/.deps-installed
 
-.PHONY: all deps run test check-tests sanitize bench fuzz fuzzers python clean
+.PHONY: all deps run test check-tests sanitize bench fuzz fuzzers python python-module clean
 .DEFAULT_GOAL := all
 
 all: $(ELLVOR) $(TESTS)
@@ -72,7 +81,7 @@ $(TESTS): $(TEST_OBJ) $(LIBRARY)
 
 # The extension module: pybind11 (header-only) over the library. Every
 # object is compiled with -fPIC, so the library links into it as it is.
-$(PY_OBJ): CXXFLAGS += -fvisibility=hidden $(shell $(PYTHON) -c "import sysconfig; print('-I' + sysconfig.get_paths()['include'])" 2>/dev/null)
+$(PY_OBJ): CXXFLAGS += -fvisibility=hidden $(PY_INCLUDES)
 
 $(PY_MODULE): $(PY_OBJ) $(LIBRARY)
 	@mkdir -p $(dir $@)
@@ -82,8 +91,11 @@ $(BUILD)/python/ellvor/%.py: python/ellvor/%.py
 	@mkdir -p $(dir $@)
 	cp $< $@
 
+# Internal: a sub-make's goal (see PY_EXT); `make python` is the command.
+python-module: $(PY_MODULE) $(PY_FILES)
+
 python: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory -j$(JOBS) $(PY_MODULE) $(PY_FILES)
+	@$(MAKE) --no-print-directory -j$(JOBS) python-module
 
 $(BUILD)/experiments/%: experiments/%.cpp $(LIBRARY)
 	@mkdir -p $(dir $@)
@@ -109,7 +121,7 @@ ifeq ($(PYTHON_TESTS),no)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS)
 	@bash tests/run_suite.sh $(TESTS)
 else
-	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS) $(PY_MODULE) $(PY_FILES)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS) python-module
 	@PYTHON=$(PYTHON) PYTHONPATH=$(abspath $(BUILD)/python) ELLVOR_BINARY=$(abspath $(ELLVOR)) \
 	    bash tests/run_suite.sh $(TESTS) --pytest tests/python
 endif
@@ -122,7 +134,7 @@ sanitize: $(DEPS_STAMP)
 	    SANITIZE="-fsanitize=address,undefined -fno-sanitize=shift-base -fno-sanitize-recover=undefined -fno-omit-frame-pointer" test
 
 bench: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES) $(ELLVOR) $(PY_MODULE) $(PY_FILES)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCHES) $(ELLVOR) python-module
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
 	@echo "== experiments/python_build.py"
 	@PYTHONPATH=$(BUILD)/python ELLVOR_BINARY=$(abspath $(ELLVOR)) $(PYTHON) experiments/python_build.py --count 3000 --reps 3

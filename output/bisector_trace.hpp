@@ -3,7 +3,7 @@
 // combinatorics come from DelaunayGraph, the Voronoi vertices from the
 // certified Voronoi circles; this only joins them by polylines.
 //
-// The bisector of two sites Ep, Eq (disjoint, or crossing circles) is the
+// The bisector of two sites Ep, Eq (disjoint or crossing) is the
 // locus of equal signed distance delta (the distance to the boundary,
 // negative inside). It is parametrized by the angle theta of the foot point
 // on Ep: V = P(theta) + rho n(theta) (n the outward unit normal) has
@@ -19,10 +19,11 @@
 // bitangents (the two Voronoi vertices at infinity); the arc of Ep inside Eq
 // lies within A, and its ends, the crossing points, have rho = 0, so a traced
 // Voronoi edge passes through them continuously. (Crossing ellipses that are
-// not circles, which the graph still rejects, can do worse: h_q(n) > h_p(n)
-// on several arcs, of which the tracer follows the one around the largest
-// difference; and where the bisector crosses Ep's medial axis inside the lens
-// a piece of it has no foot point on Ep, which the tracer bridges by a chord.)
+// not circles, which the graph accepts (docs/DESIGN.md §9), can do worse for
+// the drawing: h_q(n) > h_p(n) on several arcs, of which the tracer follows
+// the one around the largest difference; and where the bisector crosses Ep's
+// medial axis inside the lens a piece of it has no foot point on Ep, which the
+// tracer bridges by a chord.)
 //
 // Orientation (checked by the tests): for the Delaunay edge p -> q with the
 // face f on its left and g on its right, the dual Voronoi edge runs from the

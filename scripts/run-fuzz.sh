@@ -7,8 +7,10 @@
 # finding it meets instead of stopping at the first. New corpus entries go to
 # BUILD/corpus/NAME (the committed seeds in fuzz/corpus/NAME are only read),
 # findings to BUILD/findings/NAME/, logs to BUILD/NAME.log (NAME: parser or
-# build). Exits 1 when a findings directory is not empty (findings of earlier
-# runs count until removed).
+# build). Findings already there before this run (of earlier runs, kept until
+# removed) are listed apart as old; the exit status is 1 only when this run
+# added a finding (one it finds again is old: libFuzzer names an artifact by a
+# hash of its input).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build-fuzz}
@@ -21,6 +23,16 @@ fi
 # Symbolized stack traces; every UBSan report stops the execution (a finding).
 export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
+# The findings of target NAME, one path a line, sorted (none before its first run).
+list_findings() {
+    [ -d "$build/findings/$1" ] || return 0
+    find "$build/findings/$1" -type f | LC_ALL=C sort
+}
+declare -A old_findings
+for name in parser build; do
+    old_findings[$name]=$(list_findings "$name")
+done
 
 run_target() {
     local name=$1 target=$2 max_len=$3
@@ -41,9 +53,14 @@ run_target build fuzz_build 512
 
 status=0
 for name in parser build; do
-    mapfile -t found < <(find "$build/findings/$name" -type f | sort)
-    echo "$name: ${#found[@]} finding(s)"
-    for f in "${found[@]}"; do echo "  $f"; done
-    [ ${#found[@]} -eq 0 ] || status=1
+    mapfile -t new < <(LC_ALL=C comm -13 <(printf '%s\n' "${old_findings[$name]}" | sed '/^$/d') <(list_findings "$name"))
+    mapfile -t old < <(printf '%s\n' "${old_findings[$name]}" | sed '/^$/d')
+    echo "$name: ${#new[@]} new finding(s) in this run"
+    for f in "${new[@]}"; do echo "  $f"; done
+    if [ ${#old[@]} -gt 0 ]; then
+        echo "$name: ${#old[@]} old finding(s), there before this run (not counted; remove each once fixed)"
+        for f in "${old[@]}"; do echo "  $f"; done
+    fi
+    [ ${#new[@]} -eq 0 ] || status=1
 done
 exit "$status"
