@@ -51,7 +51,7 @@ PY_MODULE := $(BUILD)/python/ellvor/_ellvor$(PY_EXT)
 PY_FILES  := $(patsubst python/%,$(BUILD)/python/%,$(wildcard python/ellvor/*.py))
 DEPS_STAMP := $(BUILD)/.deps-installed
 
-.PHONY: all deps run test check-tests sanitize bench fuzz fuzzers python python-module clean
+.PHONY: all deps run test sanitize bench fuzz fuzzers python python-module clean
 .DEFAULT_GOAL := all
 
 all: $(ELLVOR) $(TESTS)
