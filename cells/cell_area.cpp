@@ -23,20 +23,22 @@ constexpr double kTwoPi = 6.28318530717958647692;
 // hidden). A sweep over the bounding circles finds the candidate pairs.
 void require_disjoint_or_nested(const std::vector<Ellipse>& sites) {
     struct Disk {
-        double x, y, r;
+        double x, r;  // the center's abscissa and max(a, b), widened below
         SiteId id;
     };
     std::vector<Disk> disks;
     for (SiteId i = 0; i < sites.size(); ++i) {
         const EllipseShape e = EllipseShape::of(sites[i]);
-        disks.push_back({e.xc, e.yc, std::max(e.a, e.b) * (1 + 1e-12) + 1e-300, i});
+        // The slack covers the rounding of x and r to doubles many times over;
+        // the pairs it admits are decided by the proved test below.
+        const double r = std::max(e.a, e.b);
+        disks.push_back({e.xc, r + 1e-9 * (std::fabs(e.xc) + r), i});
     }
     std::sort(disks.begin(), disks.end(), [](const Disk& p, const Disk& q) { return p.x - p.r < q.x - q.r; });
     for (std::size_t i = 0; i < disks.size(); ++i)
-        for (std::size_t j = i + 1; j < disks.size() && disks[j].x - disks[j].r <= disks[i].x + disks[i].r * (1 + 1e-12); ++j) {
+        for (std::size_t j = i + 1; j < disks.size() && disks[j].x - disks[j].r <= disks[i].x + disks[i].r; ++j) {
             const Disk &p = disks[i], &q = disks[j];
-            const double reach = (p.r + q.r) * (1 + 1e-12);
-            if (std::fabs(p.y - q.y) > reach || std::hypot(p.x - q.x, p.y - q.y) > reach) continue;
+            if (bounding_circles_apart_in_doubles(sites[p.id], sites[q.id])) continue;  // proved apart
             const SiteId a = std::min(p.id, q.id), b = std::max(p.id, q.id);
             const RelativePosition rp = *relative_position(sites[a], sites[b]);
             if (rp == RelativePosition::intersecting || rp == RelativePosition::externally_tangent)
