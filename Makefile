@@ -20,7 +20,7 @@ PYTHON   ?= /usr/bin/python3
 # PYTHON_TESTS=no leaves the Python suite out of `make test` (`make sanitize` does).
 PYTHON_TESTS ?= yes
 
-LIB_SRC   := $(wildcard util/*.cpp decision/*.cpp sites/*.cpp exact/*.cpp subdivision/*.cpp circles/*.cpp predicates/*.cpp traits/*.cpp graph/*.cpp output/*.cpp)
+LIB_SRC   := $(wildcard util/*.cpp decision/*.cpp sites/*.cpp exact/*.cpp subdivision/*.cpp circles/*.cpp predicates/*.cpp traits/*.cpp graph/*.cpp cells/*.cpp output/*.cpp)
 CLI_SRC   := $(wildcard cli/*.cpp)
 TEST_SRC  := $(wildcard tests/*.cpp tests/*/*.cpp)
 BENCH_SRC := $(wildcard experiments/*.cpp)

@@ -34,40 +34,12 @@
 
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
+#include "subdivision/ellipse_shape.hpp"
 
 #include <optional>
 #include <vector>
 
 namespace ellvor {
-
-// An ellipse in doubles (a, b, cos and sin of the rotation, center).
-struct EllipseShape {
-    double a = 1, b = 1, c = 1, s = 0, xc = 0, yc = 0;
-
-    static EllipseShape of(const Ellipse& e);
-    // Boundary point and outward unit normal at the angle theta:
-    // P = C + a cos(theta) u + b sin(theta) v.
-    void point(double theta, double& x, double& y) const;
-    void normal(double theta, double& nx, double& ny) const;
-    // Is (x, y) strictly inside?
-    bool inside(double x, double y) const;
-    // Angle of the boundary point nearest to (x, y), inside or outside (of
-    // two equally near points, one of them).
-    double nearest_angle(double x, double y) const;
-    // Distance from (x, y) to the boundary, negative inside.
-    double signed_distance(double x, double y) const;
-    // How far the inward normal at theta runs before it meets the medial axis
-    // (the segment of the major axis between the centers of curvature of its
-    // vertices): the boundary point at theta is the nearest one of every point
-    // of the normal up to that depth. min(a, b) / max(a, b) times the length of
-    // (b cos theta, a sin theta); r for a circle.
-    double medial_depth(double theta) const;
-    // Support function max over the ellipse of (nx, ny) . point.
-    double support(double nx, double ny) const;
-    // Axis-aligned half extents.
-    double half_width() const;
-    double half_height() const;
-};
 
 struct DrawingBox {
     double xmin = 0, ymin = 0, xmax = 1, ymax = 1;

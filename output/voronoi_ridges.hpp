@@ -4,6 +4,7 @@
 // DelaunayGraph::faces() and -1 standing for a vertex at infinity.
 #pragma once
 
+#include "cells/face_numbers.hpp"
 #include "graph/delaunay_graph.hpp"
 
 #include <vector>
@@ -16,14 +17,6 @@ struct VoronoiRidge {
     SiteId p = 0, q = 0;
     long from = -1, to = -1;
 };
-
-// The number of every finite face of the triangulation, indexed by
-// FaceIndex::value(): its position in DelaunayGraph::faces() (faces listing
-// the same triple, which have one Voronoi circle, are numbered in the
-// triangulation's order); -1 for infinite faces and unused indices.
-std::vector<long> face_numbers(const DelaunayGraph& graph);
-// numbers[f], or -1 (an infinite face, or none).
-long face_number(const std::vector<long>& numbers, FaceIndex f);
 
 // One ridge per Voronoi edge (per finite Delaunay edge, so as many as
 // DelaunayGraph::edges() lists), sorted by the pair (min(p, q), max(p, q)) as

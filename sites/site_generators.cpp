@@ -160,7 +160,9 @@ long floor_to_long(const Rational& q) {
 
 }  // namespace
 
-std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
+namespace {
+
+void check_generator_options(const GeneratorOptions& o) {
     if (o.count < 0 || o.count > 1'000'000) throw Error("count must be in [0, 1000000], got " + std::to_string(o.count));
     if (o.bits < 1 || o.bits > kMaxGeneratorBits)
         throw Error("bits must be in [1, " + std::to_string(kMaxGeneratorBits) + "], got " + std::to_string(o.bits));
@@ -169,166 +171,218 @@ std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
         throw Error("nested fraction must be in [0, 1), got " + o.nested_fraction.str());
     if (o.crossing_fraction.sign() < 0 || o.crossing_fraction > Rational(1))
         throw Error("crossing fraction must be in [0, 1], got " + o.crossing_fraction.str());
-    if (o.count == 0) return {};
+}
 
-    // round(fraction * count), halves rounded up
-    auto rounded_count = [&](const Rational& fraction) {
-        return floor_to_long(fraction * Rational(o.count) + Rational(1, 2));
-    };
-    const long nested = rounded_count(o.nested_fraction);
-    const long top = o.count - nested;
-    if (top < 1) throw Error("nested fraction leaves no site to nest into");
-    const long crossing = rounded_count(o.crossing_fraction);
-    if (crossing == 1)
-        throw Error("crossing fraction " + o.crossing_fraction.str() + " of " + std::to_string(o.count) +
-                    " sites is 1 crossing site; a crossing needs two sites");
-    if (crossing > top)
-        throw Error("crossing fraction " + o.crossing_fraction.str() + " asks for " + std::to_string(crossing) +
-                    " crossing sites, but only " + std::to_string(top) + " are not nested (nested sites never cross)");
-    const long partners = (crossing + 1) / 2;
-    const long separated = top - partners;
+// How many sites of each kind: round(fraction * count), halves rounded up.
+struct SiteCounts {
+    long nested, top, crossing, partners, separated;
 
-    SiteRandom rng(o.seed);
-    const bool circles = o.kind == SiteKind::circles;
-    // The scale depends on the non-nested sites, not on how many cross, so that
-    // sets differing only in the crossing fraction are alike.
-    const long g = isqrt_ceil(top);
-    const Rational rmax = o.box / Rational(4 * g);  // bounding radii in [rmax/4, rmax]
-    const Rational rmin = rmax / Rational(4);
-    const Rational center_extent = o.box - rmax;   // keeps every site inside [-box, box]^2
-    const Rational cell = Rational(2) * rmax;      // grid for the neighbour search
-
-    std::vector<Ellipse> placed;
-    std::map<std::pair<long, long>, std::vector<std::size_t>> grid;
-    const long max_attempts = 1000 + 200 * o.count;
-    long attempts = 0;
-    auto give_up = [&]() {
-        throw Error("could not place " + std::to_string(o.count) + (crossing ? " sites" : " disjoint sites") + " after " +
-                    std::to_string(max_attempts) + " attempts; use a larger --box or more --bits");
-    };
-
-    // a in [a_lo, a_hi]; for ellipses b in [b_lo, b_hi] and w in [-1, 1]
-    // (every direction of the a-axis: the rotation in [-pi/2, pi/2]).
-    auto draw_shape = [&](const Rational& a_lo, const Rational& a_hi, const Rational& b_lo, const Rational& b_hi) {
-        SiteShape shape;
-        shape.a = rng.uniform_rational(a_lo, a_hi, o.bits);
-        if (circles) {
-            shape.b = shape.a;
-        } else {
-            shape.b = rng.uniform_rational(b_lo, b_hi, o.bits);
-            shape.w = rng.uniform_rational(Rational(-1), Rational(1), o.bits);
-        }
-        return shape;
-    };
-
-    while (static_cast<long>(placed.size()) < separated) {
-        if (++attempts > max_attempts) give_up();
-        const SiteShape shape = draw_shape(rmin, rmax, rmin, rmax);
-        Rational xc = rng.uniform_rational(-center_extent, center_extent, o.bits);
-        Rational yc = rng.uniform_rational(-center_extent, center_extent, o.bits);
-        Ellipse e(shape.a, shape.b, shape.w, xc, yc);
-        const long cx = floor_to_long((xc + o.box) / cell), cy = floor_to_long((yc + o.box) / cell);
-        bool ok = true;
-        for (long i = cx - 1; i <= cx + 1 && ok; ++i)
-            for (long j = cy - 1; j <= cy + 1 && ok; ++j) {
-                auto it = grid.find({i, j});
-                if (it == grid.end()) continue;
-                for (std::size_t k : it->second)
-                    if (!bounding_circles_separated(e, placed[k])) { ok = false; break; }
-            }
-        if (!ok) continue;
-        grid[{cx, cy}].push_back(placed.size());
-        placed.push_back(std::move(e));
+    explicit SiteCounts(const GeneratorOptions& o) {
+        auto rounded_count = [&](const Rational& fraction) {
+            return floor_to_long(fraction * Rational(o.count) + Rational(1, 2));
+        };
+        nested = rounded_count(o.nested_fraction);
+        top = o.count - nested;
+        if (top < 1) throw Error("nested fraction leaves no site to nest into");
+        crossing = rounded_count(o.crossing_fraction);
+        if (crossing == 1)
+            throw Error("crossing fraction " + o.crossing_fraction.str() + " of " + std::to_string(o.count) +
+                        " sites is 1 crossing site; a crossing needs two sites");
+        if (crossing > top)
+            throw Error("crossing fraction " + o.crossing_fraction.str() + " asks for " + std::to_string(crossing) +
+                        " crossing sites, but only " + std::to_string(top) +
+                        " are not nested (nested sites never cross)");
+        partners = (crossing + 1) / 2;
+        separated = top - partners;
     }
+};
 
-    std::vector<std::vector<std::size_t>> inside(placed.size());  // nested sites per host
-    const std::size_t hosts = placed.size();
-    for (long n = 0; n < nested;) {
-        if (++attempts > max_attempts) give_up();
-        const std::size_t h = rng.below(hosts);
-        const Ellipse& host = placed[h];
-        const Rational m = min_axis(host);
-        const SiteShape shape = draw_shape(m / Rational(8), m / Rational(2), m / Rational(8), m / Rational(2));
-        const Rational off = m / Rational(4);
-        Rational xc = rng.uniform_rational(host.xc() - off, host.xc() + off, o.bits);
-        Rational yc = rng.uniform_rational(host.yc() - off, host.yc() + off, o.bits);
-        Ellipse e(shape.a, shape.b, shape.w, xc, yc);
-        if (!bounding_circle_inside_inscribed(e, host)) continue;
-        bool ok = true;
-        for (std::size_t k : inside[h])
-            if (!bounding_circles_separated(e, placed[k])) { ok = false; break; }
-        if (!ok) continue;
-        inside[h].push_back(placed.size());
-        placed.push_back(std::move(e));
-        ++n;
-    }
+// Places the sites of one set in three passes -- separated sites, nested
+// ones, crossing partners -- drawing from one generator in a fixed order, so
+// that the same options give the same file everywhere.
+class SitePlacer {
+public:
+    SitePlacer(const GeneratorOptions& o, const SiteCounts& counts)
+        : o_(o), counts_(counts), rng_(o.seed), circles_(o.kind == SiteKind::circles),
+          // The scale depends on the non-nested sites, not on how many cross,
+          // so that sets differing only in the crossing fraction are alike.
+          rmax_(o.box / Rational(4 * isqrt_ceil(counts.top))),  // bounding radii in [rmax/4, rmax]
+          rmin_(rmax_ / Rational(4)),
+          center_extent_(o.box - rmax_),  // keeps every site inside [-box, box]^2
+          cell_(Rational(2) * rmax_),     // grid for the neighbour search
+          max_attempts_(1000 + 200 * o.count) {}
 
-    // Crossing partners (see the header). `crosses` marks the sites that cross
-    // another; `free_targets` the separated sites that do not yet.
-    std::vector<char> crosses(placed.size(), 0);
-    std::vector<std::size_t> crossing_ids, free_targets;
-    for (std::size_t k = 0; k < hosts; ++k) free_targets.push_back(k);
-    for (long p = 0; p < partners;) {
-        if (++attempts > max_attempts) give_up();
-        // Two new crossing sites (the partner and its target) while two or more
-        // are missing; for odd K the last partner adds only itself.
-        const bool pair = crossing - static_cast<long>(crossing_ids.size()) >= 2;
-        const std::size_t slot = rng.below(pair ? free_targets.size() : crossing_ids.size());
-        const std::size_t t = pair ? free_targets[slot] : crossing_ids[slot];
-        const Ellipse& target = placed[t];
-        // Half the partner ellipses thin: the minor semi-axis in [rmin/4, rmin],
-        // an aspect ratio up to 16 (no draw for circles, whose sets stay as they were).
-        const bool thin = !circles && rng.below(2) == 0;
-        const SiteShape shape = draw_shape(rmin, rmax, thin ? rmin / Rational(4) : rmin, thin ? rmin : rmax);
-        // Centers up to the sum of the largest semi-axes away in each coordinate:
-        // deep crossings (a center inside the other site) and shallow ones.
-        const Rational reach = max_axis(target) + shape.largest_axis();
-        Rational xc = rng.uniform_rational(target.xc() - reach, target.xc() + reach, o.bits);
-        Rational yc = rng.uniform_rational(target.yc() - reach, target.yc() + reach, o.bits);
-        if (xc < -center_extent || xc > center_extent || yc < -center_extent || yc > center_extent) continue;
-        Ellipse e(shape.a, shape.b, shape.w, xc, yc);
-        if (site_pair(e, target) != SitePair::crossing) continue;
-        // Every site near enough to meet e is in a neighbouring cell (largest
-        // semi-axes <= rmax); nested sites lie inside their hosts, so only the
-        // hosts e meets need their nested sites checked.
-        const long cx = floor_to_long((xc + o.box) / cell), cy = floor_to_long((yc + o.box) / cell);
-        bool ok = true;
-        for (long i = cx - 1; i <= cx + 1 && ok; ++i)
-            for (long j = cy - 1; j <= cy + 1 && ok; ++j) {
-                auto it = grid.find({i, j});
-                if (it == grid.end()) continue;
-                for (std::size_t k : it->second) {
-                    if (k != t) {  // the target crosses e (above)
-                        const SitePair rel = site_pair(e, placed[k]);
-                        if (rel == SitePair::separated) continue;
-                        if (rel == SitePair::other || !crosses[k]) { ok = false; break; }
-                    }
-                    if (k < hosts)
-                        for (std::size_t m : inside[k])
-                            if (site_pair(e, placed[m]) != SitePair::separated) { ok = false; break; }
-                    if (!ok) break;
+    void place_separated_sites() {
+        while (static_cast<long>(placed_.size()) < counts_.separated) {
+            count_attempt();
+            const SiteShape shape = draw_shape(rmin_, rmax_, rmin_, rmax_);
+            Rational xc = rng_.uniform_rational(-center_extent_, center_extent_, o_.bits);
+            Rational yc = rng_.uniform_rational(-center_extent_, center_extent_, o_.bits);
+            Ellipse e(shape.a, shape.b, shape.w, xc, yc);
+            const auto [cx, cy] = grid_cell(xc, yc);
+            bool ok = true;
+            for (long i = cx - 1; i <= cx + 1 && ok; ++i)
+                for (long j = cy - 1; j <= cy + 1 && ok; ++j) {
+                    auto it = grid_.find({i, j});
+                    if (it == grid_.end()) continue;
+                    for (std::size_t k : it->second)
+                        if (!bounding_circles_separated(e, placed_[k])) { ok = false; break; }
                 }
-            }
-        if (!ok) continue;
-        if (pair) {
-            crosses[t] = 1;
-            crossing_ids.push_back(t);
-            free_targets[slot] = free_targets.back();
-            free_targets.pop_back();
+            if (!ok) continue;
+            grid_[{cx, cy}].push_back(placed_.size());
+            placed_.push_back(std::move(e));
         }
-        grid[{cx, cy}].push_back(placed.size());
-        crosses.push_back(1);
-        crossing_ids.push_back(placed.size());
-        placed.push_back(std::move(e));
-        ++p;
+        hosts_ = placed_.size();
+        inside_.assign(hosts_, {});
+    }
+
+    void place_nested_sites() {
+        for (long n = 0; n < counts_.nested;) {
+            count_attempt();
+            const std::size_t h = rng_.below(hosts_);
+            const Ellipse& host = placed_[h];
+            const Rational m = min_axis(host);
+            const SiteShape shape = draw_shape(m / Rational(8), m / Rational(2), m / Rational(8), m / Rational(2));
+            const Rational off = m / Rational(4);
+            Rational xc = rng_.uniform_rational(host.xc() - off, host.xc() + off, o_.bits);
+            Rational yc = rng_.uniform_rational(host.yc() - off, host.yc() + off, o_.bits);
+            Ellipse e(shape.a, shape.b, shape.w, xc, yc);
+            if (!bounding_circle_inside_inscribed(e, host)) continue;
+            bool ok = true;
+            for (std::size_t k : inside_[h])
+                if (!bounding_circles_separated(e, placed_[k])) { ok = false; break; }
+            if (!ok) continue;
+            inside_[h].push_back(placed_.size());
+            placed_.push_back(std::move(e));
+            ++n;
+        }
+    }
+
+    // Crossing partners (see the header). `crosses_` marks the sites that
+    // cross another; `free_targets` the separated sites that do not yet.
+    void place_crossing_partners() {
+        crosses_.assign(placed_.size(), 0);
+        std::vector<std::size_t> crossing_ids, free_targets;
+        for (std::size_t k = 0; k < hosts_; ++k) free_targets.push_back(k);
+        for (long p = 0; p < counts_.partners;) {
+            count_attempt();
+            // Two new crossing sites (the partner and its target) while two or
+            // more are missing; for odd K the last partner adds only itself.
+            const bool pair = counts_.crossing - static_cast<long>(crossing_ids.size()) >= 2;
+            const std::size_t slot = rng_.below(pair ? free_targets.size() : crossing_ids.size());
+            const std::size_t t = pair ? free_targets[slot] : crossing_ids[slot];
+            const Ellipse& target = placed_[t];
+            // Half the partner ellipses thin: the minor semi-axis in [rmin/4, rmin],
+            // an aspect ratio up to 16 (no draw for circles, whose sets stay as they were).
+            const bool thin = !circles_ && rng_.below(2) == 0;
+            const SiteShape shape = draw_shape(rmin_, rmax_, thin ? rmin_ / Rational(4) : rmin_, thin ? rmin_ : rmax_);
+            // Centers up to the sum of the largest semi-axes away in each coordinate:
+            // deep crossings (a center inside the other site) and shallow ones.
+            const Rational reach = max_axis(target) + shape.largest_axis();
+            Rational xc = rng_.uniform_rational(target.xc() - reach, target.xc() + reach, o_.bits);
+            Rational yc = rng_.uniform_rational(target.yc() - reach, target.yc() + reach, o_.bits);
+            if (xc < -center_extent_ || xc > center_extent_ || yc < -center_extent_ || yc > center_extent_) continue;
+            Ellipse e(shape.a, shape.b, shape.w, xc, yc);
+            if (site_pair(e, target) != SitePair::crossing) continue;
+            const auto [cx, cy] = grid_cell(xc, yc);
+            if (!crosses_only_crossing_sites(e, t, cx, cy)) continue;
+            if (pair) {
+                crosses_[t] = 1;
+                crossing_ids.push_back(t);
+                free_targets[slot] = free_targets.back();
+                free_targets.pop_back();
+            }
+            grid_[{cx, cy}].push_back(placed_.size());
+            crosses_.push_back(1);
+            crossing_ids.push_back(placed_.size());
+            placed_.push_back(std::move(e));
+            ++p;
+        }
     }
 
     // Fisher-Yates with our own uniform draws.
-    for (std::size_t i = placed.size(); i > 1; --i) {
-        std::size_t j = rng.below(i);
-        std::swap(placed[i - 1], placed[j]);
+    std::vector<Ellipse> shuffled() {
+        for (std::size_t i = placed_.size(); i > 1; --i) {
+            std::size_t j = rng_.below(i);
+            std::swap(placed_[i - 1], placed_[j]);
+        }
+        return std::move(placed_);
     }
-    return placed;
+
+private:
+    void count_attempt() {
+        if (++attempts_ <= max_attempts_) return;
+        throw Error("could not place " + std::to_string(o_.count) + (counts_.crossing ? " sites" : " disjoint sites") +
+                    " after " + std::to_string(max_attempts_) + " attempts; use a larger --box or more --bits");
+    }
+
+    // a in [a_lo, a_hi]; for ellipses b in [b_lo, b_hi] and w in [-1, 1]
+    // (every direction of the a-axis: the rotation in [-pi/2, pi/2]).
+    SiteShape draw_shape(const Rational& a_lo, const Rational& a_hi, const Rational& b_lo, const Rational& b_hi) {
+        SiteShape shape;
+        shape.a = rng_.uniform_rational(a_lo, a_hi, o_.bits);
+        if (circles_) {
+            shape.b = shape.a;
+        } else {
+            shape.b = rng_.uniform_rational(b_lo, b_hi, o_.bits);
+            shape.w = rng_.uniform_rational(Rational(-1), Rational(1), o_.bits);
+        }
+        return shape;
+    }
+
+    std::pair<long, long> grid_cell(const Rational& xc, const Rational& yc) const {
+        return {floor_to_long((xc + o_.box) / cell_), floor_to_long((yc + o_.box) / cell_)};
+    }
+
+    // e (crossing its target t) is apart from every other site or crosses
+    // only sites that cross already, and meets no nested site. Every site
+    // near enough to meet e is in a neighbouring cell (largest semi-axes <=
+    // rmax); nested sites lie inside their hosts, so only the hosts e meets
+    // need their nested sites checked.
+    bool crosses_only_crossing_sites(const Ellipse& e, std::size_t t, long cx, long cy) const {
+        for (long i = cx - 1; i <= cx + 1; ++i)
+            for (long j = cy - 1; j <= cy + 1; ++j) {
+                auto it = grid_.find({i, j});
+                if (it == grid_.end()) continue;
+                for (std::size_t k : it->second) {
+                    if (k != t) {  // the target crosses e
+                        const SitePair rel = site_pair(e, placed_[k]);
+                        if (rel == SitePair::separated) continue;
+                        if (rel == SitePair::other || !crosses_[k]) return false;
+                    }
+                    if (k < hosts_)
+                        for (std::size_t m : inside_[k])
+                            if (site_pair(e, placed_[m]) != SitePair::separated) return false;
+                }
+            }
+        return true;
+    }
+
+    const GeneratorOptions& o_;
+    const SiteCounts& counts_;
+    SiteRandom rng_;
+    const bool circles_;
+    const Rational rmax_, rmin_, center_extent_, cell_;
+    const long max_attempts_;
+    long attempts_ = 0;
+    std::vector<Ellipse> placed_;
+    std::map<std::pair<long, long>, std::vector<std::size_t>> grid_;
+    std::size_t hosts_ = 0;                         // the separated sites, placed first
+    std::vector<std::vector<std::size_t>> inside_;  // nested sites per host
+    std::vector<char> crosses_;
+};
+
+}  // namespace
+
+std::vector<Ellipse> generate_sites(const GeneratorOptions& o) {
+    check_generator_options(o);
+    if (o.count == 0) return {};
+    const SiteCounts counts(o);
+    SitePlacer placer(o, counts);
+    placer.place_separated_sites();
+    placer.place_nested_sites();
+    placer.place_crossing_partners();
+    return placer.shuffled();
 }
 
 // ---- paper datasets ----------------------------------------------------------

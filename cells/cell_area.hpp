@@ -1,0 +1,40 @@
+// Certified areas of the Voronoi cells of disjoint (and nested) sites in the
+// free plane (docs/DESIGN.md §10): each area an Arb ball that provably
+// contains the exact area of the cell, the site's own area included (the
+// set-Voronoi convention: the cells tile the plane).
+#pragma once
+
+#include "cells/voronoi_cells.hpp"
+#include "graph/delaunay_graph.hpp"
+#include "sites/ellipse.hpp"
+
+#include <vector>
+
+namespace ellvor {
+
+struct CellAreaOptions {
+    // Every finite area is returned with hi - lo <= tolerance * lo, in (0, 1];
+    // the working precision grows with -log2(tolerance).
+    double tolerance = 1e-9;
+};
+
+struct CellArea {
+    SiteId site = 0;
+    bool visible = false;
+    bool bounded = false;    // false: the area is +infinity (a vertex at infinity), or 0 (hidden)
+    Ball area;               // [lo, hi]; exactly 0 for a hidden site; +inf for an unbounded cell
+    Ball site_area;          // pi a b
+    long precision = 0;      // Arb precision of the pass that met the tolerance (0: none was needed)
+};
+
+// The working precision for a tolerance: 64 bits beyond its own bits.
+long cell_area_precision(double tolerance);
+
+// Every cell's area, indexed by site id. Throws InputError when the
+// tolerance is not in (0, 1], or when two sites touch or cross (their cells
+// are out of scope: the integrals assume positive distances), naming the
+// pair; Error if a cell cannot be certified within the precision limit.
+std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                                 const CellAreaOptions& options = {});
+
+}  // namespace ellvor

@@ -1,0 +1,321 @@
+#include "cells/normal_ray_bisector.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ellvor {
+namespace {
+
+// A site's boundary at a complex angle: the point, the unnormalized outward
+// normal n~, the derivatives of both in the angle, N^2 = |n~|^2.
+struct Boundary {
+    ComplexBall x, y, nx, ny, dx, dy, dnx, dny, n2;
+};
+
+// (lx, ly) in the site's frame to the plane: (lx cos - ly sin, lx sin + ly cos).
+void rotate(const SiteBalls& e, const ComplexBall& lx, const ComplexBall& ly, long prec, ComplexBall& x,
+            ComplexBall& y) {
+    ComplexBall t;
+    acb_mul_arb(x.get(), lx.get(), e.cos.get(), prec);
+    acb_mul_arb(t.get(), ly.get(), e.sin.get(), prec);
+    acb_sub(x.get(), x.get(), t.get(), prec);
+    acb_mul_arb(y.get(), lx.get(), e.sin.get(), prec);
+    acb_mul_arb(t.get(), ly.get(), e.cos.get(), prec);
+    acb_add(y.get(), y.get(), t.get(), prec);
+}
+
+void boundary_at(const SiteBalls& e, const ComplexBall& angle, long prec, Boundary& out) {
+    ComplexBall c, s, lx, ly, t;
+    acb_sin_cos(s.get(), c.get(), angle.get(), prec);
+    // point (a c, b s)
+    acb_mul_arb(lx.get(), c.get(), e.a.get(), prec);
+    acb_mul_arb(ly.get(), s.get(), e.b.get(), prec);
+    rotate(e, lx, ly, prec, out.x, out.y);
+    acb_add_arb(out.x.get(), out.x.get(), e.xc.get(), prec);
+    acb_add_arb(out.y.get(), out.y.get(), e.yc.get(), prec);
+    // normal (b c, a s)
+    acb_mul_arb(lx.get(), c.get(), e.b.get(), prec);
+    acb_mul_arb(ly.get(), s.get(), e.a.get(), prec);
+    rotate(e, lx, ly, prec, out.nx, out.ny);
+    // N^2 = (a s)^2 + (b c)^2
+    acb_mul(out.n2.get(), lx.get(), lx.get(), prec);
+    acb_mul(t.get(), ly.get(), ly.get(), prec);
+    acb_add(out.n2.get(), out.n2.get(), t.get(), prec);
+    // d point = (-a s, b c)
+    acb_mul_arb(lx.get(), s.get(), e.a.get(), prec);
+    acb_neg(lx.get(), lx.get());
+    acb_mul_arb(ly.get(), c.get(), e.b.get(), prec);
+    rotate(e, lx, ly, prec, out.dx, out.dy);
+    // d normal = (-b s, a c)
+    acb_mul_arb(lx.get(), s.get(), e.b.get(), prec);
+    acb_neg(lx.get(), lx.get());
+    acb_mul_arb(ly.get(), c.get(), e.a.get(), prec);
+    rotate(e, lx, ly, prec, out.dnx, out.dny);
+}
+
+double magnitude(const ComplexBall& z) {
+    Mag m;
+    acb_get_mag(m.get(), z.get());
+    return mag_get_d(m.get());
+}
+
+// The complex square [z +/- r] + i [0 +/- r] around a real point z.
+ComplexBall square(const ComplexBall& z, double r) {
+    ComplexBall box(z);
+    mag_set_d(arb_radref(box.real()), r);
+    mag_set_d(arb_radref(box.imag()), r);
+    return box;
+}
+
+// e = d . f for plane vectors given by coordinates.
+void dot(const ComplexBall& dx, const ComplexBall& dy, const ComplexBall& fx, const ComplexBall& fy, long prec,
+         ComplexBall& e) {
+    ComplexBall t;
+    acb_mul(e.get(), dx.get(), fx.get(), prec);
+    acb_mul(t.get(), dy.get(), fy.get(), prec);
+    acb_add(e.get(), e.get(), t.get(), prec);
+}
+
+// The foot-point equation of V on q at phi, f = (V - Q(phi)) . Q'(phi), and
+// its derivative f' = -|Q'|^2 + (V - Q) . Q'' with Q'' = -(Q - C).
+void foot_equation(const SiteBalls& q, const Boundary& bq, const ComplexBall& vx, const ComplexBall& vy, long prec,
+                   ComplexBall& f, ComplexBall* df) {
+    ComplexBall dx, dy;
+    acb_sub(dx.get(), vx.get(), bq.x.get(), prec);
+    acb_sub(dy.get(), vy.get(), bq.y.get(), prec);
+    dot(dx, dy, bq.dx, bq.dy, prec, f);
+    if (!df) return;
+    ComplexBall t, cx, cy;
+    dot(bq.dx, bq.dy, bq.dx, bq.dy, prec, *df);
+    acb_neg(df->get(), df->get());
+    acb_sub_arb(cx.get(), bq.x.get(), q.xc.get(), prec);
+    acb_sub_arb(cy.get(), bq.y.get(), q.yc.get(), prec);
+    dot(dx, dy, cx, cy, prec, t);
+    acb_sub(df->get(), df->get(), t.get(), prec);
+}
+
+// A Krawczyk step in one unknown: x = x0 - c f(x0) + (1 - c f'(X)) (X - x0)
+// inside the interior of X? Then every equation of the family has exactly
+// one root in X, and it lies in K.
+bool contracts(const ComplexBall& x0, const ComplexBall& X, const ComplexBall& c, const ComplexBall& f0,
+               const ComplexBall& dfX, long prec, ComplexBall& K) {
+    ComplexBall t, d;
+    acb_mul(t.get(), c.get(), dfX.get(), prec);
+    acb_sub_ui(t.get(), t.get(), 1, prec);
+    acb_neg(t.get(), t.get());
+    acb_sub(d.get(), X.get(), x0.get(), prec);
+    acb_mul(t.get(), t.get(), d.get(), prec);
+    acb_mul(d.get(), c.get(), f0.get(), prec);
+    acb_sub(K.get(), x0.get(), d.get(), prec);
+    acb_add(K.get(), K.get(), t.get(), prec);
+    return acb_contains_interior(X.get(), K.get());
+}
+
+// The foot point of every V in the box (vx, vy) on q near the real angle
+// phi0: its angle Phi (unique in a box around phi0) and q's boundary there,
+// certified; false if not. With Re (V - Q) . n~q > 0 over the box, Q is the
+// nearest point of q to V (q convex, V on its outward normal).
+bool foot_point(const SiteBalls& q, const ComplexBall& vx, const ComplexBall& vy, const ComplexBall& phi0, long prec,
+                ComplexBall& Phi, Boundary& bq) {
+    Boundary b0;
+    boundary_at(q, phi0, prec, b0);
+    ComplexBall f0, df0, c;
+    foot_equation(q, b0, vx, vy, prec, f0, &df0);
+    acb_get_mid(c.get(), df0.get());
+    if (acb_contains_zero(c.get())) return false;
+    acb_inv(c.get(), c.get(), prec);
+    acb_get_mid(c.get(), c.get());
+    ComplexBall step, K, df;
+    acb_mul(step.get(), c.get(), f0.get(), prec);
+    double r = 2 * magnitude(step) + std::ldexp(1.0, static_cast<int>(std::max(-1000L, 8 - prec)));
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (!std::isfinite(r) || r > 0.5) return false;
+        const ComplexBall X = square(phi0, r);
+        boundary_at(q, X, prec, bq);
+        ComplexBall f;
+        foot_equation(q, bq, vx, vy, prec, f, &df);
+        if (contracts(phi0, X, c, f0, df, prec, K)) {
+            Phi = K;
+            boundary_at(q, Phi, prec, bq);
+            ComplexBall dx, dy, side;
+            acb_sub(dx.get(), vx.get(), bq.x.get(), prec);
+            acb_sub(dy.get(), vy.get(), bq.y.get(), prec);
+            dot(dx, dy, bq.nx, bq.ny, prec, side);
+            return arb_is_positive(side.real());
+        }
+        ComplexBall d;
+        acb_sub(d.get(), K.get(), phi0.get(), prec);
+        r = std::max(2 * r, 2 * magnitude(d));
+    }
+    return false;
+}
+
+// Newton on the foot point of a point V (midpoints only).
+void foot_newton(const SiteBalls& q, const ComplexBall& vx, const ComplexBall& vy, int steps, long prec, ComplexBall& phi) {
+    Boundary b;
+    ComplexBall f, df;
+    for (int k = 0; k < steps; ++k) {
+        boundary_at(q, phi, prec, b);
+        foot_equation(q, b, vx, vy, prec, f, &df);
+        acb_div(f.get(), f.get(), df.get(), prec);
+        acb_sub(phi.get(), phi.get(), f.get(), prec);
+        acb_get_mid(phi.get(), phi.get());
+    }
+}
+
+// The tie function of V = P + s n~ and its foot point Q on q,
+//     g = |V - Q|^2 - s^2 N^2 = |P - Q|^2 + 2 s (P - Q) . n~,
+// and its total derivatives (the foot point's own derivative drops out,
+// (V - Q) . Q' = 0; and P' . n~ = 0):
+//     dg/ds = 2 (P - Q) . n~,   dg/dtheta = 2 (P - Q) . (P' + s n~').
+// Written so, the s^2 terms cancel exactly: interval evaluation stays tight
+// far along the edge, where |V - Q| is large.
+void tie(const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec, ComplexBall* g, ComplexBall* dg_ds,
+         ComplexBall* dg_dtheta) {
+    ComplexBall dx, dy, t, u;
+    acb_sub(dx.get(), bp.x.get(), bq.x.get(), prec);
+    acb_sub(dy.get(), bp.y.get(), bq.y.get(), prec);
+    dot(dx, dy, bp.nx, bp.ny, prec, u);  // (P - Q) . n~
+    if (g) {
+        dot(dx, dy, dx, dy, prec, *g);
+        acb_mul(t.get(), s.get(), u.get(), prec);
+        acb_mul_2exp_si(t.get(), t.get(), 1);
+        acb_add(g->get(), g->get(), t.get(), prec);
+    }
+    if (dg_ds) acb_mul_2exp_si(dg_ds->get(), u.get(), 1);
+    if (dg_dtheta) {
+        ComplexBall wx, wy;
+        acb_mul(wx.get(), s.get(), bp.dnx.get(), prec);
+        acb_add(wx.get(), wx.get(), bp.dx.get(), prec);
+        acb_mul(wy.get(), s.get(), bp.dny.get(), prec);
+        acb_add(wy.get(), wy.get(), bp.dy.get(), prec);
+        dot(dx, dy, wx, wy, prec, *dg_dtheta);
+        acb_mul_2exp_si(dg_dtheta->get(), dg_dtheta->get(), 1);
+    }
+}
+
+void ray_point(const Boundary& bp, const ComplexBall& s, long prec, ComplexBall& vx, ComplexBall& vy) {
+    acb_mul(vx.get(), s.get(), bp.nx.get(), prec);
+    acb_add(vx.get(), vx.get(), bp.x.get(), prec);
+    acb_mul(vy.get(), s.get(), bp.ny.get(), prec);
+    acb_add(vy.get(), vy.get(), bp.y.get(), prec);
+}
+
+}  // namespace
+
+SiteBalls::SiteBalls(const Ellipse& e, long prec)
+    : a(e.a(), prec), b(e.b(), prec), cos(e.cos_rotation(), prec), sin(e.sin_rotation(), prec), xc(e.xc(), prec),
+      yc(e.yc(), prec) {}
+
+NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q)
+    : p_(&p), q_(&q), p_shape_(EllipseShape::of(p)), q_shape_(EllipseShape::of(q)) {
+    size_ = std::max({p_shape_.a, p_shape_.b, q_shape_.a, q_shape_.b,
+                      std::hypot(p_shape_.xc - q_shape_.xc, p_shape_.yc - q_shape_.yc)});
+}
+
+void NormalRayBisector::set_precision(long prec) {
+    if (prec == prec_) return;
+    pb_ = SiteBalls(*p_, prec);
+    qb_ = SiteBalls(*q_, prec);
+    prec_ = prec;
+}
+
+bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out) {
+    set_precision(prec);
+    // The start: the bisector point on the real normal ray at the middle of
+    // the ball, in doubles.
+    const double theta0 = arf_get_d(arb_midref(theta.real()), ARF_RND_NEAR);
+    if (!std::isfinite(theta0)) return false;
+    const std::optional<double> rho = equal_distance_on_normal(p_shape_, q_shape_, theta0, 1e12 * size_);
+    if (!rho || !(*rho > 0)) return false;
+    double px, py, nx, ny;
+    p_shape_.point(theta0, px, py);
+    p_shape_.normal(theta0, nx, ny);
+    const double np = std::hypot(p_shape_.b * std::cos(theta0), p_shape_.a * std::sin(theta0));
+    ComplexBall s0, phi0;
+    arb_set_d(s0.real(), *rho / np);
+    arb_set_d(phi0.real(), q_shape_.nearest_angle(px + *rho * nx, py + *rho * ny));
+
+    // Newton at the real middle of the ball, on midpoints: s, and the foot point of V(s) with it.
+    ComplexBall mid, vx, vy, g, dg, step;
+    arb_get_mid_arb(mid.real(), theta.real());
+    Boundary bp, bq;
+    boundary_at(pb_, mid, prec, bp);
+    // Until the step is at the working precision (quadratic convergence from
+    // the double start; the limit only guards a start that does not converge,
+    // which the certificate below then rejects).
+    const double small = std::ldexp(1.0, static_cast<int>(std::max(-1000L, 4 - prec)));
+    for (int k = 0; k < 60; ++k) {
+        ray_point(bp, s0, prec, vx, vy);
+        foot_newton(qb_, vx, vy, 2, prec, phi0);
+        boundary_at(qb_, phi0, prec, bq);
+        tie(bp, bq, s0, prec, &g, &dg, nullptr);
+        acb_div(step.get(), g.get(), dg.get(), prec);
+        acb_sub(s0.get(), s0.get(), step.get(), prec);
+        acb_get_mid(s0.get(), s0.get());
+        if (magnitude(step) <= small * (1 + magnitude(s0))) break;
+    }
+    ray_point(bp, s0, prec, vx, vy);
+    foot_newton(qb_, vx, vy, 4, prec, phi0);
+    boundary_at(qb_, phi0, prec, bq);
+    tie(bp, bq, s0, prec, &g, &dg, nullptr);
+    ComplexBall c;
+    acb_get_mid(c.get(), dg.get());
+    if (acb_contains_zero(c.get())) return false;
+    acb_inv(c.get(), c.get(), prec);
+    acb_get_mid(c.get(), c.get());
+
+    // g(s0, theta) over the theta-ball in the mean-value form around the
+    // middle: g(s0, mid) + dg/dtheta (Theta - mid), the derivative with the
+    // foot points of all V(s0, Theta) (certified by foot_point).
+    ComplexBall g0, Phi, K, dgt, dtheta;
+    tie(bp, bq, s0, prec, &g0, nullptr, nullptr);  // at the middle; bp, bq are there
+    Boundary bpT;
+    boundary_at(pb_, theta, prec, bpT);
+    ray_point(bpT, s0, prec, vx, vy);
+    if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
+    tie(bpT, bq, s0, prec, nullptr, nullptr, &dgt);
+    acb_sub(dtheta.get(), theta.get(), mid.get(), prec);
+    acb_mul(dgt.get(), dgt.get(), dtheta.get(), prec);
+    acb_add(g0.get(), g0.get(), dgt.get(), prec);
+    acb_mul(step.get(), c.get(), g0.get(), prec);
+    double r = 2 * magnitude(step) + std::ldexp(1.0 + magnitude(s0), static_cast<int>(std::max(-1000L, 8 - prec)));
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (!std::isfinite(r)) return false;
+        const ComplexBall S = square(s0, r);
+        if (!arb_is_positive(S.real())) return false;  // Re s > 0 (see the header)
+        ray_point(bpT, S, prec, vx, vy);
+        if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
+        tie(bpT, bq, S, prec, nullptr, &dg, nullptr);
+        if (contracts(s0, S, c, g0, dg, prec, K)) {
+            s_out = K;
+            return true;
+        }
+        ComplexBall d;
+        acb_sub(d.get(), K.get(), s0.get(), prec);
+        r = std::max(2 * r, 2 * magnitude(d));
+    }
+    return false;
+}
+
+bool NormalRayBisector::area_density(const ComplexBall& theta, long prec, ComplexBall& density) {
+    ComplexBall s;
+    if (!solve(theta, prec, s)) return false;
+    // s N^2 + a b s^2 / 2, N^2 = a^2 sin^2 + b^2 cos^2.
+    ComplexBall c, sn, t, n2;
+    acb_sin_cos(sn.get(), c.get(), theta.get(), prec);
+    acb_mul_arb(sn.get(), sn.get(), pb_.a.get(), prec);
+    acb_mul_arb(c.get(), c.get(), pb_.b.get(), prec);
+    acb_mul(n2.get(), sn.get(), sn.get(), prec);
+    acb_mul(t.get(), c.get(), c.get(), prec);
+    acb_add(n2.get(), n2.get(), t.get(), prec);
+    acb_mul(density.get(), s.get(), n2.get(), prec);
+    acb_mul(t.get(), s.get(), s.get(), prec);
+    acb_mul_arb(t.get(), t.get(), pb_.a.get(), prec);
+    acb_mul_arb(t.get(), t.get(), pb_.b.get(), prec);
+    acb_mul_2exp_si(t.get(), t.get(), -1);
+    acb_add(density.get(), density.get(), t.get(), prec);
+    return true;
+}
+
+}  // namespace ellvor

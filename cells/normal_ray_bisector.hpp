@@ -1,0 +1,73 @@
+// The Voronoi edge of two disjoint sites p, q seen from p, certified on
+// complex balls of p's boundary angle theta (docs/DESIGN.md §10).
+//
+// With P(theta) = C + a cos(theta) u + b sin(theta) v and the unnormalized
+// outward normal n~(theta) = b cos(theta) u + a sin(theta) v (length N(theta),
+// N^2 = a^2 sin^2 + b^2 cos^2 = |P'|^2), the bisector point on p's normal ray
+// is V = P(theta) + s n~(theta), at distance rho = s N(theta) from p. With
+// Q(phi) a boundary point of q, the system in x = (s, phi)
+//     F0 = (V - Q(phi)) . Q'(phi)          = 0   (Q is a foot point of V on q)
+//     F1 = |V - Q(phi)|^2 - s^2 N(theta)^2 = 0   (V as far from q as from p)
+// is polynomial in the cosines and sines: holomorphic in theta, s, phi, with
+// no square root. (dF1/dphi = -2 F0 vanishes at a root: the distance to q is
+// stationary in the foot point, which keeps the system well conditioned far
+// along the edge, where the ray meets the bisector at a small angle.)
+//
+// Certificate: the Krawczyk operator over a complex box X (around a Newton
+// point on the reals) and the whole theta-ball lies in the interior of X.
+// Then for every theta in the ball the system has exactly one root in X, the
+// root is a holomorphic function of theta there (its Jacobian is nonsingular
+// on X). If moreover Re s > 0 and Re (V - Q) . n~q(phi) > 0 on X, then for a
+// real theta the root is real (X is symmetric about the reals and conjugation
+// maps roots to roots), s > 0, and V - Q lies along q's outward normal at Q,
+// so Q is the nearest point of the convex q to V and dist(V, q) = |V - Q| =
+// s N = dist(V, p): V is the one point of p's normal ray equidistant from p
+// and q (docs/DESIGN.md §10).
+#pragma once
+
+#include "sites/ellipse.hpp"
+#include "subdivision/ellipse_shape.hpp"
+#include "util/complex_ball.hpp"
+
+#include <array>
+
+namespace ellvor {
+
+// An ellipse's parameters as balls at one precision: semi-axes, cosine and
+// sine of the rotation, center.
+struct SiteBalls {
+    Ball a, b, cos, sin, xc, yc;
+    SiteBalls() = default;
+    SiteBalls(const Ellipse& e, long prec);
+};
+
+class NormalRayBisector {
+public:
+    // The sites must outlive this object.
+    NormalRayBisector(const Ellipse& p, const Ellipse& q);
+
+    // Encloses s(theta) for every theta in the complex ball `theta`, at
+    // precision prec; false when the certificate fails there (the ball is too
+    // large, or has no bisector point: then nothing is claimed).
+    bool solve(const ComplexBall& theta, long prec, ComplexBall& s);
+
+    // The cell's area density on the edge (docs/DESIGN.md §10): the area
+    // swept by p's normal segments [0, rho(theta)] per unit of theta,
+    //     rho |P'| + kappa |P'| rho^2 / 2 = s N^2 + a b s^2 / 2.
+    // False when solve() is.
+    bool area_density(const ComplexBall& theta, long prec, ComplexBall& density);
+
+    const Ellipse& first() const { return *p_; }
+
+private:
+    void set_precision(long prec);
+
+    const Ellipse* p_;
+    const Ellipse* q_;
+    EllipseShape p_shape_, q_shape_;
+    double size_;  // scale of the pair, for the double guesses
+    long prec_ = 0;
+    SiteBalls pb_, qb_;
+};
+
+}  // namespace ellvor

@@ -1,0 +1,278 @@
+// Certified cell areas against independent computations: equal circles (the
+// cells are exactly the point-Voronoi cells of the centres: polygons clipped
+// in exact rationals), unequal circles (the polar radius of the cell around
+// a centre in closed form, integrated by adaptive Simpson in long double),
+// ellipses (the normal segments swept in doubles, adaptive Simpson); and
+// the widths hi - lo <= T * area for T = 1e-9, 1e-15, 1e-30.
+#include "cells/cell_area.hpp"
+#include "cells/face_numbers.hpp"
+#include "subdivision/ellipse_shape.hpp"
+#include "sites/site_generators.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "tests/support/ellipse_graph.hpp"
+#include "tests/support/random_sites.hpp"
+#include "util/error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+bool contains(const Ball& b, const Rational& q) { return b.contains(q); }
+
+double relative_width(const Ball& b) {
+    return 2 * b.radius_double() / (b.mid_double() - b.radius_double());
+}
+
+std::vector<CellArea> built_areas(const std::vector<Ellipse>& sites, double tolerance) {
+    DelaunayGraph graph = test::ellipse_graph(sites);
+    graph.insert_all();
+    CellAreaOptions o;
+    o.tolerance = tolerance;
+    return cell_areas(graph, sites, o);
+}
+
+// The point-Voronoi cell of centre i clipped to [-L, L]^2, in exact rationals.
+struct Polygon {
+    std::vector<Point> points;
+    bool touches_frame = false;
+    Rational area() const {
+        Rational twice(0);
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Point &a = points[k], &b = points[(k + 1) % points.size()];
+            twice = twice + a.x * b.y - a.y * b.x;
+        }
+        return twice * Rational(1, 2);
+    }
+};
+
+Polygon point_voronoi_cell(const std::vector<Point>& centres, std::size_t i, const Rational& L) {
+    Polygon poly;
+    poly.points = {{-L, -L}, {L, -L}, {L, L}, {-L, L}};
+    for (std::size_t j = 0; j < centres.size(); ++j) {
+        if (j == i) continue;
+        // Keep 2 (cj - ci) . x <= |cj|^2 - |ci|^2.
+        const Rational ax = Rational(2) * (centres[j].x - centres[i].x), ay = Rational(2) * (centres[j].y - centres[i].y);
+        const Rational c = centres[j].x * centres[j].x + centres[j].y * centres[j].y - centres[i].x * centres[i].x -
+                           centres[i].y * centres[i].y;
+        std::vector<Point> out;
+        const auto& p = poly.points;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            const Point &a = p[k], &b = p[(k + 1) % p.size()];
+            const Rational fa = ax * a.x + ay * a.y - c, fb = ax * b.x + ay * b.y - c;
+            if (fa.sign() <= 0) out.push_back(a);
+            if ((fa.sign() < 0 && fb.sign() > 0) || (fa.sign() > 0 && fb.sign() < 0)) {
+                const Rational t = fa / (fa - fb);
+                out.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+            }
+        }
+        poly.points = out;
+    }
+    for (const Point& q : poly.points)
+        if (q.x == L || q.x == -L || q.y == L || q.y == -L) poly.touches_frame = true;
+    return poly;
+}
+
+}  // namespace
+
+TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centres", "[cells]") {
+    std::mt19937_64 rng(GENERATE(1, 2));
+    const Rational r(1, 2);
+    std::vector<Ellipse> sites;
+    std::vector<Point> centres;
+    while (sites.size() < 12) {
+        const Ellipse c = Ellipse::circle(test::random_fraction(rng, -800, 800, 64), test::random_fraction(rng, -800, 800, 64), r);
+        bool apart = true;
+        for (const Ellipse& e : sites) apart = apart && test::bounding_circles_apart(c, e);
+        if (!apart) continue;
+        sites.push_back(c);
+        centres.push_back(c.center());
+    }
+    const double T = GENERATE(1e-9, 1e-15);
+    const std::vector<CellArea> areas = built_areas(sites, T);
+    int bounded = 0;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+        const Polygon cell = point_voronoi_cell(centres, i, Rational(1000000));
+        INFO("site " << i << " area " << areas[i].area.str(25));
+        REQUIRE(areas[i].visible);
+        REQUIRE(areas[i].bounded == !cell.touches_frame);
+        if (!areas[i].bounded) {
+            CHECK(!arb_is_finite(areas[i].area.get()));
+            continue;
+        }
+        ++bounded;
+        CHECK(contains(areas[i].area, cell.area()));
+        CHECK(relative_width(areas[i].area) <= T);
+    }
+    CHECK(bounded >= 2);
+}
+
+namespace {
+
+// The polar radius around the centre of circle i of its cell: along the ray
+// u from c_i the point c_i + R u is as near to circle j as to i iff
+// R = (|d|^2 - (rj - ri)^2) / (2 (u.d + rj - ri)), d = c_j - c_i (when the
+// denominator is positive; else circle j never wins on that ray).
+long double polar_radius(const std::vector<Ellipse>& sites, std::size_t i, long double t) {
+    long double best = INFINITY;
+    const long double xi = sites[i].xc().to_double(), yi = sites[i].yc().to_double(), ri = sites[i].a().to_double();
+    const long double ux = std::cos(t), uy = std::sin(t);
+    for (std::size_t j = 0; j < sites.size(); ++j) {
+        if (j == i) continue;
+        const long double dx = sites[j].xc().to_double() - xi, dy = sites[j].yc().to_double() - yi;
+        const long double delta = sites[j].a().to_double() - ri;
+        const long double den = 2 * (ux * dx + uy * dy + delta);
+        if (den > 0) best = std::min(best, (dx * dx + dy * dy - delta * delta) / den);
+    }
+    return best;
+}
+
+long double adaptive_simpson(const std::function<long double(long double)>& f, long double a, long double b,
+                             long double fa, long double fm, long double fb, long double whole, long double eps, int depth) {
+    const long double m = (a + b) / 2, lm = (a + m) / 2, rm = (m + b) / 2;
+    const long double flm = f(lm), frm = f(rm);
+    const long double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
+    if (depth <= 0 || std::fabs(left + right - whole) <= 15 * eps) return left + right + (left + right - whole) / 15;
+    return adaptive_simpson(f, a, m, fa, flm, fm, left, eps / 2, depth - 1) +
+           adaptive_simpson(f, m, b, fm, frm, fb, right, eps / 2, depth - 1);
+}
+
+}  // namespace
+
+TEST_CASE("cell areas: unequal circles against the polar closed form", "[cells]") {
+    std::mt19937_64 rng(GENERATE(4, 5));
+    std::vector<Ellipse> sites;
+    while (sites.size() < 12) {
+        const Ellipse c = Ellipse::circle(test::random_fraction(rng, -400, 400, 32), test::random_fraction(rng, -400, 400, 32),
+                                          test::random_fraction(rng, 8, 64, 32));
+        bool apart = true;
+        for (const Ellipse& e : sites) apart = apart && test::bounding_circles_apart(c, e);
+        if (apart) sites.push_back(c);
+    }
+    const std::vector<CellArea> areas = built_areas(sites, 1e-12);
+    int checked = 0;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+        if (!areas[i].bounded) continue;
+        auto f = [&](long double t) { const long double R = polar_radius(sites, i, t); return R * R / 2; };
+        const long double a = 0, b = 2 * 3.14159265358979323846264338327950288L;
+        const long double fa = f(a), fm = f((a + b) / 2), fb = f(b);
+        const long double whole = (b - a) / 6 * (fa + 4 * fm + fb);
+        const long double independent = adaptive_simpson(f, a, b, fa, fm, fb, whole, 1e-13L, 40);
+        INFO("site " << i << " certified " << areas[i].area.str(20) << " polar " << static_cast<double>(independent));
+        // Simpson in long double is not a proof: a margin of 1e-10 relative.
+        CHECK(std::fabs(areas[i].area.mid_double() - static_cast<double>(independent)) <= 1e-10 * std::fabs(static_cast<double>(independent)));
+        CHECK(relative_width(areas[i].area) <= 1e-12);
+        ++checked;
+    }
+    CHECK(checked >= 1);
+}
+
+TEST_CASE("cell areas: ellipses against a floating-point integration of the normal segments", "[cells]") {
+    GeneratorOptions o;
+    o.count = 12;
+    o.seed = GENERATE(1, 2);
+    o.nested_fraction = Rational(1, 5);
+    const std::vector<Ellipse> sites = generate_sites(o);
+    DelaunayGraph graph = test::ellipse_graph(sites);
+    graph.insert_all();
+    const std::vector<CellArea> areas = cell_areas(graph, sites);
+    const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
+    const auto faces = graph.faces();
+    // The tangency angle of a face's circle on one of its sites, in doubles.
+    auto angle = [&](long face, SiteId site) {
+        const auto& f = faces[static_cast<std::size_t>(face)];
+        VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]]);
+        solver.refine_existing(53);
+        const int i = static_cast<int>(std::find(f.begin(), f.end(), site) - f.begin());
+        const double t = solver.enclosure().parameter[i].mid_double();
+        return solver.enclosure().flipped[i] ? 3.14159265358979323846 + 2 * std::atan(t) : 2 * std::atan(t);
+    };
+    int checked = 0;
+    for (const VoronoiCell& c : cells) {
+        const CellArea& a = areas[c.site];
+        if (!c.visible) {
+            CHECK(a.area.mid_double() == 0);
+            CHECK(a.area.radius_double() == 0);
+            continue;
+        }
+        if (!c.bounded()) {
+            CHECK(!arb_is_finite(a.area.get()));
+            continue;
+        }
+        // pi a b plus, edge by edge, the normal segments [0, rho(theta)] swept
+        // in doubles: rho by the tracer's bisection-Newton (no Arb, no
+        // certificate), the area element in the form rho |P'| + kappa |P'| rho^2 / 2,
+        // integrated by adaptive Simpson.
+        const EllipseShape p = EllipseShape::of(sites[c.site]);
+        long double independent = 3.14159265358979323846L * p.a * p.b;
+        for (const CellEdge& e : c.edges) {
+            const EllipseShape q = EllipseShape::of(sites[e.neighbor]);
+            const long double t0 = angle(e.from, c.site);
+            long double t1 = angle(e.to, c.site);
+            while (t1 < t0) t1 += 2 * 3.14159265358979323846L;
+            auto f = [&](long double t) -> long double {
+                const double theta = static_cast<double>(t);
+                const double rho = *equal_distance_on_normal(p, q, theta, 1e12);
+                const double speed = std::hypot(p.a * std::sin(theta), p.b * std::cos(theta));
+                const double curvature = p.a * p.b / (speed * speed * speed);
+                return rho * speed + curvature * speed * rho * rho / 2;
+            };
+            const long double fa = f(t0), fm = f((t0 + t1) / 2), fb = f(t1);
+            // The tolerance is relative: rho in doubles carries noise of about 1e-14 of it.
+            const long double whole = (t1 - t0) / 6 * (fa + 4 * fm + fb);
+            independent += adaptive_simpson(f, t0, t1, fa, fm, fb, whole, 1e-11L * std::fabs(whole), 22);
+        }
+        INFO("site " << c.site << " certified " << a.area.str(20) << " independent " << static_cast<double>(independent));
+        // Doubles and Simpson are not a proof: a margin of 1e-8 relative.
+        CHECK(std::fabs(a.area.mid_double() - static_cast<double>(independent)) <= 1e-8 * static_cast<double>(independent));
+        CHECK(relative_width(a.area) <= 1e-9);
+        CHECK(a.area.mid_double() > a.site_area.mid_double());
+        ++checked;
+    }
+    CHECK(checked >= 1);
+}
+
+TEST_CASE("cell areas: widths at 1e-15 and 1e-30 on small sets", "[cells]") {
+    GeneratorOptions o;
+    o.count = 6;
+    o.seed = 3;
+    o.nested_fraction = Rational(1, 8);
+    const std::vector<Ellipse> sites = generate_sites(o);
+    const std::vector<CellArea> loose = built_areas(sites, 1e-9);
+    for (double T : {1e-15, 1e-30}) {
+        const std::vector<CellArea> tight = built_areas(sites, T);
+        int bounded = 0;
+        for (std::size_t i = 0; i < sites.size(); ++i) {
+            if (!tight[i].bounded) continue;
+            ++bounded;
+            CHECK(relative_width(tight[i].area) <= T);
+            CHECK(tight[i].precision >= cell_area_precision(T));
+            // Nested enclosures of one number: the balls must overlap.
+            CHECK(arb_overlaps(tight[i].area.get(), loose[i].area.get()));
+        }
+        CHECK(bounded >= 1);
+    }
+}
+
+TEST_CASE("cell areas: touching or crossing sites and bad tolerances are input errors", "[cells]") {
+    const std::vector<Ellipse> crossing = {Ellipse::circle(0, 0, 2), Ellipse::circle(3, 0, 2), Ellipse::circle(0, 9, 1),
+                                           Ellipse::circle(9, 9, 1)};
+    DelaunayGraph graph = test::ellipse_graph(crossing);
+    graph.insert_all();
+    CHECK_THROWS_WITH(cell_areas(graph, crossing), Catch::Contains("sites 0 and 1 cross"));
+    const std::vector<Ellipse> touching = {Ellipse::circle(0, 0, 1), Ellipse::circle(2, 0, 1), Ellipse::circle(0, 9, 1)};
+    DelaunayGraph g2 = test::ellipse_graph(touching);
+    g2.insert_all();
+    CHECK_THROWS_WITH(cell_areas(g2, touching), Catch::Contains("sites 0 and 1 touch"));
+    for (double T : {0.0, -1.0, 2.0, std::nan("")}) {
+        CellAreaOptions o;
+        o.tolerance = T;
+        CHECK_THROWS_AS(cell_areas(g2, touching, o), InputError);
+    }
+}
