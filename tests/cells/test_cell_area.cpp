@@ -82,11 +82,11 @@ Polygon point_voronoi_cell(const std::vector<Point>& centres, std::size_t i, con
 }  // namespace
 
 TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centres", "[cells]") {
-    std::mt19937_64 rng(GENERATE(1, 2));
+    std::mt19937_64 rng(GENERATE(1));
     const Rational r(1, 2);
     std::vector<Ellipse> sites;
     std::vector<Point> centres;
-    while (sites.size() < 12) {
+    while (sites.size() < 9) {
         const Ellipse c = Ellipse::circle(test::random_fraction(rng, -800, 800, 64), test::random_fraction(rng, -800, 800, 64), r);
         bool apart = true;
         for (const Ellipse& e : sites) apart = apart && test::bounding_circles_apart(c, e);
@@ -146,9 +146,9 @@ long double adaptive_simpson(const std::function<long double(long double)>& f, l
 }  // namespace
 
 TEST_CASE("cell areas: unequal circles against the polar closed form", "[cells]") {
-    std::mt19937_64 rng(GENERATE(4, 5));
+    std::mt19937_64 rng(GENERATE(4));
     std::vector<Ellipse> sites;
-    while (sites.size() < 12) {
+    while (sites.size() < 9) {
         const Ellipse c = Ellipse::circle(test::random_fraction(rng, -400, 400, 32), test::random_fraction(rng, -400, 400, 32),
                                           test::random_fraction(rng, 8, 64, 32));
         bool apart = true;
@@ -176,7 +176,7 @@ TEST_CASE("cell areas: unequal circles against the polar closed form", "[cells]"
 TEST_CASE("cell areas: ellipses against a floating-point integration of the normal segments", "[cells]") {
     GeneratorOptions o;
     o.count = 12;
-    o.seed = GENERATE(1, 2);
+    o.seed = GENERATE(1);
     o.nested_fraction = Rational(1, 5);
     const std::vector<Ellipse> sites = generate_sites(o);
     DelaunayGraph graph = test::ellipse_graph(sites);
