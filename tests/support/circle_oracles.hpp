@@ -10,6 +10,7 @@
 #include <random>
 
 #include "sites/ellipse.hpp"
+#include "tests/support/apollonius_oracle.hpp"
 
 #include <arb.h>
 
@@ -125,74 +126,23 @@ inline const char* count_name(Count c) {
     }
     return "?";
 }
-struct Vec3 { Rational x, y, z; };
-inline Vec3 cross3(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline Rational dot3(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
+// Which Voronoi circles the triple has, from the closed-form Apollonius
+// circles of apollonius_oracle.hpp (R > 0 and the tangency points'
+// orientation, both decided in Arb); undecided when a sign is not.
 inline Count voronoi_circles(const Circle& c1, const Circle& c2, const Circle& c3) {
-    auto row = [&](const Circle& ci, Vec3& m, Rational& b) {
-        m = {Rational(2) * (ci.x - c1.x), Rational(2) * (ci.y - c1.y), Rational(2) * (ci.r - c1.r)};
-        b = ci.x * ci.x + ci.y * ci.y - c1.x * c1.x - c1.y * c1.y - ci.r * ci.r + c1.r * c1.r;
-    };
-    Vec3 m2, m3;
-    Rational b2, b3;
-    row(c2, m2, b2);
-    row(c3, m3, b3);
-    const Vec3 k = cross3(m2, m3);
-    const Rational kk = dot3(k, k);
-    // (c_i, r_i) collinear in R^3: the distance minus radius along the line is
-    // strictly convex in the line parameter, so no three equal values: none.
-    if (kk.is_zero()) return Count::none;
-    const Vec3 u = cross3(m3, k), v = cross3(k, m2);
-    const Vec3 P{(b2 * u.x + b3 * v.x) / kk, (b2 * u.y + b3 * v.y) / kk, (b2 * u.z + b3 * v.z) / kk};
-    const Rational ex = P.x - c1.x, ey = P.y - c1.y, er = P.z + c1.r;
-    const Rational A = k.x * k.x + k.y * k.y - k.z * k.z;
-    const Rational B = Rational(2) * (ex * k.x + ey * k.y - er * k.z);
-    const Rational C = ex * ex + ey * ey - er * er;
-    std::vector<Ball> roots;
-    if (A.is_zero()) {
-        if (B.is_zero()) return Count::undecided;
-        roots.push_back(ball(-C / B));
-    } else {
-        const Rational disc = B * B - Rational(4) * A * C;
-        if (disc.sign() < 0) return Count::none;
-        if (disc.is_zero()) return Count::undecided;  // a double root: degenerate, not for random tests
-        Ball sq = sqrt_(ball(disc));
-        roots.push_back(div(sub(ball(-B), sq), ball(Rational(2) * A)));
-        roots.push_back(div(add(ball(-B), sq), ball(Rational(2) * A)));
-    }
-    bool ccw = false, cw = false;
-    for (const Ball& s : roots) {
-        Ball R = add(ball(P.z), mul(s, ball(k.z)));
-        int sr = ball_sign(R);
-        if (sr == 2 || sr == 0) return Count::undecided;
-        if (sr < 0) continue;
-        Ball X = add(ball(P.x), mul(s, ball(k.x))), Y = add(ball(P.y), mul(s, ball(k.y)));
-        Ball ux[3], uy[3];
-        const Circle* cs[3] = {&c1, &c2, &c3};
-        for (int i = 0; i < 3; ++i) {
-            Ball dx = sub(ball(cs[i]->x), X), dy = sub(ball(cs[i]->y), Y);
-            Ball len = hypot_(dx, dy);
-            ux[i] = div(dx, len);
-            uy[i] = div(dy, len);
-        }
-        Ball o = sub(mul(sub(ux[1], ux[0]), sub(uy[2], uy[0])), mul(sub(uy[1], uy[0]), sub(ux[2], ux[0])));
-        int so = ball_sign(o);
-        if (so == 2 || so == 0) return Count::undecided;
-        if (so > 0) {
-            if (ccw) return Count::undecided;  // two CCW circles would contradict the theory
-            ccw = true;
-        } else {
-            if (cw) return Count::undecided;
-            cw = true;
-        }
-    }
-    if (ccw && cw) return Count::both;
-    if (ccw) return Count::ccw_only;
-    if (cw) return Count::cw_only;
-    return Count::none;
+    // (c_i, r_i) on one line of R^3: distance minus radius along the line is
+    // strictly convex in the line's parameter, so no point has three equal
+    // values: no circle (the closed form's linear system is singular there).
+    const Rational ux = c2.x - c1.x, uy = c2.y - c1.y, ur = c2.r - c1.r;
+    const Rational vx = c3.x - c1.x, vy = c3.y - c1.y, vr = c3.r - c1.r;
+    if ((uy * vr - ur * vy).is_zero() && (ur * vx - ux * vr).is_zero() && (ux * vy - uy * vx).is_zero())
+        return Count::none;
+    const apollonius::Result r =
+        apollonius::voronoi_circles({c1.x, c1.y, c1.r}, {c2.x, c2.y, c2.r}, {c3.x, c3.y, c3.r}, 1024);
+    const int ccw = r.ccw_count(), cw = r.cw_count();
+    // Two circles of one orientation would contradict the theory.
+    if (!r.certain || ccw > 1 || cw > 1 || ccw + cw != static_cast<int>(r.solutions.size())) return Count::undecided;
+    return ccw && cw ? Count::both : ccw ? Count::ccw_only : cw ? Count::cw_only : Count::none;
 }
 
 // ---------------------------------------------------------------------------
