@@ -492,16 +492,13 @@ std::string fraction(const std::string& set) { return set == "overlap" ? "0.3" :
 // Calls per stage of ellvor's graphs of one kind of site.
 Table predicate_table(const std::vector<Row>& rows, const std::string& kind) {
     const bool ellipses = kind == "ellipses";
-    std::vector<std::string> columns = ellipses ? std::vector<std::string>{"F", "n", "seed"}
-                                                : std::vector<std::string>{"set", "n"};
-    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
-    Table t(kind + "_predicates", columns, (ellipses ? "lrr" : "lr") + std::string(kPredicates.size(), 'l'));
+    Table t = predicate_stage_table(kind + "_predicates", ellipses ? std::vector<std::string>{"F", "n", "seed"}
+                                                                   : std::vector<std::string>{"set", "n"});
     for (const Row& r : rows) {
         if (r.library != "ellvor" || r.sites != kind) continue;
-        TableRow row = ellipses ? TableRow{fraction(r.set), integer(r.n), integer(static_cast<long long>(r.seed))}
-                                : TableRow{r.set, integer(r.n)};
-        for (const std::string& cell : predicate_stage_triples(r.stats)) row.push_back(cell);
-        t.add(std::move(row));
+        add_predicate_stage_row(t, ellipses ? TableRow{fraction(r.set), integer(r.n), integer(static_cast<long long>(r.seed))}
+                                            : TableRow{r.set, integer(r.n)},
+                                r.stats);
     }
     return t;
 }

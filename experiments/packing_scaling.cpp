@@ -100,14 +100,8 @@ Table build_table(const std::vector<Row>& rows) {
 }
 
 Table predicate_table(const std::vector<Row>& rows) {
-    std::vector<std::string> columns = {"set", "n"};
-    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
-    Table table("predicates", columns, "lr" + std::string(kPredicates.size(), 'l'));
-    for (const Row& r : rows) {
-        TableRow row = {r.set, integer(r.n)};
-        for (const std::string& cell : predicate_stage_triples(r.stats)) row.push_back(cell);
-        table.add(std::move(row));
-    }
+    Table table = predicate_stage_table("predicates", {"set", "n"});
+    for (const Row& r : rows) add_predicate_stage_row(table, {r.set, integer(r.n)}, r.stats);
     return table;
 }
 

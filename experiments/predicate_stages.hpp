@@ -4,6 +4,7 @@
 #pragma once
 
 #include "decision/predicate_registry.hpp"
+#include "experiments/report.hpp"
 
 #include <string>
 #include <vector>
@@ -52,6 +53,19 @@ inline std::vector<std::string> predicate_stage_triples(const TraitsStats& stats
     std::vector<std::string> cells;
     for (const PredicateInfo& p : kPredicates) cells.push_back(stage_triple(stats[p.predicate]));
     return cells;
+}
+
+// A table of the predicates' calls per stage: the leading columns (the first
+// left-aligned, the others right), then one column per predicate.
+inline Table predicate_stage_table(const std::string& id, std::vector<std::string> columns) {
+    const std::string align = "l" + std::string(columns.size() - 1, 'r') + std::string(kPredicates.size(), 'l');
+    for (const PredicateInfo& p : kPredicates) columns.push_back(p.name);
+    return Table(id, columns, align);
+}
+
+inline void add_predicate_stage_row(Table& table, TableRow row, const TraitsStats& stats) {
+    for (const std::string& cell : predicate_stage_triples(stats)) row.push_back(cell);
+    table.add(std::move(row));
 }
 
 }  // namespace ellvor::experiments
