@@ -21,14 +21,12 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::ellipse;
 using ellvor::test::check_diagram;
 using ellvor::test::ellipse_graph;
 
 namespace {
 
-Ellipse ellipse(const char* a, const char* b, const char* w, const char* x, const char* y) {
-    return Ellipse(parse_rational(a), parse_rational(b), parse_rational(w), parse_rational(x), parse_rational(y));
-}
 
 // The example: a needle (a = 10, b = 1/10) between two disks of
 // radius 6 centred at (-5, 0) and (5, 0). Every pair crosses in two

@@ -24,14 +24,12 @@
 #include <vector>
 
 using namespace ellvor;
+using ellvor::test::ellipse;
 using ellvor::test::check_diagram;
 using ellvor::test::ellipse_graph;
 
 namespace {
 
-Ellipse ellipse(const char* a, const char* b, const char* w, const char* x, const char* y) {
-    return Ellipse(parse_rational(a), parse_rational(b), parse_rational(w), parse_rational(x), parse_rational(y));
-}
 
 using Motion = NearCopyMotion;
 

@@ -12,6 +12,7 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/support/random_sites.hpp"
 #include "tests/support/signed_distance_oracle.hpp"
+#include "tests/support/ellipse_graph.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -20,15 +21,13 @@
 #include <random>
 
 using namespace ellvor;
+using ellvor::test::ellipse;
 using test::OracleEllipse;
 using test::Real;
 using test::RealPoint;
 
 namespace {
 
-Ellipse ellipse(const char* a, const char* b, const char* w, const char* x, const char* y) {
-    return Ellipse(parse_rational(a), parse_rational(b), parse_rational(w), parse_rational(x), parse_rational(y));
-}
 
 RealPoint midpoint(const Ball& x, const Ball& y) { return {Real(x.mid_double()), Real(y.mid_double())}; }
 
