@@ -245,6 +245,9 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     // the double start; the limit only guards a start that does not converge,
     // which the certificate below then rejects).
     const double small = std::ldexp(1.0, static_cast<int>(std::max(-1000L, 4 - prec)));
+    // Rounding noise can keep the step above `small`: stop as soon as it no
+    // longer shrinks quadratically (the certificate judges the point).
+    double previous = INFINITY;
     for (int k = 0; k < 60; ++k) {
         ray_point(bp, s0, prec, vx, vy);
         foot_newton(qb_, vx, vy, 2, prec, phi0);
@@ -253,7 +256,9 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         acb_div(step.get(), g.get(), dg.get(), prec);
         acb_sub(s0.get(), s0.get(), step.get(), prec);
         acb_get_mid(s0.get(), s0.get());
-        if (magnitude(step) <= small * (1 + magnitude(s0))) break;
+        const double size = magnitude(step);
+        if (size <= small * (1 + magnitude(s0)) || size > 0.25 * previous) break;
+        previous = size;
     }
     ray_point(bp, s0, prec, vx, vy);
     foot_newton(qb_, vx, vy, 4, prec, phi0);

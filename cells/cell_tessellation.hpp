@@ -1,0 +1,87 @@
+// The certified cells of a set of sites, in the free plane, in a box (walls)
+// or in a periodic box (the torus): per site its area, perimeter, centroid
+// and second moments as Arb balls that provably contain the exact values,
+// its neighbours counter-clockwise, and a ring (a closed polyline within a
+// certified Hausdorff distance of the cell's boundary). docs/DESIGN.md §10.
+//
+// This is the one entry point of the cells layer; the CLI (`ellvor cells`),
+// the Python `Diagram.cells()` and the benchmarks call it.
+#pragma once
+
+#include "decision/site_id.hpp"
+#include "sites/ellipse.hpp"
+#include "util/ball_arithmetic.hpp"
+#include "util/flint_types.hpp"
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace ellvor {
+
+struct CellDomain {
+    enum class Kind { plane, box, periodic };
+    Kind kind = Kind::plane;
+    // The rectangle [x0, x1] x [y0, y1] of a box or of the periodic box.
+    Rational x0, y0, x1, y1;
+};
+
+// A wall of a box, as the neighbour across a cell side.
+enum class Wall : int { none = 0, left = 1, bottom = 2, right = 3, top = 4 };
+const char* wall_name(Wall w);  // "left", "bottom", "right", "top"; "" for none
+
+struct CellOptions {
+    // Every finite area is returned with hi - lo <= tolerance * lo, in (0, 1].
+    double tolerance = 1e-9;
+    // The rings' certified Hausdorff distance to the cell boundaries; 0: 1e-3
+    // of the median site size (its larger semi-axis).
+    double boundary_tolerance = 0;
+    // Called after each cell (done, total); may be empty.
+    std::function<void(std::size_t done, std::size_t total)> progress;
+};
+
+// One side of a cell: a Voronoi edge, or a piece of a wall.
+struct CellSide {
+    long neighbor = -1;                  // the site across the side (an input id); -1 for a wall
+    Wall wall = Wall::none;              // the wall across the side, when neighbor is -1
+    std::array<long, 2> shift = {0, 0};  // periodic: the neighbour's image is neighbor + shift * (box size)
+    long from = -1, to = -1;             // vertex numbers in CellTessellation::vertices, counter-clockwise; -1: infinity
+};
+
+struct CellVertex {
+    Ball x, y;  // contains the exact vertex
+};
+
+struct Cell {
+    SiteId site = 0;
+    bool visible = false;
+    bool bounded = false;  // false: a visible cell reaching infinity (free plane only), or a hidden site
+    Ball area;             // 0 for a hidden site, +inf for an unbounded cell
+    Ball site_area;        // pi a b
+    Ball perimeter;        // the length of the cell's boundary; 0 hidden, +inf unbounded
+    // The centroid and the second moments about it, integrals of (x - cx)^2,
+    // (x - cx)(y - cy), (y - cy)^2 over the cell (the cell's Minkowski tensor
+    // W_0^{2,0} up to normalisation); indeterminate for hidden and unbounded cells.
+    std::array<Ball, 2> centroid;
+    std::array<Ball, 3> second_moments;
+    std::vector<CellSide> sides;              // counter-clockwise around the site
+    std::vector<std::array<double, 2>> ring;  // closed (first point not repeated); empty if unbounded or hidden
+    long precision = 0;                       // Arb precision that met the tolerance
+};
+
+struct CellTessellation {
+    CellDomain domain;
+    double boundary_tolerance = 0;  // the one actually used
+    std::vector<CellVertex> vertices;
+    std::vector<Cell> cells;  // one per input site, in input order
+};
+
+// Throws InputError for a tolerance outside (0, 1], a box with x0 >= x1 or
+// y0 >= y1, a site not inside the box (box) or meeting one of its own
+// periodic images (periodic), and for touching or crossing sites; Error if a
+// cell cannot be certified within the precision limit.
+CellTessellation cell_tessellation(const std::vector<Ellipse>& sites, const CellDomain& domain,
+                                   const CellOptions& options = {});
+
+}  // namespace ellvor
