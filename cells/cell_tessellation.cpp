@@ -1,29 +1,24 @@
 #include "cells/cell_tessellation.hpp"
 
+#include "cells/box_mirrors.hpp"
 #include "cells/cell_area.hpp"
+#include "cells/cell_vertex_angles.hpp"
 #include "cells/face_numbers.hpp"
+#include "cells/normal_ray_bisector.hpp"
+#include "cells/periodic_copies.hpp"
 #include "cells/voronoi_cells.hpp"
+#include "cells/voronoi_edge_cover.hpp"
 #include "graph/delaunay_graph.hpp"
-#include "subdivision/voronoi_circle_enclosure.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <memory>
+#include <string>
 
 namespace ellvor {
-
-const char* wall_name(Wall w) {
-    switch (w) {
-        case Wall::left: return "left";
-        case Wall::bottom: return "bottom";
-        case Wall::right: return "right";
-        case Wall::top: return "top";
-        case Wall::none: break;
-    }
-    return "";
-}
-
 namespace {
 
 // 1e-3 of the median larger semi-axis (the default boundary tolerance).
@@ -35,47 +30,261 @@ double default_boundary_tolerance(const std::vector<Ellipse>& sites) {
     return 1e-3 * sizes[sizes.size() / 2];
 }
 
+// The sites of a plane diagram whose first `originals` cells are wanted:
+// the input sites, with mirrors (box) or periodic copies (torus) after them.
+struct PlaneSites {
+    std::vector<Ellipse> sites;
+    std::size_t originals = 0;
+    std::vector<SiteId> original;              // per site: the input site it copies
+    std::vector<Wall> wall;                    // per site: the wall a mirror mirrors across; none otherwise
+    std::vector<std::array<long, 2>> shift;    // per site: a periodic copy's shift in periods
+};
+
+PlaneSites plane_sites(const std::vector<Ellipse>& sites) {
+    PlaneSites out;
+    out.sites = sites;
+    out.originals = sites.size();
+    for (SiteId s = 0; s < sites.size(); ++s) out.original.push_back(s);
+    out.wall.assign(sites.size(), Wall::none);
+    out.shift.assign(sites.size(), {0, 0});
+    return out;
+}
+
+PlaneSites plane_sites(const MirroredSites& m) {
+    PlaneSites out;
+    out.sites = m.sites;
+    out.originals = m.originals;
+    for (SiteId s = 0; s < m.sites.size(); ++s) {
+        out.original.push_back(m.original_of(s));
+        out.wall.push_back(m.wall_of(s));
+    }
+    out.shift.assign(m.sites.size(), {0, 0});
+    return out;
+}
+
+PlaneSites plane_sites(const PeriodicCopies& c) {
+    PlaneSites out;
+    out.sites = c.sites;
+    out.originals = c.originals;
+    for (SiteId s = 0; s < c.sites.size(); ++s) out.original.push_back(c.original_of(s));
+    out.wall.assign(c.sites.size(), Wall::none);
+    out.shift = c.shift;
+    return out;
+}
+
+std::unique_ptr<DelaunayGraph> built_graph(const std::vector<Ellipse>& sites) {
+    auto graph = std::make_unique<DelaunayGraph>(std::make_unique<EllipseDelaunayTraits>(sites));
+    graph->insert_all();
+    return graph;
+}
+
+// The originals, their neighbours and the hosts of hidden originals: each
+// original's cell among these is its cell among all (docs/DESIGN.md §5: a
+// cell is its cell among its neighbours), and few of the others have a
+// bounded cell to integrate. Originals keep their ids.
+PlaneSites neighbourhood_of_originals(const PlaneSites& all) {
+    const std::unique_ptr<DelaunayGraph> graph = built_graph(all.sites);
+    const std::vector<VoronoiCell> cells = voronoi_cells(*graph, face_numbers(*graph));
+    std::vector<char> keep(all.sites.size(), 0);
+    for (SiteId s = 0; s < all.originals; ++s) {
+        keep[s] = 1;
+        for (const CellEdge& e : cells[s].edges) keep[e.neighbor] = 1;
+    }
+    for (const auto& [hidden, host] : graph->hidden())
+        if (hidden < all.originals) keep[host] = 1;
+    PlaneSites out;
+    out.originals = all.originals;
+    for (SiteId s = 0; s < all.sites.size(); ++s)
+        if (keep[s]) {
+            out.sites.push_back(all.sites[s]);
+            out.original.push_back(all.original[s]);
+            out.wall.push_back(all.wall[s]);
+            out.shift.push_back(all.shift[s]);
+        }
+    return out;
+}
+
+// The cells of the originals of a plane diagram: sides, vertices, rings, and
+// for the torus the certificate; areas come after (cell_areas).
+class OriginalCells {
+public:
+    OriginalCells(const PlaneSites& sites, const CellDomain& domain, double boundary_tolerance)
+        : sites_(sites), domain_(domain), graph_(built_graph(sites.sites)),
+          cells_(voronoi_cells(*graph_, face_numbers(*graph_))), angles_(*graph_, sites_.sites) {
+        double size = 0;
+        for (const Ellipse& e : sites.sites) size = std::max(size, std::max(e.a().to_double(), e.b().to_double()));
+        cover_.radius = boundary_tolerance / 2;
+        cover_.prec = 64 + std::max(0L, static_cast<long>(std::ceil(std::log2(size / boundary_tolerance))));
+    }
+
+    const DelaunayGraph& graph() const { return *graph_; }
+    const VoronoiCell& cell(SiteId s) const { return cells_[s]; }
+
+    // Sides (neighbours as input ids, walls merged), ring and, returned, the
+    // largest distance from the site's center to its cell (+inf unless bounded).
+    double describe(SiteId s, Cell& out, std::map<long, long>& vertex_ids) {
+        const VoronoiCell& cell = cells_[s];
+        for (const CellEdge& e : cell.edges) {
+            CellSide side;
+            side.from = vertex_id(e.from, vertex_ids);
+            side.to = vertex_id(e.to, vertex_ids);
+            if (sites_.wall[e.neighbor] != Wall::none) {
+                side.wall = sites_.wall[e.neighbor];
+                // A side with another site's mirror has length 0 (docs/DESIGN.md §10):
+                // it joins the wall side next to it.
+                if (!out.sides.empty() && out.sides.back().wall == side.wall) {
+                    out.sides.back().to = side.to;
+                    continue;
+                }
+            } else {
+                side.neighbor = static_cast<long>(sites_.original[e.neighbor]);
+                side.shift = sites_.shift[e.neighbor];
+            }
+            out.sides.push_back(side);
+        }
+        if (out.sides.size() > 1 && out.sides.front().wall != Wall::none && out.sides.front().wall == out.sides.back().wall) {
+            out.sides.front().from = out.sides.back().from;
+            out.sides.pop_back();
+        }
+        if (!cell.bounded()) return INFINITY;
+        const Ellipse& site = sites_.sites[s];
+        const std::vector<Ball> lifted = angles_.lifted(cell, cover_.prec + 24);
+        double reach = 0;
+        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
+            const CellEdge& e = cell.edges[k];
+            if (sites_.wall[e.neighbor] != Wall::none) {
+                // The wall is a straight side between two vertices: its first
+                // vertex stands for it (the next side starts at the second).
+                out.ring.push_back(vertex_point(e.from));
+                continue;
+            }
+            NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
+            for (const EdgeCoverBox& box : voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_)) {
+                out.ring.push_back(box.center);
+                reach = std::max(reach, distance_bound(box, site.xc(), site.yc(), cover_.prec));
+            }
+        }
+        return reach;
+    }
+
+    std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids) {
+        std::vector<CellVertex> out(vertex_ids.size());
+        const long prec = cover_.prec + 24;
+        for (const auto& [face, id] : vertex_ids) {
+            BallPoint v = angles_.vertex(face, prec);
+            out[static_cast<std::size_t>(id)] = {v.x, v.y};
+        }
+        return out;
+    }
+
+private:
+    static long vertex_id(long face, std::map<long, long>& ids) {
+        if (face < 0) return -1;
+        return ids.emplace(face, static_cast<long>(ids.size())).first->second;
+    }
+
+    // A Voronoi vertex as a ring point within the cover radius of the true one.
+    std::array<double, 2> vertex_point(long face) {
+        const BallPoint v = angles_.vertex(face, cover_.prec + 24);
+        const double r = std::hypot(v.x.radius_double(), v.y.radius_double());
+        if (!(r <= cover_.radius / 2)) throw Error("cell_tessellation: a Voronoi vertex is not known to the ring's tolerance");
+        return {v.x.mid_double(), v.y.mid_double()};
+    }
+
+    const PlaneSites& sites_;
+    const CellDomain& domain_;
+    std::unique_ptr<DelaunayGraph> graph_;
+    std::vector<VoronoiCell> cells_;
+    CellVertexAngles angles_;
+    EdgeCoverOptions cover_;
+};
+
+void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellOptions& options, CellTessellation& out) {
+    const std::vector<CellArea> areas = cell_areas(graph, sites.sites, {options.tolerance});
+    for (SiteId s = 0; s < sites.originals; ++s) {
+        Cell& c = out.cells[s];
+        c.area = areas[s].area;
+        c.site_area = areas[s].site_area;
+        c.precision = areas[s].precision;
+    }
+}
+
 }  // namespace
 
-CellTessellation cell_tessellation(const std::vector<Ellipse>& sites, const CellDomain& domain,
+CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const CellDomain& domain,
                                    const CellOptions& options) {
     if (!(options.tolerance > 0 && options.tolerance <= 1))
         throw InputError("cells: the tolerance must be in (0, 1]");
     if (!(options.boundary_tolerance >= 0)) throw InputError("cells: the boundary tolerance must be positive");
-    if (domain.kind != CellDomain::Kind::plane) throw Error("cells: boxes are not implemented yet");
+    require_proper_rectangle(domain);
     CellTessellation out;
     out.domain = domain;
     out.boundary_tolerance =
-        options.boundary_tolerance > 0 ? options.boundary_tolerance : default_boundary_tolerance(sites);
+        options.boundary_tolerance > 0 ? options.boundary_tolerance : default_boundary_tolerance(input);
 
-    DelaunayGraph graph(std::make_unique<EllipseDelaunayTraits>(sites));
-    graph.insert_all();
-    const std::vector<long> numbers = face_numbers(graph);
-    const std::vector<VoronoiCell> cells = voronoi_cells(graph, numbers);
-    const std::vector<CellArea> areas = cell_areas(graph, sites, {options.tolerance});
-
-    const long prec = cell_area_precision(options.tolerance);
-    for (const auto& f : graph.faces()) {
-        VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]]);
-        solver.refine_existing(prec - 24);
-        out.vertices.push_back({solver.enclosure().center_x, solver.enclosure().center_y});
+    std::vector<Ellipse> sites = input;
+    std::unique_ptr<PlaneSites> plane;
+    std::unique_ptr<OriginalCells> cells;
+    std::vector<double> reach(sites.size());
+    std::map<long, long> vertex_ids;
+    auto describe_all = [&]() {
+        out.cells.assign(sites.size(), Cell{});
+        vertex_ids.clear();
+        for (SiteId s = 0; s < sites.size(); ++s) {
+            Cell& c = out.cells[s];
+            c.site = s;
+            c.visible = cells->cell(s).visible;
+            c.bounded = c.visible && cells->cell(s).bounded();
+            reach[s] = cells->describe(s, c, vertex_ids);
+            if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
+                throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
+        }
+    };
+    switch (domain.kind) {
+        case CellDomain::Kind::plane:
+            plane = std::make_unique<PlaneSites>(plane_sites(sites));
+            cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
+            describe_all();
+            break;
+        case CellDomain::Kind::box:
+            require_sites_inside_box(sites, domain);
+            plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain))));
+            cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
+            describe_all();
+            break;
+        case CellDomain::Kind::periodic: {
+            for (Ellipse& e : sites) e = wrap_into_box(e, domain);
+            require_apart_on_torus(sites, domain);
+            Rational e_max(0);
+            for (const Ellipse& e : sites) e_max = std::max({e_max, e.a(), e.b()});
+            const long first = starting_rings(sites, domain);
+            // Each ring more moves the missing copies a period farther out;
+            // a cell that still reaches them after three more is an Error.
+            for (long rings = first;; ++rings) {
+                if (rings > first + 3)
+                    throw Error("cell_tessellation: the periodic cells could not be proven with " +
+                                std::to_string(rings - 1) + " rings of copies");
+                plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings))));
+                cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
+                describe_all();
+                bool proven = true;
+                for (SiteId s = 0; s < sites.size() && proven; ++s)
+                    proven = !out.cells[s].visible ||
+                             periodic_cell_is_proven(reach[s], sites[s], distance_to_missing_copies(sites[s], domain, rings), e_max);
+                if (proven) break;
+            }
+            break;
+        }
     }
-    out.cells.resize(sites.size());
-    for (SiteId s = 0; s < sites.size(); ++s) {
-        Cell& c = out.cells[s];
-        c.site = s;
-        c.visible = cells[s].visible;
-        c.bounded = cells[s].visible && cells[s].bounded();
-        c.area = areas[s].area;
-        c.site_area = areas[s].site_area;
-        c.precision = areas[s].precision;
+    fill_areas(*plane, cells->graph(), options, out);
+    out.vertices = cells->vertices(vertex_ids);
+    for (Cell& c : out.cells) {
         // Not computed yet: an indeterminate ball claims nothing.
         for (Ball* b : {&c.perimeter, &c.centroid[0], &c.centroid[1], &c.second_moments[0], &c.second_moments[1],
                         &c.second_moments[2]})
             arb_indeterminate(b->get());
-        for (const CellEdge& e : cells[s].edges) c.sides.push_back({static_cast<long>(e.neighbor), Wall::none, {0, 0}, e.from, e.to});
-        if (options.progress) options.progress(s + 1, sites.size());
     }
+    if (options.progress) options.progress(sites.size(), sites.size());
     return out;
 }
 

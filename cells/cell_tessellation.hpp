@@ -8,6 +8,7 @@
 // the Python `Diagram.cells()` and the benchmarks call it.
 #pragma once
 
+#include "cells/cell_domain.hpp"
 #include "decision/site_id.hpp"
 #include "sites/ellipse.hpp"
 #include "util/ball_arithmetic.hpp"
@@ -19,17 +20,6 @@
 #include <vector>
 
 namespace ellvor {
-
-struct CellDomain {
-    enum class Kind { plane, box, periodic };
-    Kind kind = Kind::plane;
-    // The rectangle [x0, x1] x [y0, y1] of a box or of the periodic box.
-    Rational x0, y0, x1, y1;
-};
-
-// A wall of a box, as the neighbour across a cell side.
-enum class Wall : int { none = 0, left = 1, bottom = 2, right = 3, top = 4 };
-const char* wall_name(Wall w);  // "left", "bottom", "right", "top"; "" for none
 
 struct CellOptions {
     // Every finite area is returned with hi - lo <= tolerance * lo, in (0, 1].

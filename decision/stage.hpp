@@ -20,14 +20,15 @@ namespace ellvor {
 enum class Stage : int {
     filter = 0,       // double interval arithmetic with outward rounding, or a closed form
     subdivision = 1,  // Arb balls at adaptive precision
-    exact = 2,        // FLINT: exact rationals, resultants, real algebraic numbers
+    symmetry = 2,     // an exact symmetry of the sites forces the answer (mirror images, docs/DESIGN.md §3)
+    exact = 3,        // FLINT: exact rationals, resultants, real algebraic numbers
     end_,             // not a stage: marks the end, so that the tables below are checked complete
 };
 
 // The stages in order of increasing cost, and their names as --stats, the JSON
 // and the Python module print them.
-constexpr std::array<Stage, 3> kStages = {Stage::filter, Stage::subdivision, Stage::exact};
-constexpr std::array<const char*, kStages.size()> kStageNames = {"filter", "subdivision", "exact"};
+constexpr std::array<Stage, 4> kStages = {Stage::filter, Stage::subdivision, Stage::symmetry, Stage::exact};
+constexpr std::array<const char*, kStages.size()> kStageNames = {"filter", "subdivision", "symmetry", "exact"};
 
 namespace detail {
 constexpr bool stage_table_is_indexed_by_enum() {

@@ -4,6 +4,7 @@
 #include "circles/circle_predicates.hpp"
 #include "predicates/distance_filter.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
+#include "sites/mirror_symmetry.hpp"
 #include "subdivision/boundary_chart.hpp"
 #include "subdivision/inscribed_disk.hpp"
 #include "subdivision/nearest_point.hpp"
@@ -127,6 +128,24 @@ bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, co
     return false;
 }
 
+// The symmetry stage (docs/DESIGN.md §3): two sites of the triple are mirror
+// images across an axis-parallel line L (each strictly on its side) and Q is
+// the mirror image of the third across L. The bisector of a site and its
+// mirror is exactly L (a point strictly on one side is strictly nearer to the
+// site there), so the circle's center V lies on L, which the reflection fixes:
+// delta(V, Q) = delta(V, third) = rho. Q is tangent, whenever the circle exists.
+bool tangent_by_mirror_symmetry(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q) {
+    const std::array<const Ellipse*, 3> sites{&e1, &e2, &e3};
+    for (int i = 0; i < 3; ++i) {
+        const Ellipse &p = *sites[i], &mirror = *sites[(i + 1) % 3], &third = *sites[(i + 2) % 3];
+        const std::optional<AxisLine> line = mirror_line(p, mirror);
+        if (!line) continue;
+        // (The third site may even straddle L: the reflection still fixes V.)
+        if (mirror_across(third, *line) == q) return true;
+    }
+    return false;
+}
+
 // Four circles: the closed form in Q(sqrt D) (circle_predicates.hpp).
 Decision<InCircle> circle_incircle_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q) {
     const Decision<bool> separated = none_inside_another(e1, e2, e3);
@@ -162,6 +181,8 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
         if (*count == VoronoiCircles::none || *count == VoronoiCircles::cw_only) return count.with(InCircle::no_circle);
     }
+    // The circle exists (the double certificate or the count said so).
+    if (tangent_by_mirror_symmetry(e1, e2, e3, q)) return Decision<InCircle>::decided(InCircle::tangent, Stage::symmetry);
     VoronoiCircleSolver* solver = &circle->solver();
     // Q in the solver's frame (similarity_frame.hpp), made once the solver
     // has chosen it.

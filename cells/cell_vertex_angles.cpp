@@ -1,0 +1,77 @@
+#include "cells/cell_vertex_angles.hpp"
+
+#include "util/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace ellvor {
+
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+}
+
+CellVertexAngles::CellVertexAngles(const DelaunayGraph& graph, const std::vector<Ellipse>& sites)
+    : sites_(sites), faces_(graph.faces()), solvers_(faces_.size()) {}
+
+VoronoiCircleSolver& CellVertexAngles::solver(long face, long prec) {
+    const auto f = static_cast<std::size_t>(face);
+    if (face < 0 || f >= faces_.size()) throw Error("CellVertexAngles: no face " + std::to_string(face));
+    if (!solvers_[f])
+        solvers_[f] = std::make_unique<VoronoiCircleSolver>(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]]);
+    solvers_[f]->refine_existing(prec - 24);
+    return *solvers_[f];
+}
+
+Ball CellVertexAngles::angle(long face, SiteId site, long prec) {
+    VoronoiCircleSolver& s = solver(face, prec);
+    const auto& triple = faces_[static_cast<std::size_t>(face)];
+    const int i = static_cast<int>(std::find(triple.begin(), triple.end(), site) - triple.begin());
+    if (i == 3) throw Error("CellVertexAngles: a cell's vertex misses its site");
+    const VoronoiCircleEnclosure& c = s.enclosure();
+    Ball theta;
+    arb_atan(theta.get(), c.parameter[i].get(), prec);
+    arb_mul_2exp_si(theta.get(), theta.get(), 1);
+    if (c.flipped[i]) {
+        Ball pi;
+        arb_const_pi(pi.get(), prec);
+        arb_add(theta.get(), theta.get(), pi.get(), prec);
+    }
+    s.release_charts();
+    return theta;
+}
+
+BallPoint CellVertexAngles::vertex(long face, long prec) {
+    VoronoiCircleSolver& s = solver(face, prec);
+    BallPoint v{s.enclosure().center_x, s.enclosure().center_y};
+    s.release_charts();
+    return v;
+}
+
+std::vector<Ball> CellVertexAngles::lifted(const VoronoiCell& cell, long prec) {
+    const std::size_t m = cell.edges.size();
+    if (!cell.bounded()) throw Error("CellVertexAngles: cell " + std::to_string(cell.site) + " is not bounded");
+    for (std::size_t k = 0; k < m; ++k)
+        if (cell.edges[k].to != cell.edges[(k + 1) % m].from) throw Error("CellVertexAngles: cell edges do not chain");
+    Ball two_pi;
+    arb_const_pi(two_pi.get(), prec);
+    arb_mul_2exp_si(two_pi.get(), two_pi.get(), 1);
+    std::vector<Ball> out(m + 1);
+    out[0] = angle(cell.edges[0].from, cell.site, prec);
+    for (std::size_t k = 0; k < m; ++k) {
+        const Ball next = angle(cell.edges[k].to, cell.site, prec);
+        const double d = next.mid_double() - out[k].mid_double();
+        const double eps = next.radius_double() + out[k].radius_double() + 1e-9;
+        Ball shift;
+        arb_mul_si(shift.get(), two_pi.get(), static_cast<slong>(std::floor((d + eps) / kTwoPi)), prec);
+        arb_sub(out[k + 1].get(), next.get(), shift.get(), prec);
+    }
+    // The lifts telescope to the first angle plus 2 pi times an integer, which
+    // must be one turn (then each difference is its true value).
+    if (std::lround((out[m].mid_double() - out[0].mid_double()) / kTwoPi) != 1)
+        throw Error("CellVertexAngles: the vertex angles of cell " + std::to_string(cell.site) + " do not make one turn");
+    return out;
+}
+
+}  // namespace ellvor

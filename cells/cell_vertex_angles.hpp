@@ -1,0 +1,43 @@
+// The Voronoi vertices of cells as certified balls: each vertex's center and
+// its tangency angle theta on a site of its triple, and a bounded cell's
+// vertex angles lifted to increase counter-clockwise through one turn
+// (docs/DESIGN.md §10). The circles are certified once per face and refined
+// on demand.
+#pragma once
+
+#include "cells/voronoi_cells.hpp"
+#include "graph/delaunay_graph.hpp"
+#include "sites/ellipse.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace ellvor {
+
+class CellVertexAngles {
+public:
+    // The sites must outlive this object.
+    CellVertexAngles(const DelaunayGraph& graph, const std::vector<Ellipse>& sites);
+
+    // The tangency angle on `site` of the Voronoi circle of face number
+    // `face`, theta = 2 atan(t) (or pi + 2 atan(u) in the flipped chart), its
+    // radius about 2^(24 - prec).
+    Ball angle(long face, SiteId site, long prec);
+    // The center of the Voronoi circle of face number `face`, refined to prec - 24 bits.
+    BallPoint vertex(long face, long prec);
+    // The m + 1 angles of a bounded cell's m vertices (the first again at the
+    // end), lifted so that consecutive differences lie in [0, 2 pi) (within
+    // the balls) and the last is the first plus 2 pi; Error otherwise.
+    std::vector<Ball> lifted(const VoronoiCell& cell, long prec);
+
+private:
+    VoronoiCircleSolver& solver(long face, long prec);
+
+    const std::vector<Ellipse>& sites_;
+    std::vector<std::array<SiteId, 3>> faces_;
+    std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers_;
+};
+
+}  // namespace ellvor

