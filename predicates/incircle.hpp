@@ -25,6 +25,9 @@ struct InCircleOptions {
 // in double intervals. When that does not decide: the existence of the
 // counter-clockwise circle (certified by the doubles, or from three kappa2
 // signs); then the Arb enclosure of the circle (center V, radius rho) and
+// first the symmetry stage: two sites of the triple are mirror images
+// across an axis-parallel line and Q is the third's mirror (box walls,
+// docs/DESIGN.md §10): Q is tangent. Then
 // the distance d(V, Q) compared with rho at doubling precision, past the cap
 // the exact stage (staged_refinement.hpp): Q is tangent iff the circle is
 // also a Voronoi circle of (E1, E2, Q) or (E1, Q, E2) touching E1 at the same
