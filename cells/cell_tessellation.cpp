@@ -6,6 +6,7 @@
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
 #include "cells/periodic_copies.hpp"
+#include "cells/site_separation.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "cells/voronoi_edge_cover.hpp"
 #include "graph/delaunay_graph.hpp"
@@ -223,6 +224,11 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
         options.boundary_tolerance > 0 ? options.boundary_tolerance : default_boundary_tolerance(input);
 
     std::vector<Ellipse> sites = input;
+    if (domain.kind == CellDomain::Kind::periodic)
+        for (Ellipse& e : sites) e = wrap_into_box(e, domain);
+    else if (domain.kind == CellDomain::Kind::box)
+        require_sites_inside_box(sites, domain);
+    require_sites_apart(sites, domain);
     std::unique_ptr<PlaneSites> plane;
     std::unique_ptr<OriginalCells> cells;
     std::vector<double> reach(sites.size());
@@ -247,14 +253,11 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             describe_all();
             break;
         case CellDomain::Kind::box:
-            require_sites_inside_box(sites, domain);
             plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain))));
             cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
             describe_all();
             break;
         case CellDomain::Kind::periodic: {
-            for (Ellipse& e : sites) e = wrap_into_box(e, domain);
-            require_apart_on_torus(sites, domain);
             Rational e_max(0);
             for (const Ellipse& e : sites) e_max = std::max({e_max, e.a(), e.b()});
             const long first = starting_rings(sites, domain);

@@ -1,7 +1,5 @@
 #include "cells/periodic_copies.hpp"
 
-#include "predicates/relative_position.hpp"
-#include "subdivision/ellipse_shape.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
@@ -30,42 +28,6 @@ Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box) {
     const Rational i = floor_of((e.xc() - box.x0) / lx), j = floor_of((e.yc() - box.y0) / ly);
     if (i.is_zero() && j.is_zero()) return e;
     return shifted(e, -(i * lx), -(j * ly));
-}
-
-void require_apart_on_torus(const std::vector<Ellipse>& wrapped, const CellDomain& box) {
-    const Rational lx = box.x1 - box.x0, ly = box.y1 - box.y0;
-    const double dlx = lx.to_double(), dly = ly.to_double();
-    for (SiteId p = 0; p < wrapped.size(); ++p) {
-        const EllipseShape sp = EllipseShape::of(wrapped[p]);
-        for (SiteId q = p; q < wrapped.size(); ++q) {
-            const EllipseShape sq = EllipseShape::of(wrapped[q]);
-            // Copies q + (i Lx, j Ly) whose bounding circle may meet p's: the
-            // slack covers the doubles' rounding; the exact test decides.
-            const double reach = (std::max(sp.a, sp.b) + std::max(sq.a, sq.b)) * (1 + 1e-9) + 1e-9 * (dlx + dly);
-            const double dx = sq.xc - sp.xc, dy = sq.yc - sp.yc;
-            const long i0 = static_cast<long>(std::floor((-reach - dx) / dlx)), i1 = static_cast<long>(std::ceil((reach - dx) / dlx));
-            const long j0 = static_cast<long>(std::floor((-reach - dy) / dly)), j1 = static_cast<long>(std::ceil((reach - dy) / dly));
-            for (long i = i0; i <= i1; ++i)
-                for (long j = j0; j <= j1; ++j) {
-                    if (p == q && i == 0 && j == 0) continue;
-                    if (std::hypot(dx + i * dlx, dy + j * dly) > reach) continue;
-                    const Ellipse copy = shifted(wrapped[q], Rational(i) * lx, Rational(j) * ly);
-                    const RelativePosition rp = *relative_position(wrapped[p], copy);
-                    if (rp != RelativePosition::intersecting && rp != RelativePosition::externally_tangent) continue;
-                    const std::string shift = "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
-                    if (p == q)
-                        throw InputError("cells: site " + std::to_string(p) +
-                                             " meets its own periodic image shifted by " + shift +
-                                             " periods: the periodic box is too small for it",
-                                         InputError::SitePair{p, p});
-                    throw InputError("cells: sites " + std::to_string(p) + " and " + std::to_string(q) + " " +
-                                         (rp == RelativePosition::intersecting ? "cross" : "touch") +
-                                         " on the torus (site " + std::to_string(q) + " shifted by " + shift +
-                                         " periods); cells of touching or crossing sites are not supported yet",
-                                     InputError::SitePair{p, q});
-                }
-        }
-    }
 }
 
 PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, long rings) {

@@ -18,12 +18,6 @@ namespace ellvor {
 // exactly: xc - floor((xc - x0) / Lx) Lx.
 Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box);
 
-// Throws InputError when a site meets one of its own periodic images (the
-// box is too small for it), or two sites touch or cross anywhere on the torus
-// (any copy), naming the ids and the shift; exact (predicates/relative_position).
-// The sites are wrapped.
-void require_apart_on_torus(const std::vector<Ellipse>& wrapped, const CellDomain& box);
-
 // The wrapped sites (ids 0..n-1) followed by their copies shifted by (i Lx,
 // j Ly) for every (i, j) != (0, 0) with |i|, |j| <= rings, shift by shift.
 struct PeriodicCopies {

@@ -124,3 +124,68 @@ TEST_CASE("cells in a periodic box: random ellipses add up to the box area", "[c
             CHECK(s.neighbor >= 0);
         }
 }
+
+TEST_CASE("cells in a box: nested sites and circles add up to the box area", "[cells]") {
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    SECTION("nested ellipses: the hidden sites have area 0") {
+        const std::vector<Ellipse> sites = random_ellipses(4, 9, Rational(1, 4));
+        const CellTessellation t =
+            cell_tessellation(sites, rectangle(CellDomain::Kind::box, Rational(-140), Rational(-125), Rational(130), Rational(120)), o);
+        check_area_identity(t, o.tolerance);
+        long hidden = 0;
+        for (const Cell& c : t.cells)
+            if (!c.visible) {
+                ++hidden;
+                CHECK(arb_is_zero(c.area.get()));
+            }
+        CHECK(hidden >= 1);
+    }
+    SECTION("circles of several radii at 1e-15") {
+        o.tolerance = 1e-15;
+        GeneratorOptions g;
+        g.kind = SiteKind::circles;
+        g.count = 8;
+        g.seed = 5;
+        const CellTessellation t = cell_tessellation(
+            generate_sites(g), rectangle(CellDomain::Kind::box, Rational(-130), Rational(-130), Rational(130), Rational(130)), o);
+        check_area_identity(t, o.tolerance);
+    }
+}
+
+TEST_CASE("cells in a box: a dense packing adds up to the box area", "[cells]") {
+    PackingOptions p;
+    p.count = 30;  // the generator's smallest
+    p.fraction = Rational(11, 20);
+    p.seed = 2;
+    const Packing packing = generate_packing(p);
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    const Rational l(packing.box_side);
+    const CellTessellation t = cell_tessellation(packing.sites, rectangle(CellDomain::Kind::box, Rational(0), Rational(0), l, l), o);
+    check_area_identity(t, o.tolerance);
+}
+
+TEST_CASE("cells in a box: a grid of equal circles has unit square cells", "[cells]") {
+    // Degree-4 vertices everywhere: inside (cocircular grid points) and on the walls (mirrors).
+    std::vector<Ellipse> sites;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) sites.push_back(Ellipse::circle(Rational(i), Rational(j), Rational(1, 4)));
+    CellOptions o;
+    o.boundary_tolerance = 0.01;
+    const CellTessellation t =
+        cell_tessellation(sites, rectangle(CellDomain::Kind::box, Rational(-1, 2), Rational(-1, 2), Rational(5, 2), Rational(5, 2)), o);
+    check_area_identity(t, o.tolerance);
+    for (const Cell& c : t.cells) {
+        INFO("site " << c.site);
+        CHECK(c.area.contains(Rational(1)));
+        // The ring is within the tolerance of the square [i - 1/2, i + 1/2] x [j - 1/2, j + 1/2].
+        const double x = sites[c.site].xc().to_double(), y = sites[c.site].yc().to_double();
+        for (const auto& v : c.ring) {
+            const double d = std::max(std::fabs(v[0] - x), std::fabs(v[1] - y));
+            CHECK(std::fabs(d - 0.5) <= o.boundary_tolerance);
+        }
+        // Each square side is a neighbour or a wall: four sides.
+        CHECK(c.sides.size() >= 4);
+    }
+}
