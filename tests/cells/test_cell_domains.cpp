@@ -49,11 +49,12 @@ void check_area_identity(const CellTessellation& t, double tolerance) {
     CHECK(sum.contains(box));
 }
 
-std::vector<Ellipse> random_ellipses(std::uint64_t seed, long count, Rational nested = Rational(0)) {
+std::vector<Ellipse> random_ellipses(std::uint64_t seed, long count, Rational nested = Rational(0),
+                                     Rational box = Rational(100)) {
     GeneratorOptions o;
     o.count = count;
     o.seed = seed;
-    o.box = Rational(100);
+    o.box = box;
     o.nested_fraction = nested;
     return generate_sites(o);
 }
@@ -161,8 +162,14 @@ TEST_CASE("cells in a box: a dense packing adds up to the box area", "[cells]") 
     const Packing packing = generate_packing(p);
     CellOptions o;
     o.boundary_tolerance = 1;
-    const Rational l(packing.box_side);
-    const CellTessellation t = cell_tessellation(packing.sites, rectangle(CellDomain::Kind::box, Rational(0), Rational(0), l, l), o);
+    // The left third of the packing's box, with the sites strictly inside it
+    // (about 10: cells cost a fraction of a second each).
+    const CellDomain box = rectangle(CellDomain::Kind::box, Rational(0), Rational(0), Rational(packing.box_side, 3), Rational(packing.box_side));
+    std::vector<Ellipse> sites;
+    for (const Ellipse& e : packing.sites)
+        if (e.xc() < box.x1 && strictly_beside(e, wall_line(Wall::right, box))) sites.push_back(e);
+    REQUIRE(sites.size() >= 6);
+    const CellTessellation t = cell_tessellation(sites, box, o);
     check_area_identity(t, o.tolerance);
 }
 
@@ -188,4 +195,65 @@ TEST_CASE("cells in a box: a grid of equal circles has unit square cells", "[cel
         // Each square side is a neighbour or a wall: four sides.
         CHECK(c.sides.size() >= 4);
     }
+}
+
+TEST_CASE("cells in a periodic box: a translated set has the same cells", "[cells]") {
+    // Six ellipses in a 120 x 100 torus; the same set moved by a random
+    // rational vector, its centers taken back into the box (sites straddle
+    // the boundary after the move: site 0 is put across the left edge).
+    const std::vector<Ellipse> sites = random_ellipses(6, 6, Rational(0), Rational(45));
+    const CellDomain torus = rectangle(CellDomain::Kind::periodic, Rational(-60), Rational(-50), Rational(60), Rational(50));
+    std::mt19937_64 rng(7);
+    const Rational dx = torus.x0 - sites[0].xc() + sites[0].a() * Rational(1, 3), dy = test::random_fraction(rng, -5000, 5000, 97);
+    std::vector<Ellipse> moved;
+    for (const Ellipse& e : sites) moved.push_back(Ellipse(e.a(), e.b(), e.w(), e.xc() + dx, e.yc() + dy));
+    // Site 0 straddles the left edge of the box.
+    CHECK(!strictly_beside(moved[0], wall_line(Wall::left, torus)));
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    const CellTessellation a = cell_tessellation(sites, torus, o), b = cell_tessellation(moved, torus, o);
+    check_area_identity(a, o.tolerance);
+    check_area_identity(b, o.tolerance);
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+        INFO("site " << i << ": " << a.cells[i].area.str(20) << " and " << b.cells[i].area.str(20));
+        CHECK(arb_overlaps(a.cells[i].area.get(), b.cells[i].area.get()));
+        std::vector<long> na, nb;
+        for (const CellSide& s : a.cells[i].sides) na.push_back(s.neighbor);
+        for (const CellSide& s : b.cells[i].sides) nb.push_back(s.neighbor);
+        std::sort(na.begin(), na.end());
+        std::sort(nb.begin(), nb.end());
+        CHECK(na == nb);
+        CHECK(!na.empty());
+    }
+}
+
+TEST_CASE("cells: bad domains and sites are input errors", "[cells]") {
+    const std::vector<Ellipse> sites = {Ellipse(Rational(2), Rational(1), Rational(0), Rational(0), Rational(0)),
+                                        Ellipse(Rational(1), Rational(1), Rational(0), Rational(6), Rational(1))};
+    auto fails = [&](const std::vector<Ellipse>& s, const CellDomain& d, const char* says) {
+        INFO(says);
+        try {
+            cell_tessellation(s, d);
+            FAIL("no error");
+        } catch (const InputError& e) {
+            CHECK_THAT(e.what(), Catch::Contains(says));
+        }
+    };
+    using K = CellDomain::Kind;
+    fails(sites, rectangle(K::box, Rational(3), Rational(-5), Rational(3), Rational(5)), "XMIN < XMAX");
+    fails(sites, rectangle(K::periodic, Rational(-3), Rational(5), Rational(10), Rational(-5)), "YMIN < YMAX");
+    // Site 0 reaches x = -2: the box's left wall at -2 touches it; site 1's center is outside the next box.
+    fails(sites, rectangle(K::box, Rational(-2), Rational(-5), Rational(10), Rational(5)), "site 0 is not strictly inside");
+    fails(sites, rectangle(K::box, Rational(-5), Rational(-5), Rational(5), Rational(5)), "site 1 is not strictly inside");
+    // A periodic box 3 wide: site 0 (4 wide) meets its own image.
+    fails(sites, rectangle(K::periodic, Rational(-5), Rational(-5), Rational(-2), Rational(5)), "site 0 meets its own periodic image");
+    // Site 1 crosses site 0's image one period to the right (period 5: site 0 at x = 5 reaches 3..7).
+    fails(sites, rectangle(K::periodic, Rational(-5, 2), Rational(-5), Rational(5, 2), Rational(5)), "sites 0 and 1");
+    // Crossing sites, in the plane and in a box.
+    const std::vector<Ellipse> crossing = {sites[0], Ellipse(Rational(1), Rational(1), Rational(0), Rational(2), Rational(0))};
+    fails(crossing, CellDomain{}, "sites 0 and 1 cross");
+    fails(crossing, rectangle(K::box, Rational(-9), Rational(-9), Rational(9), Rational(9)), "sites 0 and 1 cross");
+    CellOptions bad;
+    bad.tolerance = 0;
+    CHECK_THROWS_AS(cell_tessellation(sites, CellDomain{}, bad), InputError);
 }
