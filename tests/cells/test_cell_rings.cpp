@@ -1,0 +1,75 @@
+// The cells' rings (cells/voronoi_edge_cover.hpp) against independent
+// computations: every ring vertex is within the boundary tolerance D of the
+// cell's boundary, by the signed distances of the MPFR oracle
+// (tests/support/signed_distance_oracle.hpp: none of ellvor's solvers), and
+// every Voronoi vertex of the cell is within D of a ring vertex.
+#include "cells/cell_tessellation.hpp"
+#include "sites/site_generators.hpp"
+#include "tests/support/signed_distance_oracle.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+using namespace ellvor;
+
+namespace {
+
+// A point within D/2 of the boundary of p's cell (a point where p ties with
+// its nearest other site, signed distances 1-Lipschitz) has
+// |min over q != p of delta(x, q) - delta(x, p)| <= D; check it in MPFR.
+void check_ring(const std::vector<Ellipse>& sites, const CellTessellation& t, const Cell& c) {
+    std::vector<test::OracleEllipse> oracle;
+    for (const Ellipse& e : sites) oracle.emplace_back(e);
+    const double D = t.boundary_tolerance;
+    for (const auto& v : c.ring) {
+        const test::RealPoint x{test::Real(v[0]), test::Real(v[1])};
+        const test::Real own = oracle[c.site].signed_distance_value(x);
+        test::Real nearest(INFINITY);
+        for (std::size_t q = 0; q < sites.size(); ++q)
+            if (q != c.site) {
+                const test::Real d = oracle[q].signed_distance_value(x);
+                if (d < nearest) nearest = d;
+            }
+        INFO("site " << c.site << " ring point (" << v[0] << ", " << v[1] << ")");
+        CHECK(std::fabs((nearest - own).to_double()) <= D);
+    }
+    // Every vertex of the cell is near the ring (the other half of the Hausdorff bound, at the vertices).
+    for (const CellSide& s : c.sides) {
+        const CellVertex& w = t.vertices.at(static_cast<std::size_t>(s.from));
+        double best = INFINITY;
+        for (const auto& v : c.ring) best = std::min(best, std::hypot(v[0] - w.x.mid_double(), v[1] - w.y.mid_double()));
+        CHECK(best <= D);
+    }
+    // Consecutive ring points are close: each segment lies near the curve.
+    for (std::size_t k = 0; k < c.ring.size(); ++k) {
+        const auto &a = c.ring[k], &b = c.ring[(k + 1) % c.ring.size()];
+        CHECK(std::hypot(a[0] - b[0], a[1] - b[1]) <= 2 * D);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("cell rings lie within the boundary tolerance of the cells", "[cells]") {
+    GeneratorOptions g;
+    g.kind = GENERATE(SiteKind::circles, SiteKind::ellipses);
+    g.count = 8;
+    g.seed = 11;
+    const std::vector<Ellipse> sites = generate_sites(g);
+    CellOptions o;
+    o.boundary_tolerance = 0.5;
+    const CellTessellation t = cell_tessellation(sites, CellDomain{}, o);
+    CHECK(t.boundary_tolerance == 0.5);
+    long bounded = 0;
+    for (const Cell& c : t.cells) {
+        if (!c.bounded) {
+            CHECK(c.ring.empty());
+            continue;
+        }
+        ++bounded;
+        REQUIRE(c.ring.size() >= 3);
+        check_ring(sites, t, c);
+    }
+    CHECK(bounded >= 1);
+}
