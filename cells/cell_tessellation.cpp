@@ -161,7 +161,7 @@ public:
             }
             NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
             for (const EdgeCoverBox& box : voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_)) {
-                out.ring.push_back(box.center);
+                for (const auto& point : box.points) out.ring.push_back(point);
                 reach = std::max(reach, distance_bound(box, site.xc(), site.yc(), cover_.prec));
             }
         }
@@ -244,6 +244,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             reach[s] = cells->describe(s, c, vertex_ids);
             if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
+            if (options.progress) options.progress(s + 1, sites.size());
         }
     };
     switch (domain.kind) {
@@ -287,7 +288,6 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
                         &c.second_moments[2]})
             arb_indeterminate(b->get());
     }
-    if (options.progress) options.progress(sites.size(), sites.size());
     return out;
 }
 

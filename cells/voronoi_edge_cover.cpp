@@ -24,24 +24,53 @@ double hypot_up(double x, double y) {
     return std::nextafter(std::sqrt(x * x + y * y) * (1 + std::ldexp(1.0, -50)), INFINITY);
 }
 
-// V(J) = P(J) + S n~(J) over the real theta-interval J, S enclosing s(J).
-void ray_points(const SiteBalls& p, const Ball& theta, const Ball& s, long prec, Ball& x, Ball& y) {
-    Ball c, sn, lx, ly, t;
-    arb_sin_cos(sn.get(), c.get(), theta.get(), prec);
-    // the frame coordinates of P + s n~: (a c + s b c, b sn + s a sn) = (c (a + s b), sn (b + s a))
-    arb_mul(t.get(), s.get(), p.b.get(), prec);
-    arb_add(t.get(), t.get(), p.a.get(), prec);
-    arb_mul(lx.get(), c.get(), t.get(), prec);
-    arb_mul(t.get(), s.get(), p.a.get(), prec);
-    arb_add(t.get(), t.get(), p.b.get(), prec);
-    arb_mul(ly.get(), sn.get(), t.get(), prec);
+// V(theta) = P(theta) + s n~(theta) over a complex ball of theta, S enclosing s there.
+void ray_points(const SiteBalls& p, const ComplexBall& theta, const ComplexBall& s, long prec, ComplexBall& x,
+                ComplexBall& y) {
+    ComplexBall c, sn, lx, ly, t;
+    acb_sin_cos(sn.get(), c.get(), theta.get(), prec);
+    // the frame coordinates of P + s n~: (c (a + s b), sn (b + s a))
+    acb_mul_arb(t.get(), s.get(), p.b.get(), prec);
+    acb_add_arb(t.get(), t.get(), p.a.get(), prec);
+    acb_mul(lx.get(), c.get(), t.get(), prec);
+    acb_mul_arb(t.get(), s.get(), p.a.get(), prec);
+    acb_add_arb(t.get(), t.get(), p.b.get(), prec);
+    acb_mul(ly.get(), sn.get(), t.get(), prec);
     // rotate and translate
-    arb_mul(x.get(), lx.get(), p.cos.get(), prec);
-    arb_submul(x.get(), ly.get(), p.sin.get(), prec);
-    arb_add(x.get(), x.get(), p.xc.get(), prec);
-    arb_mul(y.get(), lx.get(), p.sin.get(), prec);
-    arb_addmul(y.get(), ly.get(), p.cos.get(), prec);
-    arb_add(y.get(), y.get(), p.yc.get(), prec);
+    acb_mul_arb(x.get(), lx.get(), p.cos.get(), prec);
+    acb_mul_arb(t.get(), ly.get(), p.sin.get(), prec);
+    acb_sub(x.get(), x.get(), t.get(), prec);
+    acb_add_arb(x.get(), x.get(), p.xc.get(), prec);
+    acb_mul_arb(y.get(), lx.get(), p.sin.get(), prec);
+    acb_mul_arb(t.get(), ly.get(), p.cos.get(), prec);
+    acb_add(y.get(), y.get(), t.get(), prec);
+    acb_add_arb(y.get(), y.get(), p.yc.get(), prec);
+}
+
+// V over a real ball of theta, in real balls (V is real there).
+bool real_ray_points(NormalRayBisector& bisector, const SiteBalls& p, const Ball& theta, long prec, Ball& x, Ball& y) {
+    ComplexBall s, vx, vy;
+    if (!bisector.solve(ComplexBall(theta), prec, s)) return false;
+    arb_zero(s.imag());  // s is real for real theta (cells/normal_ray_bisector.hpp)
+    ray_points(p, ComplexBall(theta), s, prec, vx, vy);
+    arb_set(x.get(), vx.real());
+    arb_set(y.get(), vy.real());
+    return true;
+}
+
+Ball real_ball(double l, double h, long prec) {
+    Arf al, ah;
+    arf_set_d(al.get(), l);
+    arf_set_d(ah.get(), h);
+    Ball theta;
+    arb_set_interval_arf(theta.get(), al.get(), ah.get(), prec);
+    return theta;
+}
+
+double magnitude_up(const acb_t z) {
+    Mag m;
+    acb_get_mag(m.get(), z);
+    return mag_get_d(m.get());
 }
 
 }  // namespace
@@ -64,26 +93,53 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
 
     std::vector<EdgeCoverBox> out;
     double first_piece_end = lo, last_piece_start = hi;
+    // The overshoot past the true vertices: V at most the vertex balls' width beyond them.
+    const double overshoot = std::max(first_end - lo, hi - last_start);
+    double reach = 0.25;  // the complex half-side the second order tries first; halves when it fails
     std::vector<std::pair<double, double>> stack{{lo, hi}};
     while (!stack.empty()) {
         const auto [l, h] = stack.back();
         stack.pop_back();
-        Arf al, ah;
-        arf_set_d(al.get(), l);
-        arf_set_d(ah.get(), h);
-        Ball theta;
-        arb_set_interval_arf(theta.get(), al.get(), ah.get(), prec);
-        ComplexBall s;
         EdgeCoverBox box;
-        bool ok = bisector.solve(ComplexBall(theta), prec, s);
-        if (ok) {
-            // s is real for real theta (cells/normal_ray_bisector.hpp): its real part holds it.
-            Ball sr;
-            arb_set(sr.get(), s.real());
-            ray_points(p, theta, sr, prec, box.x, box.y);
-            box.center = {box.x.mid_double(), box.y.mid_double()};
-            box.radius = hypot_up(gap_bound(box.x, box.center[0], prec), gap_bound(box.y, box.center[1], prec));
-            ok = box.radius <= options.radius;
+        bool ok = false;
+        const double half = 0.5 * (h - l), m = 0.5 * (l + h);
+        // Second order.
+        for (double R = std::max(reach, 4 * half); !ok && R >= 4 * half; R *= 0.5) {
+            ComplexBall z, s, vx, vy;
+            arf_set_d(arb_midref(z.real()), m);
+            mag_set_d(arb_radref(z.real()), R);
+            mag_set_d(arb_radref(z.imag()), R);
+            if (!bisector.solve(z, prec, s)) {
+                reach = R * 0.5;
+                continue;
+            }
+            Ball mx, my, lx, ly, hx, hy;
+            if (!real_ray_points(bisector, p, real_ball(m, m, prec), prec, mx, my) ||
+                !real_ray_points(bisector, p, real_ball(l, l, prec), prec, lx, ly) ||
+                !real_ray_points(bisector, p, real_ball(h, h, prec), prec, hx, hy))
+                break;
+            ray_points(p, z, s, prec, vx, vy);
+            acb_sub_arb(vx.get(), vx.get(), mx.get(), prec);
+            acb_sub_arb(vy.get(), vy.get(), my.get(), prec);
+            const double M = hypot_up(magnitude_up(vx.get()), magnitude_up(vy.get()));
+            const double rho = R - half;
+            const double err = half * half * M / (rho * rho) * (1 + 1e-12) + M / rho * overshoot;
+            const std::array<double, 2> a{lx.mid_double(), ly.mid_double()}, b{hx.mid_double(), hy.mid_double()};
+            const double ends = std::max(hypot_up(gap_bound(lx, a[0], prec), gap_bound(ly, a[1], prec)),
+                                         hypot_up(gap_bound(hx, b[0], prec), gap_bound(hy, b[1], prec)));
+            if (!(err + ends <= options.radius)) break;  // too long: bisect
+            arb_set(box.x.get(), vx.real());
+            arb_add(box.x.get(), box.x.get(), mx.get(), prec);
+            arb_set(box.y.get(), vy.real());
+            arb_add(box.y.get(), box.y.get(), my.get(), prec);
+            box.points = {a, b};
+            ok = true;
+        }
+        // First order.
+        if (!ok && real_ray_points(bisector, p, real_ball(l, h, prec), prec, box.x, box.y)) {
+            const std::array<double, 2> c{box.x.mid_double(), box.y.mid_double()};
+            ok = hypot_up(gap_bound(box.x, c[0], prec), gap_bound(box.y, c[1], prec)) <= options.radius;
+            box.points = {c};
         }
         if (ok) {
             if (out.empty()) first_piece_end = h;
@@ -93,7 +149,6 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                 throw Error("voronoi_edge_cover: more than " + std::to_string(options.max_boxes) + " boxes");
             continue;
         }
-        const double m = 0.5 * (l + h);
         if (!(h - l > smallest) || !(l < m && m < h))
             throw Error("voronoi_edge_cover: the edge cannot be certified near angle " + std::to_string(l));
         stack.push_back({m, h});  // the left half is next: boxes come in increasing theta

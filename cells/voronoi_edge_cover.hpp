@@ -4,12 +4,24 @@
 // The edge of p and q, seen from p, is V(theta) = P(theta) + s(theta) n~(theta)
 // for theta between its two vertex angles (cells/normal_ray_bisector.hpp).
 // The angle range, from the lower end of the first vertex's ball to the upper
-// end of the second's, is split into consecutive pieces J, bisecting until on
-// each NormalRayBisector::solve certifies s over J and the box V(J) (ball
-// arithmetic over all of J) has a center within `radius` of each of its points.
-// Then every point of the edge lies in a box; the first box holds the first
-// vertex and the last box the second (the end pieces hold the whole vertex
-// balls); two consecutive boxes share the point V at their common angle.
+// end of the second's, is split into consecutive pieces J, bisecting until
+// one of two certificates holds on J (never a guess: a piece that fails both
+// is bisected, down to 2^-40 of the range, then an Error):
+//  - second order: NormalRayBisector::solve certifies s on a complex square
+//    of half-side R >= 4 |J|/2 around J's middle m, where V is holomorphic;
+//    with M bounding |V(z) - V(m)| there (per coordinate) and rho = R - |J|/2,
+//    Cauchy's estimates give |V''| <= 2 M / rho^2 on J, so the chord between
+//    V at J's ends is within (|J|/2)^2 M / rho^2 of V(J) both ways; at the
+//    range's ends V runs past the true vertex by at most |V'| w <= M w / rho
+//    (w the vertex ball's width), which is added. The piece's points: the two
+//    ends.
+//  - first order: solve certifies s over J and the box V(J) in real balls
+//    lies within the radius of its center. The piece's point: the center.
+// Each piece's points then form a polyline within `radius` of V(J) and V(J)
+// within `radius` of it, its first point within `radius` of V at J's start
+// and its last of V at J's end; consecutive pieces share V at their common
+// angle. So the polyline through all points is within `radius` of the edge
+// (Hausdorff), and the end points within `radius` of its vertices.
 #pragma once
 
 #include "cells/normal_ray_bisector.hpp"
@@ -21,9 +33,8 @@
 namespace ellvor {
 
 struct EdgeCoverBox {
-    Ball x, y;                      // encloses V(J)
-    std::array<double, 2> center;   // every point of V(J) lies within `radius` of it
-    double radius = 0;              // an upper bound, rounded up
+    Ball x, y;                                  // encloses V(J)
+    std::vector<std::array<double, 2>> points;  // the piece's polyline (above)
 };
 
 struct EdgeCoverOptions {

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -23,17 +24,25 @@ void check_ring(const std::vector<Ellipse>& sites, const CellTessellation& t, co
     std::vector<test::OracleEllipse> oracle;
     for (const Ellipse& e : sites) oracle.emplace_back(e);
     const double D = t.boundary_tolerance;
-    for (const auto& v : c.ring) {
-        const test::RealPoint x{test::Real(v[0]), test::Real(v[1])};
-        const test::Real own = oracle[c.site].signed_distance_value(x);
-        test::Real nearest(INFINITY);
-        for (std::size_t q = 0; q < sites.size(); ++q)
-            if (q != c.site) {
-                const test::Real d = oracle[q].signed_distance_value(x);
-                if (d < nearest) nearest = d;
-            }
-        INFO("site " << c.site << " ring point (" << v[0] << ", " << v[1] << ")");
-        CHECK(std::fabs((nearest - own).to_double()) <= D);
+    // The ring's vertices and points along its segments (a segment may be a
+    // long chord of the second-order cover: it must stay near the boundary too).
+    // (At most about 150 segments a cell, evenly spread: the oracle is slow.)
+    const std::size_t stride = std::max<std::size_t>(1, c.ring.size() / 150);
+    for (std::size_t k = 0; k < c.ring.size(); k += stride) {
+        const auto &a = c.ring[k], &b = c.ring[(k + 1) % c.ring.size()];
+        for (double f : {0.0, 0.5}) {
+            const double vx = a[0] + f * (b[0] - a[0]), vy = a[1] + f * (b[1] - a[1]);
+            const test::RealPoint x{test::Real(vx), test::Real(vy)};
+            const test::Real own = oracle[c.site].signed_distance_value(x);
+            test::Real nearest(INFINITY);
+            for (std::size_t q = 0; q < sites.size(); ++q)
+                if (q != c.site) {
+                    const test::Real d = oracle[q].signed_distance_value(x);
+                    if (d < nearest) nearest = d;
+                }
+            INFO("site " << c.site << " ring point (" << vx << ", " << vy << ")");
+            CHECK(std::fabs((nearest - own).to_double()) <= D);
+        }
     }
     // Every vertex of the cell is near the ring (the other half of the Hausdorff bound, at the vertices).
     for (const CellSide& s : c.sides) {
@@ -41,11 +50,6 @@ void check_ring(const std::vector<Ellipse>& sites, const CellTessellation& t, co
         double best = INFINITY;
         for (const auto& v : c.ring) best = std::min(best, std::hypot(v[0] - w.x.mid_double(), v[1] - w.y.mid_double()));
         CHECK(best <= D);
-    }
-    // Consecutive ring points are close: each segment lies near the curve.
-    for (std::size_t k = 0; k < c.ring.size(); ++k) {
-        const auto &a = c.ring[k], &b = c.ring[(k + 1) % c.ring.size()];
-        CHECK(std::hypot(a[0] - b[0], a[1] - b[1]) <= 2 * D);
     }
 }
 
@@ -58,9 +62,9 @@ TEST_CASE("cell rings lie within the boundary tolerance of the cells", "[cells]"
     g.seed = 11;
     const std::vector<Ellipse> sites = generate_sites(g);
     CellOptions o;
-    o.boundary_tolerance = 0.5;
+    o.boundary_tolerance = 0.1;
     const CellTessellation t = cell_tessellation(sites, CellDomain{}, o);
-    CHECK(t.boundary_tolerance == 0.5);
+    CHECK(t.boundary_tolerance == 0.1);
     long bounded = 0;
     for (const Cell& c : t.cells) {
         if (!c.bounded) {
