@@ -257,3 +257,25 @@ TEST_CASE("cells: bad domains and sites are input errors", "[cells]") {
     bad.tolerance = 0;
     CHECK_THROWS_AS(cell_tessellation(sites, CellDomain{}, bad), InputError);
 }
+
+TEST_CASE("cells in a periodic box: a grid of equal circles has unit square cells", "[cells]") {
+    // Cocircular copies everywhere: every vertex has degree 4. Centers given
+    // outside the box are taken into it by whole periods.
+    std::vector<Ellipse> sites;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 2; ++j) sites.push_back(Ellipse::circle(Rational(i + 3 * j), Rational(j - 2), Rational(1, 3)));
+    CellOptions o;
+    o.boundary_tolerance = 0.01;
+    const CellTessellation t =
+        cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(-1, 2), Rational(-1, 2), Rational(5, 2), Rational(3, 2)), o);
+    check_area_identity(t, o.tolerance);
+    for (const Cell& c : t.cells) {
+        INFO("site " << c.site);
+        CHECK(c.area.contains(Rational(1)));
+        // Four neighbours across the square's sides (two of them copies of one site when the box is 2 high).
+        long across = 0;
+        for (const CellSide& s : c.sides) across += s.shift[0] != 0 || s.shift[1] != 0;
+        CHECK(c.sides.size() >= 4);
+        CHECK(across >= 1);
+    }
+}
