@@ -109,8 +109,8 @@ PlaneSites neighbourhood_of_originals(const PlaneSites& all) {
 // for the torus the certificate; areas come after (cell_areas).
 class OriginalCells {
 public:
-    OriginalCells(const PlaneSites& sites, const CellDomain& domain, double boundary_tolerance)
-        : sites_(sites), domain_(domain), graph_(built_graph(sites.sites)),
+    OriginalCells(const PlaneSites& sites, double boundary_tolerance)
+        : sites_(sites), graph_(built_graph(sites.sites)),
           cells_(voronoi_cells(*graph_, face_numbers(*graph_))), angles_(*graph_, sites_.sites) {
         double size = 0;
         for (const Ellipse& e : sites.sites) size = std::max(size, std::max(e.a().to_double(), e.b().to_double()));
@@ -193,7 +193,6 @@ private:
     }
 
     const PlaneSites& sites_;
-    const CellDomain& domain_;
     std::unique_ptr<DelaunayGraph> graph_;
     std::vector<VoronoiCell> cells_;
     CellVertexAngles angles_;
@@ -250,12 +249,12 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     switch (domain.kind) {
         case CellDomain::Kind::plane:
             plane = std::make_unique<PlaneSites>(plane_sites(sites));
-            cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
+            cells = std::make_unique<OriginalCells>(*plane, out.boundary_tolerance);
             describe_all();
             break;
         case CellDomain::Kind::box:
             plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain))));
-            cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
+            cells = std::make_unique<OriginalCells>(*plane, out.boundary_tolerance);
             describe_all();
             break;
         case CellDomain::Kind::periodic: {
@@ -269,7 +268,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
                                 std::to_string(rings - 1) + " rings of copies");
                 plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings))));
-                cells = std::make_unique<OriginalCells>(*plane, out.domain, out.boundary_tolerance);
+                cells = std::make_unique<OriginalCells>(*plane, out.boundary_tolerance);
                 describe_all();
                 bool proven = true;
                 for (SiteId s = 0; s < sites.size() && proven; ++s)

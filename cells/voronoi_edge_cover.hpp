@@ -38,7 +38,7 @@ struct EdgeCoverBox {
 };
 
 struct EdgeCoverOptions {
-    double radius = 1e-3;  // the largest radius of a box
+    double radius = 1e-3;  // each piece's polyline and V(J) within this of each other
     long prec = 64;        // Arb precision of the certificates
     long max_boxes = 1L << 20;
 };

@@ -279,3 +279,15 @@ TEST_CASE("cells in a periodic box: a grid of equal circles has unit square cell
         CHECK(across >= 1);
     }
 }
+
+TEST_CASE("cells in a periodic box: two small sites (cells far larger than the sites)", "[cells]") {
+    // Each cell reaches about half a period from its site: the certificate
+    // needs copies beyond the first ring.
+    const std::vector<Ellipse> sites = {Ellipse(Rational(3), Rational(1), Rational(1, 5), Rational(10), Rational(20)),
+                                        Ellipse(Rational(2), Rational(2, 3), Rational(-3, 4), Rational(61), Rational(67))};
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    const CellTessellation t =
+        cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(90)), o);
+    check_area_identity(t, o.tolerance);
+}
