@@ -21,6 +21,20 @@ Ellipse shifted(const Ellipse& e, const Rational& dx, const Rational& dy) {
     return Ellipse(e.a(), e.b(), e.w(), e.xc() + dx, e.yc() + dy);
 }
 
+// The rings in each direction at level k: k, times the ratio of the periods
+// (rounded up) along the shorter period, so that the copies reach about as
+// far both ways.
+std::array<long, 2> rings_along_axes(const CellDomain& box, long level) {
+    const Rational lx = box.x1 - box.x0, ly = box.y1 - box.y0;
+    auto ratio = [](const Rational& longer, const Rational& shorter) {
+        const Rational q = longer / shorter;
+        Integer c;
+        fmpz_cdiv_q(c.get(), fmpq_numref(q.get()), fmpq_denref(q.get()));
+        return std::max(1L, fmpz_get_si(c.get()));
+    };
+    return {level * (ly > lx ? ratio(ly, lx) : 1L), level * (lx > ly ? ratio(lx, ly) : 1L)};
+}
+
 }  // namespace
 
 Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box) {
@@ -37,8 +51,9 @@ PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDo
     out.rings = rings;
     out.sites = wrapped;
     out.shift.assign(wrapped.size(), {0, 0});
-    for (long i = -rings; i <= rings; ++i)
-        for (long j = -rings; j <= rings; ++j) {
+    const std::array<long, 2> k = rings_along_axes(box, rings);
+    for (long i = -k[0]; i <= k[0]; ++i)
+        for (long j = -k[1]; j <= k[1]; ++j) {
             if (i == 0 && j == 0) continue;
             for (const Ellipse& e : wrapped) {
                 out.sites.push_back(shifted(e, Rational(i) * lx, Rational(j) * ly));
@@ -51,16 +66,18 @@ PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDo
 long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box) {
     Rational e_max(0);
     for (const Ellipse& e : wrapped) e_max = std::max(e_max, larger_semi_axis(e));
-    const Rational l = std::min(box.x1 - box.x0, box.y1 - box.y0);
-    long k = 1;
-    while (!(Rational(k) * l > Rational(2) * e_max)) ++k;
-    return k;
+    for (long level = 1;; ++level) {
+        const std::array<long, 2> k = rings_along_axes(box, level);
+        if (Rational(k[0]) * (box.x1 - box.x0) > Rational(2) * e_max &&
+            Rational(k[1]) * (box.y1 - box.y0) > Rational(2) * e_max)
+            return level;
+    }
 }
 
 Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, long rings) {
-    const Rational k(rings);
-    const Rational dx = k * (box.x1 - box.x0) + std::min(box.x1 - p.xc(), p.xc() - box.x0);
-    const Rational dy = k * (box.y1 - box.y0) + std::min(box.y1 - p.yc(), p.yc() - box.y0);
+    const std::array<long, 2> k = rings_along_axes(box, rings);
+    const Rational dx = Rational(k[0]) * (box.x1 - box.x0) + std::min(box.x1 - p.xc(), p.xc() - box.x0);
+    const Rational dy = Rational(k[1]) * (box.y1 - box.y0) + std::min(box.y1 - p.yc(), p.yc() - box.y0);
     return std::min(dx, dy);
 }
 

@@ -19,7 +19,10 @@ namespace ellvor {
 Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box);
 
 // The wrapped sites (ids 0..n-1) followed by their copies shifted by (i Lx,
-// j Ly) for every (i, j) != (0, 0) with |i|, |j| <= rings, shift by shift.
+// j Ly) for every (i, j) != (0, 0) with |i| <= kx, |j| <= ky, shift by shift:
+// at ring level k, k rings along the longer period and k times the ratio of
+// the periods (rounded up) along the shorter, so that the copies reach about
+// as far both ways.
 struct PeriodicCopies {
     std::vector<Ellipse> sites;
     std::vector<std::array<long, 2>> shift;  // per site
@@ -29,13 +32,13 @@ struct PeriodicCopies {
 };
 PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, long rings);
 
-// The fewest rings k >= 1 with k min(Lx, Ly) > 2 max semi-axis: then every
+// The lowest ring level with kx Lx and ky Ly > 2 max semi-axis: then every
 // copy outside the rings is apart from every site in the box.
 long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box);
 
 // A lower bound of the distance from the center of wrapped site p to the
-// center of any copy of any site outside `rings` rings:
-// min(k Lx + min(x1 - xc, xc - x0), k Ly + min(y1 - yc, yc - y0)).
+// center of any copy of any site outside the rings of level `rings`:
+// min(kx Lx + min(x1 - xc, xc - x0), ky Ly + min(y1 - yc, yc - y0)).
 Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, long rings);
 
 // The certificate (docs/DESIGN.md §10): when every point x of p's cell among

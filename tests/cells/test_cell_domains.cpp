@@ -280,14 +280,33 @@ TEST_CASE("cells in a periodic box: a grid of equal circles has unit square cell
     }
 }
 
-TEST_CASE("cells in a periodic box: two small sites (cells far larger than the sites)", "[cells]") {
-    // Each cell reaches about half a period from its site: the certificate
-    // needs copies beyond the first ring.
-    const std::vector<Ellipse> sites = {Ellipse(Rational(3), Rational(1), Rational(1, 5), Rational(10), Rational(20)),
-                                        Ellipse(Rational(2), Rational(2, 3), Rational(-3, 4), Rational(61), Rational(67))};
+TEST_CASE("cells in a periodic box: two small sites in a long box (cells far larger than the sites)", "[cells]") {
+    // Each cell spans the box's height and half its length: the copies must
+    // reach several periods along the short side.
+    const std::vector<Ellipse> sites = {Ellipse(Rational(3), Rational(1), Rational(1, 5), Rational(10), Rational(8)),
+                                        Ellipse(Rational(2), Rational(2, 3), Rational(-3, 4), Rational(61), Rational(17))};
     CellOptions o;
     o.boundary_tolerance = 1;
     const CellTessellation t =
-        cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(90)), o);
+        cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(20)), o);
     check_area_identity(t, o.tolerance);
+    // Both cells meet both copies of the other across the long side.
+    for (const Cell& c : t.cells) CHECK(c.sides.size() >= 2);
+}
+
+TEST_CASE("cells in a periodic box: one site near a corner needs a second ring of copies", "[cells]") {
+    // Its cell reaches about 76 from its center, the first ring's missing
+    // copies start 104 away: 2 * 76 > 104 - 3 + 1, so only the second ring
+    // proves the cell (the whole torus: its area is the box's).
+    const std::vector<Ellipse> sites = {Ellipse(Rational(3), Rational(1), Rational(1, 5), Rational(5), Rational(4))};
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    const CellTessellation t =
+        cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(100)), o);
+    check_area_identity(t, o.tolerance);
+    // Its neighbours are its own copies.
+    for (const CellSide& s : t.cells[0].sides) {
+        CHECK(s.neighbor == 0);
+        CHECK((s.shift[0] != 0 || s.shift[1] != 0));
+    }
 }
