@@ -478,7 +478,7 @@ Table breakdown_table(const std::vector<Dataset>& datasets, const std::vector<Da
 
 Table stage_table(const std::vector<Dataset>& datasets, const std::vector<DatasetSummary>& sums) {
     Table t("stages", {"dataset", "circles none/ccw/cw/both", "conflict", "no-conflict", "tangent", "no-circle",
-                       "undecided", "error", "decided by filter/subdivision/exact", "max precision",
+                       "undecided", "error", "decided by filter/subdivision/symmetry/exact", "max precision",
                        "agree / compared", "disagree"},
             "llrrrrrrlrlr");
     for (std::size_t k = 0; k < datasets.size(); ++k) {

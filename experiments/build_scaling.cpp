@@ -479,7 +479,7 @@ int main(int argc, char** argv) {
     report.table(graph_table(rows));
 
     report.heading("Predicate calls per stage");
-    report.table(predicate_table(rows), "calls (filter / subdivision / exact); memoized answers are not counted.");
+    report.table(predicate_table(rows), "calls (filter / subdivision / symmetry / exact); memoized answers are not counted.");
 
     report.heading("Where the time goes: the nearest-neighbour walk (kappa1)");
     report.table(walk_table(rows),

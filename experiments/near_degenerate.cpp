@@ -781,7 +781,7 @@ std::vector<Ellipse> transformed(const std::vector<Ellipse>& sites, const Versio
 
 struct InvarianceResults {
     Table table{"invariance", {"quadruples", "version", "n", "disagreements", "conflict / no-conflict / tangent / no-circle",
-                               "filter / subdivision / exact", "max precision", "median CPU (wall)", "max CPU (wall)",
+                               "filter / subdivision / symmetry / exact", "max precision", "median CPU (wall)", "max CPU (wall)",
                                "slowest #"}};
     long disagreements = 0;
     Slowest slowest;
@@ -963,7 +963,7 @@ int main(int argc, char** argv) {
                                "the build; the VmRSS at the fork is the baseline; \"growth\" is the difference):");
 
     report.heading("Predicate calls of the graphs");
-    report.table(stages, "calls (filter / subdivision / exact) of the build alone, memoized answers excluded. \"calls "
+    report.table(stages, "calls (filter / subdivision / symmetry / exact) of the build alone, memoized answers excluded. \"calls "
                          "timed\": every call of one extra build with each call timed (wall time; memoized answers "
                          "included), with the mean and the slowest call (its site ids), which is then made again alone "
                          "on fresh traits (cold; median of the runs).");

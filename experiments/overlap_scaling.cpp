@@ -615,7 +615,7 @@ void report_circles(Report& report, const std::vector<Row>& rows, const std::vec
 
     report.heading("Predicate calls per stage (ellvor)");
     report.table(predicate_table(rows, "circles"),
-                 "calls (filter / subdivision / exact); memoized answers are not counted. is_hidden decides the "
+                 "calls (filter / subdivision / symmetry / exact); memoized answers are not counted. is_hidden decides the "
                  "relative position of the pairs the graph meets.");
 
     report.heading("Target");
@@ -647,7 +647,7 @@ void report_ellipses(Report& report, const std::vector<Row>& rows, const std::ve
                  "conflict regions, in all.");
 
     report.heading("Predicate calls per stage", 3);
-    report.table(predicate_table(rows, "ellipses"), "calls (filter / subdivision / exact), as for circles.");
+    report.table(predicate_table(rows, "ellipses"), "calls (filter / subdivision / symmetry / exact), as for circles.");
 
     report.heading("Where the extra time goes", 3);
     report.table(ellipse_extra_time_table(rows, ecases),

@@ -8,7 +8,7 @@
 //   ellipses      generate_sites(ellipses, n, seed 1, bits 8, box 100): `ellvor generate ellipses`
 // DelaunayGraph::insert_all on each (CPU time of the build only, median of
 // repeated builds below 0.3 s); validate() up to 10^4 sites; the calls of
-// every predicate by deciding stage (filter / subdivision / exact); the
+// every predicate by deciding stage (filter / subdivision / symmetry / exact); the
 // generation time of the packings; peak memory of one build in a forked child
 // (peak_memory.hpp: the child's VmHWM minus its RSS at the fork, the sites
 // already made).
@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
     report.heading("Builds");
     report.table(build_table(rows));
     report.heading("Predicate calls per stage");
-    report.table(predicate_table(rows), "calls (filter / subdivision / exact); memoized answers are not counted.");
+    report.table(predicate_table(rows), "calls (filter / subdivision / symmetry / exact); memoized answers are not counted.");
     report.publish(args.out_dir, "packing_scaling.md");
     return anomaly ? 1 : 0;
 }

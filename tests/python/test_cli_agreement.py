@@ -167,5 +167,5 @@ def test_voronoi_circle_enclosures(cli, tmp_path, bits):
             assert got.circle.correct_bits >= bits
         else:
             assert (got.exists, got.circles, got.circle) == (False, expected["circles"], None)
-        assert got.stage in ("filter", "subdivision", "exact")
+        assert got.stage in ("filter", "subdivision", "symmetry", "exact")
     assert exists >= 5
