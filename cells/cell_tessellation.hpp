@@ -37,7 +37,9 @@ struct CellOptions {
 struct CellSide {
     long neighbor = -1;                  // the site across the side (an input id); -1 for a wall
     Wall wall = Wall::none;              // the wall across the side, when neighbor is -1
-    std::array<long, 2> shift = {0, 0};  // periodic: the neighbour's image is neighbor + shift * (box size)
+    // periodic: the neighbour across is site `neighbor` shifted by shift * (box size), both
+    // with their centers taken into the box first (cells/periodic_copies.hpp, wrap_into_box)
+    std::array<long, 2> shift = {0, 0};
     long from = -1, to = -1;             // vertex numbers in CellTessellation::vertices, counter-clockwise; -1: infinity
 };
 

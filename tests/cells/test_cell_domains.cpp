@@ -13,7 +13,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <random>
 #include <vector>
 
@@ -95,9 +94,7 @@ TEST_CASE("cells in a box: random ellipses add up to the box area", "[cells]") {
     const CellDomain box = rectangle(CellDomain::Kind::box, Rational(-130), Rational(-120), Rational(125), Rational(135));
     CellOptions o;
     o.boundary_tolerance = 1;  // rings cost about perimeter / tolerance certificates
-    const auto start = std::chrono::steady_clock::now();
     const CellTessellation t = cell_tessellation(sites, box, o);
-    WARN("box, 8 ellipses: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
     check_area_identity(t, o.tolerance);
     // Walls appear, each side's neighbour is a site or a wall, never both.
     long walls = 0;
@@ -115,9 +112,7 @@ TEST_CASE("cells in a periodic box: random ellipses add up to the box area", "[c
     const CellDomain torus = rectangle(CellDomain::Kind::periodic, Rational(-100), Rational(-100), Rational(100), Rational(100));
     CellOptions o;
     o.boundary_tolerance = 1;
-    const auto start = std::chrono::steady_clock::now();
     const CellTessellation t = cell_tessellation(sites, torus, o);
-    WARN("periodic, 7 ellipses: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
     check_area_identity(t, o.tolerance);
     for (const Cell& c : t.cells)
         for (const CellSide& s : c.sides) {
