@@ -96,6 +96,9 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
     // The overshoot past the true vertices: V at most the vertex balls' width beyond them.
     const double overshoot = std::max(first_end - lo, hi - last_start);
     double reach = 0.25;  // the complex half-side the second order tries first; halves when it fails
+    Ball end_x, end_y;    // V at end_angle, the last second-order piece's end
+    double end_angle = 0;
+    bool have_end = false;
     std::vector<std::pair<double, double>> stack{{lo, hi}};
     while (!stack.empty()) {
         const auto [l, h] = stack.back();
@@ -113,25 +116,35 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                 reach = R * 0.5;
                 continue;
             }
-            Ball mx, my, lx, ly, hx, hy;
-            if (!real_ray_points(bisector, p, real_ball(m, m, prec), prec, mx, my) ||
-                !real_ray_points(bisector, p, real_ball(l, l, prec), prec, lx, ly) ||
-                !real_ray_points(bisector, p, real_ball(h, h, prec), prec, hx, hy))
-                break;
             ray_points(p, z, s, prec, vx, vy);
-            acb_sub_arb(vx.get(), vx.get(), mx.get(), prec);
-            acb_sub_arb(vy.get(), vy.get(), my.get(), prec);
+            // Cauchy's estimates hold for V - c, any constant c: the middle of the enclosure.
+            arb_set(box.x.get(), vx.real());
+            arb_set(box.y.get(), vy.real());
+            ComplexBall cx, cy;
+            arb_get_mid_arb(cx.real(), vx.real());
+            arb_get_mid_arb(cy.real(), vy.real());
+            acb_sub(vx.get(), vx.get(), cx.get(), prec);
+            acb_sub(vy.get(), vy.get(), cy.get(), prec);
             const double M = hypot_up(magnitude_up(vx.get()), magnitude_up(vy.get()));
             const double rho = R - half;
             const double err = half * half * M / (rho * rho) * (1 + 1e-12) + M / rho * overshoot;
-            const std::array<double, 2> a{lx.mid_double(), ly.mid_double()}, b{hx.mid_double(), hy.mid_double()};
-            const double ends = std::max(hypot_up(gap_bound(lx, a[0], prec), gap_bound(ly, a[1], prec)),
+            if (!(err <= options.radius)) break;  // too long: bisect
+            // The ends: V at l is the previous piece's end when they meet.
+            if (!(have_end && end_angle == l)) {
+                have_end = real_ray_points(bisector, p, real_ball(l, l, prec), prec, end_x, end_y);
+                end_angle = l;
+                if (!have_end) break;
+            }
+            Ball hx, hy;
+            if (!real_ray_points(bisector, p, real_ball(h, h, prec), prec, hx, hy)) break;
+            const std::array<double, 2> a{end_x.mid_double(), end_y.mid_double()}, b{hx.mid_double(), hy.mid_double()};
+            const double ends = std::max(hypot_up(gap_bound(end_x, a[0], prec), gap_bound(end_y, a[1], prec)),
                                          hypot_up(gap_bound(hx, b[0], prec), gap_bound(hy, b[1], prec)));
-            if (!(err + ends <= options.radius)) break;  // too long: bisect
-            arb_set(box.x.get(), vx.real());
-            arb_add(box.x.get(), box.x.get(), mx.get(), prec);
-            arb_set(box.y.get(), vy.real());
-            arb_add(box.y.get(), box.y.get(), my.get(), prec);
+            if (!(err + ends <= options.radius)) break;
+            end_x = hx;
+            end_y = hy;
+            end_angle = h;
+            have_end = true;
             box.points = {a, b};
             ok = true;
         }
