@@ -8,8 +8,9 @@
 // one of two certificates holds on J (never a guess: a piece that fails both
 // is bisected, down to 2^-40 of the range, then an Error):
 //  - second order: NormalRayBisector::solve certifies s on a complex square
-//    of half-side R >= 4 |J|/2 around J's middle m, where V is holomorphic;
-//    with M bounding |V(z) - V(m)| there (per coordinate) and rho = R - |J|/2,
+//    of half-side R >= 4 |J|/2 around J's middle, where V is holomorphic;
+//    with M bounding |V(z) - c| there (c the middle of V's enclosure there,
+//    per coordinate) and rho = R - |J|/2,
 //    Cauchy's estimates give |V''| <= 2 M / rho^2 on J, so the chord between
 //    V at J's ends is within (|J|/2)^2 M / rho^2 of V(J) both ways; at the
 //    range's ends V runs past the true vertex by at most |V'| w <= M w / rho
