@@ -182,7 +182,7 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         if (*count == VoronoiCircles::none || *count == VoronoiCircles::cw_only) return count.with(InCircle::no_circle);
     }
     // The circle exists (the double certificate or the count said so).
-    if (tangent_by_mirror_symmetry(e1, e2, e3, q)) return Decision<InCircle>::decided(InCircle::tangent, Stage::symmetry);
+    if (options.use_symmetry && tangent_by_mirror_symmetry(e1, e2, e3, q)) return Decision<InCircle>::decided(InCircle::tangent, Stage::symmetry);
     VoronoiCircleSolver* solver = &circle->solver();
     // Q in the solver's frame (similarity_frame.hpp), made once the solver
     // has chosen it.

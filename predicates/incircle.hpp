@@ -16,6 +16,7 @@ struct InCircleOptions {
     RefinementOptions refinement;  // the subdivision stage's cap; exact_stage = false stops there undecided
     bool use_filter = true;        // false: skip the double-interval filters
     bool use_circle_closed_form = true;  // false: four circles take the general path (tests compare the two)
+    bool use_symmetry = true;  // false: skip the symmetry stage (tests that reach the exact stage on symmetric sites)
 };
 
 // The cascade: for four circles, a closed-form filter in double intervals

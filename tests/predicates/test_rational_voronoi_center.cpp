@@ -175,16 +175,26 @@ TEST_CASE("contact comparison: an irrational common center falls back to the res
     ContactComparison same({first.sites(), &first, 0}, {second.sites(), &second, 0});
     CHECK(same.same_contact_point(64));
     CHECK(same.proof() == ContactComparison::Proof::resultants);
-    // The incircle predicate, end to end: tangent, from the exact stage.
-    const Decision<InCircle> d = incircle(s[0], s[1], s[2], s[3]);
+    // The incircle predicate, end to end: tangent, from the exact stage
+    // (the mirror pairs make it the symmetry stage's unless that is off).
+    InCircleOptions no_symmetry;
+    no_symmetry.use_symmetry = false;
+    const Decision<InCircle> d = incircle(s[0], s[1], s[2], s[3], no_symmetry);
     CHECK(*d == InCircle::tangent);
     CHECK(d.stage == Stage::exact);
+    const Decision<InCircle> by_symmetry = incircle(s[0], s[1], s[2], s[3]);
+    CHECK(*by_symmetry == InCircle::tangent);
+    CHECK(by_symmetry.stage == Stage::symmetry);
 }
 
 TEST_CASE("incircle on grid cells: tangent from the exact stage, perturbations strict",
           "[predicates][rational-center][exact]") {
     const Cell c = cell(6, -8);
-    const Decision<InCircle> d = incircle(c.a, c.b, c.c, c.d);
+    // The grid's mirror symmetry decides it first; without that stage, the exact stage.
+    CHECK(incircle(c.a, c.b, c.c, c.d).stage == Stage::symmetry);
+    InCircleOptions no_symmetry;
+    no_symmetry.use_symmetry = false;
+    const Decision<InCircle> d = incircle(c.a, c.b, c.c, c.d, no_symmetry);
     CHECK(*d == InCircle::tangent);
     CHECK(d.stage == Stage::exact);
     for (int k : {6, 30}) {
@@ -220,6 +230,8 @@ TEST_CASE("graph: the 8 x 8 grid of equal ellipses is valid, its cells decided e
     g.insert_all();
     CHECK(g.validate().empty());
     CHECK(g.brute_force_check().empty());
-    // One tangent InCircle per cell (7 x 7), each proven exactly.
-    CHECK(g.predicate_stats()[Predicate::incircle].stages[Stage::exact] >= 49);
+    // One tangent InCircle per cell (7 x 7), each proven exactly: by the
+    // grid's mirror symmetry (two columns or rows are mirror images).
+    const auto& stages = g.predicate_stats()[Predicate::incircle].stages;
+    CHECK(stages[Stage::symmetry] + stages[Stage::exact] >= 49);
 }
