@@ -17,6 +17,7 @@ import functools
 import math
 import os
 import time
+import warnings
 
 import numpy as np
 
@@ -460,8 +461,12 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
                   float(boxes[:, 3].max())) if n else (0.0, 0.0, 0.0, 0.0)
 
     def submit_tile(ids, region, rect, whole):
-        text = client.scatter("\n".join(lines[ids]), direct=False)
-        return client.submit(_tile_task, text, ids, boxes[ids], region, rect, everything, whole, pure=False)
+        # The sites go in the task itself, not scattered: the scheduler keeps a task's arguments, so a
+        # tile whose worker dies runs again elsewhere (scattered data would die with the worker).
+        with warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
+            return client.submit(_tile_task, "\n".join(lines[ids]), ids, boxes[ids], region, rect, everything,
+                                 whole, pure=False)
 
     def one_build(reason):
         result = submit_tile(all_ids, (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
