@@ -8,9 +8,10 @@
 
 Each tile builds the diagram of the sites near it (its own and a halo) and keeps
 only the faces it can prove are faces of the whole diagram; the seam argument,
-the ownership and the retry rules are in docs/DESIGN.md §11. Tiles whose faces
-do not close up are built again with a doubled halo; a halo that would hold
-every site falls back to one build of the whole set (``stats["fallback"]``).
+the ownership and the retry rules are in docs/DESIGN.md §8 ("The tiled build").
+Where the faces do not close up, patches around the sites concerned are built
+with doubling halos; a region that would hold every site, or too many open
+sites, fall back to one build of the whole set (``stats["fallback"]`` says why).
 """
 
 import functools
@@ -97,9 +98,14 @@ def _inside(boxes, r):
     return (boxes[:, 0] >= r[0]) & (boxes[:, 1] <= r[1]) & (boxes[:, 2] >= r[2]) & (boxes[:, 3] <= r[3])
 
 
-def _peak_rss_mb():
-    import resource
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+def _rss_mb():
+    """This process's resident memory now (Linux's /proc/self/statm; 0 elsewhere). Taken with a tile's graph
+    alive: its peak, near enough (ru_maxrss would count what a forked worker inherited)."""
+    try:
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2 ** 20
+    except (OSError, ValueError):
+        return 0.0
 
 
 def _local_sites(text):
@@ -159,7 +165,7 @@ def _disk_misses_outside(circles, r, everything):
 
 def _tile_task(text, ids, boxes, region, rect, everything, whole):
     """Builds one tile's diagram and returns what it proves about the whole one (global ids)."""
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     sites = _local_sites(text)
     try:
         d = _ellvor._build(sites, "ell", None, 0.1)
@@ -183,7 +189,7 @@ def _tile_task(text, ids, boxes, region, rect, everything, whole):
     out = {
         "faces": ids[kept], "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
         "tile_faces": len(faces), "certified": int(certified.sum()), "owned_faces": int(owned.sum()),
-        "seconds": time.perf_counter() - start, "peak_rss_mb": _peak_rss_mb(),
+        "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu, "rss_mb": _rss_mb(),
     }
     if whole:  # the whole set: the single build's own arrays
         out.update(edges=ids[d.edges()], hull=ids[d.hull()])
@@ -197,9 +203,9 @@ def _patches_task(jobs):
         if "error" in r:
             return r
     merged = {key: np.concatenate([r[key] for r in results]) for key in ("faces", "hidden", "visible")}
-    for key in ("tile_faces", "certified", "owned_faces", "seconds"):
+    for key in ("tile_faces", "certified", "owned_faces", "seconds", "cpu_seconds"):
         merged[key] = sum(r[key] for r in results)
-    merged["peak_rss_mb"] = max(r["peak_rss_mb"] for r in results)
+    merged["rss_mb"] = max(r["rss_mb"] for r in results)
     return merged
 
 
@@ -306,8 +312,8 @@ def _convex_hull(points):
 
 def _hull_task(text, ids, polygon, depth):
     """The candidates' graph: its hull faces are those of the whole graph, and so are its finite faces whose
-    disk misses the non-candidates' region (docs/DESIGN.md §11); its hidden sites are hidden."""
-    start = time.perf_counter()
+    disk misses the non-candidates' region (docs/DESIGN.md §8); its hidden sites are hidden."""
+    start, cpu = time.perf_counter(), time.process_time()
     try:
         d = _ellvor._build(_local_sites(text), "ell", None, 0.1)
     except InputError as e:
@@ -321,7 +327,8 @@ def _hull_task(text, ids, polygon, depth):
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
     return {"hull": ids[d.hull()], "faces": ids[faces[certified]], "hidden": ids[d.hidden()],
             "visible": np.zeros(0, dtype=np.int64), "tile_faces": len(faces), "certified": int(certified.sum()),
-            "owned_faces": 0, "seconds": time.perf_counter() - start, "peak_rss_mb": _peak_rss_mb()}
+            "owned_faces": 0, "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
+            "rss_mb": _rss_mb()}
 
 
 def _raise_worker_error(result):
@@ -340,16 +347,24 @@ def _edges_of(faces, hull):
 
 
 def _open_edges(faces, hull):
-    """Sites on directed edges whose twin count differs: where faces are missing."""
+    """Sites on directed edges whose count differs from their twin's: where faces are missing."""
     directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]], hull])
     if len(directed) == 0:
         return np.zeros(0, dtype=np.int64)
-    pairs, counts = np.unique(directed, axis=0, return_counts=True)
-    twins, twin_counts = np.unique(directed[:, ::-1], axis=0, return_counts=True)
-    forward = {tuple(p): c for p, c in zip(pairs.tolist(), counts.tolist())}
-    backward = {tuple(p): c for p, c in zip(twins.tolist(), twin_counts.tolist())}
-    bad = [p for p in set(forward) | set(backward) if forward.get(p, 0) != backward.get(p, 0)]
-    return np.unique(np.array(bad, dtype=np.int64).reshape(-1, 2))
+    m = int(directed.max()) + 1
+    keys = np.sort(directed[:, 0] * m + directed[:, 1])
+    twins = np.sort(directed[:, 1] * m + directed[:, 0])
+    pairs, counts = np.unique(keys, return_counts=True)
+    twin_pairs, twin_counts = np.unique(twins, return_counts=True)
+    if len(pairs) == len(twin_pairs) and np.array_equal(pairs, twin_pairs) and np.array_equal(counts, twin_counts):
+        return np.zeros(0, dtype=np.int64)
+    both = np.union1d(pairs, twin_pairs)
+    count = np.zeros(len(both), dtype=np.int64)
+    count[np.searchsorted(both, pairs)] = counts
+    twin_count = np.zeros(len(both), dtype=np.int64)
+    twin_count[np.searchsorted(both, twin_pairs)] = twin_counts
+    bad = both[count != twin_count]
+    return np.unique(np.concatenate([bad // m, bad % m]))
 
 
 def _sorted_rows(a, width):
@@ -361,12 +376,14 @@ def _sorted_rows(a, width):
 
 class TiledDiagram:
     """The Delaunay graph from a tiled build: ``hidden``, ``edges``, ``faces``, ``hull`` as ``ellvor.Diagram``
-    has them (int64, read-only, the single build's order); ``vertices``, ``vertex_radii``,
-    ``vertex_errors`` computed on first use, as Diagram's; ``sites``, ``points``. ``tiles``: per tile a
-    dict (index (i, j), sites held, owned (center in the tile), halo_sites, halo (width), tile_faces
-    (of its diagram), certified, faces_kept (certified, circle center in the tile), retries, seconds,
-    peak_rss_mb of its worker process); ``stats``: rounds, fallback (True when one build of the whole
-    set decided), hull candidates, seconds (wall)."""
+    has them (int64, read-only, the single build's order); ``vertices``, ``vertex_radii``, ``vertex_errors``
+    computed on first use, as Diagram's; ``sites``, ``points``. (No ridges, trace or remove: build a Diagram
+    for those.) ``tiles``: per tile a dict: index (i, j), sites (held), owned (center in the tile),
+    halo_sites, halo (its width), tile_faces (of its graph), certified, faces_kept (certified, circle center
+    in the tile), retries (patches built later around its sites, docs/DESIGN.md §8), seconds and
+    cpu_seconds (its tile and patches), rss_mb (its worker's resident memory with the graph built: its
+    peak, near enough). ``stats``: rounds, fallback (False, or why one build of the whole set decided),
+    hull_candidates, seconds (wall time of the call)."""
 
     def __init__(self, sites, hidden, edges, faces, hull, tiles, stats):
         self.sites = sites
@@ -435,7 +452,7 @@ def build(sites, tiles="auto", client=None, *, fmt="ell", halo=None):
 
     ``client``: None starts a LocalCluster (one worker process per core, closed afterwards); a
     ``distributed.Client``; or a scheduler address ("tcp://host:8786"). ``halo``: the first halo width
-    (default: four mean site spacings); it doubles for tiles whose faces do not close up.
+    (default: four mean site spacings); patches around sites on missing faces double it each round.
     Bad input raises InputError here, before anything is sent. Returns a TiledDiagram whose hidden,
     edges, faces and hull are those of ``ellvor.build(sites)``.
     """
@@ -476,7 +493,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         tile = {"index": (0, 0), "sites": n, "owned": n, "halo_sites": 0, "halo": math.inf,
                 "tile_faces": result["tile_faces"], "certified": result["certified"],
                 "faces_kept": result["certified"], "retries": 0, "seconds": result["seconds"],
-                "peak_rss_mb": result["peak_rss_mb"]}
+                "cpu_seconds": result["cpu_seconds"], "rss_mb": result["rss_mb"]}
         return TiledDiagram(sites, _sorted_rows(result["hidden"], 2), result["edges"],
                             _sorted_rows(result["faces"], 3), _sorted_rows(result["hull"], 2), [tile],
                             {"rounds": 1, "fallback": reason, "hull_candidates": n,
@@ -492,7 +509,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
     spacing = math.sqrt(area / n) if area > 0 else float(max(hi - lo)) / n
     halos = np.full(nx * ny, halo if halo is not None else 4 * spacing + 1e-300)
     tiles = [{"index": divmod(t, ny), "sites": 0, "owned": int((owner == t).sum()), "halo_sites": 0, "halo": 0.0,
-              "tile_faces": 0, "certified": 0, "faces_kept": 0, "retries": -1, "seconds": 0.0, "peak_rss_mb": 0.0}
+              "tile_faces": 0, "certified": 0, "faces_kept": 0, "retries": -1, "seconds": 0.0, "cpu_seconds": 0.0, "rss_mb": 0.0}
              for t in range(nx * ny)]
 
     candidates, polygon = _hull_candidates(params, boxes, halos.max())
@@ -515,7 +532,8 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         tiles[t]["certified"] += result["certified"]
         tiles[t]["faces_kept"] += result["owned_faces"]
         tiles[t]["seconds"] += result["seconds"]
-        tiles[t]["peak_rss_mb"] = max(tiles[t]["peak_rss_mb"], result["peak_rss_mb"])
+        tiles[t]["cpu_seconds"] += result["cpu_seconds"]
+        tiles[t]["rss_mb"] = max(tiles[t]["rss_mb"], result["rss_mb"])
 
     # Round 1: the tiles.
     futures = {}

@@ -1,4 +1,4 @@
-"""ellvor.distributed.build (docs/DESIGN.md §11) against ellvor.build: the same graph after the
+"""ellvor.distributed.build (docs/DESIGN.md §8, the tiled build) against ellvor.build: the same graph after the
 canonical sort, on a LocalCluster of two worker processes (started once for the file)."""
 
 import os
