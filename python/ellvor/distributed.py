@@ -109,7 +109,7 @@ def _rss_mb():
 
 
 def _local_sites(text):
-    return _ellvor.Sites([_ellvor.Ellipse(*line.split()) for line in text.split("\n")])
+    return _ellvor.Sites([_ellvor.Ellipse(*line.split()) for line in text.split("\n") if line])
 
 
 def _possibly_degenerate(faces, boxes):

@@ -227,3 +227,14 @@ def test_the_seam_tests_refuse_what_they_cannot_prove():
     faces = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 4]])
     c = np.array([[0, 1, 0, 1, 1, 2], [0.5, 1.5, 0.5, 1.5, 1.5, 3], [5, 6, 5, 6, 1, 2]], dtype=float)
     assert ed._possibly_degenerate(faces, c).tolist() == [True, True, False]
+
+
+def test_without_a_client_a_local_cluster_is_started():
+    d = same_graph(ellvor.generate("nested", 300, seed=2), None, (2, 2))
+    assert d.stats["fallback"] is False
+
+
+def test_empty_and_tiny_sets(client):
+    for sites in ([], list(ellvor.generate("ellipses", 3, seed=1))):
+        d = same_graph(ellvor.Sites(sites), client, (2, 2))
+        assert d.stats["fallback"] == "too few sites or extreme coordinates"
