@@ -109,7 +109,8 @@ def _rss_mb():
 
 
 def _local_sites(text):
-    return _ellvor.Sites([_ellvor.Ellipse(*line.split()) for line in text.split("\n") if line])
+    """A tile's sites from the .ell lines it was sent (parsed in C++, as a file's)."""
+    return _ellvor._sites_from_text(text)
 
 
 def _possibly_degenerate(faces, boxes):

@@ -62,6 +62,18 @@ Sites read_site_path(py::handle path, const std::string& format) {
     return s;
 }
 
+// Sites from .ell text held in memory: the lines a tiled build ships to a
+// worker (python/ellvor/distributed.py), parsed as a file's are, without one
+// Python object per site. Not marked as read from a file: errors name sites
+// by id, which the caller maps back.
+Sites sites_from_text(const std::string& text) {
+    Sites s;
+    py::gil_scoped_release release;
+    std::istringstream in(text);
+    s.file.sites = read_site_file(in, "<sites>", SiteFormat::ell).sites;
+    return s;
+}
+
 Sites list_of_sites(py::iterable sites) {
     Sites s;
     for (py::handle item : sites) {
@@ -241,6 +253,7 @@ void bind_sites(py::module_& m) {
                    (s.from_file ? " from " + s.file.name : std::string()) + ">";
         });
 
+    m.def("_sites_from_text", &sites_from_text, py::arg("text"));
     m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");
     m.def("generate", &generate, py::arg("kind") = "ellipses", py::arg("count") = 10, py::arg("seed") = 1,
           py::arg("bits") = 8, py::arg("box") = 100, py::arg("nested_fraction") = py::none(), py::arg("crossing") = 0,
