@@ -5,6 +5,8 @@
     d = ellvor.distributed.build(sites, client="tcp://host:8786")    # a running scheduler
     d.edges, d.faces, d.hidden, d.hull                                 # as ellvor.build(sites) gives them
     d.tiles                                                            # per tile: sites, halo, faces kept, ...
+    for path, d in ellvor.distributed.map(snapshots):                  # one whole diagram per file, as they finish
+        ...
 
 Each tile builds the diagram of the sites near it (its own and a halo) and keeps
 only the faces it can prove are faces of the whole diagram; the seam argument,
@@ -388,7 +390,8 @@ class TiledDiagram:
 
     def __init__(self, sites, hidden, edges, faces, hull, tiles, stats):
         self.sites = sites
-        self.hidden, self.edges, self.faces, self.hull = map(_frozen, (hidden, edges, faces, hull))
+        arrays = (hidden, edges, faces, hull)   # (no map(): this module defines its own)
+        self.hidden, self.edges, self.faces, self.hull = (_frozen(np.asarray(a)) for a in arrays)
         self.tiles, self.stats = tiles, stats
 
     @functools.cached_property
@@ -397,7 +400,7 @@ class TiledDiagram:
 
     @functools.cached_property
     def _vertex_arrays(self):
-        return tuple(map(_frozen, _ellvor._face_vertices(self.sites, self.faces)))
+        return tuple(_frozen(a) for a in _ellvor._face_vertices(self.sites, self.faces))
 
     vertices = property(lambda self: self._vertex_arrays[0])
     vertex_radii = property(lambda self: self._vertex_arrays[1])
@@ -608,3 +611,65 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
                         [t for t in tiles if t["retries"] >= 0],
                         {"rounds": rounds, "fallback": False, "hull_candidates": len(candidates),
                          "seconds": time.perf_counter() - start})
+
+
+def _file_task(text, fmt, name):
+    """Builds one file's whole diagram from its text (already checked on the client)."""
+    start, cpu = time.perf_counter(), time.process_time()
+    try:
+        d = _ellvor._build(_ellvor._sites_from_text(text, fmt, name), fmt, None, 0.1)
+    except InputError as e:
+        return {"error": (str(e), e.sites)}
+    return {"hidden": d.hidden(), "edges": d.edges(), "faces": d.faces(), "hull": d.hull(),
+            "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu, "rss_mb": _rss_mb()}
+
+
+def map(files, fn="build", client=None, *, fmt="ell", progress=False):
+    """One diagram per file (a simulation's snapshots), each built whole on a Dask worker: yields
+    ``(file, diagram)`` as they finish, ``diagram`` a TiledDiagram of one tile (its ``stats["fallback"]``
+    says "one file"). Every file is read and checked on the client first (InputError, as ``ellvor.build``
+    raises it), then sent as its text. ``client`` as for ``build``. ``progress``: True prints
+    "built k of n files" on standard error; the Dask dashboard shows the tasks too. ``fn``: "build"
+    (cells are not available on Dask yet)."""
+    if fn != "build":
+        raise ValueError(f"fn: expected 'build', got {fn!r} (cells are not available on Dask yet)")
+    paths = [os.fspath(f) for f in files]
+    checked = []
+    for path in paths:  # everything is checked before anything is sent
+        sites = _ellvor.read_sites(path, fmt)
+        with open(path, encoding="utf-8") as f:
+            checked.append((path, sites, f.read()))
+    return _map_files(checked, fmt, client, progress)
+
+
+def _map_files(checked, fmt, client, progress):
+    from distributed import as_completed
+    c, close = _client_for(client)
+    try:
+        futures = {}
+        for path, sites, text in checked:
+            with warnings.catch_warnings():
+                warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
+                futures[c.submit(_file_task, text, fmt, path, pure=False)] = (path, sites)
+        for done, future in enumerate(as_completed(futures), 1):
+            path, sites = futures.pop(future)
+            result = future.result()
+            if "error" in result:
+                message, pair = result["error"]
+                raise InputError(message, filename=path, sites=None if pair is None else tuple(pair))
+            tile = {"index": (0, 0), "sites": len(sites), "owned": len(sites), "halo_sites": 0, "halo": math.inf,
+                    "tile_faces": len(result["faces"]), "certified": len(result["faces"]),
+                    "faces_kept": len(result["faces"]), "retries": 0, "seconds": result["seconds"],
+                    "cpu_seconds": result["cpu_seconds"], "rss_mb": result["rss_mb"]}
+            d = TiledDiagram(sites, result["hidden"], result["edges"], result["faces"], result["hull"], [tile],
+                             {"rounds": 1, "fallback": "one file", "hull_candidates": len(sites),
+                              "seconds": result["seconds"]})
+            if progress:
+                import sys
+                sys.stderr.write(f"\rbuilt {done} of {len(checked)} files" + ("\n" if done == len(checked) else ""))
+                sys.stderr.flush()
+            yield path, d
+    finally:
+        for future in futures:
+            future.cancel()
+        close()

@@ -238,3 +238,39 @@ def test_empty_and_tiny_sets(client):
     for sites in ([], list(ellvor.generate("ellipses", 3, seed=1))):
         d = same_graph(ellvor.Sites(sites), client, (2, 2))
         assert d.stats["fallback"] == "too few sites or extreme coordinates"
+
+
+def test_map_builds_each_file_whole(client, tmp_path):
+    paths = []
+    for k, kind in enumerate(("ellipses", "nested", "circles")):
+        paths.append(tmp_path / f"snapshot-{k}.ell")
+        ellvor.generate(kind, 200 + 100 * k, seed=k).write(paths[-1])
+    results = dict(ed.map(paths, client=client))
+    assert sorted(results) == sorted(map(str, paths))
+    for path in paths:
+        single, d = ellvor.build(path), results[str(path)]
+        for name in ("faces", "edges", "hull", "hidden"):
+            assert np.array_equal(getattr(single, name), getattr(d, name)), (path, name)
+        assert d.stats["fallback"] == "one file" and d.tiles[0]["sites"] == len(single)
+
+
+def test_map_checks_every_file_before_sending(tmp_path, write_sites):
+    good = tmp_path / "good.ell"
+    ellvor.generate("ellipses", 50, seed=1).write(good)
+    bad = write_sites("1 1 0 0 0\n1 x 0 5 5\n", "bad.ell")
+    with pytest.raises(ellvor.InputError) as single:
+        ellvor.build(bad)
+    with pytest.raises(ellvor.InputError) as mapped:
+        ed.map([good, bad], client=_Unreachable())
+    assert str(mapped.value) == str(single.value) and mapped.value.lineno == 2
+    with pytest.raises(ValueError, match="fn"):
+        ed.map([good], fn="cells", client=_Unreachable())
+
+
+def test_map_raises_the_builds_error_for_sites_meeting_in_four_points(client, write_sites):
+    path = write_sites("3 1/5 0 0 0\n3 1/5 1 0 0\n1 1 0 10 10\n", "cross.ell")
+    with pytest.raises(ellvor.InputError) as single:
+        ellvor.build(path)
+    with pytest.raises(ellvor.InputError) as mapped:
+        list(ed.map([path], client=client))
+    assert str(mapped.value) == str(single.value) and mapped.value.sites == single.value.sites == (0, 1)
