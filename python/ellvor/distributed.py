@@ -438,7 +438,9 @@ def _tiles_argument(tiles, n, client):
         if tiles != "auto":
             raise ValueError(f"tiles: expected (nx, ny) or 'auto', got {tiles!r}")
         workers = max(1, len(client.scheduler_info().get("workers", {})))
-        count = max(1, min(2 * workers, n // 2000))   # at least ~2000 sites a tile: halos stay thin
+        # Eight tiles a worker (experiments/results/distributed.md: at 10^6 sites 4 x 4 tiles on 2 workers
+        # beat 2 x 2, smaller graphs cost less a site), at least 20000 sites a tile (halos stay thin).
+        count = max(1, min(8 * workers, n // 20000))
         nx = max(1, int(math.sqrt(count)))
         return nx, max(1, count // nx)
     try:
@@ -452,7 +454,7 @@ def _tiles_argument(tiles, n, client):
 
 def build(sites, tiles="auto", client=None, *, fmt="ell", halo=None):
     """The Delaunay graph of ``sites`` (as for ``ellvor.build``: a path, an ellvor.Sites or Ellipses),
-    built in ``tiles`` = (nx, ny) tiles or "auto" (two a worker, at least ~2000 sites a tile) on Dask.
+    built in ``tiles`` = (nx, ny) tiles or "auto" (eight a worker, at least 20000 sites a tile) on Dask.
 
     ``client``: None starts a LocalCluster (one worker process per core, closed afterwards); a
     ``distributed.Client``; or a scheduler address ("tcp://host:8786"). ``halo``: the first halo width

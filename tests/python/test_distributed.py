@@ -180,7 +180,9 @@ def test_a_scheduler_address_works(cluster):
 
 def test_auto_tiles(client):
     d = same_graph(ellvor.generate("ellipses", 5000, seed=21), client, "auto")
-    assert len(d.tiles) == 2 and d.stats["fallback"] is False   # two a worker, >= ~2000 sites a tile
+    assert d.stats["fallback"] == "one tile"     # too few sites to split
+    assert ed._tiles_argument("auto", 10 ** 6, client) == (4, 4)   # eight tiles a worker, two workers
+    assert ed._tiles_argument("auto", 10 ** 5, client) == (2, 2)   # at least 20000 sites a tile
     with pytest.raises(ValueError, match="tiles"):
         ed.build(ellvor.generate("ellipses", 50), tiles=(0, 2), client=client)
     with pytest.raises(ValueError, match="tiles"):
