@@ -276,3 +276,31 @@ def test_map_raises_the_builds_error_for_sites_meeting_in_four_points(client, wr
     with pytest.raises(ellvor.InputError) as mapped:
         list(ed.map([path], client=client))
     assert str(mapped.value) == str(single.value) and mapped.value.sites == single.value.sites == (0, 1)
+
+
+def test_bounding_boxes_hold_the_ellipses_tightly():
+    sites = ellvor.generate("ellipses", 200, seed=17)
+    boxes = ed._bounding_boxes(sites.to_array())
+    for e, (x0, x1, y0, y1) in zip(sites, boxes):
+        a, b, w, xc, yc = (Fraction(v) for v in (e.a, e.b, e.w, e.xc, e.yc))
+        c, s = (1 - w * w) / (1 + w * w), 2 * w / (1 + w * w)
+        # The exact half-widths squared, compared with the box's in exact arithmetic.
+        hx2, hy2 = (a * c) ** 2 + (b * s) ** 2, (a * s) ** 2 + (b * c) ** 2
+        for lo, hi, center, h2 in ((x0, x1, xc, hx2), (y0, y1, yc, hy2)):
+            assert center - Fraction(lo) > 0 and (center - Fraction(lo)) ** 2 >= h2
+            assert Fraction(hi) - center > 0 and (Fraction(hi) - center) ** 2 >= h2
+            assert float(Fraction(hi) - center) < float(h2) ** 0.5 * (1 + 1e-9) + 1e-9 * abs(float(center))
+
+
+def test_hull_candidates_are_the_sites_near_the_hull():
+    """A 30 x 30 lattice of small circles: the candidates are those within the depth of the border."""
+    sites = circles([(x, y, Fraction(1, 10)) for x in range(30) for y in range(30)])
+    params = sites.to_array()
+    candidates, polygon = ed._hull_candidates(params, ed._bounding_boxes(params), 2.5)
+    border = {k for k, (x, y) in enumerate(params[:, 3:5]) if min(x, y, 29 - x, 29 - y) <= 2}
+    assert border <= set(candidates.tolist())
+    assert len(candidates) < 900 // 2 and all(min(x, y, 29 - x, 29 - y) <= 4 for x, y in params[candidates, 3:5])
+    # Disks left of the polygon's edge x = 0, reaching x = 1 (short of the non-candidates, beyond x = 2.5),
+    # x = 3 (into them) and, centered inside, x = 2 (their center inside the polygon: refused, conservative).
+    boxes = np.array([[-5, -5, 15, 15, 6, 6], [-5, -5, 15, 15, 8, 8], [1, 1, 15, 15, 1, 1]], dtype=float)
+    assert ed._disk_outside_polygon(boxes, polygon, 2.5).tolist() == [True, False, False]
