@@ -52,7 +52,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& sites, const Cell
     graph.insert_all();
     const std::vector<long> numbers = face_numbers(graph);
     const std::vector<VoronoiCell> cells = voronoi_cells(graph, numbers);
-    const std::vector<CellArea> areas = cell_areas(graph, sites, {options.tolerance});
+    const std::vector<CellArea> areas = cell_areas(graph, sites, {options.tolerance, {}});
 
     const long prec = cell_area_precision(options.tolerance);
     for (const auto& f : graph.faces()) {
@@ -69,10 +69,9 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& sites, const Cell
         c.area = areas[s].area;
         c.site_area = areas[s].site_area;
         c.precision = areas[s].precision;
-        // Not computed yet: an indeterminate ball claims nothing.
-        for (Ball* b : {&c.perimeter, &c.centroid[0], &c.centroid[1], &c.second_moments[0], &c.second_moments[1],
-                        &c.second_moments[2]})
-            arb_indeterminate(b->get());
+        c.perimeter = areas[s].perimeter;
+        c.centroid = areas[s].centroid;
+        c.second_moments = areas[s].second_moments;
         for (const CellEdge& e : cells[s].edges) c.sides.push_back({static_cast<long>(e.neighbor), Wall::none, {0, 0}, e.from, e.to});
         if (options.progress) options.progress(s + 1, sites.size());
     }

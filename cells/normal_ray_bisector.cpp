@@ -221,6 +221,11 @@ void NormalRayBisector::set_precision(long prec) {
 }
 
 bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out) {
+    return solve(theta, prec, s_out, nullptr, nullptr);
+}
+
+bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out, ComplexBall* tie_ds,
+                              ComplexBall* tie_dtheta) {
     set_precision(prec);
     // The start: the bisector point on the real normal ray at the middle of
     // the ball, in doubles.
@@ -294,6 +299,9 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         tie(bpT, bq, S, prec, nullptr, &dg, nullptr);
         if (contracts(s0, S, c, g0, dg, prec, K)) {
             s_out = K;
+            // The derivatives over the box S contain their values at the root K.
+            if (tie_ds) *tie_ds = dg;
+            if (tie_dtheta) tie(bpT, bq, K, prec, nullptr, nullptr, tie_dtheta);
             return true;
         }
         ComplexBall d;
@@ -321,6 +329,68 @@ bool NormalRayBisector::area_density(const ComplexBall& theta, long prec, Comple
     acb_mul_2exp_si(t.get(), t.get(), -1);
     acb_add(density.get(), density.get(), t.get(), prec);
     return true;
+}
+
+bool NormalRayBisector::densities(const ComplexBall& theta, long prec, Densities& out) {
+    ComplexBall s, g_s, g_theta;
+    if (!solve(theta, prec, s, &g_s, &g_theta)) return false;
+    Boundary bp;
+    boundary_at(pb_, theta, prec, bp);
+    ComplexBall px, py, ab, t, u;
+    acb_sub_arb(px.get(), bp.x.get(), pb_.xc.get(), prec);
+    acb_sub_arb(py.get(), bp.y.get(), pb_.yc.get(), prec);
+    acb_set_arb(ab.get(), pb_.a.get());
+    acb_mul_arb(ab.get(), ab.get(), pb_.b.get(), prec);
+    // m_k = N^2 s^(k+1) / (k+1) + a b s^(k+2) / (k+2), k = 0, 1, 2.
+    ComplexBall m[3], power(s);  // power = s^(k+1)
+    for (int k = 0; k < 3; ++k) {
+        acb_mul(m[k].get(), bp.n2.get(), power.get(), prec);
+        acb_div_ui(m[k].get(), m[k].get(), static_cast<ulong>(k + 1), prec);
+        acb_mul(power.get(), power.get(), s.get(), prec);
+        acb_mul(t.get(), ab.get(), power.get(), prec);
+        acb_div_ui(t.get(), t.get(), static_cast<ulong>(k + 2), prec);
+        acb_add(m[k].get(), m[k].get(), t.get(), prec);
+    }
+    out.area = m[0];
+    const ComplexBall* r[2] = {&px, &py};
+    const ComplexBall* n[2] = {&bp.nx, &bp.ny};
+    for (int i = 0; i < 2; ++i) {
+        acb_mul(out.first[i].get(), r[i]->get(), m[0].get(), prec);
+        acb_mul(t.get(), n[i]->get(), m[1].get(), prec);
+        acb_add(out.first[i].get(), out.first[i].get(), t.get(), prec);
+    }
+    // (r + sigma n)_i (r + sigma n)_j = r_i r_j + sigma (r_i n_j + n_i r_j) + sigma^2 n_i n_j.
+    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+    for (int k = 0; k < 3; ++k) {
+        const int i = pairs[k][0], j = pairs[k][1];
+        ComplexBall& e = out.second[k];
+        acb_mul(e.get(), r[i]->get(), r[j]->get(), prec);
+        acb_mul(e.get(), e.get(), m[0].get(), prec);
+        acb_mul(t.get(), r[i]->get(), n[j]->get(), prec);
+        acb_mul(u.get(), n[i]->get(), r[j]->get(), prec);
+        acb_add(t.get(), t.get(), u.get(), prec);
+        acb_mul(t.get(), t.get(), m[1].get(), prec);
+        acb_add(e.get(), e.get(), t.get(), prec);
+        acb_mul(t.get(), n[i]->get(), n[j]->get(), prec);
+        acb_mul(t.get(), t.get(), m[2].get(), prec);
+        acb_add(e.get(), e.get(), t.get(), prec);
+    }
+    // s' = -g_theta / g_s (g_theta and g_s carry the factor 2 alike).
+    ComplexBall ds, vx, vy;
+    acb_div(ds.get(), g_theta.get(), g_s.get(), prec);
+    acb_neg(ds.get(), ds.get());
+    // V' = P' + s' n~ + s n~'
+    for (int i = 0; i < 2; ++i) {
+        ComplexBall& v = i == 0 ? vx : vy;
+        acb_mul(v.get(), ds.get(), (i == 0 ? bp.nx : bp.ny).get(), prec);
+        acb_add(v.get(), v.get(), (i == 0 ? bp.dx : bp.dy).get(), prec);
+        acb_mul(t.get(), s.get(), (i == 0 ? bp.dnx : bp.dny).get(), prec);
+        acb_add(v.get(), v.get(), t.get(), prec);
+    }
+    dot(vx, vy, vx, vy, prec, t);
+    // Holomorphic only away from the cut (|V'|^2 > 0 on the reals).
+    acb_sqrt_analytic(out.length.get(), t.get(), 1, prec);
+    return acb_is_finite(out.length.get());
 }
 
 }  // namespace ellvor

@@ -57,10 +57,30 @@ public:
     // False when solve() is.
     bool area_density(const ComplexBall& theta, long prec, ComplexBall& density);
 
+    // The densities of all the cell's measures on the edge, per unit of theta
+    // (docs/DESIGN.md §10): with the ray point X = P + sigma n~, sigma in
+    // [0, s], and the Jacobian J = N^2 + a b sigma, the moments of the swept
+    // segment, m_k = integral of sigma^k J dsigma, give
+    //   area   m_0,
+    //   first  (P - C) m_0 + n~ m_1                              (about p's center C),
+    //   second (P - C)(P - C)^T m_0 + ((P - C) n~^T + n~ (P - C)^T) m_1 + n~ n~^T m_2,
+    // and the edge's own length |V'(theta)|, V' = P' + s' n~ + s n~', with
+    // s' = -dg/dtheta / dg/ds from the tie function (its foot point drops out).
+    // False when solve() is, or when |V'|^2 may touch the square root's cut.
+    struct Densities {
+        ComplexBall area, length;
+        ComplexBall first[2];   // x, y
+        ComplexBall second[3];  // xx, xy, yy
+    };
+    bool densities(const ComplexBall& theta, long prec, Densities& out);
+
     const Ellipse& first() const { return *p_; }
 
 private:
     void set_precision(long prec);
+    // solve(), and the foot point's tie derivatives at the root:
+    // (P - Q) . n~ and (P - Q) . (P' + s n~'), for s'.
+    bool solve(const ComplexBall& theta, long prec, ComplexBall& s, ComplexBall* tie_ds, ComplexBall* tie_dtheta);
 
     const Ellipse* p_;
     const Ellipse* q_;
