@@ -255,7 +255,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     double previous = INFINITY;
     for (int k = 0; k < 60; ++k) {
         ray_point(bp, s0, prec, vx, vy);
-        foot_newton(qb_, vx, vy, 2, prec, phi0);
+        foot_newton(qb_, vx, vy, 1, prec, phi0);
         boundary_at(qb_, phi0, prec, bq);
         tie(bp, bq, s0, prec, &g, &dg, nullptr);
         acb_div(step.get(), g.get(), dg.get(), prec);
@@ -266,7 +266,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         previous = size;
     }
     ray_point(bp, s0, prec, vx, vy);
-    foot_newton(qb_, vx, vy, 4, prec, phi0);
+    foot_newton(qb_, vx, vy, 1, prec, phi0);
     boundary_at(qb_, phi0, prec, bq);
     tie(bp, bq, s0, prec, &g, &dg, nullptr);
     ComplexBall c;
