@@ -4,13 +4,16 @@
 #include <cmath>
 
 namespace ellvor {
-namespace {
 
 // A site's boundary at a complex angle: the point, the unnormalized outward
 // normal n~, the derivatives of both in the angle, N^2 = |n~|^2.
-struct Boundary {
+struct NormalRayBisector::Boundary {
     ComplexBall x, y, nx, ny, dx, dy, dnx, dny, n2;
 };
+
+namespace {
+
+using Boundary = NormalRayBisector::Boundary;
 
 // (lx, ly) in the site's frame to the plane: (lx cos - ly sin, lx sin + ly cos).
 void rotate(const SiteBalls& e, const ComplexBall& lx, const ComplexBall& ly, long prec, ComplexBall& x,
@@ -221,11 +224,11 @@ void NormalRayBisector::set_precision(long prec) {
 }
 
 bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out) {
-    return solve(theta, prec, s_out, nullptr, nullptr);
+    return solve(theta, prec, s_out, nullptr, nullptr, nullptr);
 }
 
 bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out, ComplexBall* tie_ds,
-                              ComplexBall* tie_dtheta) {
+                              ComplexBall* tie_dtheta, Boundary* p_boundary) {
     set_precision(prec);
     // The start: the bisector point on the real normal ray at the middle of
     // the ball, in doubles.
@@ -302,6 +305,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
             // The derivatives over the box S contain their values at the root K.
             if (tie_ds) *tie_ds = dg;
             if (tie_dtheta) tie(bpT, bq, K, prec, nullptr, nullptr, tie_dtheta);
+            if (p_boundary) *p_boundary = std::move(bpT);
             return true;
         }
         ComplexBall d;
@@ -333,9 +337,8 @@ bool NormalRayBisector::area_density(const ComplexBall& theta, long prec, Comple
 
 bool NormalRayBisector::densities(const ComplexBall& theta, long prec, Densities& out) {
     ComplexBall s, g_s, g_theta;
-    if (!solve(theta, prec, s, &g_s, &g_theta)) return false;
     Boundary bp;
-    boundary_at(pb_, theta, prec, bp);
+    if (!solve(theta, prec, s, &g_s, &g_theta, &bp)) return false;
     ComplexBall px, py, ab, t, u;
     acb_sub_arb(px.get(), bp.x.get(), pb_.xc.get(), prec);
     acb_sub_arb(py.get(), bp.y.get(), pb_.yc.get(), prec);

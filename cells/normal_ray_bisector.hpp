@@ -76,11 +76,15 @@ public:
 
     const Ellipse& first() const { return *p_; }
 
+    struct Boundary;  // p's or q's boundary at a complex angle (the .cpp)
+
 private:
     void set_precision(long prec);
-    // solve(), and the foot point's tie derivatives at the root:
-    // (P - Q) . n~ and (P - Q) . (P' + s n~'), for s'.
-    bool solve(const ComplexBall& theta, long prec, ComplexBall& s, ComplexBall* tie_ds, ComplexBall* tie_dtheta);
+    // solve(), and what densities() needs besides: the tie derivatives at the
+    // root, (P - Q) . n~ and (P - Q) . (P' + s n~') (for s'), and p's boundary
+    // on the theta-ball.
+    bool solve(const ComplexBall& theta, long prec, ComplexBall& s, ComplexBall* tie_ds, ComplexBall* tie_dtheta,
+               Boundary* p_boundary);
 
     const Ellipse* p_;
     const Ellipse* q_;
