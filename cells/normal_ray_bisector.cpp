@@ -271,46 +271,57 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     ray_point(bp, s0, prec, vx, vy);
     foot_newton(qb_, vx, vy, 1, prec, phi0);
     boundary_at(qb_, phi0, prec, bq);
-    tie(bp, bq, s0, prec, &g, &dg, nullptr);
-    ComplexBall c;
+    ComplexBall g0, g_theta, c, slope;
+    tie(bp, bq, s0, prec, &g0, &dg, &g_theta);  // at the middle
     acb_get_mid(c.get(), dg.get());
     if (acb_contains_zero(c.get())) return false;
     acb_inv(c.get(), c.get(), prec);
     acb_get_mid(c.get(), c.get());
+    // The root moves with theta at about s' = -g_theta / g_s: the unknown is
+    // the remainder d in s = s0 + slope (theta - mid) + d, so that the box of
+    // d stays small over a ball on which s itself varies a lot (any slope is
+    // correct; a good one makes the certificate hold on wider balls).
+    acb_mul(slope.get(), g_theta.get(), c.get(), prec);
+    acb_neg(slope.get(), slope.get());
+    acb_get_mid(slope.get(), slope.get());
 
-    // g(s0, theta) over the theta-ball in the mean-value form around the
-    // middle: g(s0, mid) + dg/dtheta (Theta - mid), the derivative with the
-    // foot points of all V(s0, Theta) (certified by foot_point).
-    ComplexBall g0, Phi, K, dgt, dtheta;
-    tie(bp, bq, s0, prec, &g0, nullptr, nullptr);  // at the middle; bp, bq are there
+    // h(0, theta) = g(s_lin(theta), theta) over the theta-ball in the
+    // mean-value form around the middle: g(s0, mid) + h'(Theta) (Theta - mid)
+    // with h' = g_s slope + g_theta, the derivatives with the foot points of
+    // all V(s_lin(Theta), Theta) (certified by foot_point).
+    ComplexBall Phi, K, dtheta, s_lin, h_theta, t;
+    acb_sub(dtheta.get(), theta.get(), mid.get(), prec);
+    acb_mul(s_lin.get(), slope.get(), dtheta.get(), prec);
+    acb_add(s_lin.get(), s_lin.get(), s0.get(), prec);
     Boundary bpT;
     boundary_at(pb_, theta, prec, bpT);
-    ray_point(bpT, s0, prec, vx, vy);
+    ray_point(bpT, s_lin, prec, vx, vy);
     if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
-    tie(bpT, bq, s0, prec, nullptr, nullptr, &dgt);
-    acb_sub(dtheta.get(), theta.get(), mid.get(), prec);
-    acb_mul(dgt.get(), dgt.get(), dtheta.get(), prec);
-    acb_add(g0.get(), g0.get(), dgt.get(), prec);
+    tie(bpT, bq, s_lin, prec, nullptr, &dg, &h_theta);
+    acb_mul(t.get(), dg.get(), slope.get(), prec);
+    acb_add(h_theta.get(), h_theta.get(), t.get(), prec);
+    acb_mul(h_theta.get(), h_theta.get(), dtheta.get(), prec);
+    acb_add(g0.get(), g0.get(), h_theta.get(), prec);
     acb_mul(step.get(), c.get(), g0.get(), prec);
+    const ComplexBall zero;
     double r = 2 * magnitude(step) + std::ldexp(1.0 + magnitude(s0), static_cast<int>(std::max(-1000L, 8 - prec)));
     for (int attempt = 0; attempt < 3; ++attempt) {
         if (!std::isfinite(r)) return false;
-        const ComplexBall S = square(s0, r);
+        ComplexBall S = square(zero, r);  // the box of d
+        acb_add(S.get(), S.get(), s_lin.get(), prec);
         if (!arb_is_positive(S.real())) return false;  // Re s > 0 (see the header)
         ray_point(bpT, S, prec, vx, vy);
         if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
         tie(bpT, bq, S, prec, nullptr, &dg, nullptr);
-        if (contracts(s0, S, c, g0, dg, prec, K)) {
-            s_out = K;
-            // The derivatives over the box S contain their values at the root K.
+        if (contracts(zero, square(zero, r), c, g0, dg, prec, K)) {
+            acb_add(s_out.get(), s_lin.get(), K.get(), prec);
+            // The derivatives over the box S contain their values at the root.
             if (tie_ds) *tie_ds = dg;
-            if (tie_dtheta) tie(bpT, bq, K, prec, nullptr, nullptr, tie_dtheta);
+            if (tie_dtheta) tie(bpT, bq, s_out, prec, nullptr, nullptr, tie_dtheta);
             if (p_boundary) *p_boundary = std::move(bpT);
             return true;
         }
-        ComplexBall d;
-        acb_sub(d.get(), K.get(), s0.get(), prec);
-        r = std::max(2 * r, 2 * magnitude(d));
+        r = std::max(2 * r, 2 * magnitude(K));
     }
     return false;
 }
