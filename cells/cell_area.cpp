@@ -56,6 +56,11 @@ void require_disjoint_or_nested(const std::vector<Ellipse>& sites) {
 // power (area units), so that one absolute tolerance serves both.
 struct EdgeIntegrand {
     NormalRayBisector* bisector;
+    // Values at points (order 0) need only the goal's bits, not the working
+    // precision of the holomorphy certificates on balls: a second solver at
+    // point_precision spares the longer limbs.
+    NormalRayBisector* point_bisector;
+    long point_precision;
     int pair;  // 0: area + i L length, 1: first / L (x + i y), 2: second / L^2 (xx + i yy), 3: second / L^2 (xy)
     long length_unit;  // L = 2^length_unit (exact scaling)
     // Arb evaluates the four pairs on mostly the same balls: keep the
@@ -101,7 +106,9 @@ int edge_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong 
             ComplexBall theta;
             acb_set(theta.get(), in);
             NormalRayBisector::Densities d;
-            if (e->bisector->densities(theta, prec, d)) slot->second = std::move(d);
+            const bool point = order == 0 && e->point_precision < prec;
+            NormalRayBisector* bisector = point ? e->point_bisector : e->bisector;
+            if (bisector->densities(theta, point ? e->point_precision : prec, d)) slot->second = std::move(d);
         }
         if (slot->second)
             pair_value(*slot->second, e->pair, e->length_unit, prec, out);
@@ -143,15 +150,18 @@ public:
         mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
         acb_calc_integrate_opt_t options;
         acb_calc_integrate_opt_init(options);
+        // 30 bits beyond the goal, in whole limbs.
+        const long point_precision = 64 * ((goal + 30 + 63) / 64);
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
+            NormalRayBisector point_bisector(site, sites_[cell.edges[k].neighbor]);
             std::map<std::string, std::optional<NormalRayBisector::Densities>> cache;
             ComplexBall a, b;
             arb_get_mid_arb(a.real(), lifted[k].get());
             arb_get_mid_arb(b.real(), lifted[k + 1].get());
             for (int pair = 0; pair < kMeasurePairs; ++pair) {
-                EdgeIntegrand integrand{&bisector, pair, unit, &cache};
+                EdgeIntegrand integrand{&bisector, &point_bisector, point_precision, pair, unit, &cache};
                 ComplexBall integral;
                 acb_calc_integrate(integral.get(), edge_integrand, &integrand, a.get(), b.get(), goal, tol.get(),
                                    options, prec);
