@@ -97,62 +97,6 @@ void foot_equation(const SiteBalls& q, const Boundary& bq, const ComplexBall& vx
     acb_sub(df->get(), df->get(), t.get(), prec);
 }
 
-// A Krawczyk step in one unknown: x = x0 - c f(x0) + (1 - c f'(X)) (X - x0)
-// inside the interior of X? Then every equation of the family has exactly
-// one root in X, and it lies in K.
-bool contracts(const ComplexBall& x0, const ComplexBall& X, const ComplexBall& c, const ComplexBall& f0,
-               const ComplexBall& dfX, long prec, ComplexBall& K) {
-    ComplexBall t, d;
-    acb_mul(t.get(), c.get(), dfX.get(), prec);
-    acb_sub_ui(t.get(), t.get(), 1, prec);
-    acb_neg(t.get(), t.get());
-    acb_sub(d.get(), X.get(), x0.get(), prec);
-    acb_mul(t.get(), t.get(), d.get(), prec);
-    acb_mul(d.get(), c.get(), f0.get(), prec);
-    acb_sub(K.get(), x0.get(), d.get(), prec);
-    acb_add(K.get(), K.get(), t.get(), prec);
-    return acb_contains_interior(X.get(), K.get());
-}
-
-// The foot point of every V in the box (vx, vy) on q near the real angle
-// phi0: its angle Phi (unique in a box around phi0) and q's boundary there,
-// certified; false if not. With Re (V - Q) . n~q > 0 over the box, Q is the
-// nearest point of q to V (q convex, V on its outward normal).
-bool foot_point(const SiteBalls& q, const ComplexBall& vx, const ComplexBall& vy, const ComplexBall& phi0, long prec,
-                ComplexBall& Phi, Boundary& bq) {
-    Boundary b0;
-    boundary_at(q, phi0, prec, b0);
-    ComplexBall f0, df0, c;
-    foot_equation(q, b0, vx, vy, prec, f0, &df0);
-    acb_get_mid(c.get(), df0.get());
-    if (acb_contains_zero(c.get())) return false;
-    acb_inv(c.get(), c.get(), prec);
-    acb_get_mid(c.get(), c.get());
-    ComplexBall step, K, df;
-    acb_mul(step.get(), c.get(), f0.get(), prec);
-    double r = 2 * magnitude(step) + std::ldexp(1.0, static_cast<int>(std::max(-1000L, 8 - prec)));
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        if (!std::isfinite(r) || r > 0.5) return false;
-        const ComplexBall X = square(phi0, r);
-        boundary_at(q, X, prec, bq);
-        ComplexBall f;
-        foot_equation(q, bq, vx, vy, prec, f, &df);
-        if (contracts(phi0, X, c, f0, df, prec, K)) {
-            Phi = K;
-            boundary_at(q, Phi, prec, bq);
-            ComplexBall dx, dy, side;
-            acb_sub(dx.get(), vx.get(), bq.x.get(), prec);
-            acb_sub(dy.get(), vy.get(), bq.y.get(), prec);
-            dot(dx, dy, bq.nx, bq.ny, prec, side);
-            return arb_is_positive(side.real());
-        }
-        ComplexBall d;
-        acb_sub(d.get(), K.get(), phi0.get(), prec);
-        r = std::max(2 * r, 2 * magnitude(d));
-    }
-    return false;
-}
-
 // Newton on the foot point of a point V (midpoints only).
 void foot_newton(const SiteBalls& q, const ComplexBall& vx, const ComplexBall& vy, int steps, long prec, ComplexBall& phi) {
     Boundary b;
@@ -203,6 +147,104 @@ void ray_point(const Boundary& bp, const ComplexBall& s, long prec, ComplexBall&
     acb_mul(vy.get(), s.get(), bp.ny.get(), prec);
     acb_add(vy.get(), vy.get(), bp.y.get(), prec);
 }
+
+
+// A 2 x 2 complex matrix.
+struct Matrix2 {
+    ComplexBall m[2][2];
+    // out = this x
+    void apply(const ComplexBall x[2], long prec, ComplexBall out[2]) const {
+        ComplexBall t;
+        for (int i = 0; i < 2; ++i) {
+            acb_mul(out[i].get(), m[i][0].get(), x[0].get(), prec);
+            acb_mul(t.get(), m[i][1].get(), x[1].get(), prec);
+            acb_add(out[i].get(), out[i].get(), t.get(), prec);
+        }
+    }
+    // out = this b
+    void times(const Matrix2& b, long prec, Matrix2& out) const {
+        ComplexBall t;
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+                acb_mul(out.m[i][j].get(), m[i][0].get(), b.m[0][j].get(), prec);
+                acb_mul(t.get(), m[i][1].get(), b.m[1][j].get(), prec);
+                acb_add(out.m[i][j].get(), out.m[i][j].get(), t.get(), prec);
+            }
+    }
+};
+
+// The bisector system in x = (s, phi) for a theta (p's boundary bp there)
+// and q's boundary bq at phi:
+//     F0 = (V - Q) . Q'                    (Q is a foot point of V on q)
+//     F1 = |P - Q|^2 + 2 s (P - Q) . n~    (= |V - Q|^2 - s^2 N^2)
+// with V = P + s n~; its Jacobian in (s, phi) and its derivative in theta:
+//     J = [ n~ . Q'         -|Q'|^2 - (V - Q) . (Q - Cq) ]
+//         [ 2 (P - Q) . n~  -2 F0                        ]
+//     F_theta = ( (P' + s n~') . Q',  2 (P - Q) . (P' + s n~') ).
+// Evaluated over boxes, each entry contains its values at every point.
+struct BisectorSystem {
+    ComplexBall F[2], F_theta[2];
+    Matrix2 J;
+
+    void evaluate(const SiteBalls& q, const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec) {
+        ComplexBall vx, vy, dx, dy, ex, ey, wx, wy, cx, cy, t;
+        ray_point(bp, s, prec, vx, vy);
+        acb_sub(dx.get(), vx.get(), bq.x.get(), prec);  // V - Q
+        acb_sub(dy.get(), vy.get(), bq.y.get(), prec);
+        acb_sub(ex.get(), bp.x.get(), bq.x.get(), prec);  // P - Q
+        acb_sub(ey.get(), bp.y.get(), bq.y.get(), prec);
+        dot(dx, dy, bq.dx, bq.dy, prec, F[0]);
+        ComplexBall e_n;
+        dot(ex, ey, bp.nx, bp.ny, prec, e_n);
+        dot(ex, ey, ex, ey, prec, F[1]);
+        acb_mul(t.get(), s.get(), e_n.get(), prec);
+        acb_mul_2exp_si(t.get(), t.get(), 1);
+        acb_add(F[1].get(), F[1].get(), t.get(), prec);
+
+        dot(bp.nx, bp.ny, bq.dx, bq.dy, prec, J.m[0][0]);
+        dot(bq.dx, bq.dy, bq.dx, bq.dy, prec, J.m[0][1]);
+        acb_neg(J.m[0][1].get(), J.m[0][1].get());
+        acb_sub_arb(cx.get(), bq.x.get(), q.xc.get(), prec);
+        acb_sub_arb(cy.get(), bq.y.get(), q.yc.get(), prec);
+        dot(dx, dy, cx, cy, prec, t);
+        acb_sub(J.m[0][1].get(), J.m[0][1].get(), t.get(), prec);
+        acb_mul_2exp_si(J.m[1][0].get(), e_n.get(), 1);
+        acb_mul_2exp_si(J.m[1][1].get(), F[0].get(), 1);
+        acb_neg(J.m[1][1].get(), J.m[1][1].get());
+
+        // W = P' + s n~'
+        acb_mul(wx.get(), s.get(), bp.dnx.get(), prec);
+        acb_add(wx.get(), wx.get(), bp.dx.get(), prec);
+        acb_mul(wy.get(), s.get(), bp.dny.get(), prec);
+        acb_add(wy.get(), wy.get(), bp.dy.get(), prec);
+        dot(wx, wy, bq.dx, bq.dy, prec, F_theta[0]);
+        dot(ex, ey, wx, wy, prec, F_theta[1]);
+        acb_mul_2exp_si(F_theta[1].get(), F_theta[1].get(), 1);
+    }
+
+    // C = (mid J)^-1, a midpoint matrix; false if mid J is singular.
+    bool inverse_of_mid_jacobian(long prec, Matrix2& C) const {
+        ComplexBall a, b, c, d, det, t;
+        acb_get_mid(a.get(), J.m[0][0].get());
+        acb_get_mid(b.get(), J.m[0][1].get());
+        acb_get_mid(c.get(), J.m[1][0].get());
+        acb_get_mid(d.get(), J.m[1][1].get());
+        acb_mul(det.get(), a.get(), d.get(), prec);
+        acb_mul(t.get(), b.get(), c.get(), prec);
+        acb_sub(det.get(), det.get(), t.get(), prec);
+        if (acb_contains_zero(det.get())) return false;
+        acb_inv(det.get(), det.get(), prec);
+        acb_mul(C.m[0][0].get(), d.get(), det.get(), prec);
+        acb_mul(C.m[0][1].get(), b.get(), det.get(), prec);
+        acb_neg(C.m[0][1].get(), C.m[0][1].get());
+        acb_mul(C.m[1][0].get(), c.get(), det.get(), prec);
+        acb_neg(C.m[1][0].get(), C.m[1][0].get());
+        acb_mul(C.m[1][1].get(), a.get(), det.get(), prec);
+        for (auto& row : C.m)
+            for (ComplexBall& e : row) acb_get_mid(e.get(), e.get());
+        return true;
+    }
+};
 
 }  // namespace
 
@@ -271,57 +313,93 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     ray_point(bp, s0, prec, vx, vy);
     foot_newton(qb_, vx, vy, 1, prec, phi0);
     boundary_at(qb_, phi0, prec, bq);
-    ComplexBall g0, g_theta, c, slope;
-    tie(bp, bq, s0, prec, &g0, &dg, &g_theta);  // at the middle
-    acb_get_mid(c.get(), dg.get());
-    if (acb_contains_zero(c.get())) return false;
-    acb_inv(c.get(), c.get(), prec);
-    acb_get_mid(c.get(), c.get());
-    // The root moves with theta at about s' = -g_theta / g_s: the unknown is
-    // the remainder d in s = s0 + slope (theta - mid) + d, so that the box of
-    // d stays small over a ball on which s itself varies a lot (any slope is
-    // correct; a good one makes the certificate hold on wider balls).
-    acb_mul(slope.get(), g_theta.get(), c.get(), prec);
-    acb_neg(slope.get(), slope.get());
-    acb_get_mid(slope.get(), slope.get());
 
-    // h(0, theta) = g(s_lin(theta), theta) over the theta-ball in the
-    // mean-value form around the middle: g(s0, mid) + h'(Theta) (Theta - mid)
-    // with h' = g_s slope + g_theta, the derivatives with the foot points of
-    // all V(s_lin(Theta), Theta) (certified by foot_point).
-    ComplexBall Phi, K, dtheta, s_lin, h_theta, t;
+    // The system in x = (s, phi) with theta as a parameter, at the middle.
+    BisectorSystem at_mid;
+    at_mid.evaluate(qb_, bp, bq, s0, prec);
+    Matrix2 C;  // the midpoint inverse of the Jacobian
+    if (!at_mid.inverse_of_mid_jacobian(prec, C)) return false;
+    // The root moves with theta at about x' = -J^-1 F_theta: the unknown is
+    // the remainder y in x = x0 + x' (theta - mid) + y, so that the box of y
+    // stays small over a ball on which x itself varies a lot (any slope is
+    // correct; a good one makes the certificate hold on wider balls).
+    ComplexBall slope[2];
+    C.apply(at_mid.F_theta, prec, slope);
+    for (ComplexBall& d : slope) {
+        acb_neg(d.get(), d.get());
+        acb_get_mid(d.get(), d.get());
+    }
+    ComplexBall dtheta, x_lin[2], t;
     acb_sub(dtheta.get(), theta.get(), mid.get(), prec);
-    acb_mul(s_lin.get(), slope.get(), dtheta.get(), prec);
-    acb_add(s_lin.get(), s_lin.get(), s0.get(), prec);
+    const ComplexBall* x0[2] = {&s0, &phi0};
+    for (int i = 0; i < 2; ++i) {
+        acb_mul(x_lin[i].get(), slope[i].get(), dtheta.get(), prec);
+        acb_add(x_lin[i].get(), x_lin[i].get(), x0[i]->get(), prec);
+    }
+    // H(0, theta) = F(x_lin(theta), theta) over the theta-ball in the
+    // mean-value form around the middle: F(x0, mid) + H'(Theta) (Theta - mid),
+    // H' = J x' + F_theta over (x_lin(Theta), Theta).
     Boundary bpT;
     boundary_at(pb_, theta, prec, bpT);
-    ray_point(bpT, s_lin, prec, vx, vy);
-    if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
-    tie(bpT, bq, s_lin, prec, nullptr, &dg, &h_theta);
-    acb_mul(t.get(), dg.get(), slope.get(), prec);
-    acb_add(h_theta.get(), h_theta.get(), t.get(), prec);
-    acb_mul(h_theta.get(), h_theta.get(), dtheta.get(), prec);
-    acb_add(g0.get(), g0.get(), h_theta.get(), prec);
-    acb_mul(step.get(), c.get(), g0.get(), prec);
+    boundary_at(qb_, x_lin[1], prec, bq);
+    BisectorSystem on_line;
+    on_line.evaluate(qb_, bpT, bq, x_lin[0], prec);
+    ComplexBall H[2];
+    for (int i = 0; i < 2; ++i) {
+        ComplexBall& h = H[i];
+        acb_mul(h.get(), on_line.J.m[i][0].get(), slope[0].get(), prec);
+        acb_mul(t.get(), on_line.J.m[i][1].get(), slope[1].get(), prec);
+        acb_add(h.get(), h.get(), t.get(), prec);
+        acb_add(h.get(), h.get(), on_line.F_theta[i].get(), prec);
+        acb_mul(h.get(), h.get(), dtheta.get(), prec);
+        acb_add(h.get(), h.get(), at_mid.F[i].get(), prec);
+    }
+    ComplexBall CH[2];
+    C.apply(H, prec, CH);
+    const double floor_s = std::ldexp(1.0 + magnitude(s0), static_cast<int>(std::max(-1000L, 8 - prec)));
+    const double floor_phi = std::ldexp(1.0 + magnitude(phi0), static_cast<int>(std::max(-1000L, 8 - prec)));
+    double r[2] = {2 * magnitude(CH[0]) + floor_s, 2 * magnitude(CH[1]) + floor_phi};
     const ComplexBall zero;
-    double r = 2 * magnitude(step) + std::ldexp(1.0 + magnitude(s0), static_cast<int>(std::max(-1000L, 8 - prec)));
     for (int attempt = 0; attempt < 3; ++attempt) {
-        if (!std::isfinite(r)) return false;
-        ComplexBall S = square(zero, r);  // the box of d
-        acb_add(S.get(), S.get(), s_lin.get(), prec);
-        if (!arb_is_positive(S.real())) return false;  // Re s > 0 (see the header)
-        ray_point(bpT, S, prec, vx, vy);
-        if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
-        tie(bpT, bq, S, prec, nullptr, &dg, nullptr);
-        if (contracts(zero, square(zero, r), c, g0, dg, prec, K)) {
-            acb_add(s_out.get(), s_lin.get(), K.get(), prec);
-            // The derivatives over the box S contain their values at the root.
-            if (tie_ds) *tie_ds = dg;
-            if (tie_dtheta) tie(bpT, bq, s_out, prec, nullptr, nullptr, tie_dtheta);
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return false;
+        ComplexBall Y[2] = {square(zero, r[0]), square(zero, r[1])}, X[2];
+        for (int i = 0; i < 2; ++i) acb_add(X[i].get(), x_lin[i].get(), Y[i].get(), prec);
+        if (!arb_is_positive(X[0].real())) return false;  // Re s > 0 (see the header)
+        boundary_at(qb_, X[1], prec, bq);
+        BisectorSystem on_box;
+        on_box.evaluate(qb_, bpT, bq, X[0], prec);
+        // K = -C H + (I - C J(X)) Y inside the interior of Y?
+        Matrix2 CJ;
+        C.times(on_box.J, prec, CJ);
+        ComplexBall K[2], u;
+        bool inside = true;
+        for (int i = 0; i < 2; ++i) {
+            acb_neg(K[i].get(), CH[i].get());
+            for (int j = 0; j < 2; ++j) {
+                acb_neg(u.get(), CJ.m[i][j].get());
+                if (i == j) acb_add_ui(u.get(), u.get(), 1, prec);
+                acb_mul(u.get(), u.get(), Y[j].get(), prec);
+                acb_add(K[i].get(), K[i].get(), u.get(), prec);
+            }
+            inside = inside && acb_contains_interior(Y[i].get(), K[i].get());
+        }
+        if (inside) {
+            // One root in X, holomorphic in theta; Q is q's nearest point to V
+            // when V - Q points out of q (Re (V - Q) . n~q > 0, see the header).
+            ComplexBall side;
+            ray_point(bpT, X[0], prec, vx, vy);
+            acb_sub(vx.get(), vx.get(), bq.x.get(), prec);
+            acb_sub(vy.get(), vy.get(), bq.y.get(), prec);
+            dot(vx, vy, bq.nx, bq.ny, prec, side);
+            if (!arb_is_positive(side.real())) return false;
+            acb_add(s_out.get(), x_lin[0].get(), K[0].get(), prec);
+            // The derivatives over the box X contain their values at the root.
+            if (tie_ds) *tie_ds = on_box.J.m[1][0];
+            if (tie_dtheta) *tie_dtheta = on_box.F_theta[1];
             if (p_boundary) *p_boundary = std::move(bpT);
             return true;
         }
-        r = std::max(2 * r, 2 * magnitude(K));
+        for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));
     }
     return false;
 }

@@ -13,13 +13,16 @@
 // stationary in the foot point, which keeps the system well conditioned far
 // along the edge, where the ray meets the bisector at a small angle.)
 //
-// Certificate: the Krawczyk operator over a complex box X (around a Newton
-// point on the reals) and the whole theta-ball lies in the interior of X.
-// Then for every theta in the ball the system has exactly one root in X, the
-// root is a holomorphic function of theta there (its Jacobian is nonsingular
-// on X). If moreover Re s > 0 and Re (V - Q) . n~q(phi) > 0 on X, then for a
-// real theta the root is real (X is symmetric about the reals and conjugation
-// maps roots to roots), s > 0, and V - Q lies along q's outward normal at Q,
+// Certificate: with x0 a Newton point at the (real) middle m of the ball and
+// x' its slope there, the root is sought as x = x0 + x' (theta - m) + y; the
+// 2 x 2 Krawczyk operator in y, over a complex box Y and the whole
+// theta-ball (its constant term in the mean-value form around m), lies in
+// the interior of Y. Then for every theta in the ball the system has exactly
+// one root in X(theta) = x0 + x' (theta - m) + Y, a holomorphic function of
+// theta (the Jacobian is nonsingular there). If moreover Re s > 0 and
+// Re (V - Q) . n~q(phi) > 0 on X, then for a real theta the root is real
+// (X(theta) is symmetric about the reals and conjugation maps roots to
+// roots), s > 0, and V - Q lies along q's outward normal at Q,
 // so Q is the nearest point of the convex q to V and dist(V, q) = |V - Q| =
 // s N = dist(V, p): V is the one point of p's normal ray equidistant from p
 // and q (docs/DESIGN.md §10).
