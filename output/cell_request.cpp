@@ -34,13 +34,13 @@ void check_cell_arguments(const CellDomain& domain, double tolerance, std::optio
         throw InputError(name + ": an empty box: Y0 = " + domain.y0.str() + " is not below Y1 = " + domain.y1.str());
 }
 
-void check_centers_in_box(const SiteFile& file, const CellDomain& domain, const std::string& box_name) {
+void check_centers_in_box(const SiteFile& file, const CellDomain& domain) {
     if (domain.kind != CellDomain::Kind::box) return;
     for (std::size_t k = 0; k < file.sites.size(); ++k) {
         const Ellipse& e = file.sites[k];
         if (domain.x0 <= e.xc() && e.xc() <= domain.x1 && domain.y0 <= e.yc() && e.yc() <= domain.y1) continue;
         const std::string what = "site " + std::to_string(k) + " has its center (" + e.xc().str() + ", " +
-                                 e.yc().str() + ") outside the box " + box_text(domain) + " of " + box_name;
+                                 e.yc().str() + ") outside the box " + box_text(domain);
         if (k < file.lines.size()) throw InputError(file.name, file.lines[k], 1, what, InputError::SitePair{k, k});
         throw InputError(what, InputError::SitePair{k, k});
     }
@@ -61,7 +61,7 @@ InputError site_error_at_lines(const SiteFile& file, const InputError& error) {
 CellTessellation cells_of_site_file(const SiteFile& file, const CellDomain& domain, const CellOptions& options,
                                     std::optional<double> boundary_tolerance, const CellArgumentNames& names) {
     check_cell_arguments(domain, options.tolerance, boundary_tolerance, names);
-    check_centers_in_box(file, domain, names.box);
+    check_centers_in_box(file, domain);
     CellOptions o = options;
     o.boundary_tolerance = boundary_tolerance.value_or(0);
     try {

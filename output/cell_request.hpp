@@ -25,9 +25,9 @@ void check_cell_arguments(const CellDomain& domain, double tolerance, std::optio
                           const CellArgumentNames& names);
 
 // For a box: InputError "FILE:LINE:1: site K has its center (x, y) outside
-// the box X0 Y0 X1 Y1 of NAME" for the first site whose centre is not in the
-// closed box (the sites' own lines; ids without lines).
-void check_centers_in_box(const SiteFile& file, const CellDomain& domain, const std::string& box_name);
+// the box X0 Y0 X1 Y1" for the first site whose centre is not in the closed
+// box (the sites' own lines; ids without lines): the same words for every caller.
+void check_centers_in_box(const SiteFile& file, const CellDomain& domain);
 
 // A library error that names sites by id (InputError::sites: a pair, or one
 // site twice) at the file's line of the (later) site; unchanged when the file

@@ -243,7 +243,7 @@ TEST_CASE("cells: bad arguments and bad sites exit 2 naming them, nothing writte
         {"--box 0 0 -1 5", "option --box: an empty box: X0 = 0 is not below X1 = -1"},
         {"--box 0 5 10 5", "option --box: an empty box: Y0 = 5 is not below Y1 = 5"},
         {"--periodic 3 0 3 1", "option --periodic: an empty box: X0 = 3 is not below X1 = 3"},
-        {"--box -10 -10 10 3", f + ":5:1: site 4 has its center (5, 5) outside the box -10 -10 10 3 of option --box"},
+        {"--box -10 -10 10 3", f + ":5:1: site 4 has its center (5, 5) outside the box -10 -10 10 3"},
         {"--box 0 0 1", "option --box: Y1: expected a rational number"},
         {"--box 0 0 1/0 1", "option --box: X1: zero denominator"},
         {"--box 0 0 1 1 --periodic 0 0 1 1", "options --box and --periodic exclude each other"},

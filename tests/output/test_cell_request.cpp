@@ -66,8 +66,8 @@ TEST_CASE("check_cell_arguments and check_centers_in_box name the argument", "[o
           "periodic: an empty box: Y0 = -1 is not below Y1 = -1");
     const SiteFile file = file_of("1 1 0 0 0\n1 1 0 6 1\n1 1 0 7 0\n");
     // The closed box holds a centre on its corner (6, 1); (7, 0) is outside.
-    CHECK(message_of([&] { check_centers_in_box(file, box, "box"); }) ==
-          "f.ell:3:1: site 2 has its center (7, 0) outside the box -1 -1 6 1 of box");
+    CHECK(message_of([&] { check_centers_in_box(file, box); }) ==
+          "f.ell:3:1: site 2 has its center (7, 0) outside the box -1 -1 6 1");
     // The plane and the periodic box do not ask.
-    CHECK(message_of([&] { check_centers_in_box(file, flat, "periodic"); }).empty());
+    CHECK(message_of([&] { check_centers_in_box(file, flat); }).empty());
 }
