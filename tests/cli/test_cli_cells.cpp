@@ -298,3 +298,40 @@ TEST_CASE("cells --box: the areas add up to the box's, or the domain is refused 
         CHECK(Rational(17 * 17) <= sum_hi);
     }
 }
+
+TEST_CASE("build --svg --color packing-fraction: cells coloured by their packing fraction, a colour bar", "[cli][cells][svg]") {
+    ScratchDirectory dir;
+    const std::string f = dir.write("s.ell", kSites), svg = dir.path() + "/d.svg";
+    const auto r = dir.ellvor("build '" + f + "' --svg '" + svg + "' --color packing-fraction");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    const std::string text = ellvor::test::read_file(svg);
+    REQUIRE(contains(text, "<g id=\"color-bar\" data-colored-cells=\"2\""));
+    // Two bounded cells: site 0 (packing fraction 0.110) at the top of the
+    // scale, site 2 (0.028) at its bottom; the others keep the plain fill.
+    const bool rings = contains(text, "data-rings=\"yes\"");
+    const std::string element = rings ? "<polygon data-site=\"" : "<ellipse data-site=\"";
+    auto fill_of = [&](int site) {
+        const std::size_t at = text.find(element + std::to_string(site) + "\"");
+        if (at == std::string::npos) return std::string();
+        const std::size_t fill = text.find("fill=\"", at) + 6;
+        return text.substr(fill, 7);
+    };
+    CHECK(fill_of(0) == "#fde725");
+    CHECK(fill_of(2) == "#440154");
+    if (!rings) {
+        CHECK(fill_of(1) == "#dbe8f5");
+        CHECK(contains(text, "no cell rings yet: sites filled"));
+    }
+    CHECK(contains(text, "local packing fraction"));
+    CHECK(contains(text, "interval midpoints"));
+
+    for (const char* bad : {"--color packing-fraction", "--svg x.svg --color area",
+                            "--svg x.svg --color packing-fraction --remove 1"}) {
+        const auto b = dir.ellvor("build '" + f + "' " + std::string(bad));
+        INFO(bad << ": " << b.err);
+        CHECK(b.status == 2);
+        CHECK(contains(b.err, "option --color"));
+        CHECK(!std::ifstream(dir.path() + "/x.svg"));
+    }
+}
