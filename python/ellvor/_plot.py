@@ -79,7 +79,7 @@ def _fill_cells(ax, diagram, cells, color, cmap):
         filled = EllipseCollection(2 * a, 2 * b, np.degrees(2 * np.arctan(w)), units="xy",
                                    offsets=np.column_stack([xc, yc]), offset_transform=ax.transData,
                                    array=value[ids], cmap=cmap, edgecolors="none")
-        label = "local packing fraction of the site's cell (interval midpoint; no rings: sites filled)"
+        label = "local packing fraction (interval midpoint; no rings yet: sites filled)"
     ax.add_collection(filled)
     ax.figure.colorbar(filled, ax=ax, label=label)
     return filled
