@@ -78,24 +78,31 @@ const char* const kHeader =
     "site,visible,area_lo,area_hi,site_area,packing_fraction_lo,packing_fraction_hi,perimeter_lo,perimeter_hi,"
     "neighbors";
 
+// `ellvor cells ARGS` on the file `name` holding `text`; requires success.
+std::string cells_output(const ScratchDirectory& dir, const std::string& name, const std::string& text,
+                         const std::string& args) {
+    const std::string f = dir.write(name, text);
+    const auto r = dir.ellvor("cells '" + f + "' " + args);
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    return r.out;
+}
+
 }  // namespace
 
 TEST_CASE("cells --format csv: every interval encloses the library's ball; rows consistent", "[cli][cells]") {
     ScratchDirectory dir;
-    const std::string f = dir.write("s.ell", kSites);
-    const auto r = dir.ellvor("cells '" + f + "'");
-    INFO(r.out << r.err);
-    REQUIRE(r.status == 0);
-    const auto rows = csv_rows(r.out);
+    const std::string out = cells_output(dir, "s.ell", kSites, "");
+    const auto rows = csv_rows(out);
     REQUIRE(rows.size() == 8);
-    CHECK(r.out.substr(0, r.out.find('\n')) == kHeader);
+    CHECK(out.substr(0, out.find('\n')) == kHeader);
     const CellTessellation lib = library_cells(kSites);
     std::map<long, std::multiset<long>> neighbors;
     std::size_t bounded = 0;
     for (std::size_t k = 0; k < lib.cells.size(); ++k) {
         const auto& row = rows[k + 1];
         const Cell& c = lib.cells[k];
-        INFO("site " << k << ": " << r.out);
+        INFO("site " << k << ": " << out);
         REQUIRE(row.size() == 10);
         CHECK(row[0] == std::to_string(k));
         CHECK(row[1] == (c.visible ? "1" : "0"));
@@ -147,11 +154,7 @@ TEST_CASE("cells --format csv: every interval encloses the library's ball; rows 
 
 TEST_CASE("cells --tolerance 1e-25: the printed interval shows the narrower width", "[cli][cells]") {
     ScratchDirectory dir;
-    const std::string f = dir.write("s.ell", kSites);
-    const auto r = dir.ellvor("cells '" + f + "' --tolerance 1e-25");
-    INFO(r.out << r.err);
-    REQUIRE(r.status == 0);
-    const auto rows = csv_rows(r.out);
+    const auto rows = csv_rows(cells_output(dir, "s.ell", kSites, "--tolerance 1e-25"));
     const auto& row = rows[1];  // site 0: the bounded cell
     REQUIRE(row[2] != "inf");
     CHECK(exact(row[3]) - exact(row[2]) <= Rational(2) * power_of_ten(-25) * exact(row[2]));
@@ -207,11 +210,8 @@ TEST_CASE("cells --format json -o: outward doubles, chained sides, atomically wr
 
 TEST_CASE("cells --format geojson: a FeatureCollection of closed rings", "[cli][cells]") {
     ScratchDirectory dir;
-    const std::string f = dir.write("c.cin", "0 0 1\n3 0 1\n0 3 1\n3 3 1\n1.5 1.5 1/2\n");
-    const auto r = dir.ellvor("cells --cin '" + f + "' --format geojson");
-    INFO(r.out << r.err);
-    REQUIRE(r.status == 0);
-    const auto j = nlohmann::json::parse(r.out);
+    const auto j = nlohmann::json::parse(
+        cells_output(dir, "c.cin", "0 0 1\n3 0 1\n0 3 1\n3 3 1\n1.5 1.5 1/2\n", "--cin --format geojson"));
     CHECK(j["type"] == "FeatureCollection");
     CHECK(j["features"].size() + j["cells_without_ring"].get<std::size_t>() == 5);
     for (const auto& feature : j["features"]) {
