@@ -210,3 +210,25 @@ def test_plot_fills_cells_with_a_colour_bar(computed):
     plt.close(fig)
     with pytest.raises(ValueError, match="color"):
         ellvor.plot(d, cells=c, color="area")
+
+
+def test_plot_fills_the_rings_when_there_are_some(computed):
+    """The ring branch, on rings made by hand (triangles around the bounded cells' sites)."""
+    import copy
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+
+    d, c = computed
+    drawn = copy.copy(c)
+    bounded = np.flatnonzero(c.visible & c.bounded)
+    drawn._rings = [np.array([[x - 2, y - 2], [x + 2, y - 2], [x, y + 2]]) if k in bounded else np.zeros((0, 2))
+                    for k, (x, y) in enumerate(d.points)]
+    fig, ax = plt.subplots()
+    ellvor.plot(d, ax=ax, cells=drawn)
+    polys = [coll for coll in ax.collections if isinstance(coll, PolyCollection)]
+    assert len(polys) == 1 and len(polys[0].get_paths()) == len(bounded)
+    assert "no rings" not in fig.axes[1].get_ylabel()
+    plt.close(fig)
