@@ -324,7 +324,10 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
     std::vector<SiteId> which = options.only;
     if (which.empty())
         for (SiteId s = 0; s < cells.size(); ++s) which.push_back(s);
+    std::size_t done = 0;
     for (SiteId s : which) {
+        if (options.progress && done) options.progress(done, which.size());
+        ++done;
         const VoronoiCell& cell = cells.at(s);
         CellArea& r = out[s];
         r.site = s;
@@ -359,6 +362,7 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
             }
         }
     }
+    if (options.progress) options.progress(which.size(), which.size());
     return out;
 }
 

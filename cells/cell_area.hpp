@@ -10,6 +10,8 @@
 #include "sites/ellipse.hpp"
 
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace ellvor {
@@ -24,6 +26,8 @@ struct CellAreaOptions {
     // The sites whose cells are measured (the others are left at their
     // defaults); empty: every site.
     std::vector<SiteId> only;
+    // Called after each measured cell (done, total); may be empty.
+    std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 struct CellArea {
