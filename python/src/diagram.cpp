@@ -1,6 +1,7 @@
 // ellvor.build and the diagram it returns (python/ellvor/_diagram.py wraps it).
 #include "python/src/bindings.hpp"
 
+#include "cells/voronoi_cells.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/graph_json.hpp"
@@ -224,6 +225,20 @@ py::tuple ridges(Diagram& d) {
     return py::make_tuple(pairs_array(points), pairs_array(ends));
 }
 
+// scipy.spatial.Voronoi's regions, one per site in site order: the Voronoi
+// vertices of its cell counter-clockwise (each edge's first vertex), -1 where
+// the cell reaches infinity; empty for a hidden (or removed) site.
+py::list regions(Diagram& d) {
+    const std::vector<VoronoiCell> cells = locked(d, [](Diagram& g) { return voronoi_cells(*g.graph, g.numbers); });
+    py::list out;
+    for (const VoronoiCell& c : cells) {
+        py::list region;
+        for (const CellEdge& e : c.edges) region.append(e.from);
+        out.append(region);
+    }
+    return out;
+}
+
 // (centers (n, 2), radii (n,), errors (n,)) as Diagram.vertices gives them.
 py::tuple vertex_arrays(const std::vector<VoronoiVertexValue>& v) {
     const auto n = static_cast<py::ssize_t>(v.size());
@@ -406,6 +421,7 @@ void bind_diagram(py::module_& m) {
         .def("remove", &remove, py::arg("ids"))
         .def("ridges", &ridges)
         .def("vertices", &vertices)
+        .def("regions", &regions)
         .def("json", &json)
         .def("stats_json", [](Diagram& d) { return locked(d, [](Diagram& g) { return g.stats; }); })
         .def("circle_boxes", &circle_boxes)
