@@ -30,10 +30,14 @@ from fractions import Fraction
 
 import mpmath
 import numpy as np
+from mpmath.calculus.quadrature import GaussLegendre
 
 DPS = 50
 QUAD_DIGITS = 30  # the quadrature's goal, relative to the cell's area
 mp = mpmath.mp
+# Gauss-Legendre nodes cost a second a degree at 50 digits: one rule (with
+# its cache of nodes) for every call.
+_GAUSS_LEGENDRE = GaussLegendre(mp)
 
 
 def read_ell(text):
@@ -193,7 +197,7 @@ def ray_bisector(p, q, theta, start):
     s, phi = mpmath.mpf(start[0]), mpmath.mpf(start[1])
     # Newton doubles the digits: after a step below `half` the error is
     # about its square, below `tol`.
-    half = mpmath.mpf(10) ** (-4 - mp.dps // 2)
+    half = mpmath.mpf(10) ** (-(mp.dps // 2))
     for it in range(60):
         qx, qy, ca, sa = q.point(phi)
         dqx, dqy = -c * a * sa - sn * b * ca, -sn * a * sa + c * b * ca  # Q'
@@ -249,6 +253,17 @@ class _EdgeSolver:
         self.keys.insert(i, key)
         return s
 
+    def add_start(self, *thetas):
+        """Double-precision starts at these angles (where the samples are too
+        far apart)."""
+        t = np.array(thetas, dtype=float) % (2 * math.pi)
+        s, phi = ray_bisector_f(self.p, self.q, t)
+        for ti, si, fi in zip(t, s, phi):
+            if math.isfinite(si):
+                i = bisect.bisect_left(self.keys, ti)
+                self.known.insert(i, (float(ti), float(si), float(fi)))
+                self.keys.insert(i, float(ti))
+
 
 def _angle_diff(a, b):
     """a - b reduced to (-pi, pi]."""
@@ -259,45 +274,51 @@ class UnboundedCell(ValueError):
     pass
 
 
-def _vertex_angle(p, q1, q2, lo, hi):
+def _vertex_angle(p, q1, q2, lo, hi, solver1, solver2):
     """The angle in (lo, hi) where q1's and q2's roots on p's rays meet
-    (q1 closer just after lo, q2 just before hi): bisection in doubles to
-    a narrow bracket, then the secant method in mpmath on
-    s_q1(theta) - s_q2(theta)."""
-    def g_f(t):
-        s1, _ = ray_bisector_f(p, q1, np.array([t]))
-        s2, _ = ray_bisector_f(p, q2, np.array([t]))
-        return s1[0] - s2[0] if math.isfinite(s2[0]) else -math.inf
+    (q1 closer at lo, q2 at hi): the secant method in mpmath on
+    g = s_q1(theta) - s_q2(theta) from the bracket's ends (the solvers
+    start Newton from the samples); when a root is missing at an end or
+    the secant leaves the bracket, bisection in doubles narrows the
+    bracket first."""
     lo, hi = float(lo), float(hi)
-    for _ in range(12):
-        mid = 0.5 * (lo + hi)
-        if g_f(mid) < 0:
-            lo = mid
-        else:
-            hi = mid
-    starts = {}
-    for t in (lo, hi):
-        s1, f1 = ray_bisector_f(p, q1, np.array([t]))
-        s2, f2 = ray_bisector_f(p, q2, np.array([t]))
-        starts[t] = ((s1[0], f1[0]), (s2[0], f2[0]))
-    cache = {"1": starts[lo][0], "2": starts[lo][1]}
 
     def g(t):
-        s1, f1 = ray_bisector(p, q1, t, cache["1"])
-        s2, f2 = ray_bisector(p, q2, t, cache["2"])
-        cache["1"], cache["2"] = (s1, f1), (s2, f2)
-        return s1 - s2
-    theta = mpmath.findroot(g, (mpmath.mpf(lo), mpmath.mpf(hi)), solver="secant",
-                            tol=mpmath.eps ** 2 * 1e4, maxsteps=60)
-    if not (lo - 1e-9 <= float(theta) <= hi + 1e-9):
-        raise ArithmeticError("vertex angle left its bracket")
-    s, _ = ray_bisector(p, q1, theta, cache["1"])
-    return theta, s
+        return solver1(t) - solver2(t)
+
+    def secant(a, b):
+        # The roots s carry ~dps - 5 digits: g cannot get below that, so
+        # findroot's own test (|g|^2 < tol) is replaced by ours.
+        theta = mpmath.findroot(g, (mpmath.mpf(a), mpmath.mpf(b)), solver="secant", maxsteps=60,
+                                verify=False)
+        if not (min(a, b) - 1e-12 <= float(theta) <= max(a, b) + 1e-12):
+            raise ArithmeticError("vertex angle left its bracket")
+        if abs(g(theta)) > mpmath.mpf(10) ** (10 - mp.dps) * abs(solver1(theta)):
+            raise ArithmeticError("vertex angle: the secant method did not converge")
+        return theta
+
+    try:
+        theta = secant(lo, hi)
+    except (ArithmeticError, ZeroDivisionError, ValueError):
+        def g_f(t):
+            s1, _ = ray_bisector_f(p, q1, np.array([t]))
+            s2, _ = ray_bisector_f(p, q2, np.array([t]))
+            return s1[0] - s2[0] if math.isfinite(s2[0]) else -math.inf
+        for _ in range(30):
+            mid = 0.5 * (lo + hi)
+            if g_f(mid) < 0:
+                lo = mid
+            else:
+                hi = mid
+        solver1.add_start(lo, hi)
+        solver2.add_start(lo, hi)
+        theta = secant(lo, hi)
+    return theta, solver1(theta)
 
 
-def cell_area(sites, p_index, neighbours, samples=512, dps=DPS, details=False):
+def cell_area(sites, p_index, neighbours, samples=256, dps=DPS, quad_digits=QUAD_DIGITS, details=False):
     """The area of site p_index's cell (pi a b included), an mpf at dps
-    digits, whose quadrature error is below 10^-QUAD_DIGITS relative (by
+    digits, whose quadrature error is below 10^-quad_digits relative (by
     mpmath's own estimate, which is checked). `sites`: (a, b, w, xc, yc) rationals of
     every site, pairwise disjoint; `neighbours`: ids of p's Voronoi
     neighbours in any order (repeats ignored) — only they are tried along
@@ -331,15 +352,16 @@ def cell_area(sites, p_index, neighbours, samples=512, dps=DPS, details=False):
         vertices = []
         for k in changes:
             lo = thetas[k - 1] if k > 0 else thetas[-1] - 2 * np.pi
-            theta, s = _vertex_angle(p, ells[cand[owner[k - 1]]], ells[cand[owner[k]]], lo, thetas[k])
+            k1, k2 = owner[k - 1], owner[k]
+            theta, s = _vertex_angle(p, ells[cand[k1]], ells[cand[k2]], lo, thetas[k], solvers[k1], solvers[k2])
             vertices.append((theta, s, owner[k - 1], owner[k]))
         _check_vertices(ells, p_index, p, vertices, cand)
         total = mpmath.pi * p.mp[0] * p.mp[1]
         err_total = mpmath.mpf(0)
-        # The goal on the area, absolute: QUAD_DIGITS relative to a scale
+        # The goal on the area, absolute: quad_digits relative to a scale
         # below the cell's area (the site's, plus its ring out to the
         # smallest root), shared by the edges in proportion to their angle.
-        target = mpmath.mpf(10) ** -QUAD_DIGITS
+        target = mpmath.mpf(10) ** -quad_digits
         s_min = mpmath.mpf(float(S.min()))
         scale = total + s_min * p.mp[0] * p.mp[1] * mpmath.pi
         sequence = []
@@ -367,12 +389,16 @@ def cell_area(sites, p_index, neighbours, samples=512, dps=DPS, details=False):
 
 
 def _integrate(f, a, b, goal, depth=0):
-    """(integral of f over [a, b], error estimate) by Gauss-Legendre,
-    halving the interval until each piece's estimate is below its share
-    of `goal` (absolute, per unit of angle)."""
-    value, err = mpmath.quad(f, [a, b], method="gauss-legendre", maxdegree=7, error=True)
-    if err <= goal * (b - a) or depth >= 12:
-        return value, err
+    """(integral of f over [a, b], error estimate) by Gauss-Legendre rules
+    of 24 and 48 nodes, the 48-node value kept and the difference of the two
+    taken as its error (f is analytic on an edge: the larger rule's error is
+    far below it); halving the interval until each piece's difference is
+    below its share of `goal` (absolute, per unit of angle)."""
+    coarse, fine = (mpmath.fdot((w, f(x)) for x, w in _GAUSS_LEGENDRE.get_nodes(a, b, degree, mp.prec))
+                    for degree in (5, 6))
+    err = abs(fine - coarse)
+    if err <= goal * (b - a) or depth >= 14:
+        return fine, err
     m = (a + b) / 2
     v1, e1 = _integrate(f, a, m, goal, depth + 1)
     v2, e2 = _integrate(f, m, b, goal, depth + 1)
