@@ -84,20 +84,15 @@ std::string decimal(const arf_t x, mpfr_rnd_t rnd) {
     return out;
 }
 
-std::string lower(const Ball& b) {
+// A ball's lower (upper = false) or upper end, rounded outward to decimal.
+std::string bound(const Ball& b, bool upper) {
     arf_t x;
     arf_init(x);
-    arb_get_lbound_arf(x, b.get(), 2 * kDigits * 4);
-    std::string s = decimal(x, MPFR_RNDD);
-    arf_clear(x);
-    return s;
-}
-
-std::string upper(const Ball& b) {
-    arf_t x;
-    arf_init(x);
-    arb_get_ubound_arf(x, b.get(), 2 * kDigits * 4);
-    std::string s = decimal(x, MPFR_RNDU);
+    if (upper)
+        arb_get_ubound_arf(x, b.get(), 2 * kDigits * 4);
+    else
+        arb_get_lbound_arf(x, b.get(), 2 * kDigits * 4);
+    std::string s = decimal(x, upper ? MPFR_RNDU : MPFR_RNDD);
     arf_clear(x);
     return s;
 }
@@ -138,7 +133,7 @@ int dump_areas(int argc, char** argv) {
             else if (!a.bounded)
                 std::cout << "inf,inf";
             else
-                std::cout << lower(a.area) << ',' << upper(a.area);
+                std::cout << bound(a.area, false) << ',' << bound(a.area, true);
             std::cout << ',';
             for (std::size_t k = 0; k < cells[i].edges.size(); ++k)
                 std::cout << (k ? " " : "") << cells[i].edges[k].neighbor;

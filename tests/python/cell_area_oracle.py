@@ -50,6 +50,14 @@ def read_ell(text):
     return sites
 
 
+def _ray(site, ct, st):
+    """P and the unnormalized outward normal n at the angle of cosine ct and
+    sine st, for `site` = (a, b, cos, sin, xc, yc) in any number type."""
+    a, b, c, s, xc, yc = site
+    return (xc + c * a * ct - s * b * st, yc + s * a * ct + c * b * st,
+            c * b * ct - s * a * st, s * b * ct + c * a * st)
+
+
 class Ellipse:
     """One site: semi-axes a, b, rotation (cos, sin) from w = tan(omega/2)
     and centre, exactly (Fractions), in mpmath (at the precision in force
@@ -105,12 +113,7 @@ class Ellipse:
 
     def ray_f(self, theta):
         """P(theta), n(theta), N(theta) in doubles."""
-        a, b, c, s, xc, yc = self.f
-        ct, st = np.cos(theta), np.sin(theta)
-        px = xc + c * a * ct - s * b * st
-        py = yc + s * a * ct + c * b * st
-        nx = c * b * ct - s * a * st
-        ny = s * b * ct + c * a * st
+        px, py, nx, ny = _ray(self.f, np.cos(theta), np.sin(theta))
         return px, py, nx, ny, np.hypot(nx, ny)
 
     # -- mpmath --------------------------------------------------------------
@@ -123,12 +126,7 @@ class Ellipse:
 
     def ray(self, theta):
         """P, n (unnormalized outward normal), N = |n|, at mp precision."""
-        a, b, c, s, xc, yc = self.mp
-        ct, st = mpmath.cos(theta), mpmath.sin(theta)
-        px = xc + c * a * ct - s * b * st
-        py = yc + s * a * ct + c * b * st
-        nx = c * b * ct - s * a * st
-        ny = s * b * ct + c * a * st
+        px, py, nx, ny = _ray(self.mp, mpmath.cos(theta), mpmath.sin(theta))
         return px, py, nx, ny, mpmath.sqrt(nx * nx + ny * ny)
 
     def distance(self, x, y):
