@@ -145,7 +145,7 @@ def main():
           f"≤ {max(widths):.1e} (proved) | ≤ {max(widths):.1e} (proved) |"]
     for k, seconds, n, worst, median in rows:
         md.append(f"| sampling, k = {k} | {seconds:.2f} | {n} | {worst:.2e} | {median:.2e} |")
-    md += ["", f"ellvor's own report (CPU seconds): {ellvor_note}.",
+    md += ["", f"ellvor's own report on stderr: `{ellvor_note}`.",
            "",
            "The sampling error falls about as 1/k^2 (the samples' polygons cut the true cell's curved edges by "
            "chords of their cells' bisectors) but carries no bound: the table's errors are measured against "
