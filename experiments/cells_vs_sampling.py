@@ -23,6 +23,7 @@ far below every error shown). With --out DIR, writes DIR/cells_vs_sampling.md.
 import argparse
 import csv
 import io
+import math
 import os
 import pathlib
 import platform
@@ -64,7 +65,8 @@ def certified_areas(path):
     wall = time.perf_counter() - start
     areas, widths = {}, []
     for row in csv.DictReader(io.StringIO(p.stdout)):
-        if row["visible"] in ("1", "true") and row["area_hi"] not in ("inf", "+inf"):
+        # visible "1" or "true"; an unbounded cell's areas are "inf" (or "+inf", "infinity")
+        if row["visible"].lower() in ("1", "true") and not math.isinf(float(row["area_hi"])):
             lo, hi = float(row["area_lo"]), float(row["area_hi"])
             areas[int(row["site"])] = (lo + hi) / 2
             widths.append((hi - lo) / lo)

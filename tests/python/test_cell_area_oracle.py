@@ -201,7 +201,8 @@ def ellvor_cells(path):
         cyclic = True
     cells = {}
     for row in csv.DictReader(io.StringIO(out)):
-        if row["visible"] in ("1", "true") and row["area_hi"] not in ("inf", "+inf"):
+        # visible "1" or "true"; an unbounded cell's areas are "inf" (or "+inf", "infinity")
+        if row["visible"].lower() in ("1", "true") and not math.isinf(float(row["area_hi"])):
             cells[int(row["site"])] = (mpmath.mpf(row["area_lo"]), mpmath.mpf(row["area_hi"]),
                                        [int(n) for n in row["neighbors"].split()], cyclic)
     return cells
