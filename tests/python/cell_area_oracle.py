@@ -15,13 +15,15 @@ equation for the distance to an ellipse). The area is
     pi a b + sum over the edges of  integral of (s N^2 + a b s^2 / 2) dtheta
 (the Jacobian of (theta, s) -> V), the edges' angle ranges found by
 sampling which neighbour is closest along the rays and refining each change
-to the angle where two neighbours' roots meet (the Voronoi vertex), and
-each integral by mpmath.quad (tanh-sinh). Every vertex is checked to be a
+to the angle where two neighbours' roots meet (the Voronoi vertex, by the
+secant method in mpmath), and each integral by Gauss-Legendre rules of
+mpmath (24 and 48 nodes, halving the range until they agree to the goal:
+quad_digits, 30 by default, relative to the area). Every vertex is checked to be a
 Voronoi vertex against all sites (its circle has no site closer than its
 radius), so a wrong neighbour list shows up as an error, not a wrong area.
 
-Public: read_ell, Ellipse, cell_area(sites, p, neighbours), polygon area
-helpers for the circle checks. Working precision: DPS (50) digits.
+Public: read_ell, Ellipse, cell_area(sites, p, neighbours), UnboundedCell.
+Working precision: DPS (50) digits.
 """
 
 import bisect
