@@ -115,15 +115,13 @@ run: $(DEPS_STAMP)
 	@echo "Delaunay graph written to $(BUILD)/example-graph.json, drawing to $(BUILD)/example-graph.svg"
 
 # The Catch2 suite, then the Python suite (tests/python, against the CLI of
-# this build); one closing line "N passed, M failed" for both. The cell-area
-# oracle test falls back on build/experiments/cells_timing while `ellvor cells`
-# is missing: it is built too.
+# this build); one closing line "N passed, M failed" for both.
 test: $(DEPS_STAMP)
 ifeq ($(PYTHON_TESTS),no)
 	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS)
 	@bash tests/run_suite.sh $(TESTS)
 else
-	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS) python-module $(BUILD)/experiments/cells_timing
+	@$(MAKE) --no-print-directory -j$(JOBS) $(ELLVOR) $(TESTS) python-module
 	@PYTHON=$(PYTHON) PYTHONPATH=$(abspath $(BUILD)/python) ELLVOR_BINARY=$(abspath $(ELLVOR)) \
 	    bash tests/run_suite.sh $(TESTS) --pytest tests/python
 endif

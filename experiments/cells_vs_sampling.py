@@ -1,15 +1,14 @@
 #!/usr/bin/env python3
 """Certified cell areas against the point-sampling "set Voronoi" users run today.
 
-    make build/ellvor build/experiments/cells_timing python
+    make build/ellvor python
     PYTHONPATH=build/python /usr/bin/python3 experiments/cells_vs_sampling.py [--count N] [--packing-fraction F] [--k K,K,...] [--out DIR]
 
 Generates a dense packing (`ellvor generate packing --count N --packing-fraction F
 --seed 1`, default N = 60, F = 0.55) and measures, in the same run:
-  - ellvor's certified cell areas at tolerance 1e-9 (`ellvor cells FILE --format csv`
-    when the CLI has it, else `build/experiments/cells_timing --areas-csv FILE`,
+  - ellvor's certified cell areas at tolerance 1e-9 (`ellvor cells FILE --format csv`,
     which computes each bounded cell's area, perimeter, centroid and second
-    moments): wall time of the command, with the build and cells CPU times it reports;
+    moments): wall time of the command;
   - the sampling approach, for k = 16, 64, 256, 1024 points a particle: k points
     on each ellipse boundary (uniform in the parameter angle), scipy.spatial.Voronoi
     (Qhull) of all of them, a particle's cell area = the sum of the areas of its
@@ -42,7 +41,6 @@ from python_build import machine, source_state  # noqa: E402  (imports the ellvo
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 CLI = os.environ.get("ELLVOR_BINARY", str(ROOT / "build" / "ellvor"))
-DUMP = pathlib.Path(CLI).resolve().parent / "experiments" / "cells_timing"
 
 
 def read_sites(path):
@@ -58,19 +56,17 @@ def read_sites(path):
 
 def certified_areas(path):
     """({site: midpoint} of the bounded cells, relative widths, command, wall seconds, stderr)."""
-    has_cells = subprocess.run([CLI, "cells", "--help"], capture_output=True).returncode == 0
-    cmd = [CLI, "cells", str(path), "--format", "csv"] if has_cells else [str(DUMP), "--areas-csv", str(path)]
+    cmd = [CLI, "cells", str(path), "--format", "csv"]
     start = time.perf_counter()
     p = subprocess.run(cmd, capture_output=True, text=True, check=True)
     wall = time.perf_counter() - start
     areas, widths = {}, []
     for row in csv.DictReader(io.StringIO(p.stdout)):
-        # visible "1" or "true"; an unbounded cell's areas are "inf" (or "+inf", "infinity")
-        if row["visible"].lower() in ("1", "true") and not math.isinf(float(row["area_hi"])):
+        if row["visible"] == "1" and not math.isinf(float(row["area_hi"])):
             lo, hi = float(row["area_lo"]), float(row["area_hi"])
             areas[int(row["site"])] = (lo + hi) / 2
             widths.append((hi - lo) / lo)
-    shown = "ellvor cells FILE --format csv" if has_cells else "build/experiments/cells_timing --areas-csv FILE"
+    shown = "ellvor cells FILE --format csv"
     return areas, widths, shown, wall, p.stderr.strip()
 
 
@@ -140,7 +136,7 @@ def main():
           f"- Machine: {machine()}; Python {platform.python_version()}, NumPy {np.__version__}",
           f"- Load average before / after: {load_before:.2f} / {load_after:.2f} (the machine is shared)",
           f"- Source: git {source_state()}",
-          f"- Command: `make build/ellvor build/experiments/cells_timing python && {command}`", "",
+          f"- Command: `make build/ellvor python && {command}`", "",
           "| method | time (s) | cells compared | largest relative area error | median relative area error |",
           "|---|---|---|---|---|",
           f"| ellvor, certified (T = 1e-9) | {ellvor_wall:.2f} | {len(certified)} | "
@@ -151,7 +147,7 @@ def main():
            "",
            "The sampling error falls about as 1/k^2 (the samples' polygons cut the true cell's curved edges by "
            "chords of their cells' bisectors) but carries no bound: the table's errors are measured against "
-           "ellvor's intervals, which is what a user of sampling alone cannot do. The cells_timing program "
+           "ellvor's intervals, which is what a user of sampling alone cannot do. `ellvor cells` "
            "computes each bounded cell's perimeter, centroid and second moments as well as its area, so its "
            "time is an upper bound on the area's."]
     text = "\n".join(md) + "\n"

@@ -13,14 +13,12 @@ ellipses of varied aspect, a dense packing, circles, a needle of aspect
 at a Voronoi circle of radius about 50000 — must have the oracle's area
 inside ellvor's interval, and the same neighbours.
 
-ellvor's intervals come from `ellvor cells FILE --format csv` when the CLI
-has that command, else from `cells_timing --areas-csv FILE` (the
-experiments program beside the CLI, build/experiments/cells_timing)."""
+ellvor's intervals and its counter-clockwise neighbours come from
+`ellvor cells FILE --format csv`."""
 
 import csv
 import io
 import math
-import os
 import pathlib
 import random
 import subprocess
@@ -31,8 +29,6 @@ import pytest
 
 import cell_area_oracle as oracle
 from conftest import CLI
-
-DUMP = pathlib.Path(CLI).resolve().parent / "experiments" / "cells_timing"
 
 
 # -- the oracle on circles ---------------------------------------------------
@@ -179,32 +175,16 @@ def test_oracle_refuses_a_wrong_neighbour_list():
 
 # -- ellvor against the oracle -----------------------------------------------
 
-def cells_command_available():
-    p = subprocess.run([CLI, "cells", "--help"], capture_output=True, text=True)
-    return p.returncode == 0
-
-
 def ellvor_cells(path):
-    """{site: (area_lo, area_hi, neighbours, cyclic)} of the bounded visible
-    cells, from `ellvor cells` (neighbours as it lists them: compared as
-    sets) or from the experiments program (counter-clockwise: compared as
-    cyclic sequences)."""
-    if cells_command_available():
-        out = subprocess.run([CLI, "cells", str(path), "--format", "csv"], capture_output=True, text=True,
-                             check=True).stdout
-        cyclic = False
-    else:
-        assert os.access(DUMP, os.X_OK), (
-            f"`ellvor cells` is not there and neither is {DUMP} (make build/experiments/cells_timing)")
-        out = subprocess.run([str(DUMP), "--areas-csv", str(path)], capture_output=True, text=True,
-                             check=True).stdout
-        cyclic = True
+    """{site: (area_lo, area_hi, neighbours counter-clockwise)} of the
+    bounded visible cells, from `ellvor cells FILE --format csv`."""
+    out = subprocess.run([CLI, "cells", str(path), "--format", "csv"], capture_output=True, text=True,
+                         check=True).stdout
     cells = {}
     for row in csv.DictReader(io.StringIO(out)):
-        # visible "1" or "true"; an unbounded cell's areas are "inf" (or "+inf", "infinity")
-        if row["visible"].lower() in ("1", "true") and not math.isinf(float(row["area_hi"])):
+        if row["visible"] == "1" and not math.isinf(float(row["area_hi"])):
             cells[int(row["site"])] = (mpmath.mpf(row["area_lo"]), mpmath.mpf(row["area_hi"]),
-                                       [int(n) for n in row["neighbors"].split()], cyclic)
+                                       [int(n) for n in row["neighbors"].split()])
     return cells
 
 
@@ -260,16 +240,13 @@ def test_every_bounded_cell_area_interval_contains_the_oracle(cli, tmp_path):
     worst = (0, None)
     for name, path in site_sets(cli, tmp_path).items():
         sites = oracle.read_ell(path.read_text())
-        for i, (lo, hi, neighbours, cyclic) in sorted(ellvor_cells(path).items()):
+        for i, (lo, hi, neighbours) in sorted(ellvor_cells(path).items()):
             # 20 digits of quadrature: 10^10 below the intervals' widths, and
             # half the time of 30.
             area, info = oracle.cell_area(sites, i, neighbours, quad_digits=20, details=True)
             checked.append((name, i))
-            if cyclic and not same_cycle(info["sequence"], neighbours):
+            if not same_cycle(info["sequence"], neighbours):
                 failures.append(f"{name} site {i}: neighbours {neighbours}, oracle {info['sequence']}")
-            if not cyclic and set(info["sequence"]) != set(neighbours):
-                failures.append(f"{name} site {i}: neighbours {sorted(set(neighbours))}, "
-                                f"oracle {sorted(set(info['sequence']))}")
             if not lo <= area <= hi:
                 failures.append(f"{name} site {i}: oracle {mpmath.nstr(area, 30)} not in "
                                 f"[{mpmath.nstr(lo, 30)}, {mpmath.nstr(hi, 30)}]")
