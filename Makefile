@@ -138,6 +138,8 @@ bench: $(DEPS_STAMP)
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
 	@echo "== experiments/python_build.py"
 	@PYTHONPATH=$(BUILD)/python ELLVOR_BINARY=$(abspath $(ELLVOR)) $(PYTHON) experiments/python_build.py --count 3000 --reps 3
+	@echo "== experiments/cells_vs_sampling.py"
+	@PYTHONPATH=$(BUILD)/python ELLVOR_BINARY=$(abspath $(ELLVOR)) $(PYTHON) experiments/cells_vs_sampling.py
 
 # libFuzzer needs clang; its packages are installed here only, so that `make
 # test` and CI never depend on clang. The build gets its own directory.

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -49,42 +50,169 @@ void require_disjoint_or_nested(const std::vector<Ellipse>& sites) {
         }
 }
 
-int area_density_function(acb_ptr out, const acb_t in, void* param, slong order, slong prec) {
+// The integrand of one pair of measures on one edge: f + i g, both real on
+// the reals, so that the real and imaginary parts of the integral enclose
+// the two integrals. Each measure is scaled by the cell's length unit L to a
+// power (area units), so that one absolute tolerance serves both.
+struct EdgeIntegrand {
+    NormalRayBisector* bisector;
+    // Values at points (order 0) need only the goal's bits, not the working
+    // precision of the holomorphy certificates on balls: a second solver at
+    // point_precision spares the longer limbs.
+    NormalRayBisector* point_bisector;
+    long point_precision;
+    int pair;  // 0: area + i L length, 1: first / L (x + i y), 2: second / L^2 (xx + i yy), 3: second / L^2 (xy)
+    long length_unit;  // L = 2^length_unit (exact scaling)
+    // Arb evaluates the four pairs on mostly the same balls: keep the
+    // densities of each (midpoints and radii, exactly) for the next pair.
+    std::map<std::string, std::optional<NormalRayBisector::Densities>>* cache;
+};
+
+constexpr int kMeasurePairs = 4;
+
+std::string ball_key(const acb_t z, slong prec) {
+    char* m = arb_dump_str(acb_realref(z));
+    char* n = arb_dump_str(acb_imagref(z));
+    std::string key = std::string(m) + "|" + n + "|" + std::to_string(prec);
+    flint_free(m);
+    flint_free(n);
+    return key;
+}
+
+// f + i g of the pair from the densities (scaled as above).
+void pair_value(const NormalRayBisector::Densities& d, int pair, long unit, slong prec, acb_t out) {
+    ComplexBall f, g;
+    switch (pair) {
+        case 0: f = d.area; acb_mul_2exp_si(g.get(), d.length.get(), unit); break;
+        case 1: acb_mul_2exp_si(f.get(), d.first[0].get(), -unit); acb_mul_2exp_si(g.get(), d.first[1].get(), -unit); break;
+        case 2: acb_mul_2exp_si(f.get(), d.second[0].get(), -2 * unit); acb_mul_2exp_si(g.get(), d.second[2].get(), -2 * unit); break;
+        default: acb_mul_2exp_si(f.get(), d.second[1].get(), -2 * unit); break;
+    }
+    acb_mul_onei(g.get(), g.get());
+    acb_add(out, f.get(), g.get(), prec);
+}
+
+int edge_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong prec) {
     // order 0: a value; order 1: a value and proof of holomorphy on the ball,
     // which a successful certificate gives (cells/normal_ray_bisector.hpp).
     if (order > 1) {
         acb_indeterminate(out);
         return 0;
     }
-    auto* bisector = static_cast<NormalRayBisector*>(param);
-    ComplexBall theta, density;
-    acb_set(theta.get(), in);
-    bool ok = false;
+    auto* e = static_cast<EdgeIntegrand*>(param);
     try {
-        ok = bisector->area_density(theta, prec, density);
+        auto [slot, fresh] = e->cache->try_emplace(ball_key(in, prec));
+        if (fresh) {
+            ComplexBall theta;
+            acb_set(theta.get(), in);
+            NormalRayBisector::Densities d;
+            const bool point = order == 0 && e->point_precision < prec;
+            NormalRayBisector* bisector = point ? e->point_bisector : e->bisector;
+            if (bisector->densities(theta, point ? e->point_precision : prec, d)) slot->second = std::move(d);
+        }
+        if (slot->second)
+            pair_value(*slot->second, e->pair, e->length_unit, prec, out);
+        else
+            acb_indeterminate(out);
     } catch (...) {
-        ok = false;  // nothing may cross Arb's C frames; an indeterminate value is always safe
+        acb_indeterminate(out);  // nothing may cross Arb's C frames; an indeterminate value is always safe
     }
-    if (ok)
-        acb_set(out, density.get());
-    else
-        acb_indeterminate(out);
     return 0;
 }
+
+// Everything a cell's integrals add up, in area units (see EdgeIntegrand).
+struct MeasureSums {
+    std::array<ComplexBall, kMeasurePairs> pairs;
+};
 
 class CellAreaSolver {
 public:
     CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance)
         : sites_(sites), faces_(graph.faces()), tolerance_(tolerance), solvers_(faces_.size()) {}
 
-    // The area of a bounded cell at precision prec, or nothing when the pass
-    // could not certify it within the tolerance.
-    std::optional<Ball> area(const VoronoiCell& cell, long prec) {
+    // The measures of a bounded cell at precision prec, or nothing when the
+    // pass could not certify its area within the tolerance. Pass k asks Arb
+    // for 6k more bits than the first.
+    std::optional<CellArea> measure(const VoronoiCell& cell, long prec, int pass) {
         const Ellipse& site = sites_[cell.site];
-        Ball total = site_area(site, prec);
+        CellArea r;
+        r.site_area = site_area(site, prec);
         const std::size_t m = cell.edges.size();
-        // Vertex angles, lifted so that they increase counter-clockwise
-        // (docs/DESIGN.md §10: consecutive differences in [0, 2 pi), sum 2 pi).
+        const std::vector<Ball> lifted = lifted_vertex_angles(cell, prec);
+
+        // The cell is at least the site: its length unit and the tolerance's scale.
+        const double area_floor = r.site_area.mid_double();
+        const long unit = std::lround(0.5 * std::log2(area_floor));  // L = 2^unit, about sqrt(area)
+        const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
+        Mag tol;
+        // Per edge and pair an eighth of the tolerance's share: with the ends'
+        // terms the area's width stays well below T * area.
+        mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
+        acb_calc_integrate_opt_t options;
+        acb_calc_integrate_opt_init(options);
+        // 30 bits beyond the goal, in whole limbs.
+        const long point_precision = 64 * ((goal + 30 + 63) / 64);
+        MeasureSums sums;
+        for (std::size_t k = 0; k < m; ++k) {
+            NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
+            NormalRayBisector point_bisector(site, sites_[cell.edges[k].neighbor]);
+            std::map<std::string, std::optional<NormalRayBisector::Densities>> cache;
+            ComplexBall a, b;
+            arb_get_mid_arb(a.real(), lifted[k].get());
+            arb_get_mid_arb(b.real(), lifted[k + 1].get());
+            for (int pair = 0; pair < kMeasurePairs; ++pair) {
+                EdgeIntegrand integrand{&bisector, &point_bisector, point_precision, pair, unit, &cache};
+                ComplexBall integral;
+                acb_calc_integrate(integral.get(), edge_integrand, &integrand, a.get(), b.get(), goal, tol.get(),
+                                   options, prec);
+                if (!acb_is_finite(integral.get())) {
+                    if (pair == 0) return std::nullopt;
+                    acb_indeterminate(integral.get());
+                }
+                acb_add(sums.pairs[pair].get(), sums.pairs[pair].get(), integral.get(), prec);
+            }
+            // The pieces between the certified end angles and their midpoints:
+            // at most the radius times a bound of the density on the ball.
+            for (const Ball* end : {&lifted[k], &lifted[k + 1]}) {
+                ComplexBall theta(*end);
+                NormalRayBisector::Densities d;
+                if (!bisector.densities(theta, prec, d)) return std::nullopt;
+                Mag radius;
+                mag_set(radius.get(), arb_radref(end->get()));
+                for (int pair = 0; pair < kMeasurePairs; ++pair) {
+                    ComplexBall v;
+                    pair_value(d, pair, unit, prec, v.get());
+                    Mag bound;
+                    acb_get_mag(bound.get(), v.get());
+                    mag_mul(bound.get(), bound.get(), radius.get());
+                    acb_add_error_mag(sums.pairs[pair].get(), bound.get());
+                }
+            }
+        }
+        arb_add(r.area.get(), r.site_area.get(), acb_realref(sums.pairs[0].get()), prec);
+        Arf lo, width;
+        arb_get_lbound_arf(lo.get(), r.area.get(), prec);
+        arf_set_mag(width.get(), arb_radref(r.area.get()));
+        const double w = 2 * arf_get_d(width.get(), ARF_RND_UP), l = arf_get_d(lo.get(), ARF_RND_DOWN);
+        if (!(l > 0) || !(w <= tolerance_ * l)) return std::nullopt;
+        finish_moments(site, sums, unit, prec, r);
+        return r;
+    }
+
+    static Ball site_area(const Ellipse& e, long prec) {
+        Ball area, a(e.a(), prec), b(e.b(), prec);
+        arb_const_pi(area.get(), prec);
+        arb_mul(area.get(), area.get(), a.get(), prec);
+        arb_mul(area.get(), area.get(), b.get(), prec);
+        return area;
+    }
+
+private:
+    // The vertex angles of the cell on its site, lifted so that they increase
+    // counter-clockwise (docs/DESIGN.md §10: consecutive differences in
+    // [0, 2 pi), sum 2 pi); m + 1 of them, the last one turn after the first.
+    std::vector<Ball> lifted_vertex_angles(const VoronoiCell& cell, long prec) {
+        const std::size_t m = cell.edges.size();
         std::vector<Ball> lifted(m + 1);
         Ball two_pi;
         arb_const_pi(two_pi.get(), prec);
@@ -105,53 +233,52 @@ public:
         // which must be one turn (then each difference is its true value).
         if (std::lround((lifted[m].mid_double() - lifted[0].mid_double()) / kTwoPi) != 1)
             throw Error("cell_areas: the vertex angles of cell " + std::to_string(cell.site) + " do not make one turn");
+        return lifted;
+    }
 
-        const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 10;
-        Mag tol;
-        // Arb holds each subinterval to the absolute tolerance (or the relative
-        // goal): a few hundred of them must still add up to far below T * area,
-        // and the area is at least the site's, pi a b.
-        mag_set_d(tol.get(), std::ldexp(tolerance_ * total.mid_double() / static_cast<double>(m), -16));
-        acb_calc_integrate_opt_t options;
-        acb_calc_integrate_opt_init(options);
-        for (std::size_t k = 0; k < m; ++k) {
-            NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
-            ComplexBall a, b, integral;
-            arb_get_mid_arb(a.real(), lifted[k].get());
-            arb_get_mid_arb(b.real(), lifted[k + 1].get());
-            acb_calc_integrate(integral.get(), area_density_function, &bisector, a.get(), b.get(), goal, tol.get(),
-                               options, prec);
-            if (!arb_is_finite(integral.real())) return std::nullopt;
-            arb_add(total.get(), total.get(), integral.real(), prec);
-            // The pieces between the certified end angles and their midpoints:
-            // at most the radius times a bound of the density on the ball.
-            for (const Ball* end : {&lifted[k], &lifted[k + 1]}) {
-                ComplexBall theta(*end), density;
-                if (!bisector.area_density(theta, prec, density)) return std::nullopt;
-                Mag bound, radius;
-                acb_get_mag(bound.get(), density.get());
-                mag_set(radius.get(), arb_radref(end->get()));
-                mag_mul(bound.get(), bound.get(), radius.get());
-                arb_add_error_mag(total.get(), bound.get());
-            }
+    // Perimeter, centroid and central second moments from the sums (about
+    // the site's center C; the site adds pi a b / 4 R diag(a^2, b^2) R^T to
+    // the second moments and nothing to the first).
+    static void finish_moments(const Ellipse& site, const MeasureSums& sums, long unit, long prec, CellArea& r) {
+        const Ball& area = r.area;
+        arb_mul_2exp_si(r.perimeter.get(), acb_imagref(sums.pairs[0].get()), -unit);
+        Ball first[2];
+        arb_mul_2exp_si(first[0].get(), acb_realref(sums.pairs[1].get()), unit);
+        arb_mul_2exp_si(first[1].get(), acb_imagref(sums.pairs[1].get()), unit);
+        Ball second[3];
+        arb_mul_2exp_si(second[0].get(), acb_realref(sums.pairs[2].get()), 2 * unit);
+        arb_mul_2exp_si(second[1].get(), acb_realref(sums.pairs[3].get()), 2 * unit);
+        arb_mul_2exp_si(second[2].get(), acb_imagref(sums.pairs[2].get()), 2 * unit);
+        Ball a2(site.a(), prec), b2(site.b(), prec), c(site.cos_rotation(), prec), s(site.sin_rotation(), prec), t, u;
+        arb_sqr(a2.get(), a2.get(), prec);
+        arb_sqr(b2.get(), b2.get(), prec);
+        Ball quarter_area;  // pi a b / 4
+        arb_mul_2exp_si(quarter_area.get(), r.site_area.get(), -2);
+        const Ball* own_axes[3][2] = {{&c, &c}, {&c, &s}, {&s, &s}};  // a^2 u_i u_j + b^2 v_i v_j, u = (c, s), v = (-s, c)
+        const Ball* other_axes[3][2] = {{&s, &s}, {&s, &c}, {&c, &c}};
+        for (int k = 0; k < 3; ++k) {
+            arb_mul(t.get(), own_axes[k][0]->get(), own_axes[k][1]->get(), prec);
+            arb_mul(t.get(), t.get(), a2.get(), prec);
+            arb_mul(u.get(), other_axes[k][0]->get(), other_axes[k][1]->get(), prec);
+            arb_mul(u.get(), u.get(), b2.get(), prec);
+            if (k == 1) arb_neg(u.get(), u.get());
+            arb_add(t.get(), t.get(), u.get(), prec);
+            arb_addmul(second[k].get(), t.get(), quarter_area.get(), prec);
         }
-        Arf lo, width;
-        arb_get_lbound_arf(lo.get(), total.get(), prec);
-        arf_set_mag(width.get(), arb_radref(total.get()));
-        const double w = 2 * arf_get_d(width.get(), ARF_RND_UP), l = arf_get_d(lo.get(), ARF_RND_DOWN);
-        if (!(l > 0) || !(w <= tolerance_ * l)) return std::nullopt;
-        return total;
+        // Centroid C + first / area; central moments second - first first^T / area.
+        Ball center[2] = {Ball(site.xc(), prec), Ball(site.yc(), prec)};
+        Ball d[2];
+        for (int i = 0; i < 2; ++i) {
+            arb_div(d[i].get(), first[i].get(), area.get(), prec);
+            arb_add(r.centroid[i].get(), center[i].get(), d[i].get(), prec);
+        }
+        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+        for (int k = 0; k < 3; ++k) {
+            arb_mul(t.get(), first[pairs[k][0]].get(), d[pairs[k][1]].get(), prec);
+            arb_sub(r.second_moments[k].get(), second[k].get(), t.get(), prec);
+        }
     }
 
-    static Ball site_area(const Ellipse& e, long prec) {
-        Ball area, a(e.a(), prec), b(e.b(), prec);
-        arb_const_pi(area.get(), prec);
-        arb_mul(area.get(), area.get(), a.get(), prec);
-        arb_mul(area.get(), area.get(), b.get(), prec);
-        return area;
-    }
-
-private:
     // The tangency angle on `site` of the Voronoi circle of face `face`, its
     // radius about 2^(24 - prec) (the certified circle refined to prec - 24 bits).
     Ball vertex_angle(long face, SiteId site, long prec) {
@@ -194,32 +321,48 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
     CellAreaSolver solver(graph, sites, T);
     std::vector<CellArea> out(cells.size());
     const long start = cell_area_precision(T);
-    for (const VoronoiCell& cell : cells) {
-        CellArea& r = out[cell.site];
-        r.site = cell.site;
+    std::vector<SiteId> which = options.only;
+    if (which.empty())
+        for (SiteId s = 0; s < cells.size(); ++s) which.push_back(s);
+    std::size_t done = 0;
+    for (SiteId s : which) {
+        if (options.progress && done) options.progress(done, which.size());
+        ++done;
+        const VoronoiCell& cell = cells.at(s);
+        CellArea& r = out[s];
+        r.site = s;
         r.visible = cell.visible;
         r.bounded = cell.bounded();
-        r.site_area = CellAreaSolver::site_area(sites[cell.site], start);
+        r.site_area = CellAreaSolver::site_area(sites[s], start);
+        for (Ball* b : {&r.perimeter, &r.centroid[0], &r.centroid[1], &r.second_moments[0], &r.second_moments[1],
+                        &r.second_moments[2]})
+            arb_indeterminate(b->get());
         if (!cell.visible) {
             arb_zero(r.area.get());
+            arb_zero(r.perimeter.get());
             continue;
         }
         if (!r.bounded) {
             arb_pos_inf(r.area.get());
+            arb_pos_inf(r.perimeter.get());
             continue;
         }
         // Each pass doubles the precision: the vertex angles, the certificates
         // and the quadrature all tighten with it.
-        for (long prec = start; !r.precision; prec *= 2) {
+        for (long prec = start, pass = 0; !r.precision; prec *= 2, ++pass) {
             if (prec > 16 * start)
-                throw Error("cell_areas: the area of cell " + std::to_string(cell.site) +
+                throw Error("cell_areas: the area of cell " + std::to_string(s) +
                             " could not be certified to the tolerance below " + std::to_string(prec / 2) + " bits");
-            if (std::optional<Ball> area = solver.area(cell, prec)) {
-                r.area = *area;
-                r.precision = prec;
+            if (std::optional<CellArea> m = solver.measure(cell, prec, static_cast<int>(pass))) {
+                m->site = s;
+                m->visible = true;
+                m->bounded = true;
+                m->precision = prec;
+                r = std::move(*m);
             }
         }
     }
+    if (options.progress) options.progress(which.size(), which.size());
     return out;
 }
 

@@ -1,21 +1,33 @@
-// Certified areas of the Voronoi cells of disjoint (and nested) sites in the
-// free plane (docs/DESIGN.md §10): each area an Arb ball that provably
-// contains the exact area of the cell, the site's own area included (the
-// set-Voronoi convention: the cells tile the plane).
+// Certified measures of the Voronoi cells of disjoint (and nested) sites in
+// the free plane (docs/DESIGN.md §10): area, perimeter, centroid and second
+// moments, each an Arb ball that provably contains the exact value; the area
+// includes the site's own (the set-Voronoi convention: the cells tile the
+// plane).
 #pragma once
 
 #include "cells/voronoi_cells.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
 
+#include <array>
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace ellvor {
 
 struct CellAreaOptions {
     // Every finite area is returned with hi - lo <= tolerance * lo, in (0, 1];
-    // the working precision grows with -log2(tolerance).
+    // the working precision grows with -log2(tolerance). The other measures
+    // are integrated to the same relative accuracy in the cell's own units
+    // (length sqrt(area)), which is asked of Arb but not checked: their balls
+    // are proofs at whatever width they come out.
     double tolerance = 1e-9;
+    // The sites whose cells are measured (the others are left at their
+    // defaults); empty: every site.
+    std::vector<SiteId> only;
+    // Called after each measured cell (done, total); may be empty.
+    std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 struct CellArea {
@@ -24,6 +36,12 @@ struct CellArea {
     bool bounded = false;    // false: the area is +infinity (a vertex at infinity), or 0 (hidden)
     Ball area;               // [lo, hi]; exactly 0 for a hidden site; +inf for an unbounded cell
     Ball site_area;          // pi a b
+    // Bounded cells only (else left indeterminate): the length of the
+    // boundary, the centroid, and the second moments about the centroid
+    // (integrals of (x - cx)^2, (x - cx)(y - cy), (y - cy)^2).
+    Ball perimeter;
+    std::array<Ball, 2> centroid;
+    std::array<Ball, 3> second_moments;
     long precision = 0;      // Arb precision of the pass that met the tolerance (0: none was needed)
 };
 

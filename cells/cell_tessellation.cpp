@@ -168,9 +168,10 @@ public:
         return reach;
     }
 
-    std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids) {
+    // The vertices to at least the precision of the areas' end angles (cell_area.cpp).
+    std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids, long area_prec) {
         std::vector<CellVertex> out(vertex_ids.size());
-        const long prec = cover_.prec + 24;
+        const long prec = std::max(cover_.prec + 24, area_prec);
         for (const auto& [face, id] : vertex_ids) {
             BallPoint v = angles_.vertex(face, prec);
             out[static_cast<std::size_t>(id)] = {v.x, v.y};
@@ -200,12 +201,20 @@ private:
 };
 
 void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellOptions& options, CellTessellation& out) {
-    const std::vector<CellArea> areas = cell_areas(graph, sites.sites, {options.tolerance});
+    CellAreaOptions o;
+    o.tolerance = options.tolerance;
+    // Only the originals' cells: the mirrors' and copies' are not wanted.
+    for (SiteId s = 0; s < sites.originals; ++s) o.only.push_back(s);
+    o.progress = options.progress;
+    const std::vector<CellArea> areas = cell_areas(graph, sites.sites, o);
     for (SiteId s = 0; s < sites.originals; ++s) {
         Cell& c = out.cells[s];
         c.area = areas[s].area;
         c.site_area = areas[s].site_area;
         c.precision = areas[s].precision;
+        c.perimeter = areas[s].perimeter;
+        c.centroid = areas[s].centroid;
+        c.second_moments = areas[s].second_moments;
     }
 }
 
@@ -243,7 +252,6 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             reach[s] = cells->describe(s, c, vertex_ids);
             if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
-            if (options.progress) options.progress(s + 1, sites.size());
         }
     };
     switch (domain.kind) {
@@ -280,13 +288,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
         }
     }
     fill_areas(*plane, cells->graph(), options, out);
-    out.vertices = cells->vertices(vertex_ids);
-    for (Cell& c : out.cells) {
-        // Not computed yet: an indeterminate ball claims nothing.
-        for (Ball* b : {&c.perimeter, &c.centroid[0], &c.centroid[1], &c.second_moments[0], &c.second_moments[1],
-                        &c.second_moments[2]})
-            arb_indeterminate(b->get());
-    }
+    out.vertices = cells->vertices(vertex_ids, cell_area_precision(options.tolerance));
     return out;
 }
 

@@ -27,9 +27,7 @@ struct CellOptions {
     // The rings' certified Hausdorff distance to the cell boundaries; 0: 1e-3
     // of the median site size (its larger semi-axis).
     double boundary_tolerance = 0;
-    // Called after each cell's sides and ring (done, total), which come before
-    // the areas (cell_areas has no per-cell hook yet); may be empty; periodic
-    // boxes may count again with one ring of copies more.
+    // Called after each cell's measures (done, total); may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
 

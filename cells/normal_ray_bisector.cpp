@@ -4,13 +4,16 @@
 #include <cmath>
 
 namespace ellvor {
-namespace {
 
 // A site's boundary at a complex angle: the point, the unnormalized outward
 // normal n~, the derivatives of both in the angle, N^2 = |n~|^2.
-struct Boundary {
+struct NormalRayBisector::Boundary {
     ComplexBall x, y, nx, ny, dx, dy, dnx, dny, n2;
 };
+
+namespace {
+
+using Boundary = NormalRayBisector::Boundary;
 
 // (lx, ly) in the site's frame to the plane: (lx cos - ly sin, lx sin + ly cos).
 void rotate(const SiteBalls& e, const ComplexBall& lx, const ComplexBall& ly, long prec, ComplexBall& x,
@@ -94,62 +97,6 @@ void foot_equation(const SiteBalls& q, const Boundary& bq, const ComplexBall& vx
     acb_sub(df->get(), df->get(), t.get(), prec);
 }
 
-// A Krawczyk step in one unknown: x = x0 - c f(x0) + (1 - c f'(X)) (X - x0)
-// inside the interior of X? Then every equation of the family has exactly
-// one root in X, and it lies in K.
-bool contracts(const ComplexBall& x0, const ComplexBall& X, const ComplexBall& c, const ComplexBall& f0,
-               const ComplexBall& dfX, long prec, ComplexBall& K) {
-    ComplexBall t, d;
-    acb_mul(t.get(), c.get(), dfX.get(), prec);
-    acb_sub_ui(t.get(), t.get(), 1, prec);
-    acb_neg(t.get(), t.get());
-    acb_sub(d.get(), X.get(), x0.get(), prec);
-    acb_mul(t.get(), t.get(), d.get(), prec);
-    acb_mul(d.get(), c.get(), f0.get(), prec);
-    acb_sub(K.get(), x0.get(), d.get(), prec);
-    acb_add(K.get(), K.get(), t.get(), prec);
-    return acb_contains_interior(X.get(), K.get());
-}
-
-// The foot point of every V in the box (vx, vy) on q near the real angle
-// phi0: its angle Phi (unique in a box around phi0) and q's boundary there,
-// certified; false if not. With Re (V - Q) . n~q > 0 over the box, Q is the
-// nearest point of q to V (q convex, V on its outward normal).
-bool foot_point(const SiteBalls& q, const ComplexBall& vx, const ComplexBall& vy, const ComplexBall& phi0, long prec,
-                ComplexBall& Phi, Boundary& bq) {
-    Boundary b0;
-    boundary_at(q, phi0, prec, b0);
-    ComplexBall f0, df0, c;
-    foot_equation(q, b0, vx, vy, prec, f0, &df0);
-    acb_get_mid(c.get(), df0.get());
-    if (acb_contains_zero(c.get())) return false;
-    acb_inv(c.get(), c.get(), prec);
-    acb_get_mid(c.get(), c.get());
-    ComplexBall step, K, df;
-    acb_mul(step.get(), c.get(), f0.get(), prec);
-    double r = 2 * magnitude(step) + std::ldexp(1.0, static_cast<int>(std::max(-1000L, 8 - prec)));
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        if (!std::isfinite(r) || r > 0.5) return false;
-        const ComplexBall X = square(phi0, r);
-        boundary_at(q, X, prec, bq);
-        ComplexBall f;
-        foot_equation(q, bq, vx, vy, prec, f, &df);
-        if (contracts(phi0, X, c, f0, df, prec, K)) {
-            Phi = K;
-            boundary_at(q, Phi, prec, bq);
-            ComplexBall dx, dy, side;
-            acb_sub(dx.get(), vx.get(), bq.x.get(), prec);
-            acb_sub(dy.get(), vy.get(), bq.y.get(), prec);
-            dot(dx, dy, bq.nx, bq.ny, prec, side);
-            return arb_is_positive(side.real());
-        }
-        ComplexBall d;
-        acb_sub(d.get(), K.get(), phi0.get(), prec);
-        r = std::max(2 * r, 2 * magnitude(d));
-    }
-    return false;
-}
-
 // Newton on the foot point of a point V (midpoints only).
 void foot_newton(const SiteBalls& q, const ComplexBall& vx, const ComplexBall& vy, int steps, long prec, ComplexBall& phi) {
     Boundary b;
@@ -201,6 +148,104 @@ void ray_point(const Boundary& bp, const ComplexBall& s, long prec, ComplexBall&
     acb_add(vy.get(), vy.get(), bp.y.get(), prec);
 }
 
+
+// A 2 x 2 complex matrix.
+struct Matrix2 {
+    ComplexBall m[2][2];
+    // out = this x
+    void apply(const ComplexBall x[2], long prec, ComplexBall out[2]) const {
+        ComplexBall t;
+        for (int i = 0; i < 2; ++i) {
+            acb_mul(out[i].get(), m[i][0].get(), x[0].get(), prec);
+            acb_mul(t.get(), m[i][1].get(), x[1].get(), prec);
+            acb_add(out[i].get(), out[i].get(), t.get(), prec);
+        }
+    }
+    // out = this b
+    void times(const Matrix2& b, long prec, Matrix2& out) const {
+        ComplexBall t;
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+                acb_mul(out.m[i][j].get(), m[i][0].get(), b.m[0][j].get(), prec);
+                acb_mul(t.get(), m[i][1].get(), b.m[1][j].get(), prec);
+                acb_add(out.m[i][j].get(), out.m[i][j].get(), t.get(), prec);
+            }
+    }
+};
+
+// The bisector system in x = (s, phi) for a theta (p's boundary bp there)
+// and q's boundary bq at phi:
+//     F0 = (V - Q) . Q'                    (Q is a foot point of V on q)
+//     F1 = |P - Q|^2 + 2 s (P - Q) . n~    (= |V - Q|^2 - s^2 N^2)
+// with V = P + s n~; its Jacobian in (s, phi) and its derivative in theta:
+//     J = [ n~ . Q'         -|Q'|^2 - (V - Q) . (Q - Cq) ]
+//         [ 2 (P - Q) . n~  -2 F0                        ]
+//     F_theta = ( (P' + s n~') . Q',  2 (P - Q) . (P' + s n~') ).
+// Evaluated over boxes, each entry contains its values at every point.
+struct BisectorSystem {
+    ComplexBall F[2], F_theta[2];
+    Matrix2 J;
+
+    void evaluate(const SiteBalls& q, const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec) {
+        ComplexBall vx, vy, dx, dy, ex, ey, wx, wy, cx, cy, t;
+        ray_point(bp, s, prec, vx, vy);
+        acb_sub(dx.get(), vx.get(), bq.x.get(), prec);  // V - Q
+        acb_sub(dy.get(), vy.get(), bq.y.get(), prec);
+        acb_sub(ex.get(), bp.x.get(), bq.x.get(), prec);  // P - Q
+        acb_sub(ey.get(), bp.y.get(), bq.y.get(), prec);
+        dot(dx, dy, bq.dx, bq.dy, prec, F[0]);
+        ComplexBall e_n;
+        dot(ex, ey, bp.nx, bp.ny, prec, e_n);
+        dot(ex, ey, ex, ey, prec, F[1]);
+        acb_mul(t.get(), s.get(), e_n.get(), prec);
+        acb_mul_2exp_si(t.get(), t.get(), 1);
+        acb_add(F[1].get(), F[1].get(), t.get(), prec);
+
+        dot(bp.nx, bp.ny, bq.dx, bq.dy, prec, J.m[0][0]);
+        dot(bq.dx, bq.dy, bq.dx, bq.dy, prec, J.m[0][1]);
+        acb_neg(J.m[0][1].get(), J.m[0][1].get());
+        acb_sub_arb(cx.get(), bq.x.get(), q.xc.get(), prec);
+        acb_sub_arb(cy.get(), bq.y.get(), q.yc.get(), prec);
+        dot(dx, dy, cx, cy, prec, t);
+        acb_sub(J.m[0][1].get(), J.m[0][1].get(), t.get(), prec);
+        acb_mul_2exp_si(J.m[1][0].get(), e_n.get(), 1);
+        acb_mul_2exp_si(J.m[1][1].get(), F[0].get(), 1);
+        acb_neg(J.m[1][1].get(), J.m[1][1].get());
+
+        // W = P' + s n~'
+        acb_mul(wx.get(), s.get(), bp.dnx.get(), prec);
+        acb_add(wx.get(), wx.get(), bp.dx.get(), prec);
+        acb_mul(wy.get(), s.get(), bp.dny.get(), prec);
+        acb_add(wy.get(), wy.get(), bp.dy.get(), prec);
+        dot(wx, wy, bq.dx, bq.dy, prec, F_theta[0]);
+        dot(ex, ey, wx, wy, prec, F_theta[1]);
+        acb_mul_2exp_si(F_theta[1].get(), F_theta[1].get(), 1);
+    }
+
+    // C = (mid J)^-1, a midpoint matrix; false if mid J is singular.
+    bool inverse_of_mid_jacobian(long prec, Matrix2& C) const {
+        ComplexBall a, b, c, d, det, t;
+        acb_get_mid(a.get(), J.m[0][0].get());
+        acb_get_mid(b.get(), J.m[0][1].get());
+        acb_get_mid(c.get(), J.m[1][0].get());
+        acb_get_mid(d.get(), J.m[1][1].get());
+        acb_mul(det.get(), a.get(), d.get(), prec);
+        acb_mul(t.get(), b.get(), c.get(), prec);
+        acb_sub(det.get(), det.get(), t.get(), prec);
+        if (acb_contains_zero(det.get())) return false;
+        acb_inv(det.get(), det.get(), prec);
+        acb_mul(C.m[0][0].get(), d.get(), det.get(), prec);
+        acb_mul(C.m[0][1].get(), b.get(), det.get(), prec);
+        acb_neg(C.m[0][1].get(), C.m[0][1].get());
+        acb_mul(C.m[1][0].get(), c.get(), det.get(), prec);
+        acb_neg(C.m[1][0].get(), C.m[1][0].get());
+        acb_mul(C.m[1][1].get(), a.get(), det.get(), prec);
+        for (auto& row : C.m)
+            for (ComplexBall& e : row) acb_get_mid(e.get(), e.get());
+        return true;
+    }
+};
+
 }  // namespace
 
 SiteBalls::SiteBalls(const Ellipse& e, long prec)
@@ -221,6 +266,11 @@ void NormalRayBisector::set_precision(long prec) {
 }
 
 bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out) {
+    return solve(theta, prec, s_out, nullptr, nullptr, nullptr);
+}
+
+bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out, ComplexBall* tie_ds,
+                              ComplexBall* tie_dtheta, Boundary* p_boundary) {
     set_precision(prec);
     // The start: the bisector point on the real normal ray at the middle of
     // the ball, in doubles.
@@ -250,7 +300,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     double previous = INFINITY;
     for (int k = 0; k < 60; ++k) {
         ray_point(bp, s0, prec, vx, vy);
-        foot_newton(qb_, vx, vy, 2, prec, phi0);
+        foot_newton(qb_, vx, vy, 1, prec, phi0);
         boundary_at(qb_, phi0, prec, bq);
         tie(bp, bq, s0, prec, &g, &dg, nullptr);
         acb_div(step.get(), g.get(), dg.get(), prec);
@@ -261,44 +311,95 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         previous = size;
     }
     ray_point(bp, s0, prec, vx, vy);
-    foot_newton(qb_, vx, vy, 4, prec, phi0);
+    foot_newton(qb_, vx, vy, 1, prec, phi0);
     boundary_at(qb_, phi0, prec, bq);
-    tie(bp, bq, s0, prec, &g, &dg, nullptr);
-    ComplexBall c;
-    acb_get_mid(c.get(), dg.get());
-    if (acb_contains_zero(c.get())) return false;
-    acb_inv(c.get(), c.get(), prec);
-    acb_get_mid(c.get(), c.get());
 
-    // g(s0, theta) over the theta-ball in the mean-value form around the
-    // middle: g(s0, mid) + dg/dtheta (Theta - mid), the derivative with the
-    // foot points of all V(s0, Theta) (certified by foot_point).
-    ComplexBall g0, Phi, K, dgt, dtheta;
-    tie(bp, bq, s0, prec, &g0, nullptr, nullptr);  // at the middle; bp, bq are there
+    // The system in x = (s, phi) with theta as a parameter, at the middle.
+    BisectorSystem at_mid;
+    at_mid.evaluate(qb_, bp, bq, s0, prec);
+    Matrix2 C;  // the midpoint inverse of the Jacobian
+    if (!at_mid.inverse_of_mid_jacobian(prec, C)) return false;
+    // The root moves with theta at about x' = -J^-1 F_theta: the unknown is
+    // the remainder y in x = x0 + x' (theta - mid) + y, so that the box of y
+    // stays small over a ball on which x itself varies a lot (any slope is
+    // correct; a good one makes the certificate hold on wider balls).
+    ComplexBall slope[2];
+    C.apply(at_mid.F_theta, prec, slope);
+    for (ComplexBall& d : slope) {
+        acb_neg(d.get(), d.get());
+        acb_get_mid(d.get(), d.get());
+    }
+    ComplexBall dtheta, x_lin[2], t;
+    acb_sub(dtheta.get(), theta.get(), mid.get(), prec);
+    const ComplexBall* x0[2] = {&s0, &phi0};
+    for (int i = 0; i < 2; ++i) {
+        acb_mul(x_lin[i].get(), slope[i].get(), dtheta.get(), prec);
+        acb_add(x_lin[i].get(), x_lin[i].get(), x0[i]->get(), prec);
+    }
+    // H(0, theta) = F(x_lin(theta), theta) over the theta-ball in the
+    // mean-value form around the middle: F(x0, mid) + H'(Theta) (Theta - mid),
+    // H' = J x' + F_theta over (x_lin(Theta), Theta).
     Boundary bpT;
     boundary_at(pb_, theta, prec, bpT);
-    ray_point(bpT, s0, prec, vx, vy);
-    if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
-    tie(bpT, bq, s0, prec, nullptr, nullptr, &dgt);
-    acb_sub(dtheta.get(), theta.get(), mid.get(), prec);
-    acb_mul(dgt.get(), dgt.get(), dtheta.get(), prec);
-    acb_add(g0.get(), g0.get(), dgt.get(), prec);
-    acb_mul(step.get(), c.get(), g0.get(), prec);
-    double r = 2 * magnitude(step) + std::ldexp(1.0 + magnitude(s0), static_cast<int>(std::max(-1000L, 8 - prec)));
+    boundary_at(qb_, x_lin[1], prec, bq);
+    BisectorSystem on_line;
+    on_line.evaluate(qb_, bpT, bq, x_lin[0], prec);
+    ComplexBall H[2];
+    for (int i = 0; i < 2; ++i) {
+        ComplexBall& h = H[i];
+        acb_mul(h.get(), on_line.J.m[i][0].get(), slope[0].get(), prec);
+        acb_mul(t.get(), on_line.J.m[i][1].get(), slope[1].get(), prec);
+        acb_add(h.get(), h.get(), t.get(), prec);
+        acb_add(h.get(), h.get(), on_line.F_theta[i].get(), prec);
+        acb_mul(h.get(), h.get(), dtheta.get(), prec);
+        acb_add(h.get(), h.get(), at_mid.F[i].get(), prec);
+    }
+    ComplexBall CH[2];
+    C.apply(H, prec, CH);
+    const double floor_s = std::ldexp(1.0 + magnitude(s0), static_cast<int>(std::max(-1000L, 8 - prec)));
+    const double floor_phi = std::ldexp(1.0 + magnitude(phi0), static_cast<int>(std::max(-1000L, 8 - prec)));
+    double r[2] = {2 * magnitude(CH[0]) + floor_s, 2 * magnitude(CH[1]) + floor_phi};
+    const ComplexBall zero;
     for (int attempt = 0; attempt < 3; ++attempt) {
-        if (!std::isfinite(r)) return false;
-        const ComplexBall S = square(s0, r);
-        if (!arb_is_positive(S.real())) return false;  // Re s > 0 (see the header)
-        ray_point(bpT, S, prec, vx, vy);
-        if (!foot_point(qb_, vx, vy, phi0, prec, Phi, bq)) return false;
-        tie(bpT, bq, S, prec, nullptr, &dg, nullptr);
-        if (contracts(s0, S, c, g0, dg, prec, K)) {
-            s_out = K;
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return false;
+        ComplexBall Y[2] = {square(zero, r[0]), square(zero, r[1])}, X[2];
+        for (int i = 0; i < 2; ++i) acb_add(X[i].get(), x_lin[i].get(), Y[i].get(), prec);
+        if (!arb_is_positive(X[0].real())) return false;  // Re s > 0 (see the header)
+        boundary_at(qb_, X[1], prec, bq);
+        BisectorSystem on_box;
+        on_box.evaluate(qb_, bpT, bq, X[0], prec);
+        // K = -C H + (I - C J(X)) Y inside the interior of Y?
+        Matrix2 CJ;
+        C.times(on_box.J, prec, CJ);
+        ComplexBall K[2], u;
+        bool inside = true;
+        for (int i = 0; i < 2; ++i) {
+            acb_neg(K[i].get(), CH[i].get());
+            for (int j = 0; j < 2; ++j) {
+                acb_neg(u.get(), CJ.m[i][j].get());
+                if (i == j) acb_add_ui(u.get(), u.get(), 1, prec);
+                acb_mul(u.get(), u.get(), Y[j].get(), prec);
+                acb_add(K[i].get(), K[i].get(), u.get(), prec);
+            }
+            inside = inside && acb_contains_interior(Y[i].get(), K[i].get());
+        }
+        if (inside) {
+            // One root in X, holomorphic in theta; Q is q's nearest point to V
+            // when V - Q points out of q (Re (V - Q) . n~q > 0, see the header).
+            ComplexBall side;
+            ray_point(bpT, X[0], prec, vx, vy);
+            acb_sub(vx.get(), vx.get(), bq.x.get(), prec);
+            acb_sub(vy.get(), vy.get(), bq.y.get(), prec);
+            dot(vx, vy, bq.nx, bq.ny, prec, side);
+            if (!arb_is_positive(side.real())) return false;
+            acb_add(s_out.get(), x_lin[0].get(), K[0].get(), prec);
+            // The derivatives over the box X contain their values at the root.
+            if (tie_ds) *tie_ds = on_box.J.m[1][0];
+            if (tie_dtheta) *tie_dtheta = on_box.F_theta[1];
+            if (p_boundary) *p_boundary = std::move(bpT);
             return true;
         }
-        ComplexBall d;
-        acb_sub(d.get(), K.get(), s0.get(), prec);
-        r = std::max(2 * r, 2 * magnitude(d));
+        for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));
     }
     return false;
 }
@@ -321,6 +422,67 @@ bool NormalRayBisector::area_density(const ComplexBall& theta, long prec, Comple
     acb_mul_2exp_si(t.get(), t.get(), -1);
     acb_add(density.get(), density.get(), t.get(), prec);
     return true;
+}
+
+bool NormalRayBisector::densities(const ComplexBall& theta, long prec, Densities& out) {
+    ComplexBall s, g_s, g_theta;
+    Boundary bp;
+    if (!solve(theta, prec, s, &g_s, &g_theta, &bp)) return false;
+    ComplexBall px, py, ab, t, u;
+    acb_sub_arb(px.get(), bp.x.get(), pb_.xc.get(), prec);
+    acb_sub_arb(py.get(), bp.y.get(), pb_.yc.get(), prec);
+    acb_set_arb(ab.get(), pb_.a.get());
+    acb_mul_arb(ab.get(), ab.get(), pb_.b.get(), prec);
+    // m_k = N^2 s^(k+1) / (k+1) + a b s^(k+2) / (k+2), k = 0, 1, 2.
+    ComplexBall m[3], power(s);  // power = s^(k+1)
+    for (int k = 0; k < 3; ++k) {
+        acb_mul(m[k].get(), bp.n2.get(), power.get(), prec);
+        acb_div_ui(m[k].get(), m[k].get(), static_cast<ulong>(k + 1), prec);
+        acb_mul(power.get(), power.get(), s.get(), prec);
+        acb_mul(t.get(), ab.get(), power.get(), prec);
+        acb_div_ui(t.get(), t.get(), static_cast<ulong>(k + 2), prec);
+        acb_add(m[k].get(), m[k].get(), t.get(), prec);
+    }
+    out.area = m[0];
+    const ComplexBall* r[2] = {&px, &py};
+    const ComplexBall* n[2] = {&bp.nx, &bp.ny};
+    for (int i = 0; i < 2; ++i) {
+        acb_mul(out.first[i].get(), r[i]->get(), m[0].get(), prec);
+        acb_mul(t.get(), n[i]->get(), m[1].get(), prec);
+        acb_add(out.first[i].get(), out.first[i].get(), t.get(), prec);
+    }
+    // (r + sigma n)_i (r + sigma n)_j = r_i r_j + sigma (r_i n_j + n_i r_j) + sigma^2 n_i n_j.
+    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+    for (int k = 0; k < 3; ++k) {
+        const int i = pairs[k][0], j = pairs[k][1];
+        ComplexBall& e = out.second[k];
+        acb_mul(e.get(), r[i]->get(), r[j]->get(), prec);
+        acb_mul(e.get(), e.get(), m[0].get(), prec);
+        acb_mul(t.get(), r[i]->get(), n[j]->get(), prec);
+        acb_mul(u.get(), n[i]->get(), r[j]->get(), prec);
+        acb_add(t.get(), t.get(), u.get(), prec);
+        acb_mul(t.get(), t.get(), m[1].get(), prec);
+        acb_add(e.get(), e.get(), t.get(), prec);
+        acb_mul(t.get(), n[i]->get(), n[j]->get(), prec);
+        acb_mul(t.get(), t.get(), m[2].get(), prec);
+        acb_add(e.get(), e.get(), t.get(), prec);
+    }
+    // s' = -g_theta / g_s (g_theta and g_s carry the factor 2 alike).
+    ComplexBall ds, vx, vy;
+    acb_div(ds.get(), g_theta.get(), g_s.get(), prec);
+    acb_neg(ds.get(), ds.get());
+    // V' = P' + s' n~ + s n~'
+    for (int i = 0; i < 2; ++i) {
+        ComplexBall& v = i == 0 ? vx : vy;
+        acb_mul(v.get(), ds.get(), (i == 0 ? bp.nx : bp.ny).get(), prec);
+        acb_add(v.get(), v.get(), (i == 0 ? bp.dx : bp.dy).get(), prec);
+        acb_mul(t.get(), s.get(), (i == 0 ? bp.dnx : bp.dny).get(), prec);
+        acb_add(v.get(), v.get(), t.get(), prec);
+    }
+    dot(vx, vy, vx, vy, prec, t);
+    // Holomorphic only away from the cut (|V'|^2 > 0 on the reals).
+    acb_sqrt_analytic(out.length.get(), t.get(), 1, prec);
+    return acb_is_finite(out.length.get());
 }
 
 }  // namespace ellvor

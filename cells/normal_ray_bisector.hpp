@@ -13,13 +13,16 @@
 // stationary in the foot point, which keeps the system well conditioned far
 // along the edge, where the ray meets the bisector at a small angle.)
 //
-// Certificate: the Krawczyk operator over a complex box X (around a Newton
-// point on the reals) and the whole theta-ball lies in the interior of X.
-// Then for every theta in the ball the system has exactly one root in X, the
-// root is a holomorphic function of theta there (its Jacobian is nonsingular
-// on X). If moreover Re s > 0 and Re (V - Q) . n~q(phi) > 0 on X, then for a
-// real theta the root is real (X is symmetric about the reals and conjugation
-// maps roots to roots), s > 0, and V - Q lies along q's outward normal at Q,
+// Certificate: with x0 a Newton point at the (real) middle m of the ball and
+// x' its slope there, the root is sought as x = x0 + x' (theta - m) + y; the
+// 2 x 2 Krawczyk operator in y, over a complex box Y and the whole
+// theta-ball (its constant term in the mean-value form around m), lies in
+// the interior of Y. Then for every theta in the ball the system has exactly
+// one root in X(theta) = x0 + x' (theta - m) + Y, a holomorphic function of
+// theta (the Jacobian is nonsingular there). If moreover Re s > 0 and
+// Re (V - Q) . n~q(phi) > 0 on X, then for a real theta the root is real
+// (X(theta) is symmetric about the reals and conjugation maps roots to
+// roots), s > 0, and V - Q lies along q's outward normal at Q,
 // so Q is the nearest point of the convex q to V and dist(V, q) = |V - Q| =
 // s N = dist(V, p): V is the one point of p's normal ray equidistant from p
 // and q (docs/DESIGN.md §10).
@@ -57,10 +60,34 @@ public:
     // False when solve() is.
     bool area_density(const ComplexBall& theta, long prec, ComplexBall& density);
 
+    // The densities of all the cell's measures on the edge, per unit of theta
+    // (docs/DESIGN.md §10): with the ray point X = P + sigma n~, sigma in
+    // [0, s], and the Jacobian J = N^2 + a b sigma, the moments of the swept
+    // segment, m_k = integral of sigma^k J dsigma, give
+    //   area   m_0,
+    //   first  (P - C) m_0 + n~ m_1                              (about p's center C),
+    //   second (P - C)(P - C)^T m_0 + ((P - C) n~^T + n~ (P - C)^T) m_1 + n~ n~^T m_2,
+    // and the edge's own length |V'(theta)|, V' = P' + s' n~ + s n~', with
+    // s' = -dg/dtheta / dg/ds from the tie function (its foot point drops out).
+    // False when solve() is, or when |V'|^2 may touch the square root's cut.
+    struct Densities {
+        ComplexBall area, length;
+        ComplexBall first[2];   // x, y
+        ComplexBall second[3];  // xx, xy, yy
+    };
+    bool densities(const ComplexBall& theta, long prec, Densities& out);
+
     const Ellipse& first() const { return *p_; }
+
+    struct Boundary;  // p's or q's boundary at a complex angle (the .cpp)
 
 private:
     void set_precision(long prec);
+    // solve(), and what densities() needs besides: the tie derivatives at the
+    // root, (P - Q) . n~ and (P - Q) . (P' + s n~') (for s'), and p's boundary
+    // on the theta-ball.
+    bool solve(const ComplexBall& theta, long prec, ComplexBall& s, ComplexBall* tie_ds, ComplexBall* tie_dtheta,
+               Boundary* p_boundary);
 
     const Ellipse* p_;
     const Ellipse* q_;

@@ -3,6 +3,8 @@
 #include "sites/rational_parse.hpp"
 
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 
 namespace ellvor::cli {
 
@@ -91,6 +93,17 @@ std::uint64_t Arguments::unsigned_integer(const std::string& name, std::uint64_t
     if (v.empty() || v[0] == '-' || v[0] == '+' || *end != '\0' || errno == ERANGE)
         throw UsageError("option " + name + ": expected an unsigned 64-bit integer, got '" + v + "'");
     return static_cast<std::uint64_t>(x);
+}
+
+double Arguments::real(const std::string& name, double fallback) const {
+    if (!has(name)) return fallback;
+    const std::string v = value(name);
+    errno = 0;
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+        throw UsageError("option " + name + ": expected a number, got '" + v + "'");
+    return x;
 }
 
 Rational Arguments::rational(const std::string& name, const Rational& fallback) const {

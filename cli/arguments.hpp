@@ -43,6 +43,8 @@ public:
     // The option's value as an integer in [min, max]; `fallback` when absent.
     long integer(const std::string& name, long fallback, long min, long max) const;
     std::uint64_t unsigned_integer(const std::string& name, std::uint64_t fallback) const;
+    // The option's value as a finite double ("1e-9", "0.5"); `fallback` when absent.
+    double real(const std::string& name, double fallback) const;
     // An exact rational (see sites/rational_parse.hpp); `fallback` when absent.
     Rational rational(const std::string& name, const Rational& fallback) const;
     // Throws UsageError when the option is absent.

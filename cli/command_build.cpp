@@ -4,6 +4,7 @@
 #include "cli/removal_list.hpp"
 #include "cli/site_arguments.hpp"
 #include "graph/delaunay_graph.hpp"
+#include "output/cell_request.hpp"
 #include "output/graph_json.hpp"
 #include "output/svg_writer.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
@@ -21,7 +22,8 @@ namespace ellvor::cli {
 namespace {
 
 const char* const kHelp =
-    "usage: ellvor build FILE [--cin] [--remove IDS] [--json OUT] [--svg OUT [--svg-ids]] [--validate] [--stats]\n"
+    "usage: ellvor build FILE [--cin] [--remove IDS] [--json OUT] [--svg OUT [--svg-ids] [--color packing-fraction]]\n"
+    "                   [--validate] [--stats]\n"
     "\n"
     "Builds the Delaunay graph (the dual of the Voronoi diagram) of the sites of FILE by\n"
     "incremental insertion (Karavelas-Yvinec, as CGAL's Apollonius graph), every predicate\n"
@@ -52,6 +54,12 @@ const char* const kHelp =
     "                an 8% margin); a legend with the counts; y points up. Written atomically\n"
     "                ('-': standard output)\n"
     "  --svg-ids     with --svg: write each site's id at its center\n"
+    "  --color packing-fraction   with --svg: fill each bounded cell on a colour scale by its\n"
+    "                local packing fraction (site area / cell area; the midpoint of its certified\n"
+    "                interval at tolerance 1e-9, as `ellvor cells` computes it; for the eye),\n"
+    "                with a colour bar; unbounded and hidden cells stay blank. Where the cells\n"
+    "                have no rings yet, the sites are filled with their cell's colour instead\n"
+    "                (the legend says so). Costs the cells' computation; not with --remove\n"
     "  --validate    check the graph: combinatorics, every edge against the local conflict\n"
     "                tests, and for up to 300 sites every Voronoi circle empty of all sites\n"
     "  --stats       print the predicate calls per deciding stage and the time per insertion\n"
@@ -63,10 +71,14 @@ const char* const kHelp =
 constexpr std::size_t kBruteForceLimit = 300;
 
 int run(const std::vector<std::string>& args) {
-    Arguments parsed(args, {{"--cin", false}, {"--remove", true}, {"--json", true}, {"--svg", true}, {"--svg-ids", false},
+    Arguments parsed(args, {{"--cin", false}, {"--remove", true}, {"--json", true}, {"--svg", true}, {"--svg-ids", false}, {"--color", true},
                             {"--validate", false}, {"--stats", false}});
     parsed.expect_positional(1, 1, "FILE");
     if (parsed.has("--svg-ids") && !parsed.has("--svg")) throw UsageError("option --svg-ids needs --svg OUT");
+    if (parsed.has("--color") && !parsed.has("--svg")) throw UsageError("option --color needs --svg OUT");
+    if (parsed.has("--color") && parsed.value("--color") != "packing-fraction")
+        throw UsageError("option --color: expected packing-fraction, got '" + parsed.value("--color") + "'");
+    if (parsed.has("--color") && parsed.has("--remove")) throw UsageError("option --color: not with --remove");
     SiteFile file = read_site_argument(parsed, parsed.positional()[0]);
     const std::vector<SiteId> removals =
         parsed.has("--remove") ? parse_removal_list(parsed.value("--remove"), file.sites.size()) : std::vector<SiteId>{};
@@ -142,6 +154,14 @@ int run(const std::vector<std::string>& args) {
     if (parsed.has("--svg")) {
         SvgOptions options;
         options.show_ids = parsed.has("--svg-ids");
+        CellTessellation cells;
+        if (parsed.has("--color")) {
+            // The cells of the same sites (the library builds its own graph).
+            const SiteFile named{file.name, sites, file.lines};
+            cells = cells_of_site_file(named, CellDomain{}, CellOptions{}, std::nullopt,
+                                       {"option --box", "option --periodic", "option --tolerance", "option --boundary-tolerance"});
+            options.cells = &cells;
+        }
         const TracedDiagram drawn = trace_voronoi_diagram(graph, sites, options.tolerance_fraction, options.margin_fraction);
         const std::string out = parsed.value("--svg");
         if (out == "-") {

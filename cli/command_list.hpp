@@ -7,6 +7,7 @@
 
 #define ELLVOR_COMMANDS(X) \
     X(build)               \
+    X(cells)               \
     X(check)               \
     X(generate)            \
     X(side_of_bisector)    \

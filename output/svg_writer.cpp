@@ -1,5 +1,7 @@
 #include "output/svg_writer.hpp"
 
+#include "output/color_scale.hpp"
+#include "output/packing_fraction.hpp"
 #include "predicates/relative_position.hpp"
 
 #include <algorithm>
@@ -89,12 +91,42 @@ struct PageLayout {
     double screen_y(double y) const { return ty - s * y; }
 };
 
+// The colour of each site's cell: the midpoint of its packing fraction on
+// the scale [lo, hi] of the bounded cells' values; NaN where not coloured.
+struct CellColors {
+    std::vector<double> value;  // per site
+    double lo = 0, hi = 0;
+    bool rings = false;         // the cells have rings (else the sites are filled)
+    std::size_t colored = 0;
+
+    explicit CellColors(const CellTessellation* cells) {
+        if (!cells) return;
+        lo = HUGE_VAL, hi = -HUGE_VAL;
+        bool every_ring = true;
+        for (const Cell& c : cells->cells) {
+            const std::optional<Ball> f = c.bounded ? packing_fraction(c) : std::nullopt;
+            value.push_back(f && arb_is_finite(f->get()) ? f->mid_double() : NAN);
+            if (std::isnan(value.back())) continue;
+            ++colored;
+            lo = std::min(lo, value.back());
+            hi = std::max(hi, value.back());
+            every_ring = every_ring && !c.ring.empty();
+        }
+        rings = colored > 0 && every_ring;
+        if (colored == 0) lo = 0, hi = 1;
+        if (hi <= lo) hi = lo + 1e-9 * std::max(1.0, std::fabs(lo));
+    }
+    bool active() const { return !value.empty(); }
+    bool has(SiteId i) const { return i < value.size() && !std::isnan(value[i]); }
+    std::string color(SiteId i) const { return sequential_color((value[i] - lo) / (hi - lo)); }
+};
+
 PageLayout page_layout(const DrawingBox& box, const SvgOptions& o, bool has_overlaps, bool has_failed_edges) {
     PageLayout l;
     l.s = o.pixels / box.size();
     const double draw_w = l.s * box.width(), draw_h = l.s * box.height();
     l.legend_x = l.pad + draw_w + l.pad;
-    l.legend_h = 22 + (has_overlaps ? 6 : 5) * 24 + 14 + (has_failed_edges ? 18 : 0);
+    l.legend_h = 22 + (has_overlaps ? 6 : 5) * 24 + 14 + (has_failed_edges ? 18 : 0) + (o.cells ? 96 : 0);
     l.width = l.legend_x + l.legend_width;
     l.height = std::max(l.top + draw_h + l.pad, l.top + l.legend_h + l.pad);
     l.tx = l.pad - l.s * box.xmin;
@@ -107,7 +139,8 @@ class SvgPage {
 public:
     SvgPage(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const TracedDiagram& d,
             const SvgOptions& o)
-        : out_(out), sites_(sites), d_(d), o_(o), edges_(graph.edges()), vertex_count_(graph.faces().size()) {
+        : out_(out), sites_(sites), d_(d), o_(o), edges_(graph.edges()), vertex_count_(graph.faces().size()),
+          colors_(o.cells) {
         const auto hidden = graph.hidden();
         hidden_count_ = hidden.size();
         for (const auto& h : hidden) hidden_ids_.insert(h.first);
@@ -140,6 +173,7 @@ private:
     std::size_t overlaps_ = 0;
     PageLayout layout_;
     std::string title_;
+    CellColors colors_;
 
     // An ellipse element's geometry (world coordinates).
     std::string geometry(SiteId i) const {
@@ -192,6 +226,7 @@ private:
              << "\" height=\"" << num(box.height()) << "\" fill=\"#fcfcfa\" stroke=\"#bbbbbb\" stroke-width=\""
              << num(layout_.px(1)) << "\"/>\n";
         out_ << "<g clip-path=\"url(#drawing-box)\">\n";
+        if (colors_.rings) cell_fills();
         sites();
         delaunay_edges();
         voronoi_edges();
@@ -205,8 +240,8 @@ private:
             out_ << " fill=\"none\" stroke=\"" << kHiddenStroke << "\" stroke-width=\"" << num(layout_.px(1.1))
                  << "\" stroke-dasharray=\"" << num(layout_.px(4)) << " " << num(layout_.px(3)) << "\"/>\n";
         else
-            out_ << " fill=\"" << kSiteFill << "\" stroke=\"" << kSiteStroke << "\" stroke-width=\""
-                 << num(layout_.px(1.3)) << "\"/>\n";
+            out_ << " fill=\"" << (colors_.active() && !colors_.rings && colors_.has(i) ? colors_.color(i) : kSiteFill)
+                 << "\" stroke=\"" << kSiteStroke << "\" stroke-width=\"" << num(layout_.px(1.3)) << "\"/>\n";
     }
 
     // The visible sites, the lenses of crossing pairs, the hidden sites.
@@ -228,6 +263,45 @@ private:
         }
         out_ << "<g id=\"hidden-sites\">\n";
         for (SiteId i : hidden_ids_) ellipse(i, true);
+        out_ << "</g>\n";
+    }
+
+    // Each coloured cell's ring, filled (under the sites).
+    void cell_fills() {
+        out_ << "<g id=\"cell-fills\" stroke=\"none\">\n";
+        for (SiteId i = 0; i < sites_.size(); ++i) {
+            if (!colors_.has(i)) continue;
+            out_ << "<polygon data-site=\"" << i << "\" data-packing-fraction=\"" << num(colors_.value[i]) << "\" fill=\""
+                 << colors_.color(i) << "\" points=\"";
+            const auto& ring = o_.cells->cells[i].ring;
+            for (std::size_t k = 0; k < ring.size(); ++k) out_ << (k ? " " : "") << num(ring[k][0]) << "," << num(ring[k][1]);
+            out_ << "\"/>\n";
+        }
+        out_ << "</g>\n";
+    }
+
+    // The colour bar: the scale from the smallest to the largest value shown.
+    void color_bar(double lx, double& row) {
+        const double x = lx + 10, w = layout_.legend_width - layout_.pad - 20;
+        out_ << "<g id=\"color-bar\" data-colored-cells=\"" << colors_.colored << "\" data-rings=\""
+             << (colors_.rings ? "yes" : "no") << "\">\n";
+        out_ << "<text x=\"" << num(x) << "\" y=\"" << num(row + 4) << "\" font-size=\"12\">local packing fraction</text>\n";
+        row += 10;
+        const int steps = 32;
+        for (int k = 0; k < steps; ++k)
+            out_ << "<rect x=\"" << num(x + w * k / steps) << "\" y=\"" << num(row) << "\" width=\"" << num(w / steps + 0.5)
+                 << "\" height=\"12\" fill=\"" << sequential_color((k + 0.5) / steps) << "\"/>\n";
+        row += 24;
+        out_ << "<text x=\"" << num(x) << "\" y=\"" << num(row) << "\" font-size=\"11\">" << num(colors_.lo)
+             << "</text><text x=\"" << num(x + w) << "\" y=\"" << num(row) << "\" font-size=\"11\" text-anchor=\"end\">"
+             << num(colors_.hi) << "</text>\n";
+        row += 16;
+        out_ << "<text x=\"" << num(x) << "\" y=\"" << num(row) << "\" font-size=\"10\" fill=\"#555\">"
+             << "interval midpoints, " << colors_.colored << " bounded cells" << "</text>\n";
+        row += 14;
+        out_ << "<text x=\"" << num(x) << "\" y=\"" << num(row) << "\" font-size=\"10\" fill=\"#555\">"
+             << (colors_.rings ? "cells filled; unbounded ones blank" : "no cell rings yet: sites filled") << "</text>\n";
+        row += 18;
         out_ << "</g>\n";
     }
 
@@ -321,6 +395,7 @@ private:
              << "\" font-size=\"11\" fill=\"#555\">arc tolerance " << num(d_.tolerance) << " ("
              << num(100 * o_.tolerance_fraction) << "% of box)</text>\n";
         row += 18;
+        if (colors_.active()) color_bar(lx, row);
         if (d_.failed_edges > 0)
             out_ << "<text x=\"" << num(lx + 10) << "\" y=\"" << num(row + 4) << "\" font-size=\"11\" fill=\"#b00\">"
                  << d_.failed_edges << " edge(s) not drawn (uncertified vertex)</text>\n";

@@ -7,7 +7,11 @@
 // cross, their common part (the lens) is shaded translucently, one later site
 // clipped to the earlier one per pair (so a part covered by more sites is
 // darker). A title and a legend with the counts. World y points up (flipped
-// by the group's transform).
+// by the group's transform). With cells (SvgOptions::cells), each bounded
+// cell is filled on a colour scale by the midpoint of its certified packing
+// fraction (for the eye; the tables give the intervals), with a colour bar in
+// the legend; cells without rings (not computed by the library yet) colour
+// their sites instead, and the legend says so.
 //
 // Tolerance: consecutive points of an arc are closer than
 // tolerance_fraction (default 0.5%) of the drawing box's larger side; each
@@ -16,6 +20,7 @@
 // comment and in the legend.
 #pragma once
 
+#include "cells/cell_tessellation.hpp"
 #include "output/bisector_trace.hpp"
 #include "graph/delaunay_graph.hpp"
 
@@ -31,6 +36,7 @@ struct SvgOptions {
     double margin_fraction = 0.08;    // of the sites' bounding box's larger side
     double pixels = 900;              // size in pixels of the box's larger side
     std::string title;                // "" = "Voronoi diagram of N ellipses"
+    const CellTessellation* cells = nullptr;  // colour the cells by packing fraction (the same sites)
 };
 
 // Renders an already traced diagram.

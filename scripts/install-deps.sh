@@ -5,7 +5,8 @@
 set -euo pipefail
 packages=(g++ make libflint-dev libflint-arb-dev libmpfr-dev libgmp-dev catch2 libeigen3-dev
           libcgal-dev nlohmann-json3-dev python3
-          pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest)
+          pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
+          python3-distributed python3-dask python3-mpmath python3-scipy)
 [ $# -eq 0 ] || packages=("$@")
 missing=()
 for p in "${packages[@]}"; do

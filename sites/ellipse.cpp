@@ -48,6 +48,13 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
     cos_ = (one - w2) / (one + w2);
     sin_ = two * w_ / (one + w2);
 
+    enclosure_ = {enclose(a_), enclose(b_), enclose(cos_), enclose(sin_), enclose(xc_), enclose(yc_)};
+}
+
+const Ellipse::Polynomials& Ellipse::polynomials() const {
+    if (std::shared_ptr<const Polynomials> ready = std::atomic_load(&polynomials_)) return *ready;
+    auto made = std::make_shared<Polynomials>();
+    const Rational one(1), two(2);
     // Coefficients (constant, t, t^2):
     //   X = xc (1 + t^2) + a cos (1 - t^2) - 2 b sin t
     //   Y = yc (1 + t^2) + a sin (1 - t^2) + 2 b cos t
@@ -58,22 +65,22 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
         {yc_ + as, two * b_ * cos_, yc_ - as},
         {one, Rational(0), one},
     }};
-    scale_to_integers(coeffs, {&X_, &Y_, &W_});
-    Tx_ = homogeneous_tangent(X_, W_);
-    Ty_ = homogeneous_tangent(Y_, W_);
+    scale_to_integers(coeffs, {&made->X, &made->Y, &made->W});
+    made->Tx = homogeneous_tangent(made->X, made->W);
+    made->Ty = homogeneous_tangent(made->Y, made->W);
 
     // b^2 xi^2 + a^2 eta^2 - a^2 b^2 with xi = c dx + s dy, eta = -s dx + c dy.
+    const auto [A, B, C] = quadratic_form();
     const Rational a2 = a_ * a_, b2 = b_ * b_;
-    const Rational& c = cos_;
-    const Rational& s = sin_;
-    Rational A = b2 * c * c + a2 * s * s;
-    Rational B = (b2 - a2) * c * s;
-    Rational C = b2 * s * s + a2 * c * c;
     Rational D = -(A * xc_ + B * yc_);
     Rational E = -(B * xc_ + C * yc_);
     Rational F = A * xc_ * xc_ + two * B * xc_ * yc_ + C * yc_ * yc_ - a2 * b2;
-    conic_ = {A, B, C, D, E, F};
-    enclosure_ = {enclose(a_), enclose(b_), enclose(cos_), enclose(sin_), enclose(xc_), enclose(yc_)};
+    made->conic = {A, B, C, D, E, F};
+    std::shared_ptr<const Polynomials> expected;
+    std::shared_ptr<const Polynomials> mine = std::move(made);
+    // Another thread may have been first: keep its (equal) values.
+    if (!std::atomic_compare_exchange_strong(&polynomials_, &expected, mine)) return *expected;
+    return *mine;
 }
 
 Ellipse Ellipse::circle(const Rational& x, const Rational& y, const Rational& r) {
@@ -82,9 +89,9 @@ Ellipse Ellipse::circle(const Rational& x, const Rational& y, const Rational& r)
 
 Point Ellipse::point_at(const Rational& t) const {
     Rational x, y, w;
-    fmpz_poly_evaluate_fmpq(x.get(), X_.get(), t.get());
-    fmpz_poly_evaluate_fmpq(y.get(), Y_.get(), t.get());
-    fmpz_poly_evaluate_fmpq(w.get(), W_.get(), t.get());
+    fmpz_poly_evaluate_fmpq(x.get(), X().get(), t.get());
+    fmpz_poly_evaluate_fmpq(y.get(), Y().get(), t.get());
+    fmpz_poly_evaluate_fmpq(w.get(), W().get(), t.get());
     return {x / w, y / w};
 }
 
@@ -93,16 +100,16 @@ Point Ellipse::i_point() const { return {xc_ - a_ * cos_, yc_ - a_ * sin_}; }
 BallPoint Ellipse::point_at(const Ball& t, long prec) const {
     BallPoint p;
     Ball w;
-    arb_fmpz_poly_evaluate_arb(p.x.get(), X_.get(), t.get(), prec);
-    arb_fmpz_poly_evaluate_arb(p.y.get(), Y_.get(), t.get(), prec);
-    arb_fmpz_poly_evaluate_arb(w.get(), W_.get(), t.get(), prec);
+    arb_fmpz_poly_evaluate_arb(p.x.get(), X().get(), t.get(), prec);
+    arb_fmpz_poly_evaluate_arb(p.y.get(), Y().get(), t.get(), prec);
+    arb_fmpz_poly_evaluate_arb(w.get(), W().get(), t.get(), prec);
     arb_div(p.x.get(), p.x.get(), w.get(), prec);
     arb_div(p.y.get(), p.y.get(), w.get(), prec);
     return p;
 }
 
 Rational Ellipse::conic_value(const Rational& x, const Rational& y) const {
-    const auto& k = conic_;
+    const auto& k = conic();
     const Rational two(2);
     return k[0] * x * x + two * k[1] * x * y + k[2] * y * y + two * k[3] * x + two * k[4] * y + k[5];
 }
@@ -117,9 +124,18 @@ bool operator==(const Ellipse& p, const Ellipse& q) {
     return p.a_ == q.a_ && p.b_ == q.b_ && p.w_ == q.w_ && p.xc_ == q.xc_ && p.yc_ == q.yc_;
 }
 
+std::array<Rational, 3> Ellipse::quadratic_form() const {
+    const Rational a2 = a_ * a_, b2 = b_ * b_;
+    const Rational &c = cos_, &s = sin_;
+    return {b2 * c * c + a2 * s * s, (b2 - a2) * c * s, b2 * s * s + a2 * c * c};
+}
+
 Ellipse::PointSetKey Ellipse::point_set_key() const {
+    // From the quadratic form alone: a reader keys every site, and the conic
+    // is made only on first use (polynomials()).
     const Rational scale = a_ * a_ * b_ * b_;
-    return {xc_, yc_, conic_[0] / scale, conic_[1] / scale, conic_[2] / scale};
+    const auto [A, B, C] = quadratic_form();
+    return {xc_, yc_, A / scale, B / scale, C / scale};
 }
 
 }  // namespace ellvor

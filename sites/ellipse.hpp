@@ -14,6 +14,7 @@
 #include "util/interval.hpp"
 
 #include <array>
+#include <memory>
 #include <string>
 
 namespace ellvor {
@@ -56,12 +57,12 @@ public:
     const Enclosure& enclosure() const { return enclosure_; }
 
     // Homogeneous parametrization (X : Y : W), integer polynomials in t.
-    const IntPolynomial& X() const { return X_; }
-    const IntPolynomial& Y() const { return Y_; }
-    const IntPolynomial& W() const { return W_; }
+    const IntPolynomial& X() const { return polynomials().X; }
+    const IntPolynomial& Y() const { return polynomials().Y; }
+    const IntPolynomial& W() const { return polynomials().W; }
     // Tangent direction (dX/dt W - X dW/dt, dY/dt W - Y dW/dt), degree <= 2.
-    const IntPolynomial& tangent_x() const { return Tx_; }
-    const IntPolynomial& tangent_y() const { return Ty_; }
+    const IntPolynomial& tangent_x() const { return polynomials().Tx; }
+    const IntPolynomial& tangent_y() const { return polynomials().Ty; }
 
     // Boundary point at a rational parameter, exactly.
     Point point_at(const Rational& t) const;
@@ -73,7 +74,7 @@ public:
     // Implicit conic A x^2 + 2B xy + C y^2 + 2D x + 2E y + F, scaled so that its
     // value is negative inside: {A, B, C, D, E, F} = b^2 xi^2 + a^2 eta^2 - a^2 b^2
     // in the ellipse's own frame (xi, eta).
-    const std::array<Rational, 6>& conic() const { return conic_; }
+    const std::array<Rational, 6>& conic() const { return polynomials().conic; }
     // Value of the conic at (x, y).
     Rational conic_value(const Rational& x, const Rational& y) const;
     // -1 strictly inside, 0 on the boundary, +1 strictly outside.
@@ -93,11 +94,23 @@ public:
     PointSetKey point_set_key() const;
 
 private:
+    // The parametrization and the conic: about half of a site's memory, and
+    // only the exact and Arb stages read them (a few sites of a large build),
+    // so they are made on first use. Copies share them (immutable).
+    struct Polynomials {
+        IntPolynomial X, Y, W, Tx, Ty;
+        std::array<Rational, 6> conic;
+    };
+    const Polynomials& polynomials() const;
+    // The conic's quadratic part {A, B, C}.
+    std::array<Rational, 3> quadratic_form() const;
+
     Rational a_, b_, w_, xc_, yc_;
     Rational cos_, sin_;
-    IntPolynomial X_, Y_, W_, Tx_, Ty_;
-    std::array<Rational, 6> conic_;
     Enclosure enclosure_;
+    // Written once, by whichever thread asks first (atomic shared_ptr access:
+    // a lost race only computes the same values twice).
+    mutable std::shared_ptr<const Polynomials> polynomials_;
 };
 
 }  // namespace ellvor

@@ -81,7 +81,7 @@ Matrix3 adjugate(const Matrix3& m) {
 }
 
 // M (X, Y, W)^T for a symmetric integer matrix and polynomial point.
-std::array<IntPolynomial, 3> apply(const Matrix3& m, const std::array<IntPolynomial, 3>& v) {
+std::array<IntPolynomial, 3> matrix_times(const Matrix3& m, const std::array<IntPolynomial, 3>& v) {
     std::array<IntPolynomial, 3> r;
     for (int i = 0; i < 3; ++i) r[i] = add(add(scale(v[0], m[i][0]), scale(v[1], m[i][1])), scale(v[2], m[i][2]));
     return r;
@@ -163,7 +163,7 @@ LinePolynomials reduced_normal_line(const Ellipse& e) {
 
 LinePolynomials tangent_line(const Ellipse& e) {
     // Polar line of P(t) with respect to the conic: (l1, l2, l3) = M (X, Y, W).
-    const auto l = apply(conic_matrix(e), {e.X(), e.Y(), e.W()});
+    const auto l = matrix_times(conic_matrix(e), {e.X(), e.Y(), e.W()});
     return {l[0], l[1], l[2]};
 }
 
@@ -245,7 +245,7 @@ IntPolynomial intersection_quartic(const Ellipse& e1, const Ellipse& e2) {
     // (X, Y, W) M2 (X, Y, W)^T = P1 . (M2 P1): the conic of E2 at P1(t) times
     // W1(t)^2 > 0; keep the sign (negative where P1(t) is inside E2).
     const std::array<IntPolynomial, 3> p = {e1.X(), e1.Y(), e1.W()};
-    return divide_by_positive_content(dot(p, apply(conic_matrix(e2), p)));
+    return divide_by_positive_content(dot(p, matrix_times(conic_matrix(e2), p)));
 }
 
 IntPolynomial bitangent_quartic(const Ellipse& e1, const Ellipse& e2) {
@@ -255,7 +255,7 @@ IntPolynomial bitangent_quartic(const Ellipse& e1, const Ellipse& e2) {
     const std::array<IntPolynomial, 3> lv = {l.l1, l.l2, l.l3};
     // Keep the sign: negative where the line crosses E2, positive where it
     // misses (the adjugate of a conic that is negative inside).
-    return divide_by_positive_content(dot(lv, apply(adjugate(conic_matrix(e2)), lv)));
+    return divide_by_positive_content(dot(lv, matrix_times(adjugate(conic_matrix(e2)), lv)));
 }
 
 DensePolynomial bisector_polynomial(const Ellipse& e1, const Ellipse& e2) {

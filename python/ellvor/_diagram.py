@@ -11,6 +11,7 @@ from fractions import Fraction
 import numpy as np
 
 from . import _ellvor
+from ._cells import cells as _cells
 
 
 class Ball:
@@ -156,6 +157,9 @@ class Diagram:
                                              (a negative radius: inside three crossing sites)
         vertex_errors (f,)                   every exact value is within this of the double given
                                              (the ball's radius plus the midpoint's rounding)
+    Cells, as scipy.spatial.Voronoi: ``regions`` (per site the Voronoi vertices of its cell
+    counter-clockwise, -1 at infinity, [] when hidden) and ``point_region`` (site k's region is
+    regions[k]); ``cells()`` computes the certified cells (areas, packing fractions).
     ``vertex(i, bits)`` refines one circle to exact bounds; ``trace()`` draws the
     Voronoi edges; ``to_json()`` is ``ellvor build --json``'s document; ``stats``
     the build's figures; ``remove(sites)`` takes sites out (``ellvor build --remove``).
@@ -192,6 +196,35 @@ class Diagram:
         inserted, per predicate its calls and the calls each stage decided; after
         ``remove``, also removed and removal_seconds."""
         return json.loads(self._core.stats_json())
+
+    @property
+    def regions(self):
+        """scipy.spatial.Voronoi's ``regions``: per site (in site order) the indices of the
+        Voronoi vertices of its cell counter-clockwise, -1 where it reaches infinity; [] for a
+        hidden or removed site."""
+        cache = self.__dict__.setdefault("_arrays", {})
+        if "regions" not in cache:
+            cache["regions"] = self._core.regions()
+        return [list(r) for r in cache["regions"]]
+
+    @property
+    def point_region(self):
+        """scipy.spatial.Voronoi's ``point_region``: site k's region is ``regions[k]``."""
+        return _frozen(np.arange(len(self), dtype=np.int64))
+
+    def cells(self, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None):
+        """The certified Voronoi cells (a Cells), as ``ellvor cells``: every area an interval
+        with hi - lo <= tolerance * area, the site's own area included. ``box`` or
+        ``periodic``: (x0, y0, x1, y1), exact numbers (a box clips the cells; a periodic
+        box tiles the torus); ``boundary_tolerance``: the rings' certified distance to the
+        boundaries (default 1e-3 of the median larger semi-axis). The cells are computed
+        anew from the sites (their vertices are numbered as ``vertices``). Raises InputError
+        with ``ellvor cells``'s message for bad arguments and sites at fault; ValueError
+        after ``remove``."""
+        if len(self.removed):
+            raise ValueError("cells: not available after remove(); build the remaining sites")
+        return _cells(self.sites, box=box, periodic=periodic, tolerance=tolerance,
+                      boundary_tolerance=boundary_tolerance)
 
     def vertex(self, i, bits=53):
         """The Voronoi circle of face ``i`` refined to ``bits`` correct bits (a VoronoiCircle

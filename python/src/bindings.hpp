@@ -75,6 +75,7 @@ py::array_t<std::int64_t> pairs_array(const Pairs& pairs) {
 void register_errors(py::module_& m);
 void bind_sites(py::module_& m);
 void bind_diagram(py::module_& m);
+void bind_cells(py::module_& m);
 void bind_predicates(py::module_& m);
 
 // An arb ball for Python: (lo, hi, text) with exact dyadic Fraction bounds

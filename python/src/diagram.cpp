@@ -1,12 +1,15 @@
 // ellvor.build and the diagram it returns (python/ellvor/_diagram.py wraps it).
 #include "python/src/bindings.hpp"
 
+#include "cells/voronoi_cells.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/graph_json.hpp"
 #include "output/voronoi_ridges.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle_in_doubles.hpp"
+#include "util/interval.hpp"
 #include "util/error.hpp"
 
 #include <pybind11/stl.h>
@@ -222,8 +225,22 @@ py::tuple ridges(Diagram& d) {
     return py::make_tuple(pairs_array(points), pairs_array(ends));
 }
 
-py::tuple vertices(Diagram& d) {
-    const std::vector<VoronoiVertexValue> v = locked(d, [](Diagram& g) { return g.vertex_values(); });
+// scipy.spatial.Voronoi's regions, one per site in site order: the Voronoi
+// vertices of its cell counter-clockwise (each edge's first vertex), -1 where
+// the cell reaches infinity; empty for a hidden (or removed) site.
+py::list regions(Diagram& d) {
+    const std::vector<VoronoiCell> cells = locked(d, [](Diagram& g) { return voronoi_cells(*g.graph, g.numbers); });
+    py::list out;
+    for (const VoronoiCell& c : cells) {
+        py::list region;
+        for (const CellEdge& e : c.edges) region.append(e.from);
+        out.append(region);
+    }
+    return out;
+}
+
+// (centers (n, 2), radii (n,), errors (n,)) as Diagram.vertices gives them.
+py::tuple vertex_arrays(const std::vector<VoronoiVertexValue>& v) {
     const auto n = static_cast<py::ssize_t>(v.size());
     auto centers = new_array<double>({n, 2});
     auto radii = new_array<double>({n}), errors = new_array<double>({n});
@@ -238,11 +255,69 @@ py::tuple vertices(Diagram& d) {
     return py::make_tuple(centers, radii, errors);
 }
 
+py::tuple vertices(Diagram& d) {
+    return vertex_arrays(locked(d, [](Diagram& g) { return g.vertex_values(); }));
+}
+
+// The Voronoi vertices of given faces (k, 3) of `sites` (counter-clockwise
+// triples that have their circle, e.g. the faces a tiled build assembled),
+// as Diagram.vertices gives them for its own faces.
+py::tuple face_vertices(py::handle sites, py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> faces) {
+    const Sites s = sites_argument(sites, "ell");
+    if (faces.ndim() != 2 || faces.shape(1) != 3) throw py::value_error("faces: expected a (k, 3) array");
+    const auto f = faces.unchecked<2>();
+    const auto n = static_cast<std::int64_t>(s.file.sites.size());
+    std::vector<std::array<SiteId, 3>> triples;
+    for (py::ssize_t k = 0; k < f.shape(0); ++k) {
+        std::array<SiteId, 3> t{};
+        for (int i = 0; i < 3; ++i) {
+            if (f(k, i) < 0 || f(k, i) >= n) throw py::index_error("faces: no site " + std::to_string(f(k, i)));
+            t[i] = static_cast<SiteId>(f(k, i));
+        }
+        triples.push_back(t);
+    }
+    std::vector<VoronoiVertexValue> v;
+    {
+        py::gil_scoped_release release;
+        for (const auto& t : triples) v.push_back(voronoi_vertex_value(s.file.sites, t));
+    }
+    return vertex_arrays(v);
+}
+
 std::string json(Diagram& d) {
     return locked(d, [](Diagram& g) {
         // The bytes `ellvor build --json` writes.
         return graph_json(*g.graph, *g.sites, nlohmann::json::parse(g.stats), g.vertex_values()).dump() + "\n";
     });
+}
+
+// Per face (in `faces` order) a certified box of its Voronoi circle:
+// [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles. The
+// double-interval certificate first (docs/DESIGN.md §4.1a: cheap), else the
+// Arb solver at 53 bits (the JSON's vertex value and its proven error). The
+// tiled build (python/ellvor/distributed.py) decides its seams with them.
+py::array_t<double> circle_boxes(Diagram& d) {
+    const auto faces = locked(d, [](Diagram& g) { return g.faces; });
+    auto out = new_array<double>({static_cast<py::ssize_t>(faces.size()), 6});
+    double* w = out.mutable_data();
+    {
+        py::gil_scoped_release release;  // the sites never change: no lock needed
+        const std::vector<Ellipse>& s = *d.sites;
+        for (std::size_t k = 0; k < faces.size(); ++k) {
+            const auto& f = faces[k];
+            Interval x, y, r;
+            if (const auto c = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]])) {
+                x = c->center_x, y = c->center_y, r = c->radius;
+            } else {
+                const VoronoiVertexValue v = voronoi_vertex_value(s, f);
+                const Interval e(-v.error, v.error);
+                x = Interval(v.x) + e, y = Interval(v.y) + e, r = Interval(v.radius) + e;
+            }
+            const double box[6] = {x.lo, x.hi, y.lo, y.hi, r.lo, r.hi};
+            std::copy(box, box + 6, w + 6 * k);
+        }
+    }
+    return out;
 }
 
 py::dict vertex(Diagram& d, long i, long bits) {
@@ -346,12 +421,15 @@ void bind_diagram(py::module_& m) {
         .def("remove", &remove, py::arg("ids"))
         .def("ridges", &ridges)
         .def("vertices", &vertices)
+        .def("regions", &regions)
         .def("json", &json)
         .def("stats_json", [](Diagram& d) { return locked(d, [](Diagram& g) { return g.stats; }); })
+        .def("circle_boxes", &circle_boxes)
         .def("vertex", &vertex, py::arg("i"), py::arg("bits"))
         .def("trace", &trace, py::arg("tolerance"), py::arg("margin"))
         .def("validate", &validate, py::arg("brute_force"));
 
+    m.def("_face_vertices", &face_vertices, py::arg("sites"), py::arg("faces"));
     m.def("_build", &build, py::arg("sites"), py::arg("fmt"), py::arg("progress"), py::arg("progress_interval"));
 }
 

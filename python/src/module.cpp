@@ -57,6 +57,7 @@ PYBIND11_MODULE(_ellvor, m) {
     ellvor::python::register_errors(m);
     ellvor::python::bind_sites(m);
     ellvor::python::bind_diagram(m);
+    ellvor::python::bind_cells(m);
     ellvor::python::bind_predicates(m);
     // The registries of decision/: the names of --stats, the JSON and Diagram.stats.
     pybind11::list predicates, stages;

@@ -62,6 +62,24 @@ Sites read_site_path(py::handle path, const std::string& format) {
     return s;
 }
 
+// Sites from text held in memory: the lines a tiled build ships to a worker,
+// or a whole file's text (python/ellvor/distributed.py), parsed as a file's
+// are, without one Python object per site. With a `name`, they count as read
+// from that file, so that errors found in the build point at its lines, as
+// the CLI's do; without, errors name sites by id, which the caller maps back.
+Sites sites_from_text(const std::string& text, const std::string& format, py::object name) {
+    const SiteFormat f = site_format(format);
+    Sites s;
+    s.from_file = !name.is_none();
+    const std::string display = s.from_file ? py::str(name).cast<std::string>() : "<sites>";
+    py::gil_scoped_release release;
+    std::istringstream in(text);
+    SiteFile file = read_site_file(in, display, f);
+    if (!s.from_file) file.lines.clear();
+    s.file = std::move(file);
+    return s;
+}
+
 Sites list_of_sites(py::iterable sites) {
     Sites s;
     for (py::handle item : sites) {
@@ -241,6 +259,7 @@ void bind_sites(py::module_& m) {
                    (s.from_file ? " from " + s.file.name : std::string()) + ">";
         });
 
+    m.def("_sites_from_text", &sites_from_text, py::arg("text"), py::arg("fmt") = "ell", py::arg("name") = py::none());
     m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");
     m.def("generate", &generate, py::arg("kind") = "ellipses", py::arg("count") = 10, py::arg("seed") = 1,
           py::arg("bits") = 8, py::arg("box") = 100, py::arg("nested_fraction") = py::none(), py::arg("crossing") = 0,

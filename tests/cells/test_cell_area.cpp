@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -50,7 +51,48 @@ struct Polygon {
         }
         return twice * Rational(1, 2);
     }
+    // Integrals of x, y (first) and x^2, x y, y^2 (second) over the polygon,
+    // by the exact shoelace-type formulas.
+    void moments(std::array<Rational, 2>& first, std::array<Rational, 3>& second) const {
+        first = {Rational(0), Rational(0)};
+        second = {Rational(0), Rational(0), Rational(0)};
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Point &a = points[k], &b = points[(k + 1) % points.size()];
+            const Rational cross = a.x * b.y - b.x * a.y;
+            first[0] = first[0] + cross * (a.x + b.x) * Rational(1, 6);
+            first[1] = first[1] + cross * (a.y + b.y) * Rational(1, 6);
+            second[0] = second[0] + cross * (a.x * a.x + a.x * b.x + b.x * b.x) * Rational(1, 12);
+            second[1] = second[1] + cross * (a.x * b.y + Rational(2) * a.x * a.y + Rational(2) * b.x * b.y + b.x * a.y) *
+                                        Rational(1, 24);
+            second[2] = second[2] + cross * (a.y * a.y + a.y * b.y + b.y * b.y) * Rational(1, 12);
+        }
+    }
+    // The perimeter, a ball at 200 bits (square roots of exact squares).
+    Ball perimeter() const {
+        Ball sum(Rational(0), 200);
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Point &a = points[k], &b = points[(k + 1) % points.size()];
+            Ball side((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y), 200);
+            arb_sqrt(side.get(), side.get(), 200);
+            arb_add(sum.get(), sum.get(), side.get(), 200);
+        }
+        return sum;
+    }
 };
+
+// Two certified enclosures of one number must meet.
+bool overlap(const Ball& a, const Ball& b) { return arb_overlaps(a.get(), b.get()); }
+
+// The centroid and central second moments of a polygon, exactly.
+void polygon_shape(const Polygon& poly, std::array<Rational, 2>& centroid, std::array<Rational, 3>& central) {
+    std::array<Rational, 2> first;
+    std::array<Rational, 3> second;
+    poly.moments(first, second);
+    const Rational area = poly.area();
+    centroid = {first[0] / area, first[1] / area};
+    central = {second[0] - first[0] * centroid[0], second[1] - first[0] * centroid[1],
+               second[2] - first[1] * centroid[1]};
+}
 
 Polygon point_voronoi_cell(const std::vector<Point>& centres, std::size_t i, const Rational& L) {
     Polygon poly;
@@ -109,6 +151,20 @@ TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centr
         ++bounded;
         CHECK(contains(areas[i].area, cell.area()));
         CHECK(relative_width(areas[i].area) <= T);
+        // The other measures: balls that contain the polygon's, reasonably tight.
+        CHECK(overlap(areas[i].perimeter, cell.perimeter()));
+        CHECK(relative_width(areas[i].perimeter) <= 1e3 * T);
+        std::array<Rational, 2> centroid;
+        std::array<Rational, 3> central;
+        polygon_shape(cell, centroid, central);
+        for (int k = 0; k < 2; ++k) {
+            CHECK(contains(areas[i].centroid[k], centroid[k]));
+            CHECK(areas[i].centroid[k].radius_double() <= 1e3 * T * std::sqrt(areas[i].area.mid_double()));
+        }
+        for (int k = 0; k < 3; ++k) {
+            CHECK(contains(areas[i].second_moments[k], central[k]));
+            CHECK(areas[i].second_moments[k].radius_double() <= 1e3 * T * areas[i].area.mid_double() * areas[i].area.mid_double());
+        }
     }
     CHECK(bounded >= 2);
 }

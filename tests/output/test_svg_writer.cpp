@@ -7,6 +7,7 @@
 // tolerance and no third site is closer by more than it. Crossing circles:
 // the same, and the edge of a crossing pair runs through the crossing points
 // that no other site covers.
+#include "cells/cell_tessellation.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/svg_writer.hpp"
@@ -581,4 +582,38 @@ TEST_CASE("svg: a drawing without crossing sites has no overlap shading", "[grap
     CHECK(attribute(b.svg, "data-overlaps") == 0);
     CHECK(b.svg.find("<g id=\"overlaps\"") == std::string::npos);
     CHECK(count(b.svg, "<clipPath ") == 1);  // the drawing box only
+}
+
+TEST_CASE("svg: cells coloured by packing fraction, from rings or on the sites", "[output][svg]") {
+    std::istringstream in("1 1/2 0 0 0\n1 1 0 4 0\n1/2 1/2 0 2 3\n2 1 1/3 1 -4\n1 1 0 5 5\n1/4 1/4 0 4 0\n3/2 1 0 -4 1\n");
+    const std::vector<Ellipse> sites = read_sites(in, "s");
+    DelaunayGraph graph(std::make_unique<EllipseDelaunayTraits>(sites));
+    graph.insert_all();
+    CellTessellation cells = cell_tessellation(sites, CellDomain{});
+    std::vector<SiteId> bounded;
+    for (const Cell& c : cells.cells)
+        if (c.bounded) bounded.push_back(c.site);
+    REQUIRE(bounded.size() == 2);
+    for (bool rings : {false, true}) {
+        CellTessellation drawn = cells;
+        for (Cell& c : drawn.cells) c.ring.clear();
+        if (rings)  // rings given: a triangle around each bounded cell's site
+            for (SiteId s : bounded) {
+                const double x = sites[s].xc().to_double(), y = sites[s].yc().to_double();
+                drawn.cells[s].ring = {{x - 2, y - 2}, {x + 2, y - 2}, {x, y + 2}};
+            }
+        SvgOptions o;
+        o.cells = &drawn;
+        std::ostringstream out;
+        write_svg(out, graph, sites, o);
+        const std::string svg = out.str();
+        INFO(svg.substr(svg.find("<g id=\"legend\"")));
+        CHECK(check_xml(svg) == "");
+        CHECK(count(svg, "<polygon data-site=") == (rings ? 2u : 0u));
+        CHECK(svg.find(std::string("data-rings=\"") + (rings ? "yes" : "no") + "\"") != std::string::npos);
+        CHECK(svg.find("data-colored-cells=\"2\"") != std::string::npos);
+        // The two ends of the scale, on the cells or on their sites.
+        CHECK(svg.find("fill=\"#fde725\"") != std::string::npos);
+        CHECK(svg.find("fill=\"#440154\"") != std::string::npos);
+    }
 }
