@@ -244,6 +244,11 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     auto describe_all = [&]() {
         out.cells.assign(sites.size(), Cell{});
         vertex_ids.clear();
+        // In the plane the vertices are the diagram's, numbered as DelaunayGraph::faces()
+        // (the ridges, regions and JSON use those numbers); with mirrors or copies, those
+        // of the originals' cells, numbered in order of first use.
+        if (domain.kind == CellDomain::Kind::plane)
+            for (long f = 0; f < static_cast<long>(cells->graph().faces().size()); ++f) vertex_ids.emplace(f, f);
         for (SiteId s = 0; s < sites.size(); ++s) {
             Cell& c = out.cells[s];
             c.site = s;

@@ -65,6 +65,8 @@ struct Cell {
 struct CellTessellation {
     CellDomain domain;
     double boundary_tolerance = 0;  // the one actually used
+    // The plane: every Voronoi vertex, numbered as DelaunayGraph::faces(); a box or
+    // a torus: the vertices of the cells (walls and corners included), in order of first use.
     std::vector<CellVertex> vertices;
     std::vector<Cell> cells;  // one per input site, in input order
 };
