@@ -109,8 +109,10 @@ PlaneSites neighbourhood_of_originals(const PlaneSites& all) {
 // for the torus the certificate; areas come after (cell_areas).
 class OriginalCells {
 public:
-    OriginalCells(const PlaneSites& sites, double boundary_tolerance)
-        : sites_(sites), graph_(built_graph(sites.sites)),
+    // Edges are covered to boundary_tolerance (for the rings and the torus's
+    // certificate) when `covers`, and the rings kept when `rings`.
+    OriginalCells(const PlaneSites& sites, double boundary_tolerance, bool covers, bool rings)
+        : covers_(covers), rings_(rings), sites_(sites), graph_(built_graph(sites.sites)),
           cells_(voronoi_cells(*graph_, face_numbers(*graph_))), angles_(*graph_, sites_.sites) {
         double size = 0;
         for (const Ellipse& e : sites.sites) size = std::max(size, std::max(e.a().to_double(), e.b().to_double()));
@@ -147,7 +149,7 @@ public:
             out.sides.front().from = out.sides.back().from;
             out.sides.pop_back();
         }
-        if (!cell.bounded()) return INFINITY;
+        if (!cell.bounded() || !covers_) return INFINITY;
         const Ellipse& site = sites_.sites[s];
         const std::vector<Ball> lifted = angles_.lifted(cell, cover_.prec + 24);
         double reach = 0;
@@ -156,12 +158,12 @@ public:
             if (sites_.wall[e.neighbor] != Wall::none) {
                 // The wall is a straight side between two vertices: its first
                 // vertex stands for it (the next side starts at the second).
-                out.ring.push_back(vertex_point(e.from));
+                if (rings_) out.ring.push_back(vertex_point(e.from));
                 continue;
             }
             NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
             for (const EdgeCoverBox& box : voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_)) {
-                for (const auto& point : box.points) out.ring.push_back(point);
+                if (rings_) out.ring.insert(out.ring.end(), box.points.begin(), box.points.end());
                 reach = std::max(reach, distance_bound(box, site.xc(), site.yc(), cover_.prec));
             }
         }
@@ -193,6 +195,7 @@ private:
         return {v.x.mid_double(), v.y.mid_double()};
     }
 
+    bool covers_, rings_;
     const PlaneSites& sites_;
     std::unique_ptr<DelaunayGraph> graph_;
     std::vector<VoronoiCell> cells_;
@@ -228,8 +231,9 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     require_proper_rectangle(domain);
     CellTessellation out;
     out.domain = domain;
-    out.boundary_tolerance =
+    const double boundary_tolerance =
         options.boundary_tolerance > 0 ? options.boundary_tolerance : default_boundary_tolerance(input);
+    out.boundary_tolerance = options.rings ? boundary_tolerance : 0;
 
     std::vector<Ellipse> sites = input;
     if (domain.kind == CellDomain::Kind::periodic)
@@ -262,18 +266,23 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     switch (domain.kind) {
         case CellDomain::Kind::plane:
             plane = std::make_unique<PlaneSites>(plane_sites(sites));
-            cells = std::make_unique<OriginalCells>(*plane, out.boundary_tolerance);
+            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings, options.rings);
             describe_all();
             break;
         case CellDomain::Kind::box:
             plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain))));
-            cells = std::make_unique<OriginalCells>(*plane, out.boundary_tolerance);
+            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings, options.rings);
             describe_all();
             break;
         case CellDomain::Kind::periodic: {
             Rational e_max(0);
             for (const Ellipse& e : sites) e_max = std::max({e_max, e.a(), e.b()});
             const long first = starting_rings(sites, domain);
+            // Without rings the certificate needs only coarse covers: an
+            // eighth of the smaller period.
+            const double cover_tolerance =
+                options.rings ? boundary_tolerance
+                              : std::min((domain.x1 - domain.x0).to_double(), (domain.y1 - domain.y0).to_double()) / 8;
             // Each ring more moves the missing copies a period farther out;
             // a cell that still reaches them after three more is an Error.
             for (long rings = first;; ++rings) {
@@ -281,7 +290,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
                                 std::to_string(rings - 1) + " rings of copies");
                 plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings))));
-                cells = std::make_unique<OriginalCells>(*plane, out.boundary_tolerance);
+                cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, true, options.rings);
                 describe_all();
                 bool proven = true;
                 for (SiteId s = 0; s < sites.size() && proven; ++s)

@@ -27,6 +27,10 @@ struct CellOptions {
     // The rings' certified Hausdorff distance to the cell boundaries; 0: 1e-3
     // of the median site size (its larger semi-axis).
     double boundary_tolerance = 0;
+    // False: no rings (the areas and the rest do not need them; they cost
+    // about as much as the areas). The torus still covers the edges, coarsely,
+    // for its certificate.
+    bool rings = true;
     // Called after each cell's measures (done, total); may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
@@ -64,7 +68,7 @@ struct Cell {
 
 struct CellTessellation {
     CellDomain domain;
-    double boundary_tolerance = 0;  // the one actually used
+    double boundary_tolerance = 0;  // the one actually used; 0 without rings
     // The plane: every Voronoi vertex, numbered as DelaunayGraph::faces(); a box or
     // a torus: the vertices of the cells (walls and corners included), in order of first use.
     std::vector<CellVertex> vertices;

@@ -30,17 +30,18 @@ const char* const kHelp =
     "options:\n"
     "  --cin             read CGAL's circle format 'x y r' instead of .ell\n"
     "  --box X0 Y0 X1 Y1 cells clipped to the rectangle [X0, X1] x [Y0, Y1] (walls), exact\n"
-    "                    rationals as in site files; every centre must lie in it (walls included)\n"
+    "                    rationals as in site files; every site must lie strictly inside it\n"
+    "                    (the walls are computed as mirrors: a site touching a wall is an error)\n"
     "  --periodic X0 Y0 X1 Y1\n"
-    "                    the cells of the periodic tiling of that rectangle (the torus); no\n"
-    "                    site may meet its own periodic image\n"
-    "                    (this version of the library computes the free plane only: --box and\n"
-    "                    --periodic are checked, then refused with exit status 1)\n"
+    "                    the cells of the periodic tiling of that rectangle (the torus); centres\n"
+    "                    are taken into the box by whole periods, sites may straddle its edges,\n"
+    "                    no site may meet its own periodic image\n"
     "  --tolerance T     every finite area is certified with hi - lo <= T * area, T in (0, 1]\n"
     "                    (default 1e-9; down to 1e-30 and below, at a higher precision)\n"
     "  --boundary-tolerance D\n"
     "                    the rings' certified distance to the cells' boundaries, D > 0\n"
-    "                    (default 1e-3 of the median larger semi-axis)\n"
+    "                    (default 1e-3 of the median larger semi-axis); JSON and GeoJSON only:\n"
+    "                    the CSV has no rings and is computed without them (faster)\n"
     "  --format F        csv (default), json or geojson\n"
     "  -o, --output OUT  write to OUT, atomically (default '-': standard output); a summary\n"
     "                    line goes to standard output\n"
@@ -56,8 +57,8 @@ const char* const kHelp =
     "                       the last digit printed (trailing zeros count)\n"
     "  packing_fraction_lo, packing_fraction_hi   site area / cell area, an interval as the\n"
     "                       areas'; 0 for an unbounded cell; empty for a hidden site\n"
-    "  perimeter_lo, perimeter_hi   the length of the cell's boundary, as the areas; 'nan' when\n"
-    "                       this version of the library does not compute it\n"
+    "  perimeter_lo, perimeter_hi   the length of the cell's boundary (walls included), as the\n"
+    "                       areas\n"
     "  neighbors            the sides of the cell counter-clockwise, space-separated, one entry\n"
     "                       a side (a neighbour across two sides appears twice): a site id;\n"
     "                       'wall:left', 'wall:bottom', 'wall:right' or 'wall:top' in a box;\n"
@@ -77,9 +78,9 @@ const char* const kHelp =
     "  properties site, area_lo, area_hi, packing_fraction_lo, packing_fraction_hi (as the JSON's);\n"
     "  \"cells_without_ring\" counts the cells left out.\n"
     "\n"
-    "exit status: 0 done; 1 a cell could not be certified, or a domain this version does not\n"
-    "compute; 2 bad input (a tolerance out of range, an empty box, a centre outside the box,\n"
-    "sites that touch or cross: FILE:LINE:COLUMN), nothing written.\n";
+    "exit status: 0 done; 1 a cell could not be certified; 2 bad input (a tolerance out of range,\n"
+    "an empty box, a site not strictly inside the box or meeting its own periodic image, sites\n"
+    "that touch or cross: FILE:LINE:COLUMN), nothing written.\n";
 
 // "--box X0 Y0 X1 Y1" (or --periodic) taken out of args: Arguments knows
 // options with one value only.
@@ -135,6 +136,7 @@ int run(const std::vector<std::string>& arguments) {
         throw UsageError("option --format: expected csv, json or geojson, got '" + format + "'");
     CellOptions options;
     options.tolerance = parsed.real("--tolerance", 1e-9);
+    options.rings = format != "csv";  // the CSV has no rings: spare their cost
     std::optional<double> boundary_tolerance;
     if (parsed.has("--boundary-tolerance")) boundary_tolerance = parsed.real("--boundary-tolerance", 0);
     const CellArgumentNames names = {"option --box", "option --periodic", "option --tolerance",

@@ -31,7 +31,7 @@ class Cells:
                                 (an approximation, for plotting; the bounds are the proof)
         packing_fraction_lo, packing_fraction_hi   site area / cell area (0: unbounded;
                                 NaN: hidden)
-        perimeter_lo, perimeter_hi   the boundary's length (NaN: not computed by this version)
+        perimeter_lo, perimeter_hi   the boundary's length (walls included)
         centroid_lo, centroid_hi (n, 2), second_moments_lo, second_moments_hi (n, 3): about
                                 the centroid, xx, xy, yy (NaN: not computed or not defined)
         precision               Arb bits that met the tolerance
@@ -110,10 +110,10 @@ def _number(value, name):
     return x
 
 
-def cells(sites, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None):
+def cells(sites, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None, rings=True):
     """The certified cells of ``sites`` (a path, Sites or Ellipses); see Diagram.cells."""
     t = _number(tolerance, "tolerance")
     b = None if boundary_tolerance is None else _number(boundary_tolerance, "boundary_tolerance")
     if b is not None and math.isnan(b):
         raise InputError("boundary_tolerance: expected a positive number, got nan")
-    return Cells(_ellvor._cells(sites, box, periodic, t, b))
+    return Cells(_ellvor._cells(sites, box, periodic, t, b, bool(rings)))

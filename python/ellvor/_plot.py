@@ -16,9 +16,8 @@ def plot(diagram, ax=None, *, show_sites=True, show_vertices=False, show_delauna
     ``line_alpha`` and ``point_size`` as in voronoi_plot_2d.
     ``cells`` (a Cells of this diagram, ``d.cells()``): fills each bounded cell's ring with its
     ``color`` (``"packing_fraction"``: the midpoint of its certified interval, for the eye) on
-    ``cmap``, with a colour bar; where the cells have no rings (not computed by this version of
-    the library), the sites themselves are filled with their cell's colour instead. Unbounded
-    and hidden cells are left unfilled.
+    ``cmap``, with a colour bar; where a cell has no ring, its site is filled with the cell's
+    colour instead. Unbounded and hidden cells are left unfilled.
     """
     # matplotlib is imported here: `import ellvor` must not need it.
     import matplotlib.pyplot as plt

@@ -8,7 +8,7 @@ from ._diagram import VoronoiCircle
 
 class Answer(types.SimpleNamespace):
     """A predicate's answer: ``result`` (the CLI's word), ``sign`` (CGAL's), ``stage``
-    (``"filter"``, ``"subdivision"`` or ``"exact"``: the stage that decided),
+    (one of ``ellvor.STAGES``: the stage that decided),
     ``precision`` (Arb bits; 0 without Arb) and the time, as the CLI's ``--json``."""
 
 
