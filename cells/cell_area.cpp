@@ -1,9 +1,9 @@
 #include "cells/cell_area.hpp"
 
+#include "cells/cell_vertex_angles.hpp"
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
 #include "predicates/relative_position.hpp"
-#include "subdivision/voronoi_circle_enclosure.hpp"
 #include "util/error.hpp"
 
 #include <acb_calc.h>
@@ -16,8 +16,6 @@
 
 namespace ellvor {
 namespace {
-
-constexpr double kTwoPi = 6.28318530717958647692;
 
 // Cells assume that every visible site lies in its own cell (docs/DESIGN.md
 // §10): no two sites may touch or cross; nesting is fine (the inner site is
@@ -128,7 +126,7 @@ struct MeasureSums {
 class CellAreaSolver {
 public:
     CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance)
-        : sites_(sites), faces_(graph.faces()), tolerance_(tolerance), solvers_(faces_.size()) {}
+        : sites_(sites), tolerance_(tolerance), angles_(graph, sites) {}
 
     // The measures of a bounded cell at precision prec, or nothing when the
     // pass could not certify its area within the tolerance. Pass k asks Arb
@@ -138,7 +136,7 @@ public:
         CellArea r;
         r.site_area = site_area(site, prec);
         const std::size_t m = cell.edges.size();
-        const std::vector<Ball> lifted = lifted_vertex_angles(cell, prec);
+        const std::vector<Ball> lifted = angles_.lifted(cell, prec);
 
         // The cell is at least the site: its length unit and the tolerance's scale.
         const double area_floor = r.site_area.mid_double();
@@ -208,34 +206,6 @@ public:
     }
 
 private:
-    // The vertex angles of the cell on its site, lifted so that they increase
-    // counter-clockwise (docs/DESIGN.md §10: consecutive differences in
-    // [0, 2 pi), sum 2 pi); m + 1 of them, the last one turn after the first.
-    std::vector<Ball> lifted_vertex_angles(const VoronoiCell& cell, long prec) {
-        const std::size_t m = cell.edges.size();
-        std::vector<Ball> lifted(m + 1);
-        Ball two_pi;
-        arb_const_pi(two_pi.get(), prec);
-        arb_mul_2exp_si(two_pi.get(), two_pi.get(), 1);
-        for (std::size_t k = 0; k < m; ++k)
-            if (cell.edges[k].to != cell.edges[(k + 1) % m].from) throw Error("cell_areas: cell edges do not chain");
-        lifted[0] = vertex_angle(cell.edges[0].from, cell.site, prec);
-        for (std::size_t k = 0; k < m; ++k) {
-            Ball next = vertex_angle(cell.edges[k].to, cell.site, prec);
-            const double d = next.mid_double() - lifted[k].mid_double();
-            const double eps = next.radius_double() + lifted[k].radius_double() + 1e-9;
-            const double j = std::floor((d + eps) / kTwoPi);
-            Ball shift;
-            arb_mul_si(shift.get(), two_pi.get(), static_cast<slong>(j), prec);
-            arb_sub(lifted[k + 1].get(), next.get(), shift.get(), prec);
-        }
-        // The lifts telescope to the first angle plus 2 pi times an integer,
-        // which must be one turn (then each difference is its true value).
-        if (std::lround((lifted[m].mid_double() - lifted[0].mid_double()) / kTwoPi) != 1)
-            throw Error("cell_areas: the vertex angles of cell " + std::to_string(cell.site) + " do not make one turn");
-        return lifted;
-    }
-
     // Perimeter, centroid and central second moments from the sums (about
     // the site's center C; the site adds pi a b / 4 R diag(a^2, b^2) R^T to
     // the second moments and nothing to the first).
@@ -279,33 +249,9 @@ private:
         }
     }
 
-    // The tangency angle on `site` of the Voronoi circle of face `face`, its
-    // radius about 2^(24 - prec) (the certified circle refined to prec - 24 bits).
-    Ball vertex_angle(long face, SiteId site, long prec) {
-        const auto f = static_cast<std::size_t>(face);
-        if (!solvers_[f]) solvers_[f] = std::make_unique<VoronoiCircleSolver>(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]]);
-        VoronoiCircleSolver& solver = *solvers_[f];
-        solver.refine_existing(prec - 24);
-        const VoronoiCircleEnclosure& c = solver.enclosure();
-        const int i = static_cast<int>(std::find(faces_[f].begin(), faces_[f].end(), site) - faces_[f].begin());
-        if (i == 3) throw Error("cell_areas: a cell's vertex misses its site");
-        // theta = 2 atan(t), or pi + 2 atan(u) in the flipped chart u = -1/t.
-        Ball theta;
-        arb_atan(theta.get(), c.parameter[i].get(), prec);
-        arb_mul_2exp_si(theta.get(), theta.get(), 1);
-        if (c.flipped[i]) {
-            Ball pi;
-            arb_const_pi(pi.get(), prec);
-            arb_add(theta.get(), theta.get(), pi.get(), prec);
-        }
-        solver.release_charts();
-        return theta;
-    }
-
     const std::vector<Ellipse>& sites_;
-    std::vector<std::array<SiteId, 3>> faces_;
     double tolerance_;
-    std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers_;
+    CellVertexAngles angles_;
 };
 
 }  // namespace

@@ -230,15 +230,8 @@ def _outer_polygon(params):
 def _beyond_edges(polygon, px, py, depth):
     """Per point, per edge of the polygon (counter-clockwise): the point is certainly more than ``depth``
     inside that edge's line (a boolean per edge), in doubles with a forward error bound (as Shewchuk's
-    orient2d filter): cross(e, x - p) > bound + depth |e|."""
-    out = []
-    for (ax, ay), (bx, by) in zip(polygon, polygon[1:] + polygon[:1]):
-        ex, ey = bx - ax, by - ay
-        left, right = ex * (py - ay), ey * (px - ax)
-        bound = 4 * _EPS * (np.abs(left) + np.abs(right)) + 4 * _EPS * (abs(ex) + abs(ey)) * (
-            np.abs(px - ax) + np.abs(py - ay))
-        out.append(left - right > bound + depth * math.hypot(ex, ey))
-    return out
+    orient2d filter): cross(e, x - p) > bound + depth |e| (_beyond_edges_varying with one margin)."""
+    return _beyond_edges_varying(polygon, px, py, depth, 0.0)
 
 
 def _hull_candidates(params, boxes, depth):
