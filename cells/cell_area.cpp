@@ -1,14 +1,17 @@
 #include "cells/cell_area.hpp"
 
 #include "cells/cell_vertex_angles.hpp"
+#include "cells/edge_quadrature.hpp"
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
+#include "cells/normal_ray_point.hpp"
 #include "predicates/relative_position.hpp"
 #include "util/error.hpp"
 
 #include <acb_calc.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -52,6 +55,26 @@ void require_disjoint_or_nested(const std::vector<Ellipse>& sites) {
 // the reals, so that the real and imaginary parts of the integral enclose
 // the two integrals. Each measure is scaled by the cell's length unit L to a
 // power (area units), so that one absolute tolerance serves both.
+ComplexBall to_ball(const Interval& x) {
+    ComplexBall z;
+    Arf lo, hi;
+    arf_set_d(lo.get(), x.lo);
+    arf_set_d(hi.get(), x.hi);
+    arb_set_interval_arf(z.real(), lo.get(), hi.get(), 64);
+    return z;
+}
+
+NormalRayBisector::Densities as_balls(const MeasureIntervals& I) {
+    NormalRayBisector::Densities d;
+    d.area = to_ball(I.m[MeasureIntervals::area]);
+    d.length = to_ball(I.m[MeasureIntervals::length]);
+    for (int i = 0; i < 2; ++i) d.first[i] = to_ball(I.m[MeasureIntervals::first_x + i]);
+    for (int k = 0; k < 3; ++k) d.second[k] = to_ball(I.m[MeasureIntervals::second_xx + k]);
+    return d;
+}
+
+class DensityCache;
+
 struct EdgeIntegrand {
     NormalRayBisector* bisector;
     // Values at points (order 0) need only the goal's bits, not the working
@@ -61,21 +84,40 @@ struct EdgeIntegrand {
     long point_precision;
     int pair;  // 0: area + i L length, 1: first / L (x + i y), 2: second / L^2 (xx + i yy), 3: second / L^2 (xy)
     long length_unit;  // L = 2^length_unit (exact scaling)
-    // Arb evaluates the four pairs on mostly the same balls: keep the
-    // densities of each (midpoints and radii, exactly) for the next pair.
-    std::map<std::string, std::optional<NormalRayBisector::Densities>>* cache;
+    DensityCache* cache;
 };
 
 constexpr int kMeasurePairs = 4;
 
-std::string ball_key(const acb_t z, slong prec) {
-    char* m = arb_dump_str(acb_realref(z));
-    char* n = arb_dump_str(acb_imagref(z));
-    std::string key = std::string(m) + "|" + n + "|" + std::to_string(prec);
-    flint_free(m);
-    flint_free(n);
-    return key;
-}
+// Arb evaluates the four pairs on mostly the same balls: the densities of
+// each ball are kept for the next pair, found by the ball's midpoint and radii
+// rounded to doubles and the precision, and used only for the very ball they
+// were computed on (acb_equal): a rounded key can cost a recomputation, never
+// a wrong value.
+class DensityCache {
+public:
+    using Densities = std::optional<NormalRayBisector::Densities>;
+    // The slot for `z`, and whether it must be (re)computed.
+    std::pair<Densities*, bool> find(const acb_t z, slong prec) {
+        const std::array<double, 5> key = {arf_get_d(arb_midref(acb_realref(z)), ARF_RND_NEAR),
+                                           arf_get_d(arb_midref(acb_imagref(z)), ARF_RND_NEAR),
+                                           mag_get_d(arb_radref(acb_realref(z))),
+                                           mag_get_d(arb_radref(acb_imagref(z))), static_cast<double>(prec)};
+        auto [it, fresh] = entries_.try_emplace(key);
+        Entry& e = it->second;
+        if (!fresh && acb_equal(e.ball.get(), z)) return {&e.densities, false};
+        acb_set(e.ball.get(), z);
+        e.densities.reset();
+        return {&e.densities, true};
+    }
+
+private:
+    struct Entry {
+        ComplexBall ball;
+        Densities densities;
+    };
+    std::map<std::array<double, 5>, Entry> entries_;
+};
 
 // f + i g of the pair from the densities (scaled as above).
 void pair_value(const NormalRayBisector::Densities& d, int pair, long unit, slong prec, acb_t out) {
@@ -99,17 +141,17 @@ int edge_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong 
     }
     auto* e = static_cast<EdgeIntegrand*>(param);
     try {
-        auto [slot, fresh] = e->cache->try_emplace(ball_key(in, prec));
+        auto [slot, fresh] = e->cache->find(in, prec);
         if (fresh) {
             ComplexBall theta;
             acb_set(theta.get(), in);
             NormalRayBisector::Densities d;
             const bool point = order == 0 && e->point_precision < prec;
             NormalRayBisector* bisector = point ? e->point_bisector : e->bisector;
-            if (bisector->densities(theta, point ? e->point_precision : prec, d)) slot->second = std::move(d);
+            if (bisector->densities(theta, point ? e->point_precision : prec, d)) *slot = std::move(d);
         }
-        if (slot->second)
-            pair_value(*slot->second, e->pair, e->length_unit, prec, out);
+        if (*slot)
+            pair_value(**slot, e->pair, e->length_unit, prec, out);
         else
             acb_indeterminate(out);
     } catch (...) {
@@ -122,6 +164,35 @@ int edge_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong 
 struct MeasureSums {
     std::array<ComplexBall, kMeasurePairs> pairs;
 };
+
+// The goals (bits) that the double-interval stage serves.
+constexpr long kDoubleGoalBits = 44;
+// Measure j is scaled by L^-kLengthPower[j] to area units in the pairs (as
+// pair_value does): its tolerance is the area's times L^kLengthPower[j].
+constexpr int kLengthPower[MeasureIntervals::count] = {0, -1, 1, 1, 2, 2, 2};
+
+void add_to_pairs(const MeasureIntervals& I, long unit, long prec, MeasureSums& sums) {
+    const NormalRayBisector::Densities d = as_balls(I);
+    for (int pair = 0; pair < kMeasurePairs; ++pair) {
+        ComplexBall v;
+        pair_value(d, pair, unit, prec, v.get());
+        acb_add(sums.pairs[pair].get(), sums.pairs[pair].get(), v.get(), prec);
+    }
+}
+
+// Moves the ball's middle to the nearest double and widens it to still
+// contain the ball; returns that double.
+double centre_on_double(Ball& end) {
+    const double c = arf_get_d(arb_midref(end.get()), ARF_RND_NEAR);
+    Ball centre, difference;
+    arb_set_d(centre.get(), c);
+    arb_sub(difference.get(), end.get(), centre.get(), 64);
+    Mag radius;
+    arb_get_mag(radius.get(), difference.get());
+    arb_set(end.get(), centre.get());
+    mag_set(arb_radref(end.get()), radius.get());
+    return c;
+}
 
 class CellAreaSolver {
 public:
@@ -138,40 +209,46 @@ public:
         const std::size_t m = cell.edges.size();
         const std::vector<Ball> lifted = angles_.lifted(cell, prec);
 
-        // The cell is at least the site: its length unit and the tolerance's scale.
-        const double area_floor = r.site_area.mid_double();
+        // The scale of the tolerances and the length unit: the cell is at
+        // least the site; on the first pass half an estimate of its area (the
+        // final check below, not the estimate, decides).
+        double area_floor = r.site_area.mid_double();
+        if (pass == 0) area_floor = std::max(area_floor, 0.5 * estimated_area(cell, lifted));
         const long unit = std::lround(0.5 * std::log2(area_floor));  // L = 2^unit, about sqrt(area)
         const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
         Mag tol;
         // Per edge and pair an eighth of the tolerance's share: with the ends'
         // terms the area's width stays well below T * area.
         mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
-        acb_calc_integrate_opt_t options;
-        acb_calc_integrate_opt_init(options);
-        // 30 bits beyond the goal, in whole limbs.
-        const long point_precision = 64 * ((goal + 30 + 63) / 64);
+        // Below 45 bits the edges go to the double-interval quadrature first.
+        const bool in_doubles = goal <= kDoubleGoalBits;
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
-            NormalRayBisector point_bisector(site, sites_[cell.edges[k].neighbor]);
-            std::map<std::string, std::optional<NormalRayBisector::Densities>> cache;
-            ComplexBall a, b;
-            arb_get_mid_arb(a.real(), lifted[k].get());
-            arb_get_mid_arb(b.real(), lifted[k + 1].get());
-            for (int pair = 0; pair < kMeasurePairs; ++pair) {
-                EdgeIntegrand integrand{&bisector, &point_bisector, point_precision, pair, unit, &cache};
-                ComplexBall integral;
-                acb_calc_integrate(integral.get(), edge_integrand, &integrand, a.get(), b.get(), goal, tol.get(),
-                                   options, prec);
-                if (!acb_is_finite(integral.get())) {
-                    if (pair == 0) return std::nullopt;
-                    acb_indeterminate(integral.get());
+            NormalRayPoint double_point(site, sites_[cell.edges[k].neighbor]);
+            Ball ends[2] = {lifted[k], lifted[k + 1]};
+            bool integrated = false;
+            if (in_doubles) {
+                const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
+                double tolerances[MeasureIntervals::count];
+                for (int j = 0; j < MeasureIntervals::count; ++j)
+                    tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
+                if (const std::optional<MeasureIntervals> I =
+                        integrate_edge(bisector, double_point, rules_, a, b, tolerances)) {
+                    add_to_pairs(*I, unit, prec, sums);
+                    integrated = true;
+                    ++r.edges_in_doubles;
+                } else {
+                    ends[0] = lifted[k], ends[1] = lifted[k + 1];
                 }
-                acb_add(sums.pairs[pair].get(), sums.pairs[pair].get(), integral.get(), prec);
+            }
+            if (!integrated) {
+                if (!integrate_with_arb(bisector, ends, goal, tol, unit, prec, sums)) return std::nullopt;
+                ++r.edges_by_arb;
             }
             // The pieces between the certified end angles and their midpoints:
             // at most the radius times a bound of the density on the ball.
-            for (const Ball* end : {&lifted[k], &lifted[k + 1]}) {
+            for (const Ball* end : {&ends[0], &ends[1]}) {
                 ComplexBall theta(*end);
                 NormalRayBisector::Densities d;
                 if (!bisector.densities(theta, prec, d)) return std::nullopt;
@@ -206,6 +283,53 @@ public:
     }
 
 private:
+    // The cell's area by 8 Gauss nodes an edge in floating point, or 0 when
+    // a node fails: a scale, not a bound.
+    double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted) {
+        const Ellipse& site = sites_[cell.site];
+        const GaussLegendreRule& rule = rules_.rule(8);
+        double area = site_area(site, 64).mid_double();
+        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
+            NormalRayPoint nodes(site, sites_[cell.edges[k].neighbor]);
+            const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
+            const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
+            const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+            for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+                const std::optional<MeasureIntervals> d = nodes.densities(Interval(mid + half * rule.nodes[i].mid()));
+                if (!d) return 0;
+                area += half * rule.weights[i].mid() * d->m[MeasureIntervals::area].mid();
+            }
+        }
+        return std::isfinite(area) ? area : 0;
+    }
+
+    // The edge's measures between the midpoints of its end balls by Arb's
+    // integrator, added to the sums; false when the area's is not finite.
+    bool integrate_with_arb(NormalRayBisector& bisector, const Ball (&ends)[2],
+                            long goal, Mag& tol, long unit, long prec, MeasureSums& sums) {
+        acb_calc_integrate_opt_t options;
+        acb_calc_integrate_opt_init(options);
+        // 20 bits beyond the goal, in whole limbs.
+        const long point_precision = 64 * ((goal + 20 + 63) / 64);
+        NormalRayBisector point_bisector(bisector.first(), bisector.second());
+        DensityCache cache;
+        ComplexBall a, b;
+        arb_get_mid_arb(a.real(), ends[0].get());
+        arb_get_mid_arb(b.real(), ends[1].get());
+        for (int pair = 0; pair < kMeasurePairs; ++pair) {
+            EdgeIntegrand integrand{&bisector, &point_bisector, point_precision, pair, unit, &cache};
+            ComplexBall integral;
+            acb_calc_integrate(integral.get(), edge_integrand, &integrand, a.get(), b.get(), goal, tol.get(), options,
+                               prec);
+            if (!acb_is_finite(integral.get())) {
+                if (pair == 0) return false;
+                acb_indeterminate(integral.get());
+            }
+            acb_add(sums.pairs[pair].get(), sums.pairs[pair].get(), integral.get(), prec);
+        }
+        return true;
+    }
+
     // Perimeter, centroid and central second moments from the sums (about
     // the site's center C; the site adds pi a b / 4 R diag(a^2, b^2) R^T to
     // the second moments and nothing to the first).
@@ -252,6 +376,7 @@ private:
     const std::vector<Ellipse>& sites_;
     double tolerance_;
     CellVertexAngles angles_;
+    GaussLegendreRules rules_;
 };
 
 }  // namespace

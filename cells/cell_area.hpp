@@ -43,6 +43,9 @@ struct CellArea {
     std::array<Ball, 2> centroid;
     std::array<Ball, 3> second_moments;
     long precision = 0;      // Arb precision of the pass that met the tolerance (0: none was needed)
+    // The stages that integrated the edges in that pass: Gauss-Legendre in
+    // double intervals (cells/edge_quadrature.hpp) or Arb's integrator.
+    std::size_t edges_in_doubles = 0, edges_by_arb = 0;
 };
 
 // The working precision for a tolerance: 64 bits beyond its own bits.

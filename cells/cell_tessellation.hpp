@@ -64,6 +64,7 @@ struct Cell {
     std::vector<CellSide> sides;              // counter-clockwise around the site
     std::vector<std::array<double, 2>> ring;  // closed (first point not repeated); empty if unbounded or hidden
     long precision = 0;                       // Arb precision that met the tolerance
+    std::size_t edges_in_doubles = 0, edges_by_arb = 0;  // the stages of its integrals (CellArea)
 };
 
 struct CellTessellation {

@@ -297,8 +297,9 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     const double small = std::ldexp(1.0, static_cast<int>(std::max(-1000L, 4 - prec)));
     // Rounding noise can keep the step above `small`: stop as soon as it no
     // longer shrinks quadratically (the certificate judges the point).
+    // At one limb the double start is already as close as Arb would get it.
     double previous = INFINITY;
-    for (int k = 0; k < 60; ++k) {
+    for (int k = 0; k < (prec > 64 ? 60 : 0); ++k) {
         ray_point(bp, s0, prec, vx, vy);
         foot_newton(qb_, vx, vy, 1, prec, phi0);
         boundary_at(qb_, phi0, prec, bq);

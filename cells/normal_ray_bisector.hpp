@@ -78,6 +78,7 @@ public:
     bool densities(const ComplexBall& theta, long prec, Densities& out);
 
     const Ellipse& first() const { return *p_; }
+    const Ellipse& second() const { return *q_; }
 
     struct Boundary;  // p's or q's boundary at a complex angle (the .cpp)
 

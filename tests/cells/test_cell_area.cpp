@@ -301,6 +301,13 @@ TEST_CASE("cell areas: widths at 1e-15 and 1e-30 on small sets", "[cells]") {
     o.nested_fraction = Rational(1, 8);
     const std::vector<Ellipse> sites = generate_sites(o);
     const std::vector<CellArea> loose = built_areas(sites, 1e-9);
+    // At 1e-9 the edges go to the double-interval stage; beyond 44 bits to Arb's integrator.
+    std::size_t in_doubles = 0;
+    for (const CellArea& a : loose) {
+        in_doubles += a.edges_in_doubles;
+        CHECK(a.edges_by_arb == 0);
+    }
+    CHECK(in_doubles >= 3);
     for (double T : {1e-15, 1e-30}) {
         const std::vector<CellArea> tight = built_areas(sites, T);
         int bounded = 0;
@@ -309,6 +316,8 @@ TEST_CASE("cell areas: widths at 1e-15 and 1e-30 on small sets", "[cells]") {
             ++bounded;
             CHECK(relative_width(tight[i].area) <= T);
             CHECK(tight[i].precision >= cell_area_precision(T));
+            CHECK(tight[i].edges_in_doubles == 0);
+            CHECK(tight[i].edges_by_arb >= 2);
             // Nested enclosures of one number: the balls must overlap.
             CHECK(arb_overlaps(tight[i].area.get(), loose[i].area.get()));
         }

@@ -1,0 +1,216 @@
+#include "cells/normal_ray_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ellvor {
+namespace {
+
+using Site = NormalRayPoint::Site;
+
+double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
+
+Interval sym(double r) { return {-r, r}; }
+
+// Sine and cosine over an interval, by Arb, widened to intervals.
+void sin_cos(const Interval& angle, Interval& sin, Interval& cos) {
+    Ball x, s, c;
+    Arf lo, hi;
+    arf_set_d(lo.get(), angle.lo);
+    arf_set_d(hi.get(), angle.hi);
+    arb_set_interval_arf(x.get(), lo.get(), hi.get(), 64);
+    arb_sin_cos(s.get(), c.get(), x.get(), 64);
+    sin = enclose(s);
+    cos = enclose(c);
+}
+
+Interval dot(const Interval& ax, const Interval& ay, const Interval& bx, const Interval& by) { return ax * bx + ay * by; }
+
+// A site's boundary at an angle with the given sine and cosine: the point,
+// the unnormalized outward normal n~, their derivatives in the angle, and
+// N^2 = |n~|^2 (as Boundary in normal_ray_bisector.cpp).
+struct Frame {
+    Interval x, y, nx, ny, dx, dy, dnx, dny, n2;
+
+    Frame(const Site& e, const Interval& sin, const Interval& cos) {
+        const auto rotate = [&e](const Interval& lx, const Interval& ly, Interval& X, Interval& Y) {
+            X = lx * e.c - ly * e.s;
+            Y = lx * e.s + ly * e.c;
+        };
+        const Interval ac = e.a * cos, bs = e.b * sin, bc = e.b * cos, as = e.a * sin;
+        rotate(ac, bs, x, y);
+        x = x + e.xc;
+        y = y + e.yc;
+        rotate(bc, as, nx, ny);
+        n2 = as.square() + bc.square();
+        rotate(-as, bc, dx, dy);
+        rotate(-bs, ac, dnx, dny);
+    }
+};
+
+// The bisector system of normal_ray_bisector.cpp (BisectorSystem) at s, p's
+// boundary bp and q's boundary bq: F, its Jacobian in (s, phi), and the
+// theta-derivative of its second row.
+struct System {
+    Interval F[2], J[2][2], F1_theta;
+
+    System(const Site& q, const Frame& bp, const Frame& bq, const Interval& s) {
+        const Interval vx = bp.x + s * bp.nx, vy = bp.y + s * bp.ny;  // V = P + s n~
+        const Interval dx = vx - bq.x, dy = vy - bq.y;                 // V - Q
+        const Interval ex = bp.x - bq.x, ey = bp.y - bq.y;             // P - Q
+        const Interval e_n = dot(ex, ey, bp.nx, bp.ny);
+        F[0] = dot(dx, dy, bq.dx, bq.dy);
+        F[1] = dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
+        J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
+        J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
+        J[1][0] = 2.0 * e_n;
+        J[1][1] = -2.0 * F[0];
+        F1_theta = 2.0 * dot(ex, ey, bp.dx + s * bp.dnx, bp.dy + s * bp.dny);
+    }
+};
+
+// (V - Q) . n~q: positive when V lies outside q along its normal at Q.
+Interval side(const Frame& bp, const Frame& bq, const Interval& s) {
+    return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
+}
+
+// C = (mid J)^-1; false when singular.
+bool inverse_of_mid(const Interval (&J)[2][2], double (&C)[2][2]) {
+    const double a = J[0][0].mid(), b = J[0][1].mid(), c = J[1][0].mid(), d = J[1][1].mid();
+    const double det = a * d - b * c;
+    if (!(std::fabs(det) > 0) || !std::isfinite(det)) return false;
+    C[0][0] = d / det, C[0][1] = -b / det, C[1][0] = -c / det, C[1][1] = a / det;
+    return true;
+}
+
+Site site_of(const Ellipse& e) {
+    return {enclose(e.a()), enclose(e.b()), enclose(e.cos_rotation()), enclose(e.sin_rotation()),
+            enclose(e.xc()),  enclose(e.yc()), EllipseShape::of(e)};
+}
+
+}  // namespace
+
+NormalRayPoint::NormalRayPoint(const Ellipse& p, const Ellipse& q) : p_(site_of(p)), q_(site_of(q)) {
+    const EllipseShape &ps = p_.shape, &qs = q_.shape;
+    size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
+}
+
+bool NormalRayPoint::newton(double theta, const double (&start)[2], double (&x)[2]) const {
+    if (!std::isfinite(start[0])) return false;
+    x[0] = start[0], x[1] = start[1];
+    const Frame bp(p_, Interval(std::sin(theta)), Interval(std::cos(theta)));
+    // Until the step is at rounding level, or stops shrinking quadratically
+    // (rounding noise).
+    double previous = INFINITY;
+    for (int step = 0; step < 8; ++step) {
+        const System at(q_, bp, Frame(q_, Interval(std::sin(x[1])), Interval(std::cos(x[1]))), Interval(x[0]));
+        double C[2][2];
+        if (!inverse_of_mid(at.J, C)) return false;
+        const double f0 = at.F[0].mid(), f1 = at.F[1].mid();
+        const double d0 = C[0][0] * f0 + C[0][1] * f1, d1 = C[1][0] * f0 + C[1][1] * f1;
+        x[0] -= d0, x[1] -= d1;
+        if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
+        const double size = std::max(std::fabs(d0) / (1 + std::fabs(x[0])), std::fabs(d1) / (1 + std::fabs(x[1])));
+        if (size <= 1e-15 || (size > 0.25 * previous && size < 1e-8)) return x[0] > 0;
+        previous = size;
+    }
+    return false;
+}
+
+std::optional<MeasureIntervals> NormalRayPoint::densities(const Interval& theta) {
+    const EllipseShape &ps = p_.shape, &qs = q_.shape;
+    const double theta0 = theta.mid();
+    if (!std::isfinite(theta0)) return std::nullopt;
+    // Newton in doubles from the last node's root, which Gauss nodes, close
+    // to each other, make a good start; else from the bisector point on the
+    // ray (it may lead to another root of the system, which the certificate
+    // rejects).
+    double x0[2];
+    if (newton(theta0, last_, x0))
+        if (std::optional<MeasureIntervals> d = certified(theta, x0)) return d;
+    const std::optional<double> rho = equal_distance_on_normal(ps, qs, theta0, 1e12 * size_);
+    if (!rho || !(*rho > 0)) return std::nullopt;
+    double px, py, nx, ny;
+    ps.point(theta0, px, py);
+    ps.normal(theta0, nx, ny);
+    const double start[2] = {*rho / std::hypot(ps.b * std::cos(theta0), ps.a * std::sin(theta0)),
+                             qs.nearest_angle(px + *rho * nx, py + *rho * ny)};
+    if (!newton(theta0, start, x0)) return std::nullopt;
+    return certified(theta, x0);
+}
+
+std::optional<MeasureIntervals> NormalRayPoint::certified(const Interval& theta, const double (&x0)[2]) {
+    // F(x0) over the whole interval of theta, and C the midpoint inverse of the Jacobian.
+    Interval sin, cos;
+    sin_cos(theta, sin, cos);
+    const Frame bp(p_, sin, cos);
+    sin_cos(Interval(x0[1]), sin, cos);
+    const System at(q_, bp, Frame(q_, sin, cos), Interval(x0[0]));
+    double C[2][2];
+    if (!inverse_of_mid(at.J, C)) return std::nullopt;
+    const Interval* F = at.F;
+    // K = -C F(x0) + (I - C J(X)) (X - x0) inside the interior of X - x0?
+    Interval CF[2];
+    for (int i = 0; i < 2; ++i) CF[i] = C[i][0] * F[0] + C[i][1] * F[1];
+    double r[2];
+    for (int i = 0; i < 2; ++i) r[i] = 2 * magnitude(CF[i]) + std::ldexp(1 + std::fabs(x0[i]), -44);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
+        const Interval s = Interval(x0[0]) + sym(r[0]);
+        if (!s.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
+        sin_cos(Interval(x0[1]) + sym(r[1]), sin, cos);
+        const Frame bq(q_, sin, cos);
+        const System on_box(q_, bp, bq, s);
+        Interval K[2];
+        bool inside = true;
+        for (int i = 0; i < 2; ++i) {
+            K[i] = -CF[i];
+            for (int j = 0; j < 2; ++j) {
+                Interval m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j]);
+                if (i == j) m = m + Interval(1.0);
+                K[i] = K[i] + m * sym(r[j]);
+            }
+            inside = inside && K[i].lo > -r[i] && K[i].hi < r[i];
+        }
+        if (!inside) {
+            for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));
+            continue;
+        }
+        if (!side(bp, bq, s).positive()) return std::nullopt;
+        last_[0] = x0[0], last_[1] = x0[1];
+        // The root: s in x0 + K; the tie derivatives over X contain their values there.
+        const Interval root = Interval(x0[0]) + K[0];
+        const Interval& g_s = on_box.J[1][0];
+        if (g_s.contains_zero()) return std::nullopt;
+        const Interval ds = -(on_box.F1_theta / g_s);  // s' = -g_theta / g_s
+
+        // The densities of NormalRayBisector::densities, in intervals.
+        const Interval ab = p_.a * p_.b;
+        Interval m[3], power = root;  // power = s^(k+1)
+        for (int k = 0; k < 3; ++k) {
+            m[k] = bp.n2 * power / Interval(k + 1.0);
+            power = power * root;
+            m[k] = m[k] + ab * power / Interval(k + 2.0);
+        }
+        const Interval rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
+        MeasureIntervals out;
+        out.m[MeasureIntervals::area] = m[0];
+        for (int i = 0; i < 2; ++i) out.m[MeasureIntervals::first_x + i] = rel[i] * m[0] + nrm[i] * m[1];
+        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+        for (int k = 0; k < 3; ++k) {
+            const int i = pairs[k][0], j = pairs[k][1];
+            out.m[MeasureIntervals::second_xx + k] =
+                rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2];
+        }
+        const Interval vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
+        const Interval v2 = dot(vx, vy, vx, vy);
+        if (!v2.positive()) return std::nullopt;
+        out.m[MeasureIntervals::length] = v2.sqrt();
+        for (const Interval& x : out.m)
+            if (!x.finite()) return std::nullopt;
+        return out;
+    }
+    return std::nullopt;
+}
+
+}  // namespace ellvor

@@ -1,0 +1,59 @@
+// The cell densities of cells/normal_ray_bisector.hpp at one real angle
+// theta, certified in outward-rounded double intervals (util/interval.hpp).
+// These are the quadrature nodes of the cell integrals: at a tolerance of
+// 1e-9 they need about 40 bits, and Arb's complex balls cost ten times what
+// the doubles do there.
+//
+// Same system and certificate as NormalRayBisector (docs/DESIGN.md §10), with
+// real unknowns: the 2 x 2 Krawczyk test in x = (s, phi), p's boundary taken
+// over the whole interval of theta, proves one real root in the box X for
+// every theta in it; Re s > 0 and (V - Q) . n~q > 0 on X make that root the
+// bisector point of p's normal ray, as the header of normal_ray_bisector.hpp
+// argues. Sines and cosines come from Arb (64 bits) and are widened to
+// intervals. Anything it cannot prove is "not certified", and the caller
+// asks the Arb solver instead.
+#pragma once
+
+#include "cells/normal_ray_bisector.hpp"
+#include "util/interval.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace ellvor {
+
+// The seven measures of NormalRayBisector::Densities as intervals: their
+// densities at an angle, or their integrals over an edge.
+struct MeasureIntervals {
+    enum Index { area, length, first_x, first_y, second_xx, second_xy, second_yy, count };
+    Interval m[count];
+};
+
+class NormalRayPoint {
+public:
+    NormalRayPoint(const Ellipse& p, const Ellipse& q);
+
+    // The densities at every angle in `theta` (a real interval); nothing when
+    // the certificate fails there.
+    std::optional<MeasureIntervals> densities(const Interval& theta);
+
+    struct Site {
+        Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center
+        EllipseShape shape;
+    };
+
+private:
+    // Newton on the system in doubles at the angle theta from `start`; false
+    // unless it converges to a root with s > 0 (any root it finds is only a
+    // start: the certificate judges it).
+    bool newton(double theta, const double (&start)[2], double (&x)[2]) const;
+    // The certificate about the point x0 (Newton's root).
+    std::optional<MeasureIntervals> certified(const Interval& theta, const double (&x0)[2]);
+
+    Site p_, q_;
+    double size_;  // scale of the pair, for the double start
+    // The root at the last node: the next node's start.
+    double last_[2] = {NAN, NAN};
+};
+
+}  // namespace ellvor

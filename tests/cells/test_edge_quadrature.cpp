@@ -1,0 +1,172 @@
+// The double-interval stage of the cell integrals (cells/edge_quadrature.hpp):
+// its Gauss-Legendre rules against the moments of x^k, its nodes
+// (NormalRayPoint) against the Arb solver at 200 bits, and its edge integrals
+// against Arb's own integrator of the same density, two independent proofs
+// that must overlap.
+#include "cells/edge_quadrature.hpp"
+#include "tests/support/random_sites.hpp"
+#include "util/error.hpp"
+
+#include <acb_calc.h>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace ellvor;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool overlap(const Interval& x, const ComplexBall& z) {
+    Ball real;
+    arb_set(real.get(), z.real());
+    const Interval r = enclose(real);
+    return x.lo <= r.hi && r.lo <= x.hi;
+}
+
+double relative_width(const Interval& x) { return (x.hi - x.lo) / std::max(std::fabs(x.lo), std::fabs(x.hi)); }
+
+// Two random disjoint ellipses, p near the origin and q at distance 4..12.
+std::pair<Ellipse, Ellipse> random_pair(std::mt19937_64& rng) {
+    for (;;) {
+        const Ellipse p(test::random_fraction(rng, 4, 30, 10), test::random_fraction(rng, 4, 30, 10),
+                        test::random_fraction(rng, -9, 9, 10), test::random_fraction(rng, -5, 5, 10),
+                        test::random_fraction(rng, -5, 5, 10));
+        const Ellipse q(test::random_fraction(rng, 4, 30, 10), test::random_fraction(rng, 4, 30, 10),
+                        test::random_fraction(rng, -9, 9, 10), test::random_fraction(rng, -120, 120, 10),
+                        test::random_fraction(rng, -120, 120, 10));
+        if (test::bounding_circles_apart(p, q)) return {p, q};
+    }
+}
+
+// The angle on p whose normal points at q's center, in doubles.
+double facing_angle(const Ellipse& p, const Ellipse& q) {
+    const double dx = q.xc().to_double() - p.xc().to_double(), dy = q.yc().to_double() - p.yc().to_double();
+    const double c = p.cos_rotation().to_double(), s = p.sin_rotation().to_double();
+    // In p's frame the normal at theta is along (b cos theta, a sin theta).
+    const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
+    return std::atan2(ly * p.b().to_double(), lx * p.a().to_double());
+}
+
+struct AreaIntegrand {
+    NormalRayBisector* bisector;
+};
+
+int area_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong prec) {
+    if (order > 1) {
+        acb_indeterminate(out);
+        return 0;
+    }
+    ComplexBall theta, density;
+    acb_set(theta.get(), in);
+    if (static_cast<AreaIntegrand*>(param)->bisector->area_density(theta, prec, density))
+        acb_set(out, density.get());
+    else
+        acb_indeterminate(out);
+    return 0;
+}
+
+}  // namespace
+
+TEST_CASE("Gauss-Legendre rules integrate x^k exactly up to k = 2n - 1", "[cells][quadrature]") {
+    GaussLegendreRules rules;
+    for (int n = 1; n <= GaussLegendreRules::kMaxPoints; ++n) {
+        const GaussLegendreRule& rule = rules.rule(n);
+        REQUIRE(rule.nodes.size() == static_cast<std::size_t>(n));
+        for (int k : {0, 1, 2 * n - 2, 2 * n - 1}) {
+            if (k < 0) continue;
+            Interval sum(0.0);
+            for (int i = 0; i < n; ++i) {
+                Interval power(1.0);
+                for (int j = 0; j < k; ++j) power = power * rule.nodes[i];
+                sum = sum + rule.weights[i] * power;
+            }
+            const double exact = k % 2 ? 0.0 : 2.0 / (k + 1);
+            INFO("n " << n << " k " << k << " sum [" << sum.lo << ", " << sum.hi << "]");
+            CHECK(sum.lo <= exact);
+            CHECK(exact <= sum.hi);
+            CHECK(sum.hi - sum.lo < 1e-13);
+        }
+    }
+    CHECK_THROWS_AS(rules.rule(0), Error);
+    CHECK_THROWS_AS(rules.rule(GaussLegendreRules::kMaxPoints + 1), Error);
+}
+
+TEST_CASE("NormalRayPoint: its densities contain the Arb solver's at 200 bits", "[cells][quadrature]") {
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> spread(-0.6, 0.6);
+    int compared = 0, certified = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayPoint fast(p, q);
+        NormalRayBisector arb(p, q);
+        const double theta = facing_angle(p, q) + spread(rng);
+        ComplexBall ball;
+        arb_set_d(ball.real(), theta);
+        NormalRayBisector::Densities reference;
+        if (!arb.densities(ball, 200, reference)) continue;
+        ++compared;
+        const std::optional<MeasureIntervals> d = fast.densities(Interval(theta));
+        if (!d) continue;
+        ++certified;
+        const ComplexBall* expected[MeasureIntervals::count] = {&reference.area,      &reference.length,
+                                                                &reference.first[0],  &reference.first[1],
+                                                                &reference.second[0], &reference.second[1],
+                                                                &reference.second[2]};
+        for (int j = 0; j < MeasureIntervals::count; ++j) {
+            INFO("trial " << trial << " measure " << j << " [" << d->m[j].lo << ", " << d->m[j].hi << "]");
+            CHECK(overlap(d->m[j], *expected[j]));
+        }
+        CHECK(relative_width(d->m[MeasureIntervals::area]) < 1e-11);
+        CHECK(relative_width(d->m[MeasureIntervals::length]) < 1e-11);
+    }
+    // The stage must be reached: it certifies (nearly) every point Arb does.
+    CHECK(compared >= 40);
+    CHECK(certified >= compared * 9 / 10);
+}
+
+TEST_CASE("integrate_edge: the area over an edge piece overlaps Arb's integral", "[cells][quadrature]") {
+    std::mt19937_64 rng(7);
+    GaussLegendreRules rules;
+    int integrated = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayBisector boxes(p, q), reference(p, q);
+        NormalRayPoint nodes(p, q);
+        const double a = facing_angle(p, q) - 0.4, b = a + 0.8;
+        const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
+        const std::optional<MeasureIntervals> I = integrate_edge(boxes, nodes, rules, a, b, tolerance);
+        REQUIRE(I);
+        ++integrated;
+        for (int j = 0; j < MeasureIntervals::count; ++j) CHECK(I->m[j].hi - I->m[j].lo <= 2 * tolerance[j]);
+        AreaIntegrand param{&reference};
+        ComplexBall A, B, exact;
+        arb_set_d(A.real(), a);
+        arb_set_d(B.real(), b);
+        Mag tol;
+        mag_set_d(tol.get(), 1e-25);
+        acb_calc_integrate_opt_t options;
+        acb_calc_integrate_opt_init(options);
+        acb_calc_integrate(exact.get(), area_integrand, &param, A.get(), B.get(), 90, tol.get(), options, 128);
+        REQUIRE(acb_is_finite(exact.get()));
+        INFO("trial " << trial << " doubles [" << I->m[MeasureIntervals::area].lo << ", "
+                      << I->m[MeasureIntervals::area].hi << "]");
+        CHECK(overlap(I->m[MeasureIntervals::area], exact));
+    }
+    CHECK(integrated == 12);
+}
+
+TEST_CASE("integrate_edge: a range the bisector does not reach is not certified", "[cells][quadrature]") {
+    // Two unit circles 10 apart: p's normal rays facing away from q never
+    // meet the bisector; the stage must say so, not return a number.
+    const Ellipse p = Ellipse::circle(Rational(0), Rational(0), Rational(1));
+    const Ellipse q = Ellipse::circle(Rational(10), Rational(0), Rational(1));
+    NormalRayBisector boxes(p, q);
+    NormalRayPoint nodes(p, q);
+    GaussLegendreRules rules;
+    const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
+    CHECK(!integrate_edge(boxes, nodes, rules, kPi - 0.2, kPi + 0.2, tolerance));
+    CHECK(!nodes.densities(Interval(kPi)));
+}
