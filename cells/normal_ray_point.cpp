@@ -24,25 +24,37 @@ void sin_cos(const Interval& angle, Interval& sin, Interval& cos) {
     cos = enclose(c);
 }
 
-Interval dot(const Interval& ax, const Interval& ay, const Interval& bx, const Interval& by) { return ax * bx + ay * by; }
+template <class T>
+T dot(const T& ax, const T& ay, const T& bx, const T& by) {
+    return ax * bx + ay * by;
+}
+
+Interval square(const Interval& x) { return x.square(); }
+double square(double x) { return x * x; }
+double mid(const Interval& x) { return x.mid(); }
+double mid(double x) { return x; }
 
 // A site's boundary at an angle with the given sine and cosine: the point,
 // the unnormalized outward normal n~, their derivatives in the angle, and
-// N^2 = |n~|^2 (as Boundary in normal_ray_bisector.cpp).
+// N^2 = |n~|^2 (as Boundary in normal_ray_bisector.cpp). T: Interval for the
+// certificate, the site a Site; double for Newton, the site its EllipseShape
+// (the same member names).
+template <class T>
 struct Frame {
-    Interval x, y, nx, ny, dx, dy, dnx, dny, n2;
+    T x, y, nx, ny, dx, dy, dnx, dny, n2;
 
-    Frame(const Site& e, const Interval& sin, const Interval& cos) {
-        const auto rotate = [&e](const Interval& lx, const Interval& ly, Interval& X, Interval& Y) {
+    template <class S>
+    Frame(const S& e, const T& sin, const T& cos) {
+        const auto rotate = [&e](const T& lx, const T& ly, T& X, T& Y) {
             X = lx * e.c - ly * e.s;
             Y = lx * e.s + ly * e.c;
         };
-        const Interval ac = e.a * cos, bs = e.b * sin, bc = e.b * cos, as = e.a * sin;
+        const T ac = e.a * cos, bs = e.b * sin, bc = e.b * cos, as = e.a * sin;
         rotate(ac, bs, x, y);
         x = x + e.xc;
         y = y + e.yc;
         rotate(bc, as, nx, ny);
-        n2 = as.square() + bc.square();
+        n2 = square(as) + square(bc);
         rotate(-as, bc, dx, dy);
         rotate(-bs, ac, dnx, dny);
     }
@@ -51,14 +63,16 @@ struct Frame {
 // The bisector system of normal_ray_bisector.cpp (BisectorSystem) at s, p's
 // boundary bp and q's boundary bq: F, its Jacobian in (s, phi), and the
 // theta-derivative of its second row.
+template <class T>
 struct System {
-    Interval F[2], J[2][2], F1_theta;
+    T F[2], J[2][2], F1_theta;
 
-    System(const Site& q, const Frame& bp, const Frame& bq, const Interval& s) {
-        const Interval vx = bp.x + s * bp.nx, vy = bp.y + s * bp.ny;  // V = P + s n~
-        const Interval dx = vx - bq.x, dy = vy - bq.y;                 // V - Q
-        const Interval ex = bp.x - bq.x, ey = bp.y - bq.y;             // P - Q
-        const Interval e_n = dot(ex, ey, bp.nx, bp.ny);
+    template <class S>
+    System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s) {
+        const T vx = bp.x + s * bp.nx, vy = bp.y + s * bp.ny;  // V = P + s n~
+        const T dx = vx - bq.x, dy = vy - bq.y;                 // V - Q
+        const T ex = bp.x - bq.x, ey = bp.y - bq.y;             // P - Q
+        const T e_n = dot(ex, ey, bp.nx, bp.ny);
         F[0] = dot(dx, dy, bq.dx, bq.dy);
         F[1] = dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
@@ -70,13 +84,14 @@ struct System {
 };
 
 // (V - Q) . n~q: positive when V lies outside q along its normal at Q.
-Interval side(const Frame& bp, const Frame& bq, const Interval& s) {
+Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interval& s) {
     return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
 }
 
 // C = (mid J)^-1; false when singular.
-bool inverse_of_mid(const Interval (&J)[2][2], double (&C)[2][2]) {
-    const double a = J[0][0].mid(), b = J[0][1].mid(), c = J[1][0].mid(), d = J[1][1].mid();
+template <class T>
+bool inverse_of_mid(const T (&J)[2][2], double (&C)[2][2]) {
+    const double a = mid(J[0][0]), b = mid(J[0][1]), c = mid(J[1][0]), d = mid(J[1][1]);
     const double det = a * d - b * c;
     if (!(std::fabs(det) > 0) || !std::isfinite(det)) return false;
     C[0][0] = d / det, C[0][1] = -b / det, C[1][0] = -c / det, C[1][1] = a / det;
@@ -98,15 +113,15 @@ NormalRayPoint::NormalRayPoint(const Ellipse& p, const Ellipse& q) : p_(site_of(
 bool NormalRayPoint::newton(double theta, const double (&start)[2], double (&x)[2]) const {
     if (!std::isfinite(start[0])) return false;
     x[0] = start[0], x[1] = start[1];
-    const Frame bp(p_, Interval(std::sin(theta)), Interval(std::cos(theta)));
+    const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
     // Until the step is at rounding level, or stops shrinking quadratically
     // (rounding noise).
     double previous = INFINITY;
     for (int step = 0; step < 8; ++step) {
-        const System at(q_, bp, Frame(q_, Interval(std::sin(x[1])), Interval(std::cos(x[1]))), Interval(x[0]));
+        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1])), x[0]);
         double C[2][2];
         if (!inverse_of_mid(at.J, C)) return false;
-        const double f0 = at.F[0].mid(), f1 = at.F[1].mid();
+        const double f0 = at.F[0], f1 = at.F[1];
         const double d0 = C[0][0] * f0 + C[0][1] * f1, d1 = C[1][0] * f0 + C[1][1] * f1;
         x[0] -= d0, x[1] -= d1;
         if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
@@ -143,9 +158,9 @@ std::optional<MeasureIntervals> NormalRayPoint::certified(const Interval& theta,
     // F(x0) over the whole interval of theta, and C the midpoint inverse of the Jacobian.
     Interval sin, cos;
     sin_cos(theta, sin, cos);
-    const Frame bp(p_, sin, cos);
+    const Frame<Interval> bp(p_, sin, cos);
     sin_cos(Interval(x0[1]), sin, cos);
-    const System at(q_, bp, Frame(q_, sin, cos), Interval(x0[0]));
+    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin, cos), Interval(x0[0]));
     double C[2][2];
     if (!inverse_of_mid(at.J, C)) return std::nullopt;
     const Interval* F = at.F;
@@ -159,8 +174,8 @@ std::optional<MeasureIntervals> NormalRayPoint::certified(const Interval& theta,
         const Interval s = Interval(x0[0]) + sym(r[0]);
         if (!s.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
         sin_cos(Interval(x0[1]) + sym(r[1]), sin, cos);
-        const Frame bq(q_, sin, cos);
-        const System on_box(q_, bp, bq, s);
+        const Frame<Interval> bq(q_, sin, cos);
+        const System<Interval> on_box(q_, bp, bq, s);
         Interval K[2];
         bool inside = true;
         for (int i = 0; i < 2; ++i) {
