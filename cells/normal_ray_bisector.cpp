@@ -269,8 +269,13 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     return solve(theta, prec, s_out, nullptr, nullptr, nullptr);
 }
 
+bool NormalRayBisector::solve(const ComplexBall& theta, long prec, LinearModel& model) {
+    ComplexBall s;
+    return solve(theta, prec, s, nullptr, nullptr, nullptr, &model);
+}
+
 bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& s_out, ComplexBall* tie_ds,
-                              ComplexBall* tie_dtheta, Boundary* p_boundary) {
+                              ComplexBall* tie_dtheta, Boundary* p_boundary, LinearModel* model) {
     set_precision(prec);
     // The start: the bisector point on the real normal ray at the middle of
     // the ball, in doubles.
@@ -398,6 +403,12 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
             if (tie_ds) *tie_ds = on_box.J.m[1][0];
             if (tie_dtheta) *tie_dtheta = on_box.F_theta[1];
             if (p_boundary) *p_boundary = std::move(bpT);
+            if (model) {
+                model->mid = mid;
+                model->s0 = s0;
+                model->s1 = slope[0];
+                acb_get_mag(model->remainder.get(), K[0].get());
+            }
             return true;
         }
         for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));

@@ -54,6 +54,16 @@ public:
     // large, or has no bisector point: then nothing is claimed).
     bool solve(const ComplexBall& theta, long prec, ComplexBall& s);
 
+    // The root's linear model on the ball: for every theta in it,
+    // s(theta) = s0 + s1 (theta - mid) + e(theta), e holomorphic there with
+    // |e| <= remainder (the certificate's own form, see above). False when
+    // solve() is.
+    struct LinearModel {
+        ComplexBall mid, s0, s1;
+        Mag remainder;
+    };
+    bool solve(const ComplexBall& theta, long prec, LinearModel& model);
+
     // The cell's area density on the edge (docs/DESIGN.md §10): the area
     // swept by p's normal segments [0, rho(theta)] per unit of theta,
     //     rho |P'| + kappa |P'| rho^2 / 2 = s N^2 + a b s^2 / 2.
@@ -88,7 +98,7 @@ private:
     // root, (P - Q) . n~ and (P - Q) . (P' + s n~') (for s'), and p's boundary
     // on the theta-ball.
     bool solve(const ComplexBall& theta, long prec, ComplexBall& s, ComplexBall* tie_ds, ComplexBall* tie_dtheta,
-               Boundary* p_boundary);
+               Boundary* p_boundary, LinearModel* model = nullptr);
 
     const Ellipse* p_;
     const Ellipse* q_;

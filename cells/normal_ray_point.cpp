@@ -132,7 +132,54 @@ bool NormalRayPoint::newton(double theta, const double (&start)[2], double (&x)[
     return false;
 }
 
+// The certified root at an interval of theta: s, its derivative s', and p's
+// boundary there.
+struct NormalRayPoint::Root {
+    Frame<Interval> bp;
+    Interval s, ds;
+};
+
 std::optional<MeasureIntervals> NormalRayPoint::densities(const Interval& theta) {
+    const std::optional<Root> r = root(theta);
+    if (!r) return std::nullopt;
+    const Frame<Interval>& bp = r->bp;
+    const Interval &s = r->s, &ds = r->ds;
+    // The densities of NormalRayBisector::densities, in intervals.
+    const Interval ab = p_.a * p_.b;
+    Interval m[3], power = s;  // power = s^(k+1)
+    for (int k = 0; k < 3; ++k) {
+        m[k] = bp.n2 * power / Interval(k + 1.0);
+        power = power * s;
+        m[k] = m[k] + ab * power / Interval(k + 2.0);
+    }
+    const Interval rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
+    MeasureIntervals out;
+    out.m[MeasureIntervals::area] = m[0];
+    for (int i = 0; i < 2; ++i) out.m[MeasureIntervals::first_x + i] = rel[i] * m[0] + nrm[i] * m[1];
+    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+    for (int k = 0; k < 3; ++k) {
+        const int i = pairs[k][0], j = pairs[k][1];
+        out.m[MeasureIntervals::second_xx + k] =
+            rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2];
+    }
+    const Interval vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
+    const Interval v2 = dot(vx, vy, vx, vy);
+    if (!v2.positive()) return std::nullopt;
+    out.m[MeasureIntervals::length] = v2.sqrt();
+    for (const Interval& x : out.m)
+        if (!x.finite()) return std::nullopt;
+    return out;
+}
+
+std::optional<std::array<Interval, 2>> NormalRayPoint::point(const Interval& theta) {
+    const std::optional<Root> r = root(theta);
+    if (!r) return std::nullopt;
+    const std::array<Interval, 2> v = {r->bp.x + r->s * r->bp.nx, r->bp.y + r->s * r->bp.ny};
+    if (!v[0].finite() || !v[1].finite()) return std::nullopt;
+    return v;
+}
+
+std::optional<NormalRayPoint::Root> NormalRayPoint::root(const Interval& theta) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const double theta0 = theta.mid();
     if (!std::isfinite(theta0)) return std::nullopt;
@@ -142,7 +189,7 @@ std::optional<MeasureIntervals> NormalRayPoint::densities(const Interval& theta)
     // rejects).
     double x0[2];
     if (newton(theta0, last_, x0))
-        if (std::optional<MeasureIntervals> d = certified(theta, x0)) return d;
+        if (std::optional<Root> r = certified(theta, x0)) return r;
     const std::optional<double> rho = equal_distance_on_normal(ps, qs, theta0, 1e12 * size_);
     if (!rho || !(*rho > 0)) return std::nullopt;
     double px, py, nx, ny;
@@ -154,7 +201,7 @@ std::optional<MeasureIntervals> NormalRayPoint::densities(const Interval& theta)
     return certified(theta, x0);
 }
 
-std::optional<MeasureIntervals> NormalRayPoint::certified(const Interval& theta, const double (&x0)[2]) {
+std::optional<NormalRayPoint::Root> NormalRayPoint::certified(const Interval& theta, const double (&x0)[2]) {
     // F(x0) over the whole interval of theta, and C the midpoint inverse of the Jacobian.
     Interval sin, cos;
     sin_cos(theta, sin, cos);
@@ -194,36 +241,9 @@ std::optional<MeasureIntervals> NormalRayPoint::certified(const Interval& theta,
         if (!side(bp, bq, s).positive()) return std::nullopt;
         last_[0] = x0[0], last_[1] = x0[1];
         // The root: s in x0 + K; the tie derivatives over X contain their values there.
-        const Interval root = Interval(x0[0]) + K[0];
         const Interval& g_s = on_box.J[1][0];
         if (g_s.contains_zero()) return std::nullopt;
-        const Interval ds = -(on_box.F1_theta / g_s);  // s' = -g_theta / g_s
-
-        // The densities of NormalRayBisector::densities, in intervals.
-        const Interval ab = p_.a * p_.b;
-        Interval m[3], power = root;  // power = s^(k+1)
-        for (int k = 0; k < 3; ++k) {
-            m[k] = bp.n2 * power / Interval(k + 1.0);
-            power = power * root;
-            m[k] = m[k] + ab * power / Interval(k + 2.0);
-        }
-        const Interval rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
-        MeasureIntervals out;
-        out.m[MeasureIntervals::area] = m[0];
-        for (int i = 0; i < 2; ++i) out.m[MeasureIntervals::first_x + i] = rel[i] * m[0] + nrm[i] * m[1];
-        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
-        for (int k = 0; k < 3; ++k) {
-            const int i = pairs[k][0], j = pairs[k][1];
-            out.m[MeasureIntervals::second_xx + k] =
-                rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2];
-        }
-        const Interval vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
-        const Interval v2 = dot(vx, vy, vx, vy);
-        if (!v2.positive()) return std::nullopt;
-        out.m[MeasureIntervals::length] = v2.sqrt();
-        for (const Interval& x : out.m)
-            if (!x.finite()) return std::nullopt;
-        return out;
+        return Root{bp, Interval(x0[0]) + K[0], -(on_box.F1_theta / g_s)};  // s' = -g_theta / g_s
     }
     return std::nullopt;
 }

@@ -17,6 +17,7 @@
 #include "cells/normal_ray_bisector.hpp"
 #include "util/interval.hpp"
 
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -36,6 +37,8 @@ public:
     // The densities at every angle in `theta` (a real interval); nothing when
     // the certificate fails there.
     std::optional<MeasureIntervals> densities(const Interval& theta);
+    // The bisector point V = P + s n~ at every angle in `theta`; likewise.
+    std::optional<std::array<Interval, 2>> point(const Interval& theta);
 
     struct Site {
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center
@@ -47,8 +50,11 @@ private:
     // unless it converges to a root with s > 0 (any root it finds is only a
     // start: the certificate judges it).
     bool newton(double theta, const double (&start)[2], double (&x)[2]) const;
+    struct Root;
+    // The certified root at theta, from the last root or from the ray.
+    std::optional<Root> root(const Interval& theta);
     // The certificate about the point x0 (Newton's root).
-    std::optional<MeasureIntervals> certified(const Interval& theta, const double (&x0)[2]);
+    std::optional<Root> certified(const Interval& theta, const double (&x0)[2]);
 
     Site p_, q_;
     double size_;  // scale of the pair, for the double start

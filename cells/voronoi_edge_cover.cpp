@@ -1,8 +1,10 @@
 #include "cells/voronoi_edge_cover.hpp"
 
+#include "cells/normal_ray_point.hpp"
 #include "util/error.hpp"
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace ellvor {
@@ -73,12 +75,95 @@ double magnitude_up(const acb_t z) {
     return mag_get_d(m.get());
 }
 
+// Points a second-order piece may ask for before it is halved instead.
+constexpr double kMaxPointsAPiece = 4096;
+
+// Bounds on a piece J = [l, h] from the root's linear model on the box Z
+// about J (real radius half + margin, imaginary radius margin): with
+// s_lin = s0 + s1 (theta - mid) and W = P + s_lin n~ = C + R (c (a + b s_lin),
+// sn (b + a s_lin)) (c, sn the cosine and sine of theta, R the rotation),
+// V = W + e n~ where |e n~| <= M = remainder sup_Z |n~| on Z, so on J
+// (Cauchy, margin the distance from J to Z's boundary)
+//     |V'| <= |W'| + M / margin,   |V''| <= |W''| + 2 M / margin^2,
+// W' and W'' in closed form over J (s_lin'' = 0):
+//     u' = -sn (a + b s_lin) + c b s1,     v' = c (b + a s_lin) + sn a s1,
+//     u'' = -c (a + b s_lin) - 2 sn b s1,  v'' = -sn (b + a s_lin) + 2 c a s1.
+struct PieceBounds {
+    double speed, curvature;  // the bounds of |V'| and |V''| on J
+    Ball x, y;                // V(J)
+};
+
+std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, const SiteBalls& p, double l, double h,
+                                        double margin, long prec) {
+    const double half = 0.5 * (h - l), m = 0.5 * (l + h);
+    ComplexBall z;
+    arf_set_d(arb_midref(z.real()), m);
+    mag_set_d(arb_radref(z.real()), half + margin);
+    mag_set_d(arb_radref(z.imag()), margin);
+    NormalRayBisector::LinearModel model;
+    if (!bisector.solve(z, prec, model)) return std::nullopt;
+    // sup_Z |n~| = sup |(b c, a sn)|
+    ComplexBall c, sn, t;
+    acb_sin_cos(sn.get(), c.get(), z.get(), prec);
+    acb_mul_arb(t.get(), c.get(), p.b.get(), prec);
+    const double bc = magnitude_up(t.get());
+    acb_mul_arb(t.get(), sn.get(), p.a.get(), prec);
+    const double M = mag_get_d(model.remainder.get()) * hypot_up(bc, magnitude_up(t.get()));
+
+    // Over J, in real balls.
+    const Ball J = real_ball(l, h, prec);
+    Ball cj, sj, s_lin, s1, u1, v1, u2, v2, A, B, w;
+    arb_sin_cos(sj.get(), cj.get(), J.get(), prec);
+    arb_sub(s_lin.get(), J.get(), model.mid.real(), prec);
+    arb_set(s1.get(), model.s1.real());
+    arb_mul(s_lin.get(), s_lin.get(), s1.get(), prec);
+    arb_add(s_lin.get(), s_lin.get(), model.s0.real(), prec);
+    arb_mul(A.get(), p.b.get(), s_lin.get(), prec);  // A = a + b s_lin
+    arb_add(A.get(), A.get(), p.a.get(), prec);
+    arb_mul(B.get(), p.a.get(), s_lin.get(), prec);  // B = b + a s_lin
+    arb_add(B.get(), B.get(), p.b.get(), prec);
+    const auto combine = [prec](Ball& out, const Ball& f, const Ball& g, const Ball& k, const Ball& e, const Ball& s1,
+                                int scale) {  // out = f g + scale k e s1
+        Ball t;
+        arb_mul(out.get(), f.get(), g.get(), prec);
+        arb_mul(t.get(), k.get(), e.get(), prec);
+        arb_mul(t.get(), t.get(), s1.get(), prec);
+        arb_mul_si(t.get(), t.get(), scale, prec);
+        arb_add(out.get(), out.get(), t.get(), prec);
+    };
+    Ball minus_s, minus_c;
+    arb_neg(minus_s.get(), sj.get());
+    arb_neg(minus_c.get(), cj.get());
+    combine(u1, minus_s, A, cj, p.b, s1, 1);
+    combine(v1, cj, B, sj, p.a, s1, 1);
+    combine(u2, minus_c, A, sj, p.b, s1, -2);
+    combine(v2, minus_s, B, cj, p.a, s1, 2);
+    const auto up = [](const Ball& b) {
+        Mag m;
+        arb_get_mag(m.get(), b.get());
+        return mag_get_d(m.get());
+    };
+    PieceBounds out;
+    out.speed = hypot_up(up(u1), up(v1)) + M / margin * (1 + 1e-12);
+    out.curvature = hypot_up(up(u2), up(v2)) + 2 * M / (margin * margin) * (1 + 1e-12);
+    // V(J) within W(J) and M: s(J) within s_lin(J) +- remainder.
+    ComplexBall sJ, vx, vy;
+    arb_set(sJ.real(), s_lin.get());
+    arb_add_error_mag(sJ.real(), model.remainder.get());
+    ray_points(p, ComplexBall(J), sJ, prec, vx, vy);
+    arb_set(out.x.get(), vx.real());
+    arb_set(out.y.get(), vy.real());
+    if (!std::isfinite(out.speed) || !std::isfinite(out.curvature)) return std::nullopt;
+    return out;
+}
+
 }  // namespace
 
 std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const Ball& from, const Ball& to,
                                              const EdgeCoverOptions& options) {
     const long prec = options.prec;
     const SiteBalls p(bisector.first(), prec);
+    NormalRayPoint points(bisector.first(), bisector.second());
     Arf lo_arf, hi_arf, from_hi, to_lo;
     arb_get_lbound_arf(lo_arf.get(), from.get(), prec);
     arb_get_ubound_arf(hi_arf.get(), to.get(), prec);
@@ -95,58 +180,54 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
     double first_piece_end = lo, last_piece_start = hi;
     // The overshoot past the true vertices: V at most the vertex balls' width beyond them.
     const double overshoot = std::max(first_end - lo, hi - last_start);
-    double reach = 0.25;  // the complex half-side the second order tries first; halves when it fails
-    Ball end_x, end_y;    // V at end_angle, the last second-order piece's end
-    double end_angle = 0;
-    bool have_end = false;
+    // The model holds on pieces of about the same width: a piece over twice
+    // as wide as the last one it held on is halved untried.
+    double certified_width = INFINITY;
     std::vector<std::pair<double, double>> stack{{lo, hi}};
     while (!stack.empty()) {
         const auto [l, h] = stack.back();
         stack.pop_back();
         EdgeCoverBox box;
         bool ok = false;
-        const double half = 0.5 * (h - l), m = 0.5 * (l + h);
-        // Second order.
-        for (double R = std::max(reach, 4 * half); !ok && R >= 4 * half; R *= 0.5) {
-            ComplexBall z, s, vx, vy;
-            arf_set_d(arb_midref(z.real()), m);
-            mag_set_d(arb_radref(z.real()), R);
-            mag_set_d(arb_radref(z.imag()), R);
-            if (!bisector.solve(z, prec, s)) {
-                reach = R * 0.5;
-                continue;
+        const double m = 0.5 * (l + h);
+        // Second order: points along J, as many as its bounds ask.
+        const std::optional<PieceBounds> bounds =
+            h - l > 2 * certified_width ? std::nullopt : piece_bounds(bisector, p, l, h, 0.5 * (h - l), prec);
+        if (bounds) {
+            certified_width = h - l;
+            // Nine tenths of the radius for the chords and the overshoot, a
+            // tenth for the points' own enclosures (double intervals: ~1e-13).
+            const double chords = 0.9 * options.radius - bounds->speed * overshoot;
+            const double pieces = chords > 0 ? std::ceil((h - l) / std::sqrt(8 * chords / bounds->curvature)) : INFINITY;
+            if (pieces <= kMaxPointsAPiece) {
+                const int k = static_cast<int>(std::max(1.0, pieces));
+                double gap = 0;
+                for (int i = 0; i <= k && gap <= 0.1 * options.radius; ++i) {
+                    const double theta = i == k ? h : l + (h - l) * i / k;
+                    std::optional<std::array<Interval, 2>> v = points.point(Interval(theta));
+                    Ball vx, vy;
+                    if (!v) {  // Arb then
+                        if (!real_ray_points(bisector, p, real_ball(theta, theta, prec), prec, vx, vy)) {
+                            gap = INFINITY;
+                            break;
+                        }
+                        v = std::array<Interval, 2>{enclose(vx), enclose(vy)};
+                    }
+                    const std::array<double, 2> c{(*v)[0].mid(), (*v)[1].mid()};
+                    gap = std::max(gap, hypot_up(std::max(c[0] - (*v)[0].lo, (*v)[0].hi - c[0]),
+                                                 std::max(c[1] - (*v)[1].lo, (*v)[1].hi - c[1])));
+                    box.points.push_back(c);
+                }
+                const double step = (h - l) / k * (1 + 1e-12);
+                const double err = step * step / 8 * bounds->curvature + bounds->speed * overshoot + gap;
+                ok = err <= options.radius;
+                if (ok) {
+                    arb_set(box.x.get(), bounds->x.get());
+                    arb_set(box.y.get(), bounds->y.get());
+                } else {
+                    box.points.clear();
+                }
             }
-            ray_points(p, z, s, prec, vx, vy);
-            // Cauchy's estimates hold for V - c, any constant c: the middle of the enclosure.
-            arb_set(box.x.get(), vx.real());
-            arb_set(box.y.get(), vy.real());
-            ComplexBall cx, cy;
-            arb_get_mid_arb(cx.real(), vx.real());
-            arb_get_mid_arb(cy.real(), vy.real());
-            acb_sub(vx.get(), vx.get(), cx.get(), prec);
-            acb_sub(vy.get(), vy.get(), cy.get(), prec);
-            const double M = hypot_up(magnitude_up(vx.get()), magnitude_up(vy.get()));
-            const double rho = R - half;
-            const double err = half * half * M / (rho * rho) * (1 + 1e-12) + M / rho * overshoot;
-            if (!(err <= options.radius)) break;  // too long: bisect
-            // The ends: V at l is the previous piece's end when they meet.
-            if (!(have_end && end_angle == l)) {
-                have_end = real_ray_points(bisector, p, real_ball(l, l, prec), prec, end_x, end_y);
-                end_angle = l;
-                if (!have_end) break;
-            }
-            Ball hx, hy;
-            if (!real_ray_points(bisector, p, real_ball(h, h, prec), prec, hx, hy)) break;
-            const std::array<double, 2> a{end_x.mid_double(), end_y.mid_double()}, b{hx.mid_double(), hy.mid_double()};
-            const double ends = std::max(hypot_up(gap_bound(end_x, a[0], prec), gap_bound(end_y, a[1], prec)),
-                                         hypot_up(gap_bound(hx, b[0], prec), gap_bound(hy, b[1], prec)));
-            if (!(err + ends <= options.radius)) break;
-            end_x = hx;
-            end_y = hy;
-            end_angle = h;
-            have_end = true;
-            box.points = {a, b};
-            ok = true;
         }
         // First order.
         if (!ok && real_ray_points(bisector, p, real_ball(l, h, prec), prec, box.x, box.y)) {

@@ -7,15 +7,16 @@
 // end of the second's, is split into consecutive pieces J, bisecting until
 // one of two certificates holds on J (never a guess: a piece that fails both
 // is bisected, down to 2^-40 of the range, then an Error):
-//  - second order: NormalRayBisector::solve certifies s on a complex square
-//    of half-side R >= 4 |J|/2 around J's middle, where V is holomorphic;
-//    with M bounding |V(z) - c| there (c the middle of V's enclosure there,
-//    per coordinate) and rho = R - |J|/2,
-//    Cauchy's estimates give |V''| <= 2 M / rho^2 on J, so the chord between
-//    V at J's ends is within (|J|/2)^2 M / rho^2 of V(J) both ways; at the
-//    range's ends V runs past the true vertex by at most |V'| w <= M w / rho
-//    (w the vertex ball's width), which is added. The piece's points: the two
-//    ends.
+//  - second order: the root's linear model (NormalRayBisector::LinearModel)
+//    on the box of real radius |J| and imaginary radius |J|/2 about J's
+//    middle bounds |V'| and |V''| on J (voronoi_edge_cover.cpp: closed forms
+//    for the model's part, Cauchy's estimates for its remainder, holomorphic
+//    on the box); J is cut into k equal steps with step^2/8 |V''| <= 9/10 of
+//    the radius less the overshoot |V'| w (at the range's ends V runs past
+//    the true vertex by at most that, w the vertex ball's width), and V at
+//    the k + 1 angles, certified in double intervals (NormalRayPoint, else
+//    Arb) within a tenth of it, are the piece's points: the chord of each
+//    step is within step^2/8 |V''| of V there, both ways.
 //  - first order: solve certifies s over J and the box V(J) in real balls
 //    lies within the radius of its center. The piece's point: the center.
 // Each piece's points then form a polyline within `radius` of V(J) and V(J)
