@@ -4,7 +4,7 @@
 #include "cells/edge_quadrature.hpp"
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
-#include "cells/normal_ray_point.hpp"
+#include "cells/normal_ray_in_doubles.hpp"
 #include "predicates/relative_position.hpp"
 #include "util/error.hpp"
 
@@ -225,7 +225,7 @@ public:
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
-            NormalRayPoint double_point(site, sites_[cell.edges[k].neighbor]);
+            NormalRayInDoubles double_point(site, sites_[cell.edges[k].neighbor]);
             Ball ends[2] = {lifted[k], lifted[k + 1]};
             bool integrated = false;
             if (in_doubles) {
@@ -234,7 +234,7 @@ public:
                 for (int j = 0; j < MeasureIntervals::count; ++j)
                     tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
                 if (const std::optional<MeasureIntervals> I =
-                        integrate_edge(bisector, double_point, rules_, a, b, tolerances)) {
+                        integrate_edge(double_point, rules_, a, b, tolerances)) {
                     add_to_pairs(*I, unit, prec, sums);
                     integrated = true;
                     ++r.edges_in_doubles;
@@ -290,7 +290,7 @@ private:
         const GaussLegendreRule& rule = rules_.rule(8);
         double area = site_area(site, 64).mid_double();
         for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            NormalRayPoint nodes(site, sites_[cell.edges[k].neighbor]);
+            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor]);
             const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);

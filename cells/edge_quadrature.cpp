@@ -15,41 +15,16 @@ constexpr double kRho = 3;
 constexpr int kMaxDepth = 40;
 constexpr int kMaxPieces = 4096;
 
-const ComplexBall& density(const NormalRayBisector::Densities& d, int j) {
-    switch (j) {
-        case MeasureIntervals::area: return d.area;
-        case MeasureIntervals::length: return d.length;
-        case MeasureIntervals::first_x: return d.first[0];
-        case MeasureIntervals::first_y: return d.first[1];
-        case MeasureIntervals::second_xx: return d.second[0];
-        case MeasureIntervals::second_xy: return d.second[1];
-        default: return d.second[2];
-    }
-}
-
 // Upper bounds of |density j| over the complex box of the Bernstein ellipse
-// of [a, b], or nothing when the certificate fails on it.
-std::optional<std::array<double, kMeasures>> bounds_on_ellipse(NormalRayBisector& boxes, const Interval& mid,
+// of [a, b]; nothing when the certificate fails there.
+std::optional<std::array<double, kMeasures>> bounds_on_ellipse(NormalRayInDoubles& bisector, const Interval& mid,
                                                                const Interval& half) {
     // Semi-axes h (rho + 1/rho) / 2 and h (rho - 1/rho) / 2, rounded up, plus
     // the uncertainty of the middle.
     const Interval rho(kRho), inverse = Interval(1.0) / rho;
-    const double along = ((rho + inverse) * half).hi * 0.5 + (mid.hi - mid.lo);
-    const double across = ((rho - inverse) * half).hi * 0.5;
-    ComplexBall box;
-    arb_set_d(box.real(), mid.mid());
-    mag_set_d(arb_radref(box.real()), Interval::up(along));
-    mag_set_d(arb_radref(box.imag()), Interval::up(across));
-    NormalRayBisector::Densities d;
-    if (!boxes.densities(box, 64, d)) return std::nullopt;
-    std::array<double, kMeasures> M;
-    for (int j = 0; j < kMeasures; ++j) {
-        Mag m;
-        acb_get_mag(m.get(), density(d, j).get());
-        M[j] = mag_get_d(m.get());  // an upper bound
-        if (!std::isfinite(M[j])) return std::nullopt;
-    }
-    return M;
+    const double along = Interval::up(((rho + inverse) * half).hi * 0.5 + (mid.hi - mid.lo));
+    const double across = Interval::up(((rho - inverse) * half).hi * 0.5);
+    return bisector.bounds_on_box(mid.mid(), along, across);
 }
 
 // (64/15) rho^(2 - 2n) / (rho^2 - 1) for n = 0 .. kMaxPoints, rounded up.
@@ -69,8 +44,8 @@ double gauss_error(const Interval& half, double M, double factor) { return (half
 
 }  // namespace
 
-std::optional<MeasureIntervals> integrate_edge(NormalRayBisector& boxes, NormalRayPoint& nodes,
-                                               GaussLegendreRules& rules, double a, double b,
+std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
+                                               double b,
                                                const double (&tolerance)[kMeasures]) {
     MeasureIntervals total;
     for (Interval& x : total.m) x = Interval(0.0);
@@ -101,7 +76,7 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayBisector& boxes, NormalR
         if (piece.b - piece.a > 2 * certified_width && halve()) continue;
         const Interval A(piece.a), B(piece.b);
         const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
-        const std::optional<std::array<double, kMeasures>> M = bounds_on_ellipse(boxes, mid, half);
+        const std::optional<std::array<double, kMeasures>> M = bounds_on_ellipse(bisector, mid, half);
         if (!M) {
             if (!halve()) return std::nullopt;
             continue;
@@ -122,7 +97,7 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayBisector& boxes, NormalR
         for (Interval& x : sum.m) x = Interval(0.0);
         bool certified = true;
         for (int k = 0; k < n && certified; ++k) {
-            const std::optional<MeasureIntervals> f = nodes.densities(mid + half * rule.nodes[k]);
+            const std::optional<MeasureIntervals> f = bisector.densities(mid + half * rule.nodes[k]);
             certified = f.has_value();
             for (int j = 0; j < kMeasures && certified; ++j) sum.m[j] = sum.m[j] + rule.weights[k] * f->m[j];
         }

@@ -5,28 +5,26 @@
 //
 // On each piece [a, b] (half-length h) one complex box holds the Bernstein
 // ellipse with foci a, b and parameter rho (semi-axes h (rho +- 1/rho) / 2).
-// The Arb certificate of NormalRayBisector on that box proves the densities
+// The certificate of NormalRayInDoubles::bounds_on_box proves the densities
 // holomorphic there and bounds each by M; then n-point Gauss-Legendre
 // quadrature errs by at most h (64/15) M rho^(2 - 2n) / (rho^2 - 1)
 // (Trefethen, Approximation Theory and Approximation Practice, Thm. 19.3,
 // stated for n + 1 points with rho^(-2n): we use the weaker exponent of n - 1),
 // and n is the least that meets the piece's share of the tolerance. The nodes
-// are certified in double intervals (NormalRayPoint). A piece whose box or
-// nodes cannot be certified is halved; nothing is claimed when that goes too
-// deep, and the caller integrates the edge with Arb's integrator instead.
+// are certified in double intervals too. A piece whose box or nodes cannot be
+// certified is halved; nothing is claimed when that goes too deep, and the
+// caller integrates the edge with Arb's integrator instead.
 #pragma once
 
 #include "cells/gauss_legendre_rule.hpp"
-#include "cells/normal_ray_bisector.hpp"
-#include "cells/normal_ray_point.hpp"
+#include "cells/normal_ray_in_doubles.hpp"
 
 #include <optional>
 
 namespace ellvor {
 
 // tolerance[j]: the absolute tolerance of measure j over the whole [a, b].
-std::optional<MeasureIntervals> integrate_edge(NormalRayBisector& boxes, NormalRayPoint& nodes,
-                                               GaussLegendreRules& rules, double a, double b,
-                                               const double (&tolerance)[MeasureIntervals::count]);
+std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
+                                               double b, const double (&tolerance)[MeasureIntervals::count]);
 
 }  // namespace ellvor

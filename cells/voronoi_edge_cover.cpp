@@ -1,6 +1,6 @@
 #include "cells/voronoi_edge_cover.hpp"
 
-#include "cells/normal_ray_point.hpp"
+#include "cells/normal_ray_in_doubles.hpp"
 #include "util/error.hpp"
 
 #include <cmath>
@@ -163,7 +163,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                                              const EdgeCoverOptions& options) {
     const long prec = options.prec;
     const SiteBalls p(bisector.first(), prec);
-    NormalRayPoint points(bisector.first(), bisector.second());
+    NormalRayInDoubles points(bisector.first(), bisector.second());
     Arf lo_arf, hi_arf, from_hi, to_lo;
     arb_get_lbound_arf(lo_arf.get(), from.get(), prec);
     arb_get_ubound_arf(hi_arf.get(), to.get(), prec);

@@ -14,7 +14,7 @@
 //    on the box); J is cut into k equal steps with step^2/8 |V''| <= 9/10 of
 //    the radius less the overshoot |V'| w (at the range's ends V runs past
 //    the true vertex by at most that, w the vertex ball's width), and V at
-//    the k + 1 angles, certified in double intervals (NormalRayPoint, else
+//    the k + 1 angles, certified in double intervals (NormalRayInDoubles, else
 //    Arb) within a tenth of it, are the piece's points: the chord of each
 //    step is within step^2/8 |V''| of V there, both ways.
 //  - first order: solve certifies s over J and the box V(J) in real balls

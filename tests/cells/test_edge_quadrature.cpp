@@ -1,6 +1,6 @@
 // The double-interval stage of the cell integrals (cells/edge_quadrature.hpp):
 // its Gauss-Legendre rules against the moments of x^k, its nodes
-// (NormalRayPoint) against the Arb solver at 200 bits, and its edge integrals
+// and boxes (NormalRayInDoubles) against the Arb solver, and its edge integrals
 // against Arb's own integrator of the same density, two independent proofs
 // that must overlap.
 #include "cells/edge_quadrature.hpp"
@@ -94,13 +94,13 @@ TEST_CASE("Gauss-Legendre rules integrate x^k exactly up to k = 2n - 1", "[cells
     CHECK_THROWS_AS(rules.rule(GaussLegendreRules::kMaxPoints + 1), Error);
 }
 
-TEST_CASE("NormalRayPoint: its densities contain the Arb solver's at 200 bits", "[cells][quadrature]") {
+TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bits", "[cells][quadrature]") {
     std::mt19937_64 rng(20261127);
     std::uniform_real_distribution<double> spread(-0.6, 0.6);
     int compared = 0, certified = 0;
     for (int trial = 0; trial < 60; ++trial) {
         const auto [p, q] = random_pair(rng);
-        NormalRayPoint fast(p, q);
+        NormalRayInDoubles fast(p, q);
         NormalRayBisector arb(p, q);
         const double theta = facing_angle(p, q) + spread(rng);
         ComplexBall ball;
@@ -127,17 +127,50 @@ TEST_CASE("NormalRayPoint: its densities contain the Arb solver's at 200 bits", 
     CHECK(certified >= compared * 9 / 10);
 }
 
+TEST_CASE("NormalRayInDoubles: its bounds on a complex box hold at Arb's points inside", "[cells][quadrature]") {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int boxes = 0, bounded = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayInDoubles fast(p, q);
+        NormalRayBisector arb(p, q);
+        const double mid = facing_angle(p, q) + 0.4 * unit(rng), along = 0.02, across = 0.012;
+        ++boxes;
+        const std::optional<std::array<double, MeasureIntervals::count>> M = fast.bounds_on_box(mid, along, across);
+        if (!M) continue;
+        ++bounded;
+        for (int k = 0; k < 8; ++k) {
+            ComplexBall z;
+            arb_set_d(z.real(), mid + along * unit(rng));
+            arb_set_d(z.imag(), across * unit(rng));
+            NormalRayBisector::Densities d;
+            REQUIRE(arb.densities(z, 128, d));
+            const ComplexBall* values[MeasureIntervals::count] = {&d.area,      &d.length,    &d.first[0], &d.first[1],
+                                                                  &d.second[0], &d.second[1], &d.second[2]};
+            for (int j = 0; j < MeasureIntervals::count; ++j) {
+                Mag m;
+                acb_get_mag_lower(m.get(), values[j]->get());
+                INFO("trial " << trial << " measure " << j << " bound " << (*M)[j]);
+                CHECK(mag_get_d(m.get()) <= (*M)[j]);
+            }
+        }
+    }
+    // The stage must be reached on boxes this small.
+    CHECK(bounded >= boxes * 3 / 4);
+}
+
 TEST_CASE("integrate_edge: the area over an edge piece overlaps Arb's integral", "[cells][quadrature]") {
     std::mt19937_64 rng(7);
     GaussLegendreRules rules;
     int integrated = 0;
     for (int trial = 0; trial < 12; ++trial) {
         const auto [p, q] = random_pair(rng);
-        NormalRayBisector boxes(p, q), reference(p, q);
-        NormalRayPoint nodes(p, q);
+        NormalRayBisector reference(p, q);
+        NormalRayInDoubles nodes(p, q);
         const double a = facing_angle(p, q) - 0.4, b = a + 0.8;
         const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
-        const std::optional<MeasureIntervals> I = integrate_edge(boxes, nodes, rules, a, b, tolerance);
+        const std::optional<MeasureIntervals> I = integrate_edge(nodes, rules, a, b, tolerance);
         REQUIRE(I);
         ++integrated;
         for (int j = 0; j < MeasureIntervals::count; ++j) CHECK(I->m[j].hi - I->m[j].lo <= 2 * tolerance[j]);
@@ -163,10 +196,9 @@ TEST_CASE("integrate_edge: a range the bisector does not reach is not certified"
     // meet the bisector; the stage must say so, not return a number.
     const Ellipse p = Ellipse::circle(Rational(0), Rational(0), Rational(1));
     const Ellipse q = Ellipse::circle(Rational(10), Rational(0), Rational(1));
-    NormalRayBisector boxes(p, q);
-    NormalRayPoint nodes(p, q);
+    NormalRayInDoubles nodes(p, q);
     GaussLegendreRules rules;
     const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
-    CHECK(!integrate_edge(boxes, nodes, rules, kPi - 0.2, kPi + 0.2, tolerance));
+    CHECK(!integrate_edge(nodes, rules, kPi - 0.2, kPi + 0.2, tolerance));
     CHECK(!nodes.densities(Interval(kPi)));
 }

@@ -30,15 +30,20 @@ struct MeasureIntervals {
     Interval m[count];
 };
 
-class NormalRayPoint {
+class NormalRayInDoubles {
 public:
-    NormalRayPoint(const Ellipse& p, const Ellipse& q);
+    NormalRayInDoubles(const Ellipse& p, const Ellipse& q);
 
     // The densities at every angle in `theta` (a real interval); nothing when
     // the certificate fails there.
     std::optional<MeasureIntervals> densities(const Interval& theta);
     // The bisector point V = P + s n~ at every angle in `theta`; likewise.
     std::optional<std::array<Interval, 2>> point(const Interval& theta);
+    // Upper bounds of the densities' moduli (MeasureIntervals' order) over
+    // the complex box mid +- along + i (+- across) of theta, where the same
+    // certificate in complex double intervals, about the root's tangent line
+    // as in NormalRayBisector, proves them holomorphic; nothing when it fails.
+    std::optional<std::array<double, MeasureIntervals::count>> bounds_on_box(double mid, double along, double across);
 
     struct Site {
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center

@@ -1,4 +1,7 @@
-#include "cells/normal_ray_point.hpp"
+#include "cells/normal_ray_in_doubles.hpp"
+
+#include "util/complex_ball.hpp"
+#include "util/complex_interval.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +9,7 @@
 namespace ellvor {
 namespace {
 
-using Site = NormalRayPoint::Site;
+using Site = NormalRayInDoubles::Site;
 
 double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
@@ -24,12 +27,35 @@ void sin_cos(const Interval& angle, Interval& sin, Interval& cos) {
     cos = enclose(c);
 }
 
+// Over a complex rectangle, by Arb.
+void sin_cos(const ComplexInterval& angle, ComplexInterval& sin, ComplexInterval& cos) {
+    ComplexBall z, s, c;
+    Arf lo, hi;
+    const Interval* parts[2] = {&angle.re, &angle.im};
+    arb_struct* ends[2] = {z.real(), z.imag()};
+    for (int i = 0; i < 2; ++i) {
+        arf_set_d(lo.get(), parts[i]->lo);
+        arf_set_d(hi.get(), parts[i]->hi);
+        arb_set_interval_arf(ends[i], lo.get(), hi.get(), 64);
+    }
+    acb_sin_cos(s.get(), c.get(), z.get(), 64);
+    const auto to_rectangle = [](const ComplexBall& w) {
+        Ball re, im;
+        arb_set(re.get(), w.real());
+        arb_set(im.get(), w.imag());
+        return ComplexInterval(enclose(re), enclose(im));
+    };
+    sin = to_rectangle(s);
+    cos = to_rectangle(c);
+}
+
 template <class T>
 T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
 }
 
 Interval square(const Interval& x) { return x.square(); }
+ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
 double mid(const Interval& x) { return x.mid(); }
 double mid(double x) { return x; }
@@ -65,7 +91,7 @@ struct Frame {
 // theta-derivative of its second row.
 template <class T>
 struct System {
-    T F[2], J[2][2], F1_theta;
+    T F[2], J[2][2], F_theta[2];
 
     template <class S>
     System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s) {
@@ -79,7 +105,9 @@ struct System {
         J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
         J[1][0] = 2.0 * e_n;
         J[1][1] = -2.0 * F[0];
-        F1_theta = 2.0 * dot(ex, ey, bp.dx + s * bp.dnx, bp.dy + s * bp.dny);
+        const T wx = bp.dx + s * bp.dnx, wy = bp.dy + s * bp.dny;  // W = P' + s n~'
+        F_theta[0] = dot(wx, wy, bq.dx, bq.dy);
+        F_theta[1] = 2.0 * dot(ex, ey, wx, wy);
     }
 };
 
@@ -105,12 +133,12 @@ Site site_of(const Ellipse& e) {
 
 }  // namespace
 
-NormalRayPoint::NormalRayPoint(const Ellipse& p, const Ellipse& q) : p_(site_of(p)), q_(site_of(q)) {
+NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q) : p_(site_of(p)), q_(site_of(q)) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
 }
 
-bool NormalRayPoint::newton(double theta, const double (&start)[2], double (&x)[2]) const {
+bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2]) const {
     if (!std::isfinite(start[0])) return false;
     x[0] = start[0], x[1] = start[1];
     const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
@@ -134,12 +162,13 @@ bool NormalRayPoint::newton(double theta, const double (&start)[2], double (&x)[
 
 // The certified root at an interval of theta: s, its derivative s', and p's
 // boundary there.
-struct NormalRayPoint::Root {
+struct NormalRayInDoubles::Root {
     Frame<Interval> bp;
     Interval s, ds;
+    double x0[2];  // Newton's (s, phi), about which it was certified
 };
 
-std::optional<MeasureIntervals> NormalRayPoint::densities(const Interval& theta) {
+std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& theta) {
     const std::optional<Root> r = root(theta);
     if (!r) return std::nullopt;
     const Frame<Interval>& bp = r->bp;
@@ -171,7 +200,7 @@ std::optional<MeasureIntervals> NormalRayPoint::densities(const Interval& theta)
     return out;
 }
 
-std::optional<std::array<Interval, 2>> NormalRayPoint::point(const Interval& theta) {
+std::optional<std::array<Interval, 2>> NormalRayInDoubles::point(const Interval& theta) {
     const std::optional<Root> r = root(theta);
     if (!r) return std::nullopt;
     const std::array<Interval, 2> v = {r->bp.x + r->s * r->bp.nx, r->bp.y + r->s * r->bp.ny};
@@ -179,7 +208,7 @@ std::optional<std::array<Interval, 2>> NormalRayPoint::point(const Interval& the
     return v;
 }
 
-std::optional<NormalRayPoint::Root> NormalRayPoint::root(const Interval& theta) {
+std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval& theta) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const double theta0 = theta.mid();
     if (!std::isfinite(theta0)) return std::nullopt;
@@ -201,7 +230,7 @@ std::optional<NormalRayPoint::Root> NormalRayPoint::root(const Interval& theta) 
     return certified(theta, x0);
 }
 
-std::optional<NormalRayPoint::Root> NormalRayPoint::certified(const Interval& theta, const double (&x0)[2]) {
+std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2]) {
     // F(x0) over the whole interval of theta, and C the midpoint inverse of the Jacobian.
     Interval sin, cos;
     sin_cos(theta, sin, cos);
@@ -243,7 +272,108 @@ std::optional<NormalRayPoint::Root> NormalRayPoint::certified(const Interval& th
         // The root: s in x0 + K; the tie derivatives over X contain their values there.
         const Interval& g_s = on_box.J[1][0];
         if (g_s.contains_zero()) return std::nullopt;
-        return Root{bp, Interval(x0[0]) + K[0], -(on_box.F1_theta / g_s)};  // s' = -g_theta / g_s
+        return Root{bp, Interval(x0[0]) + K[0], -(on_box.F_theta[1] / g_s), {x0[0], x0[1]}};  // s' = -g_theta / g_s
+    }
+    return std::nullopt;
+}
+
+std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::bounds_on_box(double mid, double along,
+                                                                                          double across) {
+    using CI = ComplexInterval;
+    const std::optional<Root> at_mid = root(Interval(mid));
+    if (!at_mid) return std::nullopt;
+    const double* x0 = at_mid->x0;
+    // The system at the real middle: F, the midpoint inverse C of J, and the
+    // root's slope x' = -C F_theta (any slope is correct; this one keeps Y small).
+    Interval sin, cos;
+    sin_cos(Interval(mid), sin, cos);
+    const Frame<Interval> bp_mid(p_, sin, cos);
+    sin_cos(Interval(x0[1]), sin, cos);
+    const System<Interval> at(q_, bp_mid, Frame<Interval>(q_, sin, cos), Interval(x0[0]));
+    double C[2][2];
+    if (!inverse_of_mid(at.J, C)) return std::nullopt;
+    double slope[2];
+    for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0].mid() + C[i][1] * at.F_theta[1].mid());
+
+    // x = x_lin(theta) + y, x_lin = x0 + x' (theta - mid), over the box.
+    const CI dtheta(sym(along), sym(across));
+    const CI theta = dtheta + Interval(mid);
+    CI x_lin[2];
+    for (int i = 0; i < 2; ++i) x_lin[i] = slope[i] * dtheta + Interval(x0[i]);
+    CI sin_t, cos_t, sin_q, cos_q;
+    sin_cos(theta, sin_t, cos_t);
+    const Frame<CI> bp(p_, sin_t, cos_t);
+    sin_cos(x_lin[1], sin_q, cos_q);
+    const System<CI> on_line(q_, bp, Frame<CI>(q_, sin_q, cos_q), x_lin[0]);
+    // H(theta) = F(x_lin(theta), theta) = F(x0, mid) + H'(Theta) (theta - mid),
+    // H' = J x' + F_theta over the box (the mean-value form).
+    CI CH[2], H[2];
+    for (int i = 0; i < 2; ++i)
+        H[i] = CI(at.F[i]) + (slope[0] * on_line.J[i][0] + slope[1] * on_line.J[i][1] + on_line.F_theta[i]) * dtheta;
+    for (int i = 0; i < 2; ++i) CH[i] = C[i][0] * H[0] + C[i][1] * H[1];
+    double r[2];
+    for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i].magnitude() + std::ldexp(1 + std::fabs(x0[i]), -44);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
+        CI Y[2], X[2];
+        for (int i = 0; i < 2; ++i) {
+            Y[i] = CI(sym(r[i]), sym(r[i]));
+            X[i] = x_lin[i] + Y[i];
+        }
+        if (!X[0].re.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
+        sin_cos(X[1], sin_q, cos_q);
+        const Frame<CI> bq(q_, sin_q, cos_q);
+        const System<CI> on_box(q_, bp, bq, X[0]);
+        CI K[2];
+        bool inside = true;
+        for (int i = 0; i < 2; ++i) {
+            K[i] = -CH[i];
+            for (int j = 0; j < 2; ++j) {
+                CI m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j]);
+                if (i == j) m = m + Interval(1.0);
+                K[i] = K[i] + m * Y[j];
+            }
+            inside = inside && K[i].re.lo > -r[i] && K[i].re.hi < r[i] && K[i].im.lo > -r[i] && K[i].im.hi < r[i];
+        }
+        if (!inside) {
+            for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * K[i].magnitude());
+            continue;
+        }
+        // One root in X, holomorphic in theta; q's nearest point when V - Q
+        // points out of q (normal_ray_bisector.hpp).
+        const CI side = dot(bp.x + X[0] * bp.nx - bq.x, bp.y + X[0] * bp.ny - bq.y, bq.nx, bq.ny);
+        if (!side.re.positive()) return std::nullopt;
+        const CI s = x_lin[0] + K[0];
+        // The densities of NormalRayBisector::densities over the box.
+        const Interval ab = p_.a * p_.b;
+        CI m[3], power = s;
+        for (int k = 0; k < 3; ++k) {
+            m[k] = bp.n2 * power * (Interval(1.0) / Interval(k + 1.0));
+            power = power * s;
+            m[k] = m[k] + ab * power * (Interval(1.0) / Interval(k + 2.0));
+        }
+        const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
+        std::array<double, MeasureIntervals::count> M;
+        M[MeasureIntervals::area] = m[0].magnitude();
+        for (int i = 0; i < 2; ++i) M[MeasureIntervals::first_x + i] = (rel[i] * m[0] + nrm[i] * m[1]).magnitude();
+        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+        for (int k = 0; k < 3; ++k) {
+            const int i = pairs[k][0], j = pairs[k][1];
+            M[MeasureIntervals::second_xx + k] =
+                (rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2])
+                    .magnitude();
+        }
+        // |V'| = sqrt(V' . V'), holomorphic where Re V' . V' > 0; s' = -g_theta / g_s.
+        const CI& g_s = on_box.J[1][0];
+        if (!g_s.zero_free()) return std::nullopt;
+        const CI ds = -(on_box.F_theta[1] / g_s);
+        const CI vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
+        const CI v2 = dot(vx, vy, vx, vy);
+        if (!v2.re.positive()) return std::nullopt;
+        M[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
+        for (double x : M)
+            if (!std::isfinite(x)) return std::nullopt;
+        return M;
     }
     return std::nullopt;
 }
