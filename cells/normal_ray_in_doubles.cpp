@@ -235,8 +235,9 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     Interval sin, cos;
     sin_cos(theta, sin, cos);
     const Frame<Interval> bp(p_, sin, cos);
-    sin_cos(Interval(x0[1]), sin, cos);
-    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin, cos), Interval(x0[0]));
+    Interval sin_phi, cos_phi;
+    sin_cos(Interval(x0[1]), sin_phi, cos_phi);
+    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin_phi, cos_phi), Interval(x0[0]));
     double C[2][2];
     if (!inverse_of_mid(at.J, C)) return std::nullopt;
     const Interval* F = at.F;
@@ -249,8 +250,8 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
         const Interval s = Interval(x0[0]) + sym(r[0]);
         if (!s.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
-        sin_cos(Interval(x0[1]) + sym(r[1]), sin, cos);
-        const Frame<Interval> bq(q_, sin, cos);
+        // On phi0 +- r: sine and cosine move by at most r (their derivatives are at most 1).
+        const Frame<Interval> bq(q_, sin_phi + sym(r[1]), cos_phi + sym(r[1]));
         const System<Interval> on_box(q_, bp, bq, s);
         Interval K[2];
         bool inside = true;
