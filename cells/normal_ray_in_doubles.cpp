@@ -278,8 +278,16 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     return std::nullopt;
 }
 
-std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::bounds_on_box(double mid, double along,
-                                                                                          double across) {
+// The certificate on a complex box of theta: the root there, and what the
+// densities and the linear model need.
+struct NormalRayInDoubles::BoxRoot {
+    Frame<ComplexInterval> bp;           // p's boundary over the box
+    ComplexInterval s, ds;               // s and s' over the box
+    double s0, slope;                    // s = s0 + slope (theta - mid) + e(theta),
+    ComplexInterval remainder;           // e(theta) in remainder
+};
+
+std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
     using CI = ComplexInterval;
     const std::optional<Root> at_mid = root(Interval(mid));
     if (!at_mid) return std::nullopt;
@@ -344,39 +352,58 @@ std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::b
         // points out of q (normal_ray_bisector.hpp).
         const CI side = dot(bp.x + X[0] * bp.nx - bq.x, bp.y + X[0] * bp.ny - bq.y, bq.nx, bq.ny);
         if (!side.re.positive()) return std::nullopt;
-        const CI s = x_lin[0] + K[0];
-        // The densities of NormalRayBisector::densities over the box.
-        const Interval ab = p_.a * p_.b;
-        CI m[3], power = s;
-        for (int k = 0; k < 3; ++k) {
-            m[k] = bp.n2 * power * (Interval(1.0) / Interval(k + 1.0));
-            power = power * s;
-            m[k] = m[k] + ab * power * (Interval(1.0) / Interval(k + 2.0));
-        }
-        const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
-        std::array<double, MeasureIntervals::count> M;
-        M[MeasureIntervals::area] = m[0].magnitude();
-        for (int i = 0; i < 2; ++i) M[MeasureIntervals::first_x + i] = (rel[i] * m[0] + nrm[i] * m[1]).magnitude();
-        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
-        for (int k = 0; k < 3; ++k) {
-            const int i = pairs[k][0], j = pairs[k][1];
-            M[MeasureIntervals::second_xx + k] =
-                (rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2])
-                    .magnitude();
-        }
-        // |V'| = sqrt(V' . V'), holomorphic where Re V' . V' > 0; s' = -g_theta / g_s.
         const CI& g_s = on_box.J[1][0];
         if (!g_s.zero_free()) return std::nullopt;
-        const CI ds = -(on_box.F_theta[1] / g_s);
-        const CI vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
-        const CI v2 = dot(vx, vy, vx, vy);
-        if (!v2.re.positive()) return std::nullopt;
-        M[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
-        for (double x : M)
-            if (!std::isfinite(x)) return std::nullopt;
-        return M;
+        return BoxRoot{bp, x_lin[0] + K[0], -(on_box.F_theta[1] / g_s), x0[0], slope[0], K[0]};  // s' = -g_theta / g_s
     }
     return std::nullopt;
+}
+
+std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::bounds_on_box(double mid, double along,
+                                                                                          double across) {
+    using CI = ComplexInterval;
+    const std::optional<BoxRoot> r = box_root(mid, along, across);
+    if (!r) return std::nullopt;
+    const Frame<CI>& bp = r->bp;
+    const CI &s = r->s, &ds = r->ds;
+    // The densities of NormalRayBisector::densities over the box.
+    const Interval ab = p_.a * p_.b;
+    CI m[3], power = s;
+    for (int k = 0; k < 3; ++k) {
+        m[k] = bp.n2 * power * (Interval(1.0) / Interval(k + 1.0));
+        power = power * s;
+        m[k] = m[k] + ab * power * (Interval(1.0) / Interval(k + 2.0));
+    }
+    const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
+    std::array<double, MeasureIntervals::count> M;
+    M[MeasureIntervals::area] = m[0].magnitude();
+    for (int i = 0; i < 2; ++i) M[MeasureIntervals::first_x + i] = (rel[i] * m[0] + nrm[i] * m[1]).magnitude();
+    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+    for (int k = 0; k < 3; ++k) {
+        const int i = pairs[k][0], j = pairs[k][1];
+        M[MeasureIntervals::second_xx + k] =
+            (rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2]).magnitude();
+    }
+    // |V'| = sqrt(V' . V'), holomorphic where Re V' . V' > 0.
+    const CI vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
+    const CI v2 = dot(vx, vy, vx, vy);
+    if (!v2.re.positive()) return std::nullopt;
+    M[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
+    for (double x : M)
+        if (!std::isfinite(x)) return std::nullopt;
+    return M;
+}
+
+std::optional<NormalRayInDoubles::LinearModel> NormalRayInDoubles::linear_model(double mid, double along,
+                                                                                double across) {
+    const std::optional<BoxRoot> r = box_root(mid, along, across);
+    if (!r) return std::nullopt;
+    const double normal = (r->bp.nx.re.square() + r->bp.nx.im.square() + r->bp.ny.re.square() + r->bp.ny.im.square())
+                              .sqrt()
+                              .hi;  // |n~|^2 = |nx|^2 + |ny|^2
+    LinearModel model{mid, r->s0, r->slope, r->remainder.magnitude(), normal};
+    if (!std::isfinite(model.remainder) || !std::isfinite(model.normal)) return std::nullopt;
+    return model;
 }
 
 }  // namespace ellvor

@@ -44,6 +44,13 @@ public:
     // certificate in complex double intervals, about the root's tangent line
     // as in NormalRayBisector, proves them holomorphic; nothing when it fails.
     std::optional<std::array<double, MeasureIntervals::count>> bounds_on_box(double mid, double along, double across);
+    // The root's linear model on that box, from the same certificate: for
+    // every theta there s(theta) = s0 + s1 (theta - mid) + e(theta), e
+    // holomorphic with |e| <= remainder; and |n~| <= normal there.
+    struct LinearModel {
+        double mid, s0, s1, remainder, normal;
+    };
+    std::optional<LinearModel> linear_model(double mid, double along, double across);
 
     struct Site {
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center
@@ -56,6 +63,8 @@ private:
     // start: the certificate judges it).
     bool newton(double theta, const double (&start)[2], double (&x)[2]) const;
     struct Root;
+    struct BoxRoot;
+    std::optional<BoxRoot> box_root(double mid, double along, double across);
     // The certified root at theta, from the last root or from the ray.
     std::optional<Root> root(const Interval& theta);
     // The certificate about the point x0 (Newton's root).

@@ -93,31 +93,45 @@ struct PieceBounds {
     Ball x, y;                // V(J)
 };
 
-std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, const SiteBalls& p, double l, double h,
-                                        double margin, long prec) {
+std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayInDoubles& doubles, const SiteBalls& p,
+                                        double l, double h, double margin, long prec) {
     const double half = 0.5 * (h - l), m = 0.5 * (l + h);
-    ComplexBall z;
-    arf_set_d(arb_midref(z.real()), m);
-    mag_set_d(arb_radref(z.real()), half + margin);
-    mag_set_d(arb_radref(z.imag()), margin);
-    NormalRayBisector::LinearModel model;
-    if (!bisector.solve(z, prec, model)) return std::nullopt;
-    // sup_Z |n~| = sup |(b c, a sn)|
-    ComplexBall c, sn, t;
-    acb_sin_cos(sn.get(), c.get(), z.get(), prec);
-    acb_mul_arb(t.get(), c.get(), p.b.get(), prec);
-    const double bc = magnitude_up(t.get());
-    acb_mul_arb(t.get(), sn.get(), p.a.get(), prec);
-    const double M = mag_get_d(model.remainder.get()) * hypot_up(bc, magnitude_up(t.get()));
+    // The model: in double intervals, else by Arb.
+    Ball mid, s0, s1;
+    double remainder, M;  // |e| and |e n~| on Z
+    if (const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin, margin)) {
+        arb_set_d(mid.get(), fast->mid);
+        arb_set_d(s0.get(), fast->s0);
+        arb_set_d(s1.get(), fast->s1);
+        remainder = fast->remainder;
+        M = remainder * fast->normal * (1 + 1e-15);
+    } else {
+        ComplexBall z;
+        arf_set_d(arb_midref(z.real()), m);
+        mag_set_d(arb_radref(z.real()), half + margin);
+        mag_set_d(arb_radref(z.imag()), margin);
+        NormalRayBisector::LinearModel model;
+        if (!bisector.solve(z, prec, model)) return std::nullopt;
+        arb_set(mid.get(), model.mid.real());
+        arb_set(s0.get(), model.s0.real());
+        arb_set(s1.get(), model.s1.real());
+        // sup_Z |n~| = sup |(b c, a sn)|
+        ComplexBall c, sn, t;
+        acb_sin_cos(sn.get(), c.get(), z.get(), prec);
+        acb_mul_arb(t.get(), c.get(), p.b.get(), prec);
+        const double bc = magnitude_up(t.get());
+        acb_mul_arb(t.get(), sn.get(), p.a.get(), prec);
+        remainder = mag_get_d(model.remainder.get());
+        M = remainder * hypot_up(bc, magnitude_up(t.get())) * (1 + 1e-15);
+    }
 
     // Over J, in real balls.
     const Ball J = real_ball(l, h, prec);
-    Ball cj, sj, s_lin, s1, u1, v1, u2, v2, A, B, w;
+    Ball cj, sj, s_lin, u1, v1, u2, v2, A, B;
     arb_sin_cos(sj.get(), cj.get(), J.get(), prec);
-    arb_sub(s_lin.get(), J.get(), model.mid.real(), prec);
-    arb_set(s1.get(), model.s1.real());
+    arb_sub(s_lin.get(), J.get(), mid.get(), prec);
     arb_mul(s_lin.get(), s_lin.get(), s1.get(), prec);
-    arb_add(s_lin.get(), s_lin.get(), model.s0.real(), prec);
+    arb_add(s_lin.get(), s_lin.get(), s0.get(), prec);
     arb_mul(A.get(), p.b.get(), s_lin.get(), prec);  // A = a + b s_lin
     arb_add(A.get(), A.get(), p.a.get(), prec);
     arb_mul(B.get(), p.a.get(), s_lin.get(), prec);  // B = b + a s_lin
@@ -149,7 +163,9 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, const SiteB
     // V(J) within W(J) and M: s(J) within s_lin(J) +- remainder.
     ComplexBall sJ, vx, vy;
     arb_set(sJ.real(), s_lin.get());
-    arb_add_error_mag(sJ.real(), model.remainder.get());
+    Mag e;
+    mag_set_d(e.get(), remainder);
+    arb_add_error_mag(sJ.real(), e.get());
     ray_points(p, ComplexBall(J), sJ, prec, vx, vy);
     arb_set(out.x.get(), vx.real());
     arb_set(out.y.get(), vy.real());
@@ -192,7 +208,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
         const double m = 0.5 * (l + h);
         // Second order: points along J, as many as its bounds ask.
         const std::optional<PieceBounds> bounds =
-            h - l > 2 * certified_width ? std::nullopt : piece_bounds(bisector, p, l, h, 0.5 * (h - l), prec);
+            h - l > 2 * certified_width ? std::nullopt : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec);
         if (bounds) {
             certified_width = h - l;
             // Nine tenths of the radius for the chords and the overshoot, a
