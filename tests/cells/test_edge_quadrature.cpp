@@ -127,7 +127,7 @@ TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bit
     CHECK(certified >= compared * 9 / 10);
 }
 
-TEST_CASE("NormalRayInDoubles: its bounds on a complex box hold at Arb's points inside", "[cells][quadrature]") {
+TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold at Arb's points inside", "[cells][quadrature]") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(-1, 1);
     int boxes = 0, bounded = 0;
@@ -138,7 +138,9 @@ TEST_CASE("NormalRayInDoubles: its bounds on a complex box hold at Arb's points 
         const double mid = facing_angle(p, q) + 0.4 * unit(rng), along = 0.02, across = 0.012;
         ++boxes;
         const std::optional<std::array<double, MeasureIntervals::count>> M = fast.bounds_on_box(mid, along, across);
-        if (!M) continue;
+        const std::optional<NormalRayInDoubles::LinearModel> model = fast.linear_model(mid, along, across);
+        CHECK(M.has_value() == model.has_value());  // one certificate
+        if (!M || !model) continue;
         ++bounded;
         for (int k = 0; k < 8; ++k) {
             ComplexBall z;
@@ -146,6 +148,21 @@ TEST_CASE("NormalRayInDoubles: its bounds on a complex box hold at Arb's points 
             arb_set_d(z.imag(), across * unit(rng));
             NormalRayBisector::Densities d;
             REQUIRE(arb.densities(z, 128, d));
+            // The model: |s(z) - s0 - s1 (z - mid)| <= remainder.
+            ComplexBall s, dz, error;
+            REQUIRE(arb.solve(z, 128, s));
+            Ball centre, s0, s1;
+            arb_set_d(centre.get(), mid);
+            acb_set(dz.get(), z.get());
+            arb_sub(dz.real(), dz.real(), centre.get(), 128);
+            arb_set_d(s0.get(), model->s0);
+            arb_set_d(s1.get(), model->s1);
+            acb_mul_arb(error.get(), dz.get(), s1.get(), 128);
+            acb_add_arb(error.get(), error.get(), s0.get(), 128);
+            acb_sub(error.get(), s.get(), error.get(), 128);
+            Mag e;
+            acb_get_mag_lower(e.get(), error.get());
+            CHECK(mag_get_d(e.get()) <= model->remainder);
             const ComplexBall* values[MeasureIntervals::count] = {&d.area,      &d.length,    &d.first[0], &d.first[1],
                                                                   &d.second[0], &d.second[1], &d.second[2]};
             for (int j = 0; j < MeasureIntervals::count; ++j) {
