@@ -113,3 +113,51 @@ TEST_CASE("kappa4 infinite edge: the interval filter agrees with the exact stage
     }
     CHECK(ties >= 30);
 }
+
+TEST_CASE("support function: the arrival normal box holds the arrival tangent's normal", "[predicates][support-function]") {
+    // Sites whose circumscribed disks are apart: the box of arrival_normal_box
+    // must hold the unit normal of the tangent where the hull arrives on E1,
+    // as long-double numerics and the tiny proven interval put it; touching or
+    // overlapping disks give no box.
+    Rng rng(4242);
+    int boxes = 0, refused = 0;
+    for (int tries = 0; tries < 3000 && boxes < 500; ++tries) {
+        const Ellipse e1 = random_ellipse(rng), e2 = random_ellipse(rng);
+        if (!separated({&e1, &e2})) continue;
+        INFO(oracle::ell({&e1, &e2}));
+        const std::optional<NormalBox> box = arrival_normal_box(e1.enclosure(), e2.enclosure());
+        const double d = std::hypot(e2.enclosure().xc.mid() - e1.enclosure().xc.mid(),
+                                    e2.enclosure().yc.mid() - e1.enclosure().yc.mid());
+        const double R1 = std::fmax(e1.enclosure().a.mid(), e1.enclosure().b.mid());
+        const double R2 = std::fmax(e2.enclosure().a.mid(), e2.enclosure().b.mid());
+        if (!box) {
+            CHECK(d <= (R1 + R2) * (1 + 1e-12));  // refused only when the disks are not apart
+            ++refused;
+            continue;
+        }
+        CHECK(d > R1 + R2);
+        ++boxes;
+        oracle::LD phi = 0;
+        REQUIRE(oracle::bitangent_normal(oracle::num(e1), oracle::num(e2), phi));
+        const double nx = std::cos(static_cast<double>(phi)), ny = std::sin(static_cast<double>(phi));
+        INFO("normal (" << nx << ", " << ny << ") box [" << box->nx.lo << ", " << box->nx.hi << "] x [" << box->ny.lo
+                        << ", " << box->ny.hi << "]");
+        CHECK(nx >= box->nx.lo - 1e-12);
+        CHECK(nx <= box->nx.hi + 1e-12);
+        CHECK(ny >= box->ny.lo - 1e-12);
+        CHECK(ny <= box->ny.hi + 1e-12);
+        // The proven tiny interval of the arrival tangent meets the box (its
+        // normals are (1 - tau^2, 2 tau) up to sign and scale: normalize).
+        const std::optional<NormalInterval> tight = certified_bitangent_normal(e1, e2, true);
+        if (tight) {
+            const Interval tx = tight->nx(), ty = tight->ny();
+            const double length = std::hypot(tx.mid(), ty.mid());
+            CHECK(tx.mid() / length >= box->nx.lo - 1e-9);
+            CHECK(tx.mid() / length <= box->nx.hi + 1e-9);
+            CHECK(ty.mid() / length >= box->ny.lo - 1e-9);
+            CHECK(ty.mid() / length <= box->ny.hi + 1e-9);
+        }
+    }
+    CHECK(boxes == 500);
+    CHECK(refused > 5);  // the generator also makes close pairs: the box is not everywhere
+}
