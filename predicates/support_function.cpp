@@ -115,21 +115,42 @@ std::vector<BitangentNormal> find_bitangent_normals(const Ellipse::Enclosure& k1
 
 }  // namespace
 
-std::optional<NormalBox> arrival_normal_box(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
+std::optional<ArrivalNormalBox> ArrivalNormalBox::of(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
     if (!finite(k1) || !finite(k2)) return std::nullopt;
     // Outer radii rounded up, inner ones down: R >= max(a, b), r <= min(a, b).
     const double R1 = std::fmax(k1.a.hi, k1.b.hi), r1 = std::fmin(k1.a.lo, k1.b.lo);
     const double R2 = std::fmax(k2.a.hi, k2.b.hi), r2 = std::fmin(k2.a.lo, k2.b.lo);
     if (!(r1 > 0 && r2 > 0)) return std::nullopt;
+    ArrivalNormalBox box(k1, k2);
     const Interval dx = k2.xc - k1.xc, dy = k2.yc - k1.yc;
-    const Interval d = (dx.square() + dy.square()).sqrt();
-    if (!(d.lo > (Interval(R1) + Interval(R2)).hi)) return std::nullopt;
-    const Interval ex = dx / d, ey = dy / d;
+    box.d_ = (dx.square() + dy.square()).sqrt();
+    if (!(box.d_.lo > (Interval(R1) + Interval(R2)).hi)) return std::nullopt;
+    box.ex_ = dx / box.d_, box.ey_ = dy / box.d_;
     // s = n.e between (r1 - R2)/d and (R1 - r2)/d, for every d in its enclosure.
-    const Interval s_range(((Interval(r1) - Interval(R2)) / d).lo, ((Interval(R1) - Interval(r2)) / d).hi);
-    if (!(s_range.lo > -1 && s_range.hi < 1)) return std::nullopt;
-    const Interval c = (Interval(1.0) - s_range.square()).sqrt();
-    return NormalBox{s_range * ex - c * ey, s_range * ey + c * ex};
+    box.s_ = Interval(((Interval(r1) - Interval(R2)) / box.d_).lo, ((Interval(R1) - Interval(r2)) / box.d_).hi);
+    if (!(box.s_.lo > -1 && box.s_.hi < 1)) return std::nullopt;
+    box.set_box();
+    return box;
+}
+
+void ArrivalNormalBox::set_box() {
+    const Interval c = (Interval(1.0) - s_.square()).sqrt();
+    nx_ = s_ * ex_ - c * ey_, ny_ = s_ * ey_ + c * ex_;
+}
+
+bool ArrivalNormalBox::contract() {
+    // The box holds n, so the enclosure over it holds rho_i(n) = sqrt(a^2
+    // (n.u)^2 + b^2 (n.v)^2), and s = (rho1(n) - rho2(n))/d.
+    auto rho = [&](const Ellipse::Enclosure& k) {
+        const Interval nu = nx_ * k.cos + ny_ * k.sin, nv = ny_ * k.cos - nx_ * k.sin;
+        return (k.a.square() * nu.square() + k.b.square() * nv.square()).sqrt();
+    };
+    const Interval again = (rho(*k1_) - rho(*k2_)) / d_;
+    const Interval narrower(std::fmax(s_.lo, again.lo), std::fmin(s_.hi, again.hi));
+    if (!(narrower.lo <= narrower.hi)) return false;
+    s_ = narrower;
+    set_box();
+    return true;
 }
 
 std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
