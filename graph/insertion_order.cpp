@@ -8,7 +8,7 @@
 namespace ellvor {
 
 namespace {
-constexpr std::size_t kFirstRound = 64;
+constexpr std::size_t kFirstRound = 1024;
 constexpr int kHilbertOrder = 16;  // a 65536 x 65536 grid
 }  // namespace
 
@@ -19,7 +19,7 @@ std::vector<std::size_t> bulk_insertion_rounds(std::size_t n) {
         const std::size_t size = std::min(next, n - done);
         rounds.push_back(size);
         done += size;
-        if (done > kFirstRound) next *= 2;
+        if (done > kFirstRound) next *= 2;  // 1024, 1024, 2048, 4096, ...
     }
     return rounds;
 }
@@ -56,7 +56,7 @@ std::vector<SiteId> bulk_insertion_order(const DelaunayTraits& traits) {
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(),
                      [&](SiteId x, SiteId y) { return traits.compare_weight(x, y) == Sign::positive; });
-    if (order.empty()) return order;
+    if (order.size() <= kFirstRound) return order;
     std::vector<LocationHint> hints(traits.size());
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
     for (SiteId i = 0; i < traits.size(); ++i) {
@@ -69,10 +69,13 @@ std::vector<SiteId> bulk_insertion_order(const DelaunayTraits& traits) {
     if (!(side > 0 && std::isfinite(side))) return order;  // one point, or no finite hint: the weight order
     std::vector<std::uint32_t> key(traits.size());
     for (SiteId i = 0; i < traits.size(); ++i) key[i] = hilbert_index(hints[i].x, hints[i].y, xmin, ymin, side);
-    auto begin = order.begin();
-    for (std::size_t size : bulk_insertion_rounds(order.size())) {
-        std::stable_sort(begin, begin + size, [&](SiteId a, SiteId b) { return key[a] < key[b]; });
-        begin += size;
+    // The first round keeps the weight order: a graph that small is in cache
+    // anyway, and its largest sites come first exactly.
+    const std::vector<std::size_t> rounds = bulk_insertion_rounds(order.size());
+    auto begin = order.begin() + rounds[0];
+    for (std::size_t r = 1; r < rounds.size(); ++r) {
+        std::stable_sort(begin, begin + rounds[r], [&](SiteId a, SiteId b) { return key[a] < key[b]; });
+        begin += rounds[r];
     }
     return order;
 }
