@@ -76,7 +76,8 @@ std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosur
 // checks.
 class ArrivalNormalBox {
 public:
-    // nullopt when the disks are not proven apart.
+    // nullopt when the disks are not proven apart. The box keeps pointers to
+    // k1 and k2: they must outlive it.
     static std::optional<ArrivalNormalBox> of(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2);
     // An enclosure of the unit normal (its vectors need not be unit).
     Interval nx() const { return nx_; }
