@@ -1,5 +1,7 @@
 #include "graph/delaunay_graph.hpp"
 
+#include "graph/insertion_order.hpp"
+
 #include "graph/conflict_region.hpp"
 #include "util/error.hpp"
 
@@ -26,11 +28,8 @@ DelaunayGraph::DelaunayGraph(std::unique_ptr<DelaunayTraits> traits) : traits_(s
 }
 
 void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress) {
-    std::vector<SiteId> order(traits_->size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](SiteId x, SiteId y) { return traits_->compare_weight(x, y) == Sign::positive; });
-    // The bulk order jumps across the plane; the grid keeps the walk short.
+    const std::vector<SiteId> order = bulk_insertion_order(*traits_);
+    // Each round of the bulk order starts across the plane; the grid keeps the walk short.
     std::vector<LocationHint> hints;
     hints.reserve(order.size());
     for (SiteId i = 0; i < traits_->size(); ++i) hints.push_back(traits_->location_hint(i));

@@ -55,9 +55,10 @@ public:
     // traits: their memos, caches and counters belong to this one graph.
     explicit DelaunayGraph(std::unique_ptr<DelaunayTraits> traits);
 
-    // Inserts every site, largest first (CGAL's bulk order; the graph does
-    // not depend on the order except in degenerate configurations), each walk
-    // started at a site with a near location hint.
+    // Inserts every site, largest first by rounds, each round along a
+    // Hilbert curve (bulk_insertion_order, graph/insertion_order.hpp; the
+    // graph does not depend on the order except in degenerate
+    // configurations), each walk started at a site with a near location hint.
     void insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress = {});
     // Inserts one site (each id at most once, unless removed in between).
     void insert(SiteId id);

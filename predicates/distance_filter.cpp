@@ -12,6 +12,12 @@ LocalPoint to_local(const Ellipse& e, Interval x, Interval y) {
     return {k.cos * dx + k.sin * dy, k.cos * dy - k.sin * dx, k.a, k.b};
 }
 
+Interval signed_distance_disk_bounds(const Ellipse::Enclosure& k, Interval x, Interval y) {
+    const Interval to_center = ((x - k.xc).square() + (y - k.yc).square()).sqrt();
+    const Interval outer(std::fmax(k.a.hi, k.b.hi)), inner(std::fmin(k.a.lo, k.b.lo));
+    return Interval((to_center - outer).lo, (to_center - inner).hi);
+}
+
 int filtered_side(const LocalPoint& q) {
     const Interval v = (q.x / q.a).square() + (q.y / q.b).square() - Interval(1.0);
     if (!v.finite()) return 0;

@@ -23,18 +23,24 @@ constexpr long kIntersectionFormalDegree = 4;
 
 // ---------------------------------------------------------------- filter --
 //
-// L is the common external tangent where the hull arrives on E1, proven in a
-// tiny interval of normals (support_function.hpp); Q meets the open
-// half-plane beyond L iff h_Q(n) > h_1(n), proven over that whole interval.
-// +1 / -1 when proved, 0 when undecided.
+// L is the common external tangent where the hull arrives on E1; Q meets the
+// open half-plane beyond L iff h_Q(n) > h_1(n) at L's normal n, proven over
+// an enclosure of n. First over the wide box of ArrivalNormalBox (no
+// search: decides Q far from L, most calls on sparse sites), then over a
+// tiny interval of normals where h1 - h2 is proven to change sign
+// (support_function.hpp). +1 / -1 when proved, 0 when undecided.
+int sign_beyond(const Ellipse::Enclosure& kq, const Ellipse::Enclosure& k1, const Interval& nx, const Interval& ny) {
+    const Interval beyond = support_value(kq, nx, ny) - support_value(k1, nx, ny);
+    return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
+}
+
 int filter_stage(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
     const Ellipse::Enclosure& kq = q.enclosure();
     if (!(kq.a.finite() && kq.b.finite() && kq.xc.finite() && kq.yc.finite())) return 0;
+    if (int s = infinite_vertex_conflict_in_normal_box(e1, e2, q)) return s;
     const std::optional<NormalInterval> n = certified_bitangent_normal(e1, e2, true);
     if (!n) return 0;
-    const Interval beyond =
-        support_enclosure(kq, n->nx(), n->ny()).value - support_enclosure(e1.enclosure(), n->nx(), n->ny()).value;
-    return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
+    return sign_beyond(kq, e1.enclosure(), n->nx(), n->ny());
 }
 
 // ------------------------------------------------------------- exact --
@@ -114,6 +120,21 @@ Decision<Sign> break_tangency_tie(const Ellipse& e1, const Ellipse& e2, const El
 }
 
 }  // namespace
+
+constexpr int kNormalBoxContractions = 2;
+
+int infinite_vertex_conflict_in_normal_box(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
+    const Ellipse::Enclosure& kq = q.enclosure();
+    if (!(kq.a.finite() && kq.b.finite() && kq.xc.finite() && kq.yc.finite())) return 0;
+    std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(e1.enclosure(), e2.enclosure());
+    if (!box) return 0;
+    // Q far from L is decided on the first box; each contraction costs about
+    // as much as a test, and two take most of the rest.
+    for (int contractions = 0;; ++contractions) {
+        if (int s = sign_beyond(kq, e1.enclosure(), box->nx(), box->ny())) return s;
+        if (contractions == kNormalBoxContractions || !box->contract()) return 0;
+    }
+}
 
 Decision<Sign> infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
                                         const InfiniteVertexConflictOptions& options) {

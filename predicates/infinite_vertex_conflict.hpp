@@ -32,4 +32,11 @@ struct InfiniteVertexConflictOptions {
 Decision<Sign> infinite_vertex_conflict(const Ellipse& e1, const Ellipse& e2, const Ellipse& q,
                                         const InfiniteVertexConflictOptions& options = {});
 
+// The first step of the filter, exposed for its tests: the sign over the
+// enclosure of L's normal of ArrivalNormalBox (support_function.hpp), contracted
+// at most twice,
+// -1 / +1 as above when proven, 0 when undecided (sites whose circumscribed
+// disks are not proven apart, or Q near L).
+int infinite_vertex_conflict_in_normal_box(const Ellipse& e1, const Ellipse& e2, const Ellipse& q);
+
 }  // namespace ellvor

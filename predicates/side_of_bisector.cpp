@@ -131,6 +131,17 @@ Decision<Sign> decide_side(const Ellipse& e1, const Ellipse& e2, const Rational&
             if (int s = circle_filter(e1, e2, px, py)) return decided(s, Stage::filter);
         return decided(circle_exact(e1, e2, Point{x, y}), Stage::exact);
     }
+    // The sites' inscribed and circumscribed disks bound both signed
+    // distances: decides most points whose distances differ by more than the
+    // sites' R - r (the walk's points are other sites' centers).
+    if (options.use_filter) {
+        const Interval d1 = signed_distance_disk_bounds(e1.enclosure(), px, py),
+                       d2 = signed_distance_disk_bounds(e2.enclosure(), px, py);
+        if (d1.finite() && d2.finite()) {
+            if (d1.hi < d2.lo) return decided(1, Stage::filter);
+            if (d2.hi < d1.lo) return decided(-1, Stage::filter);
+        }
+    }
     // Which side of each boundary p is on: inside one and outside the other
     // decides at once (signed distances).
     const LocalPoint q1 = to_local(e1, px, py), q2 = to_local(e2, px, py);

@@ -22,6 +22,13 @@ SupportEnclosure support_enclosure(const Ellipse::Enclosure& k, Interval nx, Int
     return {nx * k.xc + ny * k.yc + norm, x, y};
 }
 
+Interval support_value(const Ellipse::Enclosure& k, Interval nx, Interval ny) {
+    // The operations of support_enclosure's value, in its order: the same interval.
+    const Interval nu = nx * k.cos + ny * k.sin, nv = ny * k.cos - nx * k.sin;
+    const Interval norm = (k.a.square() * nu.square() + k.b.square() * nv.square()).sqrt();
+    return nx * k.xc + ny * k.yc + norm;
+}
+
 namespace {
 
 bool finite(const Ellipse::Enclosure& k) { return k.a.finite() && k.b.finite() && k.xc.finite() && k.yc.finite(); }
@@ -38,7 +45,8 @@ std::optional<BitangentNormal> certify(const Ellipse::Enclosure& k1, const Ellip
         if (!(n.tau_lo < n.tau_hi)) continue;
         auto difference = [&](double tau) {
             NormalInterval at{n.sign, tau, tau};
-            return support_enclosure(k1, at.nx(), at.ny()).value - support_enclosure(k2, at.nx(), at.ny()).value;
+            const Interval nx = at.nx(), ny = at.ny();
+            return support_value(k1, nx, ny) - support_value(k2, nx, ny);
         };
         const Interval lo = difference(n.tau_lo), hi = difference(n.tau_hi);
         if (lo.negative() && hi.positive()) return BitangentNormal{n, true};
@@ -106,6 +114,44 @@ std::vector<BitangentNormal> find_bitangent_normals(const Ellipse::Enclosure& k1
 }
 
 }  // namespace
+
+std::optional<ArrivalNormalBox> ArrivalNormalBox::of(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
+    if (!finite(k1) || !finite(k2)) return std::nullopt;
+    // Outer radii rounded up, inner ones down: R >= max(a, b), r <= min(a, b).
+    const double R1 = std::fmax(k1.a.hi, k1.b.hi), r1 = std::fmin(k1.a.lo, k1.b.lo);
+    const double R2 = std::fmax(k2.a.hi, k2.b.hi), r2 = std::fmin(k2.a.lo, k2.b.lo);
+    if (!(r1 > 0 && r2 > 0)) return std::nullopt;
+    ArrivalNormalBox box(k1, k2);
+    const Interval dx = k2.xc - k1.xc, dy = k2.yc - k1.yc;
+    box.d_ = (dx.square() + dy.square()).sqrt();
+    if (!(box.d_.lo > (Interval(R1) + Interval(R2)).hi)) return std::nullopt;
+    box.ex_ = dx / box.d_, box.ey_ = dy / box.d_;
+    // s = n.e between (r1 - R2)/d and (R1 - r2)/d, for every d in its enclosure.
+    box.s_ = Interval(((Interval(r1) - Interval(R2)) / box.d_).lo, ((Interval(R1) - Interval(r2)) / box.d_).hi);
+    if (!(box.s_.lo > -1 && box.s_.hi < 1)) return std::nullopt;
+    box.set_box();
+    return box;
+}
+
+void ArrivalNormalBox::set_box() {
+    const Interval c = (Interval(1.0) - s_.square()).sqrt();
+    nx_ = s_ * ex_ - c * ey_, ny_ = s_ * ey_ + c * ex_;
+}
+
+bool ArrivalNormalBox::contract() {
+    // The box holds n, so the enclosure over it holds rho_i(n) = sqrt(a^2
+    // (n.u)^2 + b^2 (n.v)^2), and s = (rho1(n) - rho2(n))/d.
+    auto rho = [&](const Ellipse::Enclosure& k) {
+        const Interval nu = nx_ * k.cos + ny_ * k.sin, nv = ny_ * k.cos - nx_ * k.sin;
+        return (k.a.square() * nu.square() + k.b.square() * nv.square()).sqrt();
+    };
+    const Interval again = (rho(*k1_) - rho(*k2_)) / d_;
+    const Interval narrower(std::fmax(s_.lo, again.lo), std::fmin(s_.hi, again.hi));
+    if (!(narrower.lo <= narrower.hi)) return false;
+    s_ = narrower;
+    set_box();
+    return true;
+}
 
 std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
     return find_bitangent_normals(k1, k2, std::nullopt);

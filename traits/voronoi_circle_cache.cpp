@@ -3,6 +3,7 @@
 #include "util/error.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace ellvor {
 
@@ -10,6 +11,18 @@ int VoronoiCircleCache::Entry::index_of(SiteId id) const {
     for (int n = 0; n < 3; ++n)
         if (ids[n] == id) return n;
     throw Error("VoronoiCircleCache: site " + std::to_string(id) + " is not in this triple");
+}
+
+std::size_t VoronoiCircleCache::KeyHash::operator()(const std::array<SiteId, 3>& ids) const {
+    // Mixing of the three ids (multipliers from splitmix64): faces of nearby
+    // sites differ in few bits.
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (SiteId id : ids) {
+        h ^= static_cast<std::uint64_t>(id) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+        h *= 0xbf58476d1ce4e5b9ull;
+        h ^= h >> 31;
+    }
+    return static_cast<std::size_t>(h);
 }
 
 VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, SiteId j, const Ellipse& ej,

@@ -19,6 +19,8 @@
 //
 // A failure prints the sites (.ell lines) and the order.
 #include "graph/delaunay_graph.hpp"
+#include "graph/insertion_order.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "sites/ellipse.hpp"
 #include "sites/site_generators.hpp"
 #include "tests/support/ellipse_graph.hpp"
@@ -172,4 +174,87 @@ TEST_CASE("insertion order: a square grid of identical ellipses", "[graph][order
     std::mt19937_64 rng(59);
     const Ellipse site(Rational(6), Rational(4), Rational(0), Rational(0), Rational(0));
     check_every_order_valid(square_grid(site, 2, 20), rng, 2);
+}
+
+TEST_CASE("insertion order: the Hilbert index runs through adjacent cells", "[graph][order]") {
+    // On the grid of unit cells (side 2^16), the first 16 positions fill the
+    // 4 x 4 corner block, one cell each, every step to a neighbouring cell;
+    // so do the first 4096 in the 64 x 64 block.
+    for (int block : {4, 64}) {
+        std::vector<std::pair<std::uint32_t, std::pair<int, int>>> cells;
+        for (int i = 0; i < block; ++i)
+            for (int j = 0; j < block; ++j) cells.push_back({hilbert_index(i + 0.5, j + 0.5, 0, 0, 65536), {i, j}});
+        std::sort(cells.begin(), cells.end());
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+            INFO("block " << block << " position " << k);
+            REQUIRE(cells[k].first == k);
+            if (k > 0) {
+                const int step = std::abs(cells[k].second.first - cells[k - 1].second.first) +
+                                 std::abs(cells[k].second.second - cells[k - 1].second.second);
+                CHECK(step == 1);
+            }
+        }
+    }
+    CHECK(hilbert_index(-5, -5, 0, 0, 1) == 0);  // clamped
+    CHECK(bulk_insertion_rounds(0).empty());
+    CHECK(bulk_insertion_rounds(10) == std::vector<std::size_t>{10});
+    CHECK(bulk_insertion_rounds(5000) == std::vector<std::size_t>{1024, 1024, 2048, 904});
+}
+
+TEST_CASE("insertion order: the bulk order is largest first by rounds, local within them, and gives the weight order's graph",
+          "[graph][order]") {
+    const std::vector<Ellipse> sites = generated(SiteKind::ellipses, 2400, 11);
+    const EllipseDelaunayTraits traits(sites);
+    const std::vector<SiteId> order = bulk_insertion_order(traits);
+    INFO(sites.size() << " sites");
+    std::vector<SiteId> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<SiteId> identity(sites.size());
+    std::iota(identity.begin(), identity.end(), 0);
+    REQUIRE(sorted == identity);
+    // Every site of a round weighs at least as much as every later site
+    // (so a container precedes the sites it holds unless both share a round).
+    std::vector<SiteId> by_weight = identity;
+    std::stable_sort(by_weight.begin(), by_weight.end(),
+                     [&](SiteId x, SiteId y) { return traits.compare_weight(x, y) == Sign::positive; });
+    std::size_t begin = 0;
+    for (std::size_t size : bulk_insertion_rounds(order.size())) {
+        for (std::size_t k = begin; k < begin + size; k += 3)
+            for (std::size_t later = begin + size; later < order.size(); later += 37)
+                CHECK(traits.compare_weight(order[k], order[later]) != Sign::negative);
+        begin += size;
+    }
+    // Within the last round consecutive sites are near: a much shorter path
+    // through the centers than the weight order's.
+    const std::size_t last = bulk_insertion_rounds(order.size()).back(), first = order.size() - last;
+    auto path = [&](const std::vector<SiteId>& o) {
+        double length = 0;
+        for (std::size_t k = first + 1; k < o.size(); ++k) {
+            const LocationHint a = traits.location_hint(o[k - 1]), b = traits.location_hint(o[k]);
+            length += std::hypot(a.x - b.x, a.y - b.y);
+        }
+        return length;
+    };
+    INFO("path through the last round: bulk " << path(order) << ", weight order " << path(by_weight));
+    CHECK(path(order) < 0.25 * path(by_weight));
+    // insert_all (the bulk order) and the weight order give one graph.
+    DelaunayGraph bulk = test::ellipse_graph(sites);
+    bulk.insert_all();
+    REQUIRE(bulk.validate() == "");
+    const GraphShape want = shape_of(bulk);
+    const GraphShape got = build_in_order(sites, by_weight, false);
+    CHECK(got.visible == want.visible);
+    CHECK(got.hidden == want.hidden);
+    CHECK(got.edges == want.edges);
+    CHECK(got.faces == want.faces);
+    CHECK(got.hull == want.hull);
+    CHECK(want.hidden.size() > 300);  // the nested sites and chains are hidden in both
+    // Up to 1024 sites the bulk order is the weight order.
+    const std::vector<Ellipse> few(sites.begin(), sites.begin() + 1000);
+    const EllipseDelaunayTraits few_traits(few);
+    std::vector<SiteId> few_by_weight(few.size());
+    std::iota(few_by_weight.begin(), few_by_weight.end(), 0);
+    std::stable_sort(few_by_weight.begin(), few_by_weight.end(),
+                     [&](SiteId x, SiteId y) { return few_traits.compare_weight(x, y) == Sign::positive; });
+    CHECK(bulk_insertion_order(few_traits) == few_by_weight);
 }

@@ -252,3 +252,50 @@ TEST_CASE("kappa2 on 300+ random disjoint ellipse triples agrees with support-fu
     CHECK(conflicts > 50);
     CHECK(conflicts < compared - 50);
 }
+
+TEST_CASE("kappa2's normal-box filter step agrees with the exact stage and decides Q far from L",
+          "[predicates][infinite_vertex_conflict]") {
+    // infinite_vertex_conflict_in_normal_box, the filter's first step: every
+    // sign it proves is the exact stage's; it decides most triples of small
+    // sites far apart (sparse random data), is undecided for Q touching L,
+    // and the whole predicate then reports the filter stage.
+    Rng rng(5151);
+    int compared = 0, decided = 0, conflicts = 0;
+    const InfiniteVertexConflictOptions exact_only{false, true};
+    while (compared < 400) {
+        auto small_ellipse = [&] {
+            return Ellipse(rnd_pos(rng, 1, 9), rnd_pos(rng, 1, 7), rnd(rng, -4, 4, 19),
+                           rnd(rng, -30, 30, 7), rnd(rng, -30, 30, 9));
+        };
+        const Ellipse e1 = small_ellipse(), e2 = small_ellipse(), q = small_ellipse();
+        if (*relative_position(e1, e2) != RelativePosition::separated || *relative_position(e1, q) != RelativePosition::separated ||
+            *relative_position(e2, q) != RelativePosition::separated)
+            continue;
+        ++compared;
+        INFO(oracle::ell({&e1, &e2, &q}));
+        const int box = infinite_vertex_conflict_in_normal_box(e1, e2, q);
+        if (!box) continue;
+        ++decided;
+        const Decision<Sign> exact = infinite_vertex_conflict(e1, e2, q, exact_only);
+        REQUIRE(exact.stage == Stage::exact);
+        CHECK(box == to_int(*exact));
+        conflicts += box < 0;
+        const Decision<Sign> full = infinite_vertex_conflict(e1, e2, q);
+        CHECK(full.stage == Stage::filter);
+        CHECK(to_int(*full) == box);
+    }
+    INFO("decided " << decided << " of " << compared << ", conflicts " << conflicts);
+    CHECK(decided > compared / 2);
+    CHECK(conflicts > 20);
+    CHECK(conflicts < decided - 20);
+
+    // Q tangent to L from the sites' side (E1, E2 and Q touching y = 1 from
+    // below): the box cannot prove a sign.
+    const Ellipse a(Rational(2), Rational(1), Rational(0), Rational(-10), Rational(0));
+    const Ellipse b(Rational(1), Rational(1, 2), Rational(0), Rational(10), Rational(1, 2));
+    const Ellipse touching(Rational(1), Rational(1, 2), Rational(0), Rational(0), Rational(1, 2));
+    CHECK(infinite_vertex_conflict_in_normal_box(a, b, touching) == 0);
+    // Overlapping circumscribed disks: no box.
+    const Ellipse near_a(Rational(2), Rational(1), Rational(0), Rational(-10), Rational(5, 2));
+    CHECK(infinite_vertex_conflict_in_normal_box(a, near_a, b) == 0);
+}

@@ -3,6 +3,7 @@
 // Oracles: the closed form for circles at 256 bits (circle_oracles.hpp), a
 // brute-force distance for ellipses, and ties built by symmetry.
 #include "predicates/relative_position.hpp"
+#include "predicates/distance_filter.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "tests/support/circle_oracles.hpp"
 
@@ -303,7 +304,7 @@ TEST_CASE("kappa1 inside both of two crossing ellipses (the lens) agrees with a 
     // the closer one (DESIGN.md §2); the points lie in the lens of crossing
     // pairs, many near its bisector (between the centers).
     Rng rng(20261124);
-    int compared = 0, subdivision = 0;
+    int compared = 0, subdivision = 0, by_disks = 0;
     for (int i = 0; compared < 200 && i < 20000; ++i) {
         const Ellipse e1(rnd_pos(rng, 4, 7), rnd_pos(rng, 4, 5), rnd(rng, -4, 4, 19), rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 9));
         const Ellipse e2(rnd_pos(rng, 4, 7), rnd_pos(rng, 4, 5), rnd(rng, -4, 4, 19), rnd(rng, -3, 3, 7), rnd(rng, -3, 3, 9));
@@ -317,8 +318,54 @@ TEST_CASE("kappa1 inside both of two crossing ellipses (the lens) agrees with a 
         const Decision<Sign> got = side_of_bisector(e1, e2, p);
         CHECK(to_int(*got) == (d1 < d2 ? 1 : -1));
         subdivision += got.stage == Stage::subdivision;
+        const Interval b1 = signed_distance_disk_bounds(e1.enclosure(), enclose(p.x), enclose(p.y));
+        const Interval b2 = signed_distance_disk_bounds(e2.enclosure(), enclose(p.x), enclose(p.y));
+        if (got.stage == Stage::filter) CHECK((b1.hi < b2.lo || b2.hi < b1.lo));
+        by_disks += got.stage == Stage::filter;
         ++compared;
     }
     CHECK(compared == 200);
-    CHECK(subdivision >= 150);  // inside both, the Arb stage decides (the filter bounds outside distances only)
+    // Inside both, the Arb stage decides what the disk bounds cannot (the
+    // other filter bounds outside distances only).
+    CHECK(subdivision >= 100);
+    CHECK(subdivision + by_disks == compared);
+}
+
+TEST_CASE("kappa1's disk bounds hold the signed distance, and decide the walk's far comparisons",
+          "[predicates][side_of_bisector]") {
+    // signed_distance_disk_bounds (distance_filter.hpp): |p - C| - R <= delta
+    // <= |p - C| - r for points outside, inside and near the site, against a
+    // brute-force distance; kappa1 decided by these bounds alone (the nearer
+    // site proven by them) is the brute force's sign, at the filter stage.
+    Rng rng(777);
+    int inside = 0, decided_by_disks = 0;
+    for (int i = 0; i < 600; ++i) {
+        const Ellipse e(rnd_pos(rng, 3, 17), rnd_pos(rng, 3, 13), rnd(rng, -4, 4, 19), rnd(rng, -10, 10, 7), rnd(rng, -10, 10, 9));
+        Point p{rnd(rng, -12, 12, 101), rnd(rng, -12, 12, 103)};
+        if (i % 3 == 1) p = {e.xc() + rnd(rng, -1, 1, 29) * e.a(), e.yc() + rnd(rng, -1, 1, 31) * e.b()};
+        const oracle::LD d = oracle::signed_distance(e, p);
+        const Interval bounds = signed_distance_disk_bounds(e.enclosure(), enclose(p.x), enclose(p.y));
+        INFO(replay(e, e, p) << "brute force " << static_cast<double>(d) << " bounds [" << bounds.lo << ", " << bounds.hi << "]");
+        CHECK(static_cast<double>(d) >= bounds.lo - 1e-12);
+        CHECK(static_cast<double>(d) <= bounds.hi + 1e-12);
+        inside += d < 0;
+    }
+    CHECK(inside > 50);
+    for (int i = 0; i < 300; ++i) {
+        const Ellipse e1(rnd_pos(rng, 1, 17), rnd_pos(rng, 1, 13), rnd(rng, -4, 4, 19), rnd(rng, -20, 20, 7), rnd(rng, -20, 20, 9));
+        const Ellipse e2(rnd_pos(rng, 1, 17), rnd_pos(rng, 1, 13), rnd(rng, -4, 4, 19), rnd(rng, -20, 20, 7), rnd(rng, -20, 20, 9));
+        const Point p{rnd(rng, -20, 20, 101), rnd(rng, -20, 20, 103)};
+        const Interval b1 = signed_distance_disk_bounds(e1.enclosure(), enclose(p.x), enclose(p.y));
+        const Interval b2 = signed_distance_disk_bounds(e2.enclosure(), enclose(p.x), enclose(p.y));
+        if (!(b1.hi < b2.lo || b2.hi < b1.lo)) continue;
+        ++decided_by_disks;
+        const oracle::LD d1 = oracle::signed_distance(e1, p), d2 = oracle::signed_distance(e2, p);
+        INFO(replay(e1, e2, p) << "brute force: d1 = " << static_cast<double>(d1) << " d2 = " << static_cast<double>(d2));
+        const Decision<Sign> got = side_of_bisector(e1, e2, p);
+        CHECK(got.stage == Stage::filter);
+        CHECK(to_int(*got) == (b1.hi < b2.lo ? 1 : -1));
+        CHECK(to_int(*got) == (d1 < d2 ? 1 : -1));
+        CHECK(to_int(*side_of_bisector(e1, e2, p, SideOfBisectorOptions{false})) == to_int(*got));
+    }
+    CHECK(decided_by_disks > 200);
 }

@@ -113,3 +113,63 @@ TEST_CASE("kappa4 infinite edge: the interval filter agrees with the exact stage
     }
     CHECK(ties >= 30);
 }
+
+TEST_CASE("support function: the arrival normal box holds the arrival tangent's normal", "[predicates][support-function]") {
+    // Sites whose circumscribed disks are apart: the box of ArrivalNormalBox,
+    // and each contraction of it,
+    // must hold the unit normal of the tangent where the hull arrives on E1,
+    // as long-double numerics and the tiny proven interval put it; touching or
+    // overlapping disks give no box.
+    Rng rng(4242);
+    int boxes = 0, refused = 0, narrowed = 0;
+    for (int tries = 0; tries < 3000 && boxes < 500; ++tries) {
+        const Ellipse e1 = random_ellipse(rng), e2 = random_ellipse(rng);
+        if (!separated({&e1, &e2})) continue;
+        INFO(oracle::ell({&e1, &e2}));
+        std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(e1.enclosure(), e2.enclosure());
+        const double d = std::hypot(e2.enclosure().xc.mid() - e1.enclosure().xc.mid(),
+                                    e2.enclosure().yc.mid() - e1.enclosure().yc.mid());
+        const double R1 = std::fmax(e1.enclosure().a.mid(), e1.enclosure().b.mid());
+        const double R2 = std::fmax(e2.enclosure().a.mid(), e2.enclosure().b.mid());
+        if (!box) {
+            CHECK(d <= (R1 + R2) * (1 + 1e-12));  // refused only when the disks are not apart
+            ++refused;
+            continue;
+        }
+        CHECK(d > R1 + R2);
+        ++boxes;
+        oracle::LD phi = 0;
+        REQUIRE(oracle::bitangent_normal(oracle::num(e1), oracle::num(e2), phi));
+        const double nx = std::cos(static_cast<double>(phi)), ny = std::sin(static_cast<double>(phi));
+        // The proven tiny interval of the arrival tangent (its normals are
+        // (1 - tau^2, 2 tau) up to sign and scale: normalized).
+        const std::optional<NormalInterval> tight = certified_bitangent_normal(e1, e2, true);
+        const double first_width = box->nx().hi - box->nx().lo + box->ny().hi - box->ny().lo;
+        for (int contractions = 0; contractions <= 3; ++contractions) {
+            if (contractions > 0) REQUIRE(box->contract());
+            const Interval bx = box->nx(), by = box->ny();
+            INFO("after " << contractions << " contractions: normal (" << nx << ", " << ny << ") box [" << bx.lo << ", "
+                          << bx.hi << "] x [" << by.lo << ", " << by.hi << "]");
+            CHECK(nx >= bx.lo - 1e-12);
+            CHECK(nx <= bx.hi + 1e-12);
+            CHECK(ny >= by.lo - 1e-12);
+            CHECK(ny <= by.hi + 1e-12);
+            if (tight) {
+                const Interval tx = tight->nx(), ty = tight->ny();
+                const double length = std::hypot(tx.mid(), ty.mid());
+                CHECK(tx.mid() / length >= bx.lo - 1e-9);
+                CHECK(tx.mid() / length <= bx.hi + 1e-9);
+                CHECK(ty.mid() / length >= by.lo - 1e-9);
+                CHECK(ty.mid() / length <= by.hi + 1e-9);
+            }
+        }
+        // Contractions never widen the box, and narrow it by ~(R - r)/d a step.
+        const double width = box->nx().hi - box->nx().lo + box->ny().hi - box->ny().lo;
+        CHECK(width <= first_width * (1 + 1e-9));
+        narrowed += width < 0.1 * first_width;
+    }
+    INFO("narrowed tenfold by three contractions: " << narrowed << " of " << boxes);
+    CHECK(narrowed > boxes / 4);
+    CHECK(boxes == 500);
+    CHECK(refused > 5);  // the generator also makes close pairs: the box is not everywhere
+}
