@@ -4,7 +4,8 @@
 // Families: generated ellipses and circles (4, 50 with 30% crossing, 200
 // sites), a tenth of the sites (at least one) copied and moved by 10^-k
 // (sites/site_generators.hpp near_copy: shifts for k = 10 .. 100, rotation
-// and scaling by 1 +- 10^-30), and a five-site example that used to end at the search's cap. Each graph is
+// and scaling by 1 +- 10^-30), a five-site example that used to end at the search's cap, and fuzz F5's
+// six sites (a copy thinner by 10^-k, k = 6 .. 9). Each graph is
 // built through a traits wrapper that times each call of the ellipse traits;
 // a row reports the build time, the calls, and the slowest call with its
 // predicate. The goal: no call over 1 s.
@@ -40,6 +41,9 @@ struct Row {
     ex::CallProfile profile;  // every predicate call of the build, timed
 };
 
+// Builds the sites with every predicate call timed, and validates the graph.
+Row build_timed(Row row, const std::vector<Ellipse>& sites);
+
 Row run(const std::string& family, std::vector<Ellipse> sites, long copies, long k, NearCopyMotion motion) {
     Row row{family, static_cast<long>(sites.size()), copies, k, near_copy_motion_name(motion), "ok", 0, {}};
     const std::size_t base = sites.size();
@@ -48,12 +52,16 @@ Row run(const std::string& family, std::vector<Ellipse> sites, long copies, long
         sites.push_back(near_copy(original, motion, k));
     }
     row.sites = static_cast<long>(sites.size());
+    for (std::size_t c = base; c < sites.size(); ++c)
+        if (!crossing_pair_problem(sites[((c - base) * 7919) % base], sites[c]).empty()) {
+            row.outcome = "input error (a copy meets its site in 4 points)";
+            return row;
+        }
+    return build_timed(std::move(row), sites);
+}
+
+Row build_timed(Row row, const std::vector<Ellipse>& sites) {
     try {
-        for (std::size_t c = base; c < sites.size(); ++c)
-            if (!crossing_pair_problem(sites[((c - base) * 7919) % base], sites[c]).empty()) {
-                row.outcome = "input error (a copy meets its site in 4 points)";
-                return row;
-            }
         auto traits = std::make_unique<ex::TimedTraits>(sites);
         const ex::TimedTraits* timed = traits.get();
         DelaunayGraph g(std::move(traits));
@@ -77,6 +85,19 @@ std::vector<Ellipse> near_pair_example() {
             Ellipse(q("3/2"), q("1/2"), q("1"), q("1"), q("-6"))};
 }
 
+// Fuzz F5 (experiments/results/fuzz.md): the ellipse and a copy thinner by
+// 10^-k, shifted by 6e-30, with four small sites; with k = 6 the search ended
+// at its cap before the near-duplicate start took pairs closer than 2^-16.
+Row thinner_copy_example(long k) {
+    auto q = [](const std::string& s) { return parse_rational(s); };
+    const std::vector<Ellipse> sites{Ellipse(q("2"), q("1"), q("1/3"), q("0"), q("0")),
+                                     Ellipse(q("2"), q("1") - q("1e-" + std::to_string(k)), q("1/3"), q("6e-30"), q("0")),
+                                     Ellipse::circle(6, 1, 1), Ellipse::circle(-5, 6, 1),
+                                     Ellipse(q("3/2"), q("1/2"), q("1"), q("5"), q("3")),
+                                     Ellipse(q("3/2"), q("1/2"), q("1"), q("1"), q("-6"))};
+    return build_timed(Row{"thinner copy (fuzz F5)", 6, 1, k, "b - 1e-k, shift 6e-30", "ok", 0, {}}, sites);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,6 +118,7 @@ int main(int argc, char** argv) {
                   << r.profile.slowest << " s\n";
     };
     for (long k : shifts) record(run("five-site example", near_pair_example(), 1, k, NearCopyMotion::shift_x));
+    for (long k : args.full ? std::vector<long>{6, 7, 8, 9} : std::vector<long>{6, 9}) record(thinner_copy_example(k));
     for (SiteKind kind : {SiteKind::ellipses, SiteKind::circles})
         for (long count : {4L, 50L, 200L}) {
             GeneratorOptions options;
@@ -127,7 +149,9 @@ int main(int argc, char** argv) {
     }
     report.intro("A tenth of the sites (at least one) copied and moved by 10^-k (`near_copy`, "
                  "sites/site_generators.hpp), built with every predicate call of the ellipse traits timed "
-                 "(experiments/timed_traits.hpp). Goal: every call at most 1 s (docs/DESIGN.md §4.2, item 3).");
+                 "(experiments/timed_traits.hpp). Goal: every call at most 1 s (docs/DESIGN.md §4.2, item 3). "
+                 "Fuzz F5's six sites (a copy 10^-k thinner, shifted by 6e-30) ended at the search's cap "
+                 "before the near-duplicate start took pairs closer than 2^-16.");
     report.machine_note("shared with other jobs");
     report.table(table);
     if (worst)

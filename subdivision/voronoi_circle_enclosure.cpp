@@ -33,6 +33,10 @@ constexpr int kRefineLevels = 4;
 // The search for the circle of a nearly coincident pair moved apart
 // (certify_near_duplicate): 165 boxes on the crossing triples that need it.
 constexpr long kMovedSearchBoxes = 5000;
+// Distances the pair is moved apart to: moved_apart_bits, then 2 and 4 bits
+// farther.
+constexpr int kMovedAttempts = 3;
+constexpr long kMovedStepBits = 2;
 
 // Bits of accuracy of a ball: relative for |mid| >= 1, absolute below.
 long ball_bits(const arb_t x) {
@@ -352,10 +356,22 @@ bool VoronoiCircleSolver::certify_near_duplicate() {
     const std::optional<NearDuplicatePair> pair =
         closest_near_duplicate_pair(*work_sites_[0], *work_sites_[1], *work_sites_[2], kNearDuplicateBits);
     if (!pair) return false;
-    const int i = pair->first, j = pair->second;
-    // The pair moved apart to about 2^-kMovedBits of its size: E_i + mu (E_j - E_i).
+    // A moved triple that the guesses do not certify may well be certified a
+    // little farther apart (a pair at 2^-19: 2^-9 failed in one rotation, 2^-8
+    // did); each try costs a solver of the moved triple.
+    for (int attempt = 0; attempt < kMovedAttempts; ++attempt) {
+        const long moved_bits = moved_apart_bits(pair->bits) - kMovedStepBits * attempt;
+        if (moved_bits < kMovedGapBits / 2) break;
+        if (certify_from_moved_pair(*pair, moved_bits)) return true;
+    }
+    return false;
+}
+
+bool VoronoiCircleSolver::certify_from_moved_pair(const NearDuplicatePair& pair, long moved_bits) {
+    const int i = pair.first, j = pair.second;
+    // The pair moved apart to about 2^-moved_bits of its size: E_i + mu (E_j - E_i).
     Rational mu(1);
-    fmpq_mul_2exp(mu.get(), mu.get(), static_cast<unsigned long>(pair->bits - kMovedBits));
+    fmpq_mul_2exp(mu.get(), mu.get(), static_cast<unsigned long>(pair.bits - moved_bits));
     const Ellipse moved = ellipse_moved_apart(*work_sites_[i], *work_sites_[j], mu);
     std::array<const Ellipse*, 3> sites = work_sites_;
     sites[j] = &moved;
@@ -375,11 +391,11 @@ bool VoronoiCircleSolver::certify_near_duplicate() {
     const VoronoiCircleEnclosure& c = apart.enclosure();  // in this solver's frame
     // Two kinds of circle. Contacts on E_i and E_j that nearly coincide (all
     // external circles): the blown-up unknowns, t_j = t_i + mu^-1 (t_j(mu) -
-    // t_i(mu)) in E_i's chart, the others as they are (all O(2^-kMovedBits)
+    // t_i(mu)) in E_i's chart, the others as they are (all O(2^-moved_bits)
     // off). Contacts apart (an internal circle centered near E_i's medial
     // axis, touching E_i and E_j at nearly mirror points): a regular root,
-    // which moves by O(2^-kMovedBits) only; the moved circle is the start.
-    const long prec = start_precision() + 2 * pair->bits;
+    // which moves by O(2^-moved_bits) only; the moved circle is the start.
+    const long prec = start_precision() + 2 * pair.bits;
     std::array<Ball, 3> parameter;
     std::array<bool, 3> flipped = c.flipped;
     for (int k = 0; k < 3; ++k) arb_get_mid_arb(parameter[k].get(), c.parameter[k].get());
@@ -389,8 +405,8 @@ bool VoronoiCircleSolver::certify_near_duplicate() {
         arb_neg(other.get(), other.get());
     }
     arb_sub(offset.get(), other.get(), parameter[i].get(), prec);
-    constexpr long kSameContactBits = kMovedBits / 2;
-    if (arf_cmpabs_2exp_si(arb_midref(offset.get()), -kSameContactBits) < 0) {
+    const long same_contact_bits = moved_bits / 2;
+    if (arf_cmpabs_2exp_si(arb_midref(offset.get()), -same_contact_bits) < 0) {
         arb_set_fmpq(mu_ball.get(), mu.get(), prec);
         arb_div(offset.get(), offset.get(), mu_ball.get(), prec);
         arb_add(parameter[j].get(), parameter[i].get(), offset.get(), prec);
@@ -402,8 +418,8 @@ bool VoronoiCircleSolver::certify_near_duplicate() {
     arb_get_mid_arb(center_x.get(), c.center_x.get());
     arb_get_mid_arb(center_y.get(), c.center_y.get());
     start_at(flipped, parameter, radius, center_x, center_y);
-    condition_bits_ = pair->bits;
-    // Newton from 2^-kMovedBits doubles the correct bits a step: a handful of
+    condition_bits_ = pair.bits;
+    // Newton from 2^-moved_bits doubles the correct bits a step: a handful of
     // steps reach the box width the certificate needs (below 2^-bits).
     constexpr int kLevels = 2, kSteps = 8;
     if (certify_here(prec, kLevels, kSteps)) return true;

@@ -26,6 +26,7 @@
 #include "sites/ellipse.hpp"
 #include "sites/similarity_frame.hpp"
 #include "subdivision/boundary_chart.hpp"
+#include "subdivision/near_duplicate_pair.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "subdivision/voronoi_circle_search.hpp"
 
@@ -117,6 +118,8 @@ private:
     // circle of the triple with the pair moved apart, certified first, gives
     // the start; Newton and Krawczyk at about twice the pair's closeness bits.
     bool certify_near_duplicate();
+    // One attempt of it: the pair moved apart to 2^-moved_bits of its size.
+    bool certify_from_moved_pair(const NearDuplicatePair& pair, long moved_bits);
     bool certify_from(const VoronoiCircleGuess& guess);
     // A cheap attempt from the midpoint of a search box: Newton at the box's
     // precision must converge to a counter-clockwise root of positive radius

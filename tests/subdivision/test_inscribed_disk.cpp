@@ -274,3 +274,72 @@ TEST_CASE("inside_distance_minus: the depth of a point inside an ellipse against
     }
     CHECK(decided >= 100);
 }
+
+// Why an internal Voronoi circle centered exactly on a site's medial axis ends
+// at the search's cap (docs/DESIGN.md §4.2, what still ends with an Error): a
+// needle between two circles, symmetric about its axis, has its vertex there.
+// The disk of radius dist(V, boundary) about such a V touches the needle at two
+// mirror feet, so the test proves the disk inside from neither foot, while
+// the same disk moved along one foot's normal, off the axis, is proved.
+TEST_CASE("inscribed disk: a center exactly on the medial axis touches two mirror feet, certified from neither",
+          "[subdivision][inscribed-disk]") {
+    const long prec = 256;
+    const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
+    const Ball a(needle.a(), prec), b(needle.b(), prec), vx(Rational(6), prec), vy(Rational(15, 2UL), prec);
+    const Ball y(Rational(-5, 2UL), prec);  // V's height over the center, on the major (vertical) axis
+    // Feet (a cos th, b sin th) with sin th = b y / (b^2 - a^2): cos th > 0 on the right (chart t =
+    // tan(th/2) = sin / (1 + cos)), its mirror pi - th on the left (flipped chart u = -1/tan((pi - th)/2) = -t).
+    Ball s, c, t, u, rho, x;
+    arb_sqr(c.get(), b.get(), prec);
+    arb_submul(c.get(), a.get(), a.get(), prec);
+    arb_mul(s.get(), b.get(), y.get(), prec);
+    arb_div(s.get(), s.get(), c.get(), prec);
+    arb_sqr(c.get(), s.get(), prec);
+    arb_sub_ui(c.get(), c.get(), 1, prec);
+    arb_neg(c.get(), c.get());
+    arb_sqrt(c.get(), c.get(), prec);
+    arb_add_ui(t.get(), c.get(), 1, prec);
+    arb_div(t.get(), s.get(), t.get(), prec);
+    arb_neg(u.get(), t.get());
+    arb_mul(x.get(), a.get(), c.get(), prec);
+    arb_sqr(rho.get(), x.get(), prec);
+    arb_mul(x.get(), b.get(), s.get(), prec);
+    arb_sub(x.get(), x.get(), y.get(), prec);
+    arb_addmul(rho.get(), x.get(), x.get(), prec);
+    arb_sqrt(rho.get(), rho.get(), prec);
+    arb_neg(rho.get(), rho.get());
+    INFO("t " << t.str() << " rho " << rho.str());
+    // Both feet put V on their inward normal at depth |rho|: consistent balls, as a Krawczyk box would give.
+    for (bool flipped : {false, true}) {
+        const BoundaryChart::Local p = BoundaryChart(needle, flipped).evaluate(flipped ? u : t, prec, false);
+        Ball wx, wy;
+        arb_set(wx.get(), p.px.get());
+        arb_addmul(wx.get(), rho.get(), p.nx.get(), prec);
+        arb_set(wy.get(), p.py.get());
+        arb_addmul(wy.get(), rho.get(), p.ny.get(), prec);
+        CHECK(arb_overlaps(wx.get(), vx.get()));
+        CHECK(arb_overlaps(wy.get(), vy.get()));
+        CHECK_FALSE(disk_inside_ellipse(needle, flipped, flipped ? u : t, rho, vx, vy, prec));
+    }
+    // The distance from V to the boundary is |rho| within 2^-100: the disk touches both feet.
+    for (int side : {-1, 1}) {
+        Ball r, factor;
+        arb_one(factor.get());
+        arb_mul_2exp_si(factor.get(), factor.get(), -100);
+        if (side < 0) arb_neg(factor.get(), factor.get());
+        arb_add_ui(factor.get(), factor.get(), 1, prec);
+        arb_neg(r.get(), rho.get());
+        arb_mul(r.get(), r.get(), factor.get(), prec);
+        CHECK(inside_distance_minus(needle, r, vx, vy, prec) == -side);
+    }
+    // Moved along the right foot's normal to 0.999 |rho|, off the axis: that foot alone is nearest.
+    const BoundaryChart::Local p = BoundaryChart(needle, false).evaluate(t, prec, false);
+    Ball shallower, wx, wy;
+    arb_mul_ui(shallower.get(), rho.get(), 999, prec);
+    arb_div_ui(shallower.get(), shallower.get(), 1000, prec);
+    arb_set(wx.get(), p.px.get());
+    arb_addmul(wx.get(), shallower.get(), p.nx.get(), prec);
+    arb_set(wy.get(), p.py.get());
+    arb_addmul(wy.get(), shallower.get(), p.ny.get(), prec);
+    CHECK(disk_inside_ellipse(needle, false, t, shallower, wx, wy, prec));
+}

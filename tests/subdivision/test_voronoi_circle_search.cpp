@@ -422,3 +422,22 @@ TEST_CASE("search on an internal circle deeper than the Blaschke bound: certifie
     VoronoiCircleSolver guessed(e1, c2, c3);
     CHECK(guessed.certify());  // the default path (guesses first) agrees
 }
+
+TEST_CASE("search, open: an internal circle centered exactly on a needle's medial axis", "[.][medial-axis-open]") {
+    // Two circles of radius 10 at (0, 0) and (12, 0) and the needle (11/30, 10) at (6, 10), symmetric
+    // about x = 6: the internal circle of the triple is centered on the needle's axis, at about
+    // (6, 7.5509), rho about -0.3555, and touches the needle at two mirror feet. The tritangent
+    // system has a regular root for each foot, but disk_inside_ellipse proves neither
+    // (test_inscribed_disk.cpp), so the boxes around both are bisected until the cap, an Error after
+    // minutes (over 200 s under load: at each offered start the disk test runs to its 4096-piece
+    // cap). Hidden from the default run until a certificate with two feet exists
+    // (docs/DESIGN.md §4.2, what still ends with an Error).
+    const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10);
+    const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
+    VoronoiCircleSolver solver(c1, c2, needle);
+    REQUIRE(solver.certify());
+    const VoronoiCircleEnclosure& e = solver.enclosure();
+    CHECK(std::fabs(e.center_x.mid_double() - 6) < 1e-12);
+    CHECK(std::fabs(e.center_y.mid_double() - 7.550938048301991) < 1e-12);
+    CHECK(std::fabs(e.radius.mid_double() + 0.3554852164925021) < 1e-12);
+}
