@@ -3,7 +3,7 @@
 
     make python
     PYTHONPATH=build/python /usr/bin/python3 experiments/distributed_scaling.py [--count N] [--full]
-        [--packing P] [--cells C] [--workers W] [--tiles 2x1,2x2,4x4,8x8] [--full-tiles 4x4] [--out DIR]
+        [--packing P] [--cells C] [--cell-tiles 2x2,4x4,8x8] [--workers W] [--tiles 2x1,2x2,4x4,8x8] [--full-tiles 4x4] [--out DIR]
 
 N random ellipses (`ellvor.generate("ellipses", N, seed=1)`, default N = 10^5; --full adds 10^6, in the
 --full-tiles tilings) and a dense packing of P sites (`ellvor.generate("packing", P, seed=1,
@@ -17,8 +17,8 @@ packing_fraction=0.6)`, default P = 10^5; 0: none):
 Checks that every tiled graph equals the single one. Then a table "on paper": 10^8 sites on 64 workers,
 predicted from the measured per-site costs and halo fractions (see the results file for the model).
 Then the cells of C random ellipses in a box (default C = 300; 0: none): `ellvor.build(sites).cells(box=...,
-rings=False)` in this process against `ellvor.distributed.cells(...)` on W workers in the --tiles tilings
-and "auto" (wall time, speed-up, where each cell was proven), checked equal (visibility, neighbours,
+rings=False)` in this process against `ellvor.distributed.cells(...)` on W workers in the --cell-tiles
+tilings (default 2x2,4x4,8x8; wall time, speed-up, where each cell was proven), checked equal (visibility, neighbours,
 overlapping area intervals).
 With --out DIR, writes DIR/distributed.md.
 """
@@ -81,14 +81,14 @@ def cells_rows(count, workers, tilings):
     single_wall, single_cpu = time.perf_counter() - start, time.process_time() - cpu
     print(f"[distributed] cells n={count} single: {single_wall:.2f} s", file=sys.stderr)
     rows = []
-    for tiles in list(tilings) + ["auto"]:
+    for tiles in tilings:
         with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
                 Client(cluster) as client:
             client.run(lambda: __import__("ellvor.distributed"))
             start, cpu = time.perf_counter(), time.process_time()
             c = ed.cells(sites, box=box, rings=False, tiles=tiles, client=client)
             wall, client_cpu = time.perf_counter() - start, time.process_time() - cpu
-        rows.append({"n": count, "tiles": tiles if isinstance(tiles, str) else f"{tiles[0]}x{tiles[1]}",
+        rows.append({"n": count, "tiles": f"{tiles[0]}x{tiles[1]}",
                      "count": len(c.tiles), "single_wall": single_wall, "single_cpu": single_cpu, "wall": wall,
                      "client_cpu": client_cpu, "tile_cpu": sum(t["cpu_seconds"] for t in c.tiles),
                      "held": sum(t["sites"] for t in c.tiles), "retries": sum(t["retries"] for t in c.tiles),
@@ -134,6 +134,7 @@ def main():
     ap.add_argument("--full-tiles", default="4x4", help="the tilings at 10^6 sites")
     ap.add_argument("--packing", type=int, default=100000)
     ap.add_argument("--cells", type=int, default=300)
+    ap.add_argument("--cell-tiles", default="2x2,4x4,8x8", help="the tilings of the cells")
     ap.add_argument("--out", type=pathlib.Path)
     args = ap.parse_args()
 
@@ -173,7 +174,7 @@ def main():
                 rows.append(r)
                 print(f"[distributed] {kind} n={n} {r['tiles']}: {r['wall']:.2f} s, same={r['same']}, "
                       f"halo {r['halo_fraction']:.3f}, worker peak {r['peak']:.0f} MB", file=sys.stderr)
-    cell_rows = cells_rows(args.cells, args.workers, tilings) if args.cells else []
+    cell_rows = cells_rows(args.cells, args.workers, tilings_of(args.cell_tiles)) if args.cells else []
     load_after = os.getloadavg()
 
     # The model "on paper": a worker builds its tiles one after another (one thread), each in time
