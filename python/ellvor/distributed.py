@@ -648,10 +648,11 @@ def _local_ids_to_global(message, ids):
     return re.sub(r"\b(sites?|and) (\d+)\b", lambda m: f"{m.group(1)} {int(ids[int(m.group(2))])}", message)
 
 
-def _vertex_keys(a, ids):
+def _vertex_keys(a, ids, copy_shifts):
     """Per vertex of a tile's cells the sites of its face, global: rows (site, wall, shift x, shift y) x 3,
     rotated to start at the least (site, wall), so that the same face from any tile gives the same row."""
-    sites, walls, shifts = ids[a["vertex_sites"]], a["vertex_walls"], a["vertex_shifts"]
+    sites, walls = ids[a["vertex_sites"]], a["vertex_walls"]
+    shifts = a["vertex_shifts"] + copy_shifts[a["vertex_sites"]]
     rows = np.concatenate([sites[:, :, None], walls[:, :, None], shifts], axis=2)   # (m, 3, 4)
     first = np.argmin(sites * 5 + walls, axis=1)
     order = (first[:, None] + np.arange(3)[None, :]) % 3
@@ -663,10 +664,12 @@ _CELL_COLUMNS = ("area_lo", "area_hi", "site_area_lo", "site_area_hi", "perimete
                  "second_moments_hi", "site_area", "visible", "bounded", "precision", "reach")
 
 
-def _cells_task(text, ids, want, boxes, semi_axes, domain, tolerance, boundary_tolerance, rings, region, whole):
-    """The cells of the held sites ``want`` (local indices) among all held sites (``text``, global ``ids``);
-    returns those the reach certificate proves (all when ``whole``: the whole set), with global ids and
-    vertices keyed by their faces' global sites, and the reach of those it does not."""
+def _cells_task(text, ids, shifts, want, boxes, semi_axes, domain, tolerance, boundary_tolerance, rings, region,
+                whole):
+    """The cells of the held sites ``want`` (local indices) among all held sites (``text``, global ``ids``;
+    a periodic box's copies shifted by ``shifts`` periods, the wanted ones by none); returns those the reach
+    certificate proves (all when ``whole``: the whole set), with global ids and vertices keyed by their
+    faces' global sites, and the reach of those it does not."""
     start, cpu = time.perf_counter(), time.process_time()
     box, periodic = domain
     try:
@@ -692,13 +695,13 @@ def _cells_task(text, ids, want, boxes, semi_axes, domain, tolerance, boundary_t
     indices = a["indices"][sides]
     out["counts"] = counts
     out["indices"] = np.where(indices >= 0, ids[np.maximum(indices, 0)], indices)
-    out["shifts"] = a["shifts"][sides]
+    out["shifts"] = a["shifts"][sides] + np.where(indices[:, None] >= 0, shifts[np.maximum(indices, 0)], 0)
     used = np.unique(a["side_vertices"][sides])
     used = used[used >= 0]
     renumber = np.full(len(a["vertices_lo"]) + 1, -1, dtype=np.int64)   # index -1: infinity stays -1
     renumber[used] = np.arange(len(used))
     out["side_vertices"] = renumber[a["side_vertices"][sides]]
-    out["vertex_keys"] = _vertex_keys(a, ids)[used]
+    out["vertex_keys"] = _vertex_keys(a, ids, shifts)[used]
     out["vertices_lo"], out["vertices_hi"] = a["vertices_lo"][used], a["vertices_hi"][used]
     out["rings"] = [a["rings"][k] for k in got] if rings else []
     out["open"] = want[~certified]
@@ -742,8 +745,8 @@ class TiledCells(Cells):
     """Cells computed in tiles on Dask (``ellvor.distributed.cells``): the arrays of ``Cells`` (areas and the
     other measures as certified intervals, visibility, neighbours, rings), each cell computed in one tile and
     proven there to be the whole diagram's (docs/DESIGN.md §8). The vertices are numbered in order of first
-    use along the cells' sides (a box: as one process numbers them); ``vertex_sites``, ``vertex_walls`` name
-    each vertex's face (global ids). ``reach``: per cell a bound of its boundary's distance from the site's
+    use along the cells' sides, one per face (one process may list a vertex of four cocircular sites twice);
+    ``vertex_sites``, ``vertex_walls`` name each vertex's face (global ids). ``reach``: per cell a bound of its boundary's distance from the site's
     center (+inf where not computed). No JSON or GeoJSON (``to_json`` raises Error). ``tiles``: per tile
     index, sites (held), owned, cells (certified there), retries (patches), seconds, cpu_seconds, rss_mb;
     ``stats``: rounds, fallback (False, or why some or all cells were computed in one task of the whole set),
@@ -790,9 +793,10 @@ def cells(sites, box=None, periodic=None, tolerance=1e-9, tiles="auto", client=N
 
     Each tile computes the cells of the sites it owns among the sites near it (docs/DESIGN.md §8); a cell
     it cannot prove is computed again in a patch around its site, with doubling halos, and what is left
-    (cells reaching infinity, a patch that would hold every site) in one task of the whole set. A periodic
-    box is computed in one task (the tiles do not wrap yet: ``stats["fallback"]`` says so). ``client``,
-    ``halo`` as for ``build``. Bad input raises InputError here, before anything is sent."""
+    (cells reaching infinity, a patch that would hold every site) in one task of the whole set. With a
+    periodic box the tiles wrap: they hold the sites' copies shifted by whole periods that meet them.
+    ``client``, ``halo`` as for ``build``. Bad input (arguments, sites outside the box) raises InputError
+    here, before anything is sent; touching or crossing sites raise it from the tiles that meet them."""
     sites = _sites_of(sites, fmt)
     t = _cell_number(tolerance, "tolerance")
     b = None if boundary_tolerance is None else _cell_number(boundary_tolerance, "boundary_tolerance")
@@ -818,6 +822,18 @@ def cells(sites, box=None, periodic=None, tolerance=1e-9, tiles="auto", client=N
 def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_tolerance, rings, nx, ny, halo,
                  start):
     n = len(sites)
+    period = None
+    if periodic is not None and n:
+        # The tiles wrap: the sites with their centers taken into the box (as one process takes them), and
+        # the tiles hold the copies shifted by whole periods that meet their regions.
+        x0, y0, x1, y1 = rectangle
+        period = (x1 - x0, y1 - y0)
+        wrapped = []
+        for e in sites:
+            kx, ky = math.floor((e.xc - x0) / period[0]), math.floor((e.yc - y0) / period[1])
+            wrapped.append(e if kx == 0 and ky == 0 else
+                           type(e)(e.a, e.b, e.w, e.xc - kx * period[0], e.yc - ky * period[1]))
+        sites = _ellvor.Sites(wrapped)
     params = sites.to_array()
     boxes = _bounding_boxes(params) if n else np.zeros((0, 4))
     semi_axes = np.nextafter(np.maximum(params[:, 0], params[:, 1]), np.inf) if n else np.zeros(0)
@@ -830,11 +846,25 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
     tiles = []
     whole_reason = None
 
-    def submit(ids, want, region, whole, tol):
+    def job(held, want, region, whole, tol):
+        """_cells_task's arguments: held = (ids, shifts)."""
+        ids, shifts = held
+        if period is None or not shifts.any():
+            text, held_boxes = sites._lines(ids), boxes[ids]
+        else:
+            lines = []
+            for k, (i, j) in zip(ids.tolist(), shifts.tolist()):
+                e = sites[k]
+                lines.append(str(e) if i == 0 and j == 0 else
+                             str(type(e)(e.a, e.b, e.w, e.xc + i * period[0], e.yc + j * period[1])))
+            text, held_boxes = "\n".join(lines), _shifted_boxes(boxes[ids], shifts, period)
+        return (text, ids, shifts, want, held_boxes, semi_axes[ids], (None, None) if whole is False and period
+                else domain, tolerance, tol, rings, region, whole)
+
+    def submit(held, want, region, whole, tol):
         with warnings.catch_warnings():
             warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-            return client.submit(_cells_task, sites._lines(ids), ids, want, boxes[ids], semi_axes[ids], domain,
-                                 tolerance, tol, rings, region, whole, pure=False)
+            return client.submit(_cells_task, *job(held, want, region, whole, tol), pure=False)
 
     def check(result):
         if "error" in result:
@@ -843,15 +873,14 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
         return result
 
     def whole_task(want):
-        r = check(submit(all_ids, want, None, True, boundary_tolerance).result())
+        r = check(submit((all_ids, np.zeros((n, 2), np.int64)), want, None, True, boundary_tolerance).result())
         results.append(r)
         return r
 
     rounds, whole_set_cells = 1, 0
     # (Cells pay for tiles from a few sites on: no lower count as the build's 16.)
-    if n < 4 or nx * ny == 1 or periodic is not None or not _in_double_range(params):
-        whole_reason = ("one tile" if nx * ny == 1 else "periodic box: one task (the tiles do not wrap yet)"
-                        if periodic is not None else "too few sites or extreme coordinates")
+    if n < 4 or nx * ny == 1 or not _in_double_range(params):
+        whole_reason = "one tile" if nx * ny == 1 else "too few sites or extreme coordinates"
         r = whole_task(all_ids)
         whole_set_cells = n
         tiles.append({"index": (0, 0), "sites": n, "owned": n, "cells": len(r["sites"]), "retries": 0,
@@ -869,16 +898,40 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
         walls = None
         if rectangle is not None:
             walls = [_double_bounds(v) for v in rectangle]   # x0, y0, x1, y1
+        no_shift = np.zeros((n, 2), np.int64)
 
         def held_in(r):
-            held = _meets(boxes, r)
-            if walls is not None:
-                for m in _mirror_regions(r, walls):
-                    held |= _meets(boxes, m)
-            return np.nonzero(held)[0]
+            """(ids, shifts) of the sites (a box: or their mirrors; a periodic box: their copies) meeting r."""
+            if period is None:
+                held = _meets(boxes, r)
+                if walls is not None:
+                    for m in _mirror_regions(r, walls):
+                        held |= _meets(boxes, m)
+                ids = np.nonzero(held)[0]
+                return ids, no_shift[:len(ids)]
+            lx, ly = float(period[0]), float(period[1])
+            bx0, bx1, by0, by1 = boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max()
+            out_ids, out_shifts = [], []
+            for i in range(math.floor((r[0] - bx1) / lx) - 1, math.ceil((r[1] - bx0) / lx) + 2):
+                for j in range(math.floor((r[2] - by1) / ly) - 1, math.ceil((r[3] - by0) / ly) + 2):
+                    # A copy shifted by s meets r when the site meets r - s (s rounded: widened).
+                    sx, sy = i * lx, j * ly
+                    mx, my = abs(sx) * 2.0 ** -50, abs(sy) * 2.0 ** -50
+                    moved = (float(np.nextafter(r[0] - sx - mx, -np.inf)), float(np.nextafter(r[1] - sx + mx, np.inf)),
+                             float(np.nextafter(r[2] - sy - my, -np.inf)), float(np.nextafter(r[3] - sy + my, np.inf)))
+                    ids = np.nonzero(_meets(boxes, moved))[0]
+                    out_ids.append(ids)
+                    out_shifts.append(np.tile(np.array([[i, j]], np.int64), (len(ids), 1)))
+            return np.concatenate(out_ids), np.concatenate(out_shifts)
+
+        def owned_positions(held, own):
+            """Where the owned sites, unshifted, are in held."""
+            ids, shifts = held
+            zero = np.nonzero(~shifts.any(axis=1))[0]
+            return zero[np.searchsorted(ids[zero], own)]
 
         def clipped(x0, x1, y0, y1):
-            if walls is None:
+            if walls is None:   # (a periodic box: the grid is in it; its outer tiles are clipped to it too)
                 return x0, x1, y0, y1
             return max(x0, walls[0][0]), min(x1, walls[2][1]), max(y0, walls[1][0]), min(y1, walls[3][1])
 
@@ -892,10 +945,9 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
             region = (float(np.nextafter(x0 - h0, -np.inf)), float(np.nextafter(x1 + h0, np.inf)),
                       float(np.nextafter(y0 - h0, -np.inf)), float(np.nextafter(y1 + h0, np.inf)))
             held = held_in(region)
-            want = np.searchsorted(held, own)
-            futures[t] = submit(held, want, region, False, cover)
+            futures[t] = submit(held, owned_positions(held, own), region, False, cover)
             index_of[t] = len(tiles)
-            tiles.append({"index": divmod(t, ny), "sites": len(held), "owned": len(own), "cells": 0, "retries": 0,
+            tiles.append({"index": divmod(t, ny), "sites": len(held[0]), "owned": len(own), "cells": 0, "retries": 0,
                           "seconds": 0.0, "cpu_seconds": 0.0, "rss_mb": 0.0})
 
         def collect(t, r):
@@ -915,7 +967,7 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
         reach = np.concatenate(open_reach) if open_reach else np.zeros(0)
         unbounded = np.concatenate(open_unbounded) if open_unbounded else np.zeros(0, bool)
         leftover = []
-        if rectangle is None and unbounded.any():
+        if walls is None and unbounded.any():
             # A cell unbounded in its tile is the whole diagram's unbounded cell only on the hull: sites that
             # may touch the hull's boundary go to the whole set at once, the others to patches.
             candidates, _ = _hull_candidates(params, boxes, 0.0)
@@ -937,12 +989,11 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
                 r = (float(np.nextafter(boxes[p, 0] - width, -np.inf)), float(np.nextafter(boxes[p, 1] + width, np.inf)),
                      float(np.nextafter(boxes[p, 2] - width, -np.inf)), float(np.nextafter(boxes[p, 3] + width, np.inf)))
                 held = held_in(r)
-                if len(held) == n:
+                if period is None and len(held[0]) == n:
                     leftover.append(np.array([p]))
                     continue
                 batches.setdefault(int(owner[p]), []).append(
-                    (sites._lines(held), held, np.searchsorted(held, [p]), boxes[held], semi_axes[held], domain,
-                     tolerance, cover, rings, r, False))
+                    job(held, owned_positions(held, np.array([p])), r, False, cover))
                 tiles[index_of[int(owner[p])]]["retries"] += 1
             futures = {t: client.submit(_cell_patches_task, jobs, pure=False) for t, jobs in batches.items()}
             next_pending, next_reach = [], []
@@ -968,6 +1019,14 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
         arrays["box"] = tuple(rectangle)
     stats["seconds"] = time.perf_counter() - start
     return TiledCells(arrays, tiles, stats)
+
+
+def _shifted_boxes(boxes, shifts, period):
+    """Bounding boxes moved by whole periods, rounded outward."""
+    sx, sy = shifts[:, 0] * float(period[0]), shifts[:, 1] * float(period[1])
+    mx, my = np.abs(sx) * 2.0 ** -50, np.abs(sy) * 2.0 ** -50
+    return np.stack([np.nextafter(boxes[:, 0] + sx - mx, -np.inf), np.nextafter(boxes[:, 1] + sx + mx, np.inf),
+                     np.nextafter(boxes[:, 2] + sy - my, -np.inf), np.nextafter(boxes[:, 3] + sy + my, np.inf)], axis=1)
 
 
 def _assemble_cells(results, n, rings):

@@ -395,10 +395,15 @@ def test_cells_of_sites_on_tile_boundaries_with_rings(client):
     assert tiled.area_lo.sum() <= 11 * 14 <= tiled.area_hi.sum() * (1 + 1e-12)   # the cells tile the box
 
 
-def test_cells_in_a_periodic_box_run_in_one_task(client):
-    sites = ellvor.generate("ellipses", 4, seed=4)
-    tiled = same_cells(sites, client, (2, 2), periodic=box_around(sites, 40), tolerance=1e-3, rings=False)
-    assert tiled.domain == "periodic" and "periodic" in tiled.stats["fallback"]
+def test_cells_in_a_periodic_box_wrap_the_tiles(client):
+    sites = ellvor.generate("ellipses", 6, seed=4)
+    x0, y0, x1, y1 = box_around(sites, 5)
+    # The box as it is, and moved by half its size: centers outside it are wrapped in.
+    for periodic in ((x0, y0, x1, y1), (x0 + (x1 - x0) // 2, y0 - (y1 - y0) // 2, x1 + (x1 - x0) // 2,
+                                        y1 - (y1 - y0) // 2)):
+        tiled = same_cells(sites, client, (2, 2), periodic=periodic, tolerance=1e-3, rings=False)
+        assert tiled.domain == "periodic" and tiled.stats["fallback"] is False
+        assert np.any(tiled.shifts != 0) and max(t["sites"] for t in tiled.tiles) > len(sites)   # copies held
 
 
 def test_cells_one_tile_and_tiny_sets(client):
