@@ -79,20 +79,21 @@ std::unique_ptr<DelaunayGraph> built_graph(const std::vector<Ellipse>& sites) {
     return graph;
 }
 
-// The originals, their neighbours and the hosts of hidden originals: each
+// The originals, the neighbours and the hosts of the wanted ones: each wanted
 // original's cell among these is its cell among all (docs/DESIGN.md §5: a
 // cell is its cell among its neighbours), and few of the others have a
 // bounded cell to integrate. Originals keep their ids.
-PlaneSites neighbourhood_of_originals(const PlaneSites& all) {
+PlaneSites neighbourhood_of_originals(const PlaneSites& all, const std::vector<char>& wanted) {
     const std::unique_ptr<DelaunayGraph> graph = built_graph(all.sites);
     const std::vector<VoronoiCell> cells = voronoi_cells(*graph, face_numbers(*graph));
     std::vector<char> keep(all.sites.size(), 0);
     for (SiteId s = 0; s < all.originals; ++s) {
         keep[s] = 1;
-        for (const CellEdge& e : cells[s].edges) keep[e.neighbor] = 1;
+        if (wanted[s])
+            for (const CellEdge& e : cells[s].edges) keep[e.neighbor] = 1;
     }
     for (const auto& [hidden, host] : graph->hidden())
-        if (hidden < all.originals) keep[host] = 1;
+        if (hidden < all.originals && wanted[hidden]) keep[host] = 1;
     PlaneSites out;
     out.originals = all.originals;
     for (SiteId s = 0; s < all.sites.size(); ++s)
@@ -157,14 +158,20 @@ public:
             const CellEdge& e = cell.edges[k];
             if (sites_.wall[e.neighbor] != Wall::none) {
                 // The wall is a straight side between two vertices: its first
-                // vertex stands for it (the next side starts at the second).
+                // vertex stands for it (the next side starts at the second),
+                // and its farthest point from the center is one of them.
                 if (rings_) out.ring.push_back(vertex_point(e.from));
+                for (long face : {e.from, e.to}) {
+                    const BallPoint v = angles_.vertex(face, cover_.prec + 24);
+                    reach = std::max(reach, distance_bound(EdgeCoverBox{v.x, v.y, {}}, site.xc(), site.yc(), cover_.prec));
+                }
                 continue;
             }
             NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
             for (const EdgeCoverBox& box : voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_)) {
                 if (rings_) out.ring.insert(out.ring.end(), box.points.begin(), box.points.end());
-                reach = std::max(reach, distance_bound(box, site.xc(), site.yc(), cover_.prec));
+                reach = std::max(reach, std::min(distance_bound(box, site.xc(), site.yc(), cover_.prec),
+                                                 polyline_distance_bound(box, site)));
             }
         }
         return reach;
@@ -174,14 +181,35 @@ public:
     std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids, long area_prec) {
         std::vector<CellVertex> out(vertex_ids.size());
         const long prec = std::max(cover_.prec + 24, area_prec);
+        const std::vector<std::array<SiteId, 3>> faces = graph_->faces();
         for (const auto& [face, id] : vertex_ids) {
             BallPoint v = angles_.vertex(face, prec);
-            out[static_cast<std::size_t>(id)] = {v.x, v.y};
+            CellVertex& w = out[static_cast<std::size_t>(id)];
+            w.x = v.x, w.y = v.y;
+            for (int k = 0; k < 3; ++k) {
+                const SiteId s = faces[static_cast<std::size_t>(face)][static_cast<std::size_t>(k)];
+                w.face[static_cast<std::size_t>(k)] = {static_cast<long>(sites_.original[s]), sites_.wall[s], sites_.shift[s]};
+            }
         }
         return out;
     }
 
 private:
+    // V(J) lies within the cover radius of the piece's polyline, whose
+    // farthest point from the center is one of its points: often tighter than
+    // the box V(J) (rounded up; +inf without points).
+    double polyline_distance_bound(const EdgeCoverBox& box, const Ellipse& site) const {
+        if (box.points.empty()) return INFINITY;
+        double far = 0;
+        for (const auto& q : box.points) {
+            Ball x, y;
+            arb_set_d(x.get(), q[0]);
+            arb_set_d(y.get(), q[1]);
+            far = std::max(far, distance_bound(EdgeCoverBox{x, y, {}}, site.xc(), site.yc(), cover_.prec));
+        }
+        return std::nextafter(far + cover_.radius, INFINITY);
+    }
+
     static long vertex_id(long face, std::map<long, long>& ids) {
         if (face < 0) return -1;
         return ids.emplace(face, static_cast<long>(ids.size())).first->second;
@@ -203,14 +231,16 @@ private:
     EdgeCoverOptions cover_;
 };
 
-void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellOptions& options, CellTessellation& out) {
+void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellOptions& options,
+                const std::vector<char>& wanted, CellTessellation& out) {
     CellAreaOptions o;
     o.tolerance = options.tolerance;
-    // Only the originals' cells: the mirrors' and copies' are not wanted.
-    for (SiteId s = 0; s < sites.originals; ++s) o.only.push_back(s);
+    // Only the wanted originals' cells: the mirrors' and copies' are not wanted.
+    for (SiteId s = 0; s < sites.originals; ++s)
+        if (wanted[s]) o.only.push_back(s);
     o.progress = options.progress;
     const std::vector<CellArea> areas = cell_areas(graph, sites.sites, o);
-    for (SiteId s = 0; s < sites.originals; ++s) {
+    for (SiteId s : o.only) {
         Cell& c = out.cells[s];
         c.area = areas[s].area;
         c.site_area = areas[s].site_area;
@@ -243,6 +273,12 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     else if (domain.kind == CellDomain::Kind::box)
         require_sites_inside_box(sites, domain);
     require_sites_apart(sites, domain);
+    std::vector<char> wanted(sites.size(), options.only.empty() ? 1 : 0);
+    for (SiteId s : options.only) {
+        if (s >= sites.size()) throw InputError("cells: asked for the cell of site " + std::to_string(s) + " of " + std::to_string(sites.size()));
+        wanted[s] = 1;
+    }
+    const bool covers = options.rings || options.reach;
     std::unique_ptr<PlaneSites> plane;
     std::unique_ptr<OriginalCells> cells;
     std::vector<double> reach(sites.size());
@@ -253,14 +289,17 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
         // In the plane the vertices are the diagram's, numbered as DelaunayGraph::faces()
         // (the ridges, regions and JSON use those numbers); with mirrors or copies, those
         // of the originals' cells, numbered in order of first use.
-        if (domain.kind == CellDomain::Kind::plane)
+        // (With `only`, in order of first use in the plane too.)
+        if (domain.kind == CellDomain::Kind::plane && options.only.empty())
             for (long f = 0; f < static_cast<long>(cells->graph().faces().size()); ++f) vertex_ids.emplace(f, f);
         for (SiteId s = 0; s < sites.size(); ++s) {
             Cell& c = out.cells[s];
             c.site = s;
+            if (!wanted[s]) continue;
             c.visible = cells->cell(s).visible;
             c.bounded = c.visible && cells->cell(s).bounded();
             reach[s] = cells->describe(s, c, vertex_ids);
+            if (c.bounded) c.reach = reach[s];
             if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
         }
@@ -268,12 +307,13 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     switch (domain.kind) {
         case CellDomain::Kind::plane:
             plane = std::make_unique<PlaneSites>(plane_sites(sites));
-            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings, options.rings);
+            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, covers, options.rings);
             describe_all();
             break;
         case CellDomain::Kind::box:
-            plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain))));
-            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings, options.rings);
+            plane = std::make_unique<PlaneSites>(
+                neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain)), wanted));
+            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, covers, options.rings);
             describe_all();
             break;
         case CellDomain::Kind::periodic: {
@@ -291,19 +331,20 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
                 if (rings > first + 3)
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
                                 std::to_string(rings - 1) + " rings of copies");
-                plane = std::make_unique<PlaneSites>(neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings))));
+                plane = std::make_unique<PlaneSites>(
+                    neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings)), wanted));
                 cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, true, options.rings);
                 describe_all();
                 bool proven = true;
                 for (SiteId s = 0; s < sites.size() && proven; ++s)
-                    proven = !out.cells[s].visible ||
+                    proven = !wanted[s] || !out.cells[s].visible ||
                              periodic_cell_is_proven(reach[s], sites[s], distance_to_missing_copies(sites[s], domain, rings), e_max);
                 if (proven) break;
             }
             break;
         }
     }
-    fill_areas(*plane, cells->graph(), options, out);
+    fill_areas(*plane, cells->graph(), options, wanted, out);
     out.vertices = cells->vertices(vertex_ids, cell_area_precision(options.tolerance));
     return out;
 }

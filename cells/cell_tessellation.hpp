@@ -15,6 +15,7 @@
 #include "util/flint_types.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -31,6 +32,14 @@ struct CellOptions {
     // about as much as the areas). The torus still covers the edges, coarsely,
     // for its certificate.
     bool rings = true;
+    // The sites whose cells are computed (input ids); empty: every site. The
+    // others are left as Cell{} (with their id: not visible, no sides). Every
+    // site still shapes the wanted cells.
+    std::vector<SiteId> only;
+    // True: cover the edges (at boundary_tolerance, as the rings do) also
+    // without rings, to bound each cell's extent (Cell::reach) for the tiled
+    // cells' certificate (python/ellvor/distributed.py, docs/DESIGN.md §8).
+    bool reach = false;
     // Called after each cell's measures (done, total); may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
@@ -45,8 +54,20 @@ struct CellSide {
     long from = -1, to = -1;             // vertex numbers in CellTessellation::vertices, counter-clockwise; -1: infinity
 };
 
+// A site as a cell side or a vertex names it: an input id, and the wall of a
+// mirror (box) or the shift in periods of a copy (torus).
+struct CellSiteImage {
+    long site = -1;
+    Wall wall = Wall::none;
+    std::array<long, 2> shift = {0, 0};
+};
+
 struct CellVertex {
     Ball x, y;  // contains the exact vertex
+    // The three sites whose Voronoi circle it is, counter-clockwise as the
+    // triangulation's face lists them: one triple, one circle (§2), so a key
+    // for the same vertex seen from another site set.
+    std::array<CellSiteImage, 3> face;
 };
 
 struct Cell {
@@ -65,6 +86,10 @@ struct Cell {
     std::vector<std::array<double, 2>> ring;  // closed (first point not repeated); empty if unbounded or hidden
     long precision = 0;                       // Arb precision that met the tolerance
     std::size_t edges_in_doubles = 0, edges_by_arb = 0;  // the stages of its integrals (CellArea)
+    // With CellOptions::reach or rings, an upper bound (rounded up) of |x - c|
+    // over the points x of the cell's boundary, c the site's center; +inf
+    // otherwise and for unbounded or hidden cells.
+    double reach = INFINITY;
 };
 
 struct CellTessellation {

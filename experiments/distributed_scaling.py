@@ -3,9 +3,11 @@
 
     make python
     PYTHONPATH=build/python /usr/bin/python3 experiments/distributed_scaling.py [--count N] [--full]
-        [--workers W] [--tiles 2x1,2x2,4x4,8x8] [--out DIR]
+        [--packing P] [--cells C] [--cell-tiles 2x2,4x4,8x8] [--workers W] [--tiles 2x1,2x2,4x4,8x8] [--full-tiles 4x4] [--out DIR]
 
-N random ellipses (`ellvor.generate("ellipses", N, seed=1)`, default N = 10^5; --full adds 10^6):
+N random ellipses (`ellvor.generate("ellipses", N, seed=1)`, default N = 10^5; --full adds 10^6, in the
+--full-tiles tilings) and a dense packing of P sites (`ellvor.generate("packing", P, seed=1,
+packing_fraction=0.6)`, default P = 10^5; 0: none):
   - the single build, `ellvor.build(sites)`, in a child process: its wall time (insertions only, and the
     whole call) and the child's peak resident memory;
   - per tile count, `ellvor.distributed.build(sites, tiles, client)` on a fresh LocalCluster of W worker
@@ -14,6 +16,10 @@ N random ellipses (`ellvor.generate("ellipses", N, seed=1)`, default N = 10^5; -
     halo overhead (halo sites / owned sites over all tiles), hull candidates, retry rounds and patches.
 Checks that every tiled graph equals the single one. Then a table "on paper": 10^8 sites on 64 workers,
 predicted from the measured per-site costs and halo fractions (see the results file for the model).
+Then the cells of C random ellipses in a box (default C = 300; 0: none): `ellvor.build(sites).cells(box=...,
+rings=False)` in this process against `ellvor.distributed.cells(...)` on W workers in the --cell-tiles
+tilings (default 2x2,4x4,8x8; wall time, speed-up, where each cell was proven), checked equal (visibility, neighbours,
+overlapping area intervals).
 With --out DIR, writes DIR/distributed.md.
 """
 import argparse
@@ -37,7 +43,7 @@ import ellvor.distributed as ed  # noqa: E402
 SINGLE = """
 import json, sys, time, ellvor
 from ellvor.distributed import _rss_mb
-sites = ellvor.generate("ellipses", int(sys.argv[1]), seed=1)
+sites = ellvor.read_sites(sys.argv[1])
 before = _rss_mb()   # the interpreter, ellvor and the sites
 start, cpu = time.perf_counter(), time.process_time()
 d = ellvor.build(sites)
@@ -48,10 +54,49 @@ print(json.dumps({"insertions": d.stats["seconds"], "wall": wall, "cpu": cpu, "f
 """
 
 
-def single_build(n):
-    out = subprocess.run([sys.executable, "-c", SINGLE, str(n)], check=True, capture_output=True, text=True,
+def single_build(path):
+    out = subprocess.run([sys.executable, "-c", SINGLE, str(path)], check=True, capture_output=True, text=True,
                          env=dict(os.environ)).stdout
     return json.loads(out)
+
+
+def same_cells(a, b):
+    """Cells a and b agree: visibility, each cell's neighbour cycle (up to its start), overlapping areas."""
+    if not (np.array_equal(a.visible, b.visible) and np.array_equal(a.indptr, b.indptr)):
+        return False
+    for k in range(len(a)):
+        x = a.indices[a.indptr[k]:a.indptr[k + 1]].tolist()
+        y = b.indices[b.indptr[k]:b.indptr[k + 1]].tolist()
+        if x and not any(y[r:] + y[:r] == x for r in range(len(y))):
+            return False
+    return bool(np.all((a.area_lo <= b.area_hi) & (b.area_lo <= a.area_hi)))
+
+
+def cells_rows(count, workers, tilings):
+    from distributed import Client, LocalCluster
+    sites = ellvor.generate("ellipses", count, seed=1)
+    box = (-110, -110, 110, 110)   # the generator's centers and sites lie in [-100, 100]^2
+    start, cpu = time.perf_counter(), time.process_time()
+    single = ellvor.build(sites).cells(box=box, rings=False)
+    single_wall, single_cpu = time.perf_counter() - start, time.process_time() - cpu
+    print(f"[distributed] cells n={count} single: {single_wall:.2f} s", file=sys.stderr)
+    rows = []
+    for tiles in tilings:
+        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+                Client(cluster) as client:
+            client.run(lambda: __import__("ellvor.distributed"))
+            start, cpu = time.perf_counter(), time.process_time()
+            c = ed.cells(sites, box=box, rings=False, tiles=tiles, client=client)
+            wall, client_cpu = time.perf_counter() - start, time.process_time() - cpu
+        rows.append({"n": count, "tiles": f"{tiles[0]}x{tiles[1]}",
+                     "count": len(c.tiles), "single_wall": single_wall, "single_cpu": single_cpu, "wall": wall,
+                     "client_cpu": client_cpu, "tile_cpu": sum(t["cpu_seconds"] for t in c.tiles),
+                     "held": sum(t["sites"] for t in c.tiles), "retries": sum(t["retries"] for t in c.tiles),
+                     "in_tiles": sum(t["cells"] for t in c.tiles), "whole": c.stats["whole_set_cells"],
+                     "rounds": c.stats["rounds"], "same": same_cells(single, c)})
+        print(f"[distributed] cells n={count} {rows[-1]['tiles']}: {wall:.2f} s, same={rows[-1]['same']}",
+              file=sys.stderr)
+    return rows
 
 
 def worker_rss_mb():
@@ -86,27 +131,50 @@ def main():
     ap.add_argument("--full", action="store_true", help="also 10^6 sites")
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--tiles", default="2x1,2x2,4x4,8x8")
+    ap.add_argument("--full-tiles", default="4x4", help="the tilings at 10^6 sites")
+    ap.add_argument("--packing", type=int, default=100000)
+    ap.add_argument("--cells", type=int, default=300)
+    ap.add_argument("--cell-tiles", default="2x2,4x4,8x8", help="the tilings of the cells")
     ap.add_argument("--out", type=pathlib.Path)
     args = ap.parse_args()
-    tilings = [tuple(int(v) for v in t.split("x")) for t in args.tiles.split(",")]
-    counts = [args.count] + ([10 ** 6] if args.full and args.count != 10 ** 6 else [])
 
+    def tilings_of(text):
+        return [tuple(int(v) for v in t.split("x")) for t in text.split(",")]
+    tilings = tilings_of(args.tiles)
+    sets = [("random", args.count, tilings)]
+    if args.packing:
+        sets.append(("packing", args.packing, tilings))
+    if args.full and args.count != 10 ** 6:
+        sets.append(("random", 10 ** 6, tilings_of(args.full_tiles)))
+
+    import tempfile
     rows, singles = [], {}
     load_before = os.getloadavg()
-    for n in counts:
-        sites = ellvor.generate("ellipses", n, seed=1)
-        s = single_build(n)
-        reference = ellvor.build(sites)   # the graph to compare with (same input, same build)
-        ref = {k: getattr(reference, k) for k in ("faces", "edges", "hull", "hidden")}
-        del reference
-        singles[n] = s
-        print(f"[distributed] n={n} single: {s['wall']:.2f} s, peak {s['peak_mb']:.0f} MB", file=sys.stderr)
-        for tiles in tilings:
-            r = tiled_build(sites, tiles, args.workers, ref)
-            r["n"] = n
-            rows.append(r)
-            print(f"[distributed] n={n} {r['tiles']}: {r['wall']:.2f} s, same={r['same']}, "
-                  f"halo {r['halo_fraction']:.3f}, worker peak {r['peak']:.0f} MB", file=sys.stderr)
+    with tempfile.TemporaryDirectory() as tmp:
+        for kind, n, set_tilings in sets:
+            start = time.perf_counter()
+            if kind == "packing":
+                sites = ellvor.generate("packing", n, seed=1, packing_fraction=0.6)
+            else:
+                sites = ellvor.generate("ellipses", n, seed=1)
+            made = time.perf_counter() - start
+            path = pathlib.Path(tmp) / f"{kind}-{n}.ell"
+            sites.write(path)
+            s = single_build(path)
+            s["generated"] = made
+            reference = ellvor.build(sites)   # the graph to compare with (same input, same build)
+            ref = {k: getattr(reference, k) for k in ("faces", "edges", "hull", "hidden")}
+            del reference
+            singles[kind, n] = s
+            print(f"[distributed] {kind} n={n} (made in {made:.1f} s) single: {s['wall']:.2f} s, "
+                  f"peak {s['peak_mb']:.0f} MB", file=sys.stderr)
+            for tiles in set_tilings:
+                r = tiled_build(sites, tiles, args.workers, ref)
+                r["n"], r["kind"] = n, kind
+                rows.append(r)
+                print(f"[distributed] {kind} n={n} {r['tiles']}: {r['wall']:.2f} s, same={r['same']}, "
+                      f"halo {r['halo_fraction']:.3f}, worker peak {r['peak']:.0f} MB", file=sys.stderr)
+    cell_rows = cells_rows(args.cells, args.workers, tilings_of(args.cell_tiles)) if args.cells else []
     load_after = os.getloadavg()
 
     # The model "on paper": a worker builds its tiles one after another (one thread), each in time
@@ -115,13 +183,13 @@ def main():
     # candidates' build runs on one worker beside them, its candidates a band along the hull:
     # candidates = h * sqrt(n) (h fitted). Memory per worker: the single build's bytes per site times the
     # held sites of one tile, plus the measured empty worker.
-    big = max(counts)
-    measured = [r for r in rows if r["n"] == big and not r["fallback"]]
+    big = max(n for kind, n, _ in sets if kind == "random")
+    measured = [r for r in rows if r["n"] == big and r["kind"] == "random" and not r["fallback"]]
     c_tile = sum(r["tile_seconds"] for r in measured) / sum(r["held"] for r in measured)
     k = float(np.median([r["halo_fraction"] * math.sqrt(big / int(np.prod([int(v) for v in r["tiles"].split("x")])))
                          for r in measured]))
     h = float(np.median([r["hull_candidates"] / math.sqrt(big) for r in measured]))
-    bytes_per_site = (singles[big]["peak_mb"] - singles[big]["before_mb"]) * 2 ** 20 / big
+    bytes_per_site = (singles["random", big]["peak_mb"] - singles["random", big]["before_mb"]) * 2 ** 20 / big
     empty_worker = measured[0]["baseline"][0]
     paper = []  # CPU costs: what a worker with a core of its own spends
     N, W = 10 ** 8, 64
@@ -134,7 +202,7 @@ def main():
         seconds = max(per_worker * c_tile * held, c_tile * hull_sites)
         memory = empty_worker + bytes_per_site * max(held, hull_sites) / 2 ** 20
         paper.append((T, owned, f, seconds, memory, hull_sites))
-    single_per_site = singles[big]["cpu"] / big
+    single_per_site = singles["random", big]["cpu"] / big
 
     lines = ["# The tiled build on dask.distributed (`experiments/distributed_scaling.py`)", "",
              f"Command: `PYTHONPATH=build/python /usr/bin/python3 experiments/distributed_scaling.py "
@@ -142,21 +210,24 @@ def main():
              f"Machine: {machine()}; Python {platform.python_version()}; source {source_state()}; "
              f"load average (1 min) {load_before[0]:.2f} before, {load_after[0]:.2f} after "
              "(other jobs share the cores: wall times and speed-ups are upper and lower bounds).", "",
-             "Random ellipses, `ellvor.generate(\"ellipses\", N, seed=1)`. Single: `ellvor.build` in a child "
+             "Random ellipses, `ellvor.generate(\"ellipses\", N, seed=1)`, and a dense packing, "
+             "`ellvor.generate(\"packing\", N, seed=1, packing_fraction=0.6)` (" +
+             "; ".join(f"{n} sites made in {s['generated']:.0f} s" for (kind, n), s in singles.items()
+                       if kind == "packing") + "). Single: `ellvor.build` in a child "
              "process (wall and CPU time of the call; resident memory with the graph built). Tiled: "
              f"`ellvor.distributed.build(sites, tiles, client)` on a fresh LocalCluster of {args.workers} worker "
              "processes, one thread each (wall time of the call, shipping and client work included; the tiles' "
              "and the client's CPU time; the largest resident memory of a worker with a tile's graph built, "
              "against the single build's (ratio), and an idle worker's for scale). Halo overhead: halo "
              "sites / owned sites over all tiles. Every tiled graph was checked equal to the single one.", "",
-             "| N | tiles | single wall (s) | single CPU (s) | tiled wall (s) | speed-up (wall) | tiles' CPU (s) "
+             "| sites | N | tiles | single wall (s) | single CPU (s) | tiled wall (s) | speed-up (wall) | tiles' CPU (s) "
              "| client CPU (s) | single RSS (MB) | largest worker RSS (MB) | ratio | idle worker (MB) | halo overhead "
              "| hull candidates | rounds | patches | same graph |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        s = singles[r["n"]]
+        s = singles[r["kind"], r["n"]]
         fallback = f" (fallback: {r['fallback']})" if r["fallback"] else ""
-        lines.append(f"| {r['n']} | {r['tiles']} | {s['wall']:.2f} | {s['cpu']:.2f} | {r['wall']:.2f} | "
+        lines.append(f"| {r['kind']} | {r['n']} | {r['tiles']} | {s['wall']:.2f} | {s['cpu']:.2f} | {r['wall']:.2f} | "
                      f"{s['wall'] / r['wall']:.2f} | {r['tile_seconds']:.2f} | {r['client_cpu']:.2f} | "
                      f"{s['peak_mb']:.0f} | {r['peak']:.0f} | {r['peak'] / s['peak_mb']:.2f} | {r['baseline'][0]:.0f} | "
                      f"{r['halo_fraction']:.3f} | {r['hull_candidates']} | {r['rounds']} | {r['patches']} | "
@@ -179,6 +250,23 @@ def main():
     lines.append(f"\nThe single build of 10^8 sites at the measured rate: {single_per_site * N:.0f} s of CPU and "
                  f"{empty_worker + bytes_per_site * N / 2 ** 20:.0f} MB (above the 10^7-site input limit of "
                  "`sites/site_io.hpp`, which binds the CLI, not a tiled build's tiles).")
+    if cell_rows:
+        lines += ["", "## Cells", "",
+                  f"{args.cells} random ellipses (`ellvor.generate(\"ellipses\", {args.cells}, seed=1)`) in the box "
+                  "(-110, -110, 110, 110), T = 1e-9, no rings. Single: `ellvor.build(sites).cells(box=..., "
+                  "rings=False)` in this process. Tiled: `ellvor.distributed.cells(sites, box=..., rings=False, tiles=..., "
+                  f"client=...)` on a fresh LocalCluster of {args.workers} worker processes (wall time of the call; the "
+                  "tiles' CPU time, patches and the whole-set task included; cells proven in tiles or patches, "
+                  "and computed in one task of the whole set). Checked equal: visibility, neighbours, overlapping "
+                  "area intervals.", "",
+                  "| N | tiles | tasks | single wall (s) | single CPU (s) | tiled wall (s) | speed-up (wall) "
+                  "| tiles' CPU (s) | client CPU (s) | held sites | patches | proven in tiles | whole-set cells "
+                  "| rounds | same cells |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in cell_rows:
+            lines.append(f"| {r['n']} | {r['tiles']} | {r['count']} | {r['single_wall']:.1f} | {r['single_cpu']:.1f} | "
+                         f"{r['wall']:.1f} | {r['single_wall'] / r['wall']:.2f} | {r['tile_cpu']:.1f} | "
+                         f"{r['client_cpu']:.2f} | {r['held']} | {r['retries']} | {r['in_tiles']} | {r['whole']} | "
+                         f"{r['rounds']} | {'yes' if r['same'] else 'NO'} |")
     text = "\n".join(lines) + "\n"
     print(text)
     if args.out:

@@ -39,7 +39,10 @@ class Cells:
     ``indptr[k]:indptr[k+1]`` of ``indices`` (the site across; a wall as -1 left, -2 bottom,
     -3 right, -4 top), ``shifts`` (periodic: the neighbour's image is shifted by that many box
     sizes) and ``side_vertices`` (the side's two vertices, -1 at infinity).
-    ``vertices_lo``, ``vertices_hi`` (m, 2): the Voronoi vertices. ``regions``, ``point_region``:
+    ``vertices_lo``, ``vertices_hi`` (m, 2): the Voronoi vertices; ``vertex_sites``, ``vertex_walls``
+    (m, 3), ``vertex_shifts`` (m, 3, 2): the three sites of each vertex's face (a mirror's wall 1-4,
+    a periodic copy's shift). ``reach``: per cell a bound of its boundary's distance from its site's
+    center (with rings; else inf). ``regions``, ``point_region``:
     scipy.spatial.Voronoi's shape. ``rings()``: the boundaries as polylines.
     """
 

@@ -7,6 +7,7 @@
     d.tiles                                                            # per tile: sites, halo, faces kept, ...
     for path, d in ellvor.distributed.map(snapshots):                  # one whole diagram per file, as they finish
         ...
+    c = ellvor.distributed.cells(sites, box=(0, 0, 100, 100))         # the Cells of ellvor.build(sites).cells(...)
 
 Each tile builds the diagram of the sites near it (its own and a halo) and keeps
 only the faces it can prove are faces of the whole diagram; the seam argument,
@@ -14,6 +15,8 @@ the ownership and the retry rules are in docs/DESIGN.md §8 ("The tiled build").
 Where the faces do not close up, patches around the sites concerned are built
 with doubling halos; a region that would hold every site, or too many open
 sites, fall back to one build of the whole set (``stats["fallback"]`` says why).
+The cells are computed per tile too, each kept when a disk about its site twice its
+extent lies in the tile's region (§8, "The tiled cells").
 """
 
 import functools
@@ -21,10 +24,12 @@ import math
 import os
 import time
 import warnings
+from fractions import Fraction
 
 import numpy as np
 
 from . import _ellvor
+from ._cells import Cells, _number as _cell_number
 from ._diagram import _frozen
 from ._errors import Error, InputError
 
@@ -244,10 +249,13 @@ def _hull_candidates(params, boxes, depth):
     if len(polygon) < 3:
         return np.arange(n), polygon
     inside = np.ones(n, dtype=bool)
-    for cx, cy in [(boxes[:, 0], boxes[:, 2]), (boxes[:, 1], boxes[:, 2]), (boxes[:, 0], boxes[:, 3]),
-                   (boxes[:, 1], boxes[:, 3])]:
-        for edge in _beyond_edges(polygon, cx, cy, depth):
-            inside &= edge
+    for a, b in zip(polygon, polygon[1:] + polygon[:1]):
+        # The box's corner least inside this edge (cross(e, x - a) smallest; the signs of the rounded
+        # differences are the exact ones): the box is inside when that corner is.
+        ex, ey = b[0] - a[0], b[1] - a[1]
+        cx = boxes[:, 1] if ey > 0 else boxes[:, 0]
+        cy = boxes[:, 2] if ex > 0 else boxes[:, 3]
+        inside &= _beyond_edge(a, b, cx, cy, depth, 0.0)
     inside[corner_sites] = False
     return np.nonzero(~inside)[0], polygon
 
@@ -272,16 +280,19 @@ def _disk_outside_polygon(circles, polygon, depth):
 def _beyond_edges_varying(polygon, px, py, rho, shift):
     """As _beyond_edges, with a per-point margin: cross(e, x - p) > bound + (rho + shift) |e| (|e| rounded
     up), for polygon edges given clockwise (so "inside" is outside the counter-clockwise polygon)."""
-    out = []
-    for (ax, ay), (bx, by) in zip(polygon, polygon[1:] + polygon[:1]):
-        ex, ey = bx - ax, by - ay
-        left, right = ex * (py - ay), ey * (px - ax)
-        bound = 4 * _EPS * (np.abs(left) + np.abs(right)) + 4 * _EPS * (abs(ex) + abs(ey)) * (
-            np.abs(px - ax) + np.abs(py - ay))
-        length = math.hypot(ex, ey) * (1 + 4 * _EPS)
-        margin = np.nextafter(np.maximum(rho + shift, 0.0) * length, np.inf) * (1 + 4 * _EPS)
-        out.append(left - right > bound + margin)
-    return out
+    return [_beyond_edge(a, b, px, py, rho, shift) for a, b in zip(polygon, polygon[1:] + polygon[:1])]
+
+
+def _beyond_edge(a, b, px, py, rho, shift):
+    """_beyond_edges_varying for the one edge a -> b."""
+    (ax, ay), (bx, by) = a, b
+    ex, ey = bx - ax, by - ay
+    left, right = ex * (py - ay), ey * (px - ax)
+    bound = 4 * _EPS * (np.abs(left) + np.abs(right)) + 4 * _EPS * (abs(ex) + abs(ey)) * (
+        np.abs(px - ax) + np.abs(py - ay))
+    length = math.hypot(ex, ey) * (1 + 4 * _EPS)
+    margin = np.nextafter(np.maximum(rho + shift, 0.0) * length, np.inf) * (1 + 4 * _EPS)
+    return left - right > bound + margin
 
 
 def _convex_hull(points):
@@ -343,24 +354,34 @@ def _edges_of(faces, hull):
 
 
 def _open_edges(faces, hull):
-    """Sites on directed edges whose count differs from their twin's: where faces are missing."""
+    """Sites on directed edges whose count differs from their twin's: where faces are missing. One sort:
+    each directed edge as its undirected key (i < j) and a bit for its direction; a key is balanced when
+    its runs of 0 and 1 bits are equally long."""
     directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]], hull])
+    directed = directed[directed[:, 0] != directed[:, 1]]   # (a loop is its own twin)
     if len(directed) == 0:
         return np.zeros(0, dtype=np.int64)
     m = int(directed.max()) + 1
-    keys = np.sort(directed[:, 0] * m + directed[:, 1])
-    twins = np.sort(directed[:, 1] * m + directed[:, 0])
-    pairs, counts = np.unique(keys, return_counts=True)
-    twin_pairs, twin_counts = np.unique(twins, return_counts=True)
-    if len(pairs) == len(twin_pairs) and np.array_equal(pairs, twin_pairs) and np.array_equal(counts, twin_counts):
+    lo, hi = np.minimum(directed[:, 0], directed[:, 1]), np.maximum(directed[:, 0], directed[:, 1])
+    x = np.sort((lo * m + hi) * 2 + (directed[:, 0] > directed[:, 1]))
+    key, bit = x >> 1, (x & 1).astype(np.int64)
+    starts = np.concatenate([[0], np.flatnonzero(key[1:] != key[:-1]) + 1])
+    length = np.diff(np.concatenate([starts, [len(x)]]))
+    ones = np.add.reduceat(bit, starts)
+    bad = key[starts[2 * ones != length]]
+    if len(bad) == 0:
         return np.zeros(0, dtype=np.int64)
-    both = np.union1d(pairs, twin_pairs)
-    count = np.zeros(len(both), dtype=np.int64)
-    count[np.searchsorted(both, pairs)] = counts
-    twin_count = np.zeros(len(both), dtype=np.int64)
-    twin_count[np.searchsorted(both, twin_pairs)] = twin_counts
-    bad = both[count != twin_count]
     return np.unique(np.concatenate([bad // m, bad % m]))
+
+
+def _unique_rows(rows, n):
+    """The distinct rows of an (m, 3) array of ids below n, sorted (np.unique(axis=0)'s result): one int64 key
+    a row where n^3 fits, several times faster."""
+    rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
+    if n ** 3 >= 2 ** 63:
+        return np.unique(rows, axis=0)
+    keys = np.unique((rows[:, 0] * n + rows[:, 1]) * n + rows[:, 2])
+    return np.stack([keys // (n * n), keys // n % n, keys % n], axis=1)
 
 
 def _sorted_rows(a, width):
@@ -469,7 +490,6 @@ def build(sites, tiles="auto", client=None, *, fmt="ell", halo=None):
 
 def _tiled_build(client, sites, params, nx, ny, halo, start):
     n = len(sites)
-    lines = np.array([str(e) for e in sites], dtype=object)
     boxes = _bounding_boxes(params) if n else np.zeros((0, 4))
     all_ids = np.arange(n, dtype=np.int64)
 
@@ -481,7 +501,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         # tile whose worker dies runs again elsewhere (scattered data would die with the worker).
         with warnings.catch_warnings():
             warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-            return client.submit(_tile_task, "\n".join(lines[ids]), ids, boxes[ids], region, rect, everything,
+            return client.submit(_tile_task, sites._lines(ids), ids, boxes[ids], region, rect, everything,
                                  whole, pure=False)
 
     def one_build(reason):
@@ -512,7 +532,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
              for t in range(nx * ny)]
 
     candidates, polygon = _hull_candidates(params, boxes, halos.max())
-    hull_future = client.submit(_hull_task, "\n".join(lines[candidates]), candidates, polygon,
+    hull_future = client.submit(_hull_task, sites._lines(candidates), candidates, polygon,
                                 halos.max(), pure=False)
 
     faces_found, hidden_found, visible_found = [np.zeros((0, 3), np.int64)], [np.zeros((0, 2), np.int64)], []
@@ -558,7 +578,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
     patch_halo = np.full(n, 2.0 * halos.max())
     rounds = 1
     while True:
-        faces = np.unique(np.concatenate(faces_found), axis=0)
+        faces = _unique_rows(np.concatenate(faces_found), n)
         faces_found = [faces]
         hidden_all = np.concatenate(hidden_found)
         is_hidden = np.zeros(n, dtype=bool)
@@ -591,7 +611,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
                 return one_build(f"the patch around site {p} holds the whole set")
             patch_halo[p] *= 2
             batches.setdefault(int(owner[p]), []).append(
-                ("\n".join(lines[held]), held, boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything, False))
+                (sites._lines(held), held, boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything, False))
             tiles[int(owner[p])]["retries"] += 1
         futures = {t: client.submit(_patches_task, jobs, pure=False) for t, jobs in batches.items()}
         for t, f in futures.items():
@@ -608,36 +628,503 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
                          "seconds": time.perf_counter() - start})
 
 
-def _file_task(text, fmt, name):
-    """Builds one file's whole diagram from its text (already checked on the client)."""
+# The tiled cells (docs/DESIGN.md §8, "The tiled cells").
+
+def _reach_disk_inside(boxes, semi_axes, reach, region):
+    """Cells whose disk K about the site's center of radius 2 max(reach, larger semi-axis) lies in the closed
+    rectangle ``region``, for every center in the site's bounding box; in doubles rounded the safe way. A
+    site the tile lacks misses the region, so it misses K: the cell is the whole diagram's (§8)."""
+    r2 = 2.0 * np.nextafter(np.maximum(reach, semi_axes), np.inf)
+    with np.errstate(invalid="ignore", over="ignore"):
+        return ((np.nextafter(boxes[:, 0] - r2, -np.inf) >= region[0]) &
+                (np.nextafter(boxes[:, 1] + r2, np.inf) <= region[1]) &
+                (np.nextafter(boxes[:, 2] - r2, -np.inf) >= region[2]) &
+                (np.nextafter(boxes[:, 3] + r2, np.inf) <= region[3]))
+
+
+def _local_ids_to_global(message, ids):
+    """A cells error names sites by their ids in the tile: name them by their global ids."""
+    import re
+    return re.sub(r"\b(sites?|and) (\d+)\b", lambda m: f"{m.group(1)} {int(ids[int(m.group(2))])}", message)
+
+
+def _vertex_keys(a, ids, copy_shifts):
+    """Per vertex of a tile's cells the sites of its face, global: rows (site, wall, shift x, shift y) x 3,
+    rotated to start at the least (site, wall), so that the same face from any tile gives the same row."""
+    sites, walls = ids[a["vertex_sites"]], a["vertex_walls"]
+    shifts = a["vertex_shifts"] + copy_shifts[a["vertex_sites"]]
+    rows = np.concatenate([sites[:, :, None], walls[:, :, None], shifts], axis=2)   # (m, 3, 4)
+    first = np.argmin(sites * 5 + walls, axis=1)
+    order = (first[:, None] + np.arange(3)[None, :]) % 3
+    return np.take_along_axis(rows, order[:, :, None], axis=1).reshape(-1, 12)
+
+
+_CELL_COLUMNS = ("area_lo", "area_hi", "site_area_lo", "site_area_hi", "perimeter_lo", "perimeter_hi",
+                 "packing_fraction_lo", "packing_fraction_hi", "centroid_lo", "centroid_hi", "second_moments_lo",
+                 "second_moments_hi", "site_area", "visible", "bounded", "precision", "reach")
+
+
+def _cells_task(text, ids, shifts, want, boxes, semi_axes, domain, tolerance, boundary_tolerance, rings, region,
+                whole):
+    """The cells of the held sites ``want`` (local indices) among all held sites (``text``, global ``ids``;
+    a periodic box's copies shifted by ``shifts`` periods, the wanted ones by none); returns those the reach
+    certificate proves (all when ``whole``: the whole set), with global ids and vertices keyed by their
+    faces' global sites, and the reach of those it does not."""
+    start, cpu = time.perf_counter(), time.process_time()
+    box, periodic = domain
+    try:
+        # (Sites without the text's lines: an error names the sites by id, mapped to global ids below.)
+        core = _ellvor._cells(_ellvor.Sites(list(_local_sites(text))), box, periodic, tolerance, boundary_tolerance, rings,
+                              want.tolist(), not whole)
+    except InputError as e:
+        pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
+        return {"error": (_local_ids_to_global(e.reason, ids), pair)}
+    a = core.arrays()
+    if whole:
+        certified = np.ones(len(want), dtype=bool)
+    else:
+        hidden = ~a["visible"][want]
+        certified = hidden | (a["bounded"][want] & _reach_disk_inside(boxes[want], semi_axes[want],
+                                                                      a["reach"][want], region))
+    got = want[certified]
+    out = {key: a[key][got] for key in _CELL_COLUMNS}
+    out["sites"] = ids[got]
+    counts = a["indptr"][got + 1] - a["indptr"][got]
+    sides = np.concatenate([np.arange(a["indptr"][k], a["indptr"][k + 1]) for k in got]).astype(np.int64) \
+        if len(got) else np.zeros(0, dtype=np.int64)
+    indices = a["indices"][sides]
+    out["counts"] = counts
+    out["indices"] = np.where(indices >= 0, ids[np.maximum(indices, 0)], indices)
+    out["shifts"] = a["shifts"][sides] + np.where(indices[:, None] >= 0, shifts[np.maximum(indices, 0)], 0)
+    used = np.unique(a["side_vertices"][sides])
+    used = used[used >= 0]
+    renumber = np.full(len(a["vertices_lo"]) + 1, -1, dtype=np.int64)   # index -1: infinity stays -1
+    renumber[used] = np.arange(len(used))
+    out["side_vertices"] = renumber[a["side_vertices"][sides]]
+    out["vertex_keys"] = _vertex_keys(a, ids, shifts)[used]
+    out["vertices_lo"], out["vertices_hi"] = a["vertices_lo"][used], a["vertices_hi"][used]
+    out["rings"] = [a["rings"][k] for k in got] if rings else []
+    out["open"] = want[~certified]
+    out["open_reach"] = np.where(a["visible"][want[~certified]], a["reach"][want[~certified]], np.inf)
+    out["open_unbounded"] = a["visible"][want[~certified]] & ~a["bounded"][want[~certified]]
+    out["open"] = ids[out["open"]]
+    out.update(held=len(ids), seconds=time.perf_counter() - start, cpu_seconds=time.process_time() - cpu,
+               rss_mb=_rss_mb())
+    return out
+
+
+def _cell_patches_task(jobs):
+    """_cells_task for each job (one site's patch each), the results concatenated."""
+    results = [_cells_task(*job) for job in jobs]
+    for r in results:
+        if "error" in r:
+            return r
+    return results
+
+
+class _ArrayCore:
+    """The arrays of tiled cells in the shape Cells takes them from its C++ core."""
+
+    def __init__(self, arrays):
+        self._arrays = arrays
+
+    def arrays(self):
+        return dict(self._arrays)
+
+    def json(self):
+        raise Error("tiled cells have no JSON or GeoJSON document yet: "
+                    "ellvor.build(sites).cells(...).to_json() writes it in one process")
+
+    geojson = json
+
+    def write(self, path, fmt):
+        self.json()
+
+
+class TiledCells(Cells):
+    """Cells computed in tiles on Dask (``ellvor.distributed.cells``): the arrays of ``Cells`` (areas and the
+    other measures as certified intervals, visibility, neighbours, rings), each cell computed in one tile and
+    proven there to be the whole diagram's (docs/DESIGN.md §8). The vertices are numbered in order of first
+    use along the cells' sides, one per face (one process may list a vertex of four cocircular sites twice);
+    ``vertex_sites``, ``vertex_walls`` name each vertex's face (global ids). ``reach``: per cell a bound of its boundary's distance from the site's
+    center (+inf where not computed). No JSON or GeoJSON (``to_json`` raises Error). ``tiles``: per tile
+    index, sites (held), owned, cells (certified there), retries (patches), seconds, cpu_seconds, rss_mb;
+    ``stats``: rounds, fallback (False, or why some or all cells were computed in one task of the whole set),
+    whole_set_cells (how many), seconds."""
+
+    def __init__(self, arrays, tiles, stats):
+        super().__init__(_ArrayCore(arrays))
+        self.tiles, self.stats = tiles, stats
+
+    def __repr__(self):
+        return super().__repr__()[:-1] + f", {len(self.tiles)} tiles>"
+
+
+def _double_bounds(x):
+    """(lo, hi): doubles around the Fraction x."""
+    f = float(x)
+    return (f if Fraction(f) <= x else float(np.nextafter(f, -np.inf)),
+            f if Fraction(f) >= x else float(np.nextafter(f, np.inf)))
+
+
+def _mirror_regions(r, walls):
+    """The parts of the region r beyond each wall line, reflected across it: a site whose mirror meets r
+    meets one of these (``walls``: (lo, hi) doubles of x0, y0, x1, y1)."""
+    (x0l, x0h), (y0l, y0h), (x1l, x1h), (y1l, y1h) = walls
+    up, down = (lambda v: float(np.nextafter(v, np.inf))), (lambda v: float(np.nextafter(v, -np.inf)))
+    out = []
+    if r[0] < x0h:
+        out.append((x0l, up(2 * x0h - r[0]), r[2], r[3]))
+    if r[1] > x1l:
+        out.append((down(2 * x1l - r[1]), x1h, r[2], r[3]))
+    if r[2] < y0h:
+        out.append((r[0], r[1], y0l, up(2 * y0h - r[2])))
+    if r[3] > y1l:
+        out.append((r[0], r[1], down(2 * y1l - r[3]), y1h))
+    return out
+
+
+def cells(sites, box=None, periodic=None, tolerance=1e-9, tiles="auto", client=None, *, boundary_tolerance=None,
+          rings=True, fmt="ell", halo=None):
+    """The certified cells of ``sites`` (a path, an ellvor.Sites or Ellipses) computed in ``tiles`` = (nx, ny)
+    tiles or "auto" (eight a worker, at least 8 sites a tile) on Dask: the cells ``ellvor.build(sites).
+    cells(box=box, periodic=periodic, tolerance=tolerance, boundary_tolerance=..., rings=rings)`` gives
+    (every interval containing the exact value, the same neighbours and visibility), as a TiledCells.
+
+    Each tile computes the cells of the sites it owns among the sites near it (docs/DESIGN.md §8); a cell
+    it cannot prove is computed again in a patch around its site, with doubling halos, and what is left
+    (cells reaching infinity, a patch that would hold every site) in one task of the whole set. With a
+    periodic box the tiles wrap: they hold the sites' copies shifted by whole periods that meet them.
+    ``client``, ``halo`` as for ``build``. Bad input (arguments, sites outside the box) raises InputError
+    here, before anything is sent; touching or crossing sites raise it from the tiles that meet them."""
+    sites = _sites_of(sites, fmt)
+    t = _cell_number(tolerance, "tolerance")
+    b = None if boundary_tolerance is None else _cell_number(boundary_tolerance, "boundary_tolerance")
+    if b is not None and math.isnan(b):
+        raise InputError("boundary_tolerance: expected a positive number, got nan")
+    rectangle = _ellvor._check_cells(sites, box, periodic, t, b)
+    start = time.perf_counter()
+    c, close = _client_for(client)
+    try:
+        n = len(sites)
+        if isinstance(tiles, str) and tiles == "auto":
+            workers = max(1, len(c.scheduler_info().get("workers", {})))
+            count = max(1, min(8 * workers, n // 8))
+            nx = max(1, int(math.sqrt(count)))
+            nx, ny = nx, max(1, count // nx)
+        else:
+            nx, ny = _tiles_argument(tiles, n, c)
+        return _tiled_cells(c, sites, box, periodic, rectangle, t, b, bool(rings), nx, ny, halo, start)
+    finally:
+        close()
+
+
+def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_tolerance, rings, nx, ny, halo,
+                 start):
+    n = len(sites)
+    period = None
+    if periodic is not None and n:
+        # The tiles wrap: the sites with their centers taken into the box (as one process takes them), and
+        # the tiles hold the copies shifted by whole periods that meet their regions.
+        x0, y0, x1, y1 = rectangle
+        period = (x1 - x0, y1 - y0)
+        wrapped = []
+        for e in sites:
+            kx, ky = math.floor((e.xc - x0) / period[0]), math.floor((e.yc - y0) / period[1])
+            wrapped.append(e if kx == 0 and ky == 0 else
+                           type(e)(e.a, e.b, e.w, e.xc - kx * period[0], e.yc - ky * period[1]))
+        sites = _ellvor.Sites(wrapped)
+    params = sites.to_array()
+    boxes = _bounding_boxes(params) if n else np.zeros((0, 4))
+    semi_axes = np.nextafter(np.maximum(params[:, 0], params[:, 1]), np.inf) if n else np.zeros(0)
+    all_ids = np.arange(n, dtype=np.int64)
+    domain = (box, periodic)
+    if rings and boundary_tolerance is None and n:   # as one process chooses it: 1e-3 of the median size
+        sizes = np.maximum(params[:, 0], params[:, 1])
+        boundary_tolerance = 1e-3 * float(np.partition(sizes, n // 2)[n // 2])
+    results = []
+    tiles = []
+    whole_reason = None
+
+    def job(held, want, region, whole, tol):
+        """_cells_task's arguments: held = (ids, shifts)."""
+        ids, shifts = held
+        if period is None or not shifts.any():
+            text, held_boxes = sites._lines(ids), boxes[ids]
+        else:
+            lines = []
+            for k, (i, j) in zip(ids.tolist(), shifts.tolist()):
+                e = sites[k]
+                lines.append(str(e) if i == 0 and j == 0 else
+                             str(type(e)(e.a, e.b, e.w, e.xc + i * period[0], e.yc + j * period[1])))
+            text, held_boxes = "\n".join(lines), _shifted_boxes(boxes[ids], shifts, period)
+        return (text, ids, shifts, want, held_boxes, semi_axes[ids], (None, None) if whole is False and period
+                else domain, tolerance, tol, rings, region, whole)
+
+    def submit(held, want, region, whole, tol):
+        with warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
+            return client.submit(_cells_task, *job(held, want, region, whole, tol), pure=False)
+
+    def check(result):
+        if "error" in result:
+            message, pair = result["error"]
+            raise InputError(message, sites=None if pair is None else tuple(sorted(pair)), reason=message)
+        return result
+
+    def whole_task(want):
+        r = check(submit((all_ids, np.zeros((n, 2), np.int64)), want, None, True, boundary_tolerance).result())
+        results.append(r)
+        return r
+
+    rounds, whole_set_cells = 1, 0
+    # (Cells pay for tiles from a few sites on: no lower count as the build's 16.)
+    if n < 4 or nx * ny == 1 or not _in_double_range(params):
+        whole_reason = "one tile" if nx * ny == 1 else "too few sites or extreme coordinates"
+        r = whole_task(all_ids)
+        whole_set_cells = n
+        tiles.append({"index": (0, 0), "sites": n, "owned": n, "cells": len(r["sites"]), "retries": 0,
+                      "seconds": r["seconds"], "cpu_seconds": r["cpu_seconds"], "rss_mb": r["rss_mb"]})
+    else:
+        centers = params[:, 3:5]
+        grid = _Grid(centers, nx, ny)
+        owner = grid.tile_of(centers)
+        lo, hi = centers.min(axis=0), centers.max(axis=0)
+        area = float((hi[0] - lo[0]) * (hi[1] - lo[1]))
+        spacing = math.sqrt(area / n) if area > 0 else float(max(hi - lo)) / n
+        h0 = halo if halo is not None else 4 * spacing + 1e-300
+        # The edge covers bound the reach; without rings coarsely (a few per cent of a spacing off is plenty).
+        cover = boundary_tolerance if rings else spacing / 8
+        walls = None
+        if rectangle is not None:
+            walls = [_double_bounds(v) for v in rectangle]   # x0, y0, x1, y1
+        no_shift = np.zeros((n, 2), np.int64)
+
+        def held_in(r):
+            """(ids, shifts) of the sites (a box: or their mirrors; a periodic box: their copies) meeting r."""
+            if period is None:
+                held = _meets(boxes, r)
+                if walls is not None:
+                    for m in _mirror_regions(r, walls):
+                        held |= _meets(boxes, m)
+                ids = np.nonzero(held)[0]
+                return ids, no_shift[:len(ids)]
+            lx, ly = float(period[0]), float(period[1])
+            bx0, bx1, by0, by1 = boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max()
+            out_ids, out_shifts = [], []
+            for i in range(math.floor((r[0] - bx1) / lx) - 1, math.ceil((r[1] - bx0) / lx) + 2):
+                for j in range(math.floor((r[2] - by1) / ly) - 1, math.ceil((r[3] - by0) / ly) + 2):
+                    # A copy shifted by s meets r when the site meets r - s (s rounded: widened).
+                    sx, sy = i * lx, j * ly
+                    mx, my = abs(sx) * 2.0 ** -50, abs(sy) * 2.0 ** -50
+                    moved = (float(np.nextafter(r[0] - sx - mx, -np.inf)), float(np.nextafter(r[1] - sx + mx, np.inf)),
+                             float(np.nextafter(r[2] - sy - my, -np.inf)), float(np.nextafter(r[3] - sy + my, np.inf)))
+                    ids = np.nonzero(_meets(boxes, moved))[0]
+                    out_ids.append(ids)
+                    out_shifts.append(np.tile(np.array([[i, j]], np.int64), (len(ids), 1)))
+            return np.concatenate(out_ids), np.concatenate(out_shifts)
+
+        def owned_positions(held, own):
+            """Where the owned sites, unshifted, are in held."""
+            ids, shifts = held
+            zero = np.nonzero(~shifts.any(axis=1))[0]
+            return zero[np.searchsorted(ids[zero], own)]
+
+        def clipped(x0, x1, y0, y1):
+            if walls is None:   # (a periodic box: the grid is in it; its outer tiles are clipped to it too)
+                return x0, x1, y0, y1
+            return max(x0, walls[0][0]), min(x1, walls[2][1]), max(y0, walls[1][0]), min(y1, walls[3][1])
+
+        futures = {}
+        index_of = {}
+        for t in range(nx * ny):
+            own = np.nonzero(owner == t)[0]
+            if len(own) == 0:
+                continue
+            x0, x1, y0, y1 = clipped(*grid.rect(t))
+            region = (float(np.nextafter(x0 - h0, -np.inf)), float(np.nextafter(x1 + h0, np.inf)),
+                      float(np.nextafter(y0 - h0, -np.inf)), float(np.nextafter(y1 + h0, np.inf)))
+            held = held_in(region)
+            futures[t] = submit(held, owned_positions(held, own), region, False, cover)
+            index_of[t] = len(tiles)
+            tiles.append({"index": divmod(t, ny), "sites": len(held[0]), "owned": len(own), "cells": 0, "retries": 0,
+                          "seconds": 0.0, "cpu_seconds": 0.0, "rss_mb": 0.0})
+
+        def collect(t, r):
+            tile = tiles[index_of[t]]
+            tile["cells"] += len(r["sites"])
+            tile["seconds"] += r["seconds"]
+            tile["cpu_seconds"] += r["cpu_seconds"]
+            tile["rss_mb"] = max(tile["rss_mb"], r["rss_mb"])
+            results.append(r)
+
+        open_sites, open_reach, open_unbounded = [], [], []
+        for t, f in futures.items():
+            r = check(f.result())
+            collect(t, r)
+            open_sites.append(r["open"]), open_reach.append(r["open_reach"]), open_unbounded.append(r["open_unbounded"])
+        pending = np.concatenate(open_sites) if open_sites else np.zeros(0, np.int64)
+        reach = np.concatenate(open_reach) if open_reach else np.zeros(0)
+        unbounded = np.concatenate(open_unbounded) if open_unbounded else np.zeros(0, bool)
+        leftover = []
+        if walls is None and unbounded.any():
+            # A cell unbounded in its tile is the whole diagram's unbounded cell only on the hull: sites that
+            # may touch the hull's boundary go to the whole set at once, the others to patches.
+            candidates, _ = _hull_candidates(params, boxes, 0.0)
+            hull_side = unbounded & np.isin(pending, candidates)
+            leftover.append(pending[hull_side])
+            pending, reach = pending[~hull_side], reach[~hull_side]
+        patch = np.full(n, 2.0 * h0)
+        while len(pending):
+            rounds += 1
+            if rounds > 8:
+                leftover.append(pending)
+                break
+            batches = {}
+            for p, rp in zip(pending.tolist(), reach.tolist()):
+                # Wide enough for the cell found (the whole diagram's lies inside it), at least double the last.
+                width = max(patch[p], 2.0 * np.nextafter(max(rp, semi_axes[p]), np.inf) * (1 + 1e-9)
+                            if math.isfinite(rp) else 0.0)
+                patch[p] = 2 * width
+                r = (float(np.nextafter(boxes[p, 0] - width, -np.inf)), float(np.nextafter(boxes[p, 1] + width, np.inf)),
+                     float(np.nextafter(boxes[p, 2] - width, -np.inf)), float(np.nextafter(boxes[p, 3] + width, np.inf)))
+                held = held_in(r)
+                if period is None and len(held[0]) == n:
+                    leftover.append(np.array([p]))
+                    continue
+                batches.setdefault(int(owner[p]), []).append(
+                    job(held, owned_positions(held, np.array([p])), r, False, cover))
+                tiles[index_of[int(owner[p])]]["retries"] += 1
+            futures = {t: client.submit(_cell_patches_task, jobs, pure=False) for t, jobs in batches.items()}
+            next_pending, next_reach = [], []
+            for t, f in futures.items():
+                rs = f.result()
+                if isinstance(rs, dict):
+                    check(rs)
+                for r in rs:
+                    collect(t, r)
+                    next_pending.append(r["open"]), next_reach.append(r["open_reach"])
+            pending = np.concatenate(next_pending) if next_pending else np.zeros(0, np.int64)
+            reach = np.concatenate(next_reach) if next_reach else np.zeros(0)
+        leftover = np.unique(np.concatenate(leftover)) if leftover else np.zeros(0, np.int64)
+        if len(leftover):
+            whole_reason = f"{len(leftover)} cells in one task of the whole set (unbounded, or no tile proved them)"
+            whole_task(leftover)
+            whole_set_cells = len(leftover)
+    stats = {"rounds": rounds, "fallback": whole_reason or False, "whole_set_cells": whole_set_cells}
+    arrays = _assemble_cells(results, n, rings)
+    arrays["boundary_tolerance"] = boundary_tolerance if rings else 0.0
+    arrays["domain"] = "plane" if rectangle is None else ("box" if box is not None else "periodic")
+    if rectangle is not None:
+        arrays["box"] = tuple(rectangle)
+    stats["seconds"] = time.perf_counter() - start
+    return TiledCells(arrays, tiles, stats)
+
+
+def _shifted_boxes(boxes, shifts, period):
+    """Bounding boxes moved by whole periods, rounded outward."""
+    sx, sy = shifts[:, 0] * float(period[0]), shifts[:, 1] * float(period[1])
+    mx, my = np.abs(sx) * 2.0 ** -50, np.abs(sy) * 2.0 ** -50
+    return np.stack([np.nextafter(boxes[:, 0] + sx - mx, -np.inf), np.nextafter(boxes[:, 1] + sx + mx, np.inf),
+                     np.nextafter(boxes[:, 2] + sy - my, -np.inf), np.nextafter(boxes[:, 3] + sy + my, np.inf)], axis=1)
+
+
+def _assemble_cells(results, n, rings):
+    """Every site's cell from the tasks' certified ones (the first certificate of a site counts), sides in
+    CSR form, vertices merged by their faces' keys and numbered in order of first use."""
+    sites = np.concatenate([r["sites"] for r in results])
+    first_of, where = np.unique(sites, return_index=True)
+    if len(first_of) != n:
+        raise Error(f"tiled cells: {n - len(first_of)} cells were not computed")
+    columns = {key: np.concatenate([r[key] for r in results])[where] for key in _CELL_COLUMNS}
+    counts = np.concatenate([r["counts"] for r in results])
+    starts = np.concatenate([[0], np.cumsum(counts)[:-1]]).astype(np.int64)
+    new_counts = counts[where]
+    indptr = np.concatenate([[0], np.cumsum(new_counts)]).astype(np.int64)
+    pos = (np.arange(indptr[-1]) - np.repeat(indptr[:-1], new_counts) + np.repeat(starts[where], new_counts))
+    # Vertices: each task's local numbers to rows of all keys, then to unique keys.
+    offsets = np.cumsum([0] + [len(r["vertex_keys"]) for r in results])
+    keys = np.concatenate([r["vertex_keys"] for r in results]).reshape(-1, 12)
+    side_vertices = np.concatenate([np.where(r["side_vertices"] >= 0, r["side_vertices"] + off, -1)
+                                    for r, off in zip(results, offsets)]).reshape(-1, 2)[pos]
+    if len(keys):
+        unique_keys, first_row, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+        inverse = inverse.ravel()
+    else:
+        first_row, inverse = np.zeros(0, np.int64), np.zeros(0, np.int64)
+    flat = side_vertices.ravel()
+    merged = np.where(flat >= 0, inverse[np.maximum(flat, 0)] if len(inverse) else -1, -1)
+    used = merged[merged >= 0]
+    _, first_use = np.unique(used, return_index=True)
+    order = np.unique(used)[np.argsort(first_use)]         # merged ids in order of first use
+    number = np.full(len(first_row) + 1, -1, dtype=np.int64)
+    number[order] = np.arange(len(order))
+    side_vertices = number[merged].reshape(-1, 2)
+    rows = first_row[order]
+    vlo = np.concatenate([r["vertices_lo"] for r in results]).reshape(-1, 2)[rows]
+    vhi = np.concatenate([r["vertices_hi"] for r in results]).reshape(-1, 2)[rows]
+    key_rows = keys[rows].reshape(-1, 3, 4)
+    out = dict(columns)
+    out.update(indptr=indptr, indices=np.concatenate([r["indices"] for r in results])[pos],
+               shifts=np.concatenate([r["shifts"] for r in results]).reshape(-1, 2)[pos],
+               side_vertices=side_vertices, vertices_lo=vlo, vertices_hi=vhi,
+               vertex_sites=key_rows[:, :, 0], vertex_walls=key_rows[:, :, 1], vertex_shifts=key_rows[:, :, 2:])
+    if rings:
+        ring_list = [ring for r in results for ring in r["rings"]]
+        out["rings"] = [ring_list[k] for k in where]
+    else:
+        out["rings"] = [np.zeros((0, 2)) for _ in range(n)]
+    return out
+
+
+def _file_task(text, fmt, name, cell_options=None):
+    """Builds one file's whole diagram from its text (already checked on the client); with
+    ``cell_options``, computes its cells (Cells' arrays)."""
     start, cpu = time.perf_counter(), time.process_time()
     try:
-        d = _ellvor._build(_ellvor._sites_from_text(text, fmt, name), fmt, None, 0.1)
+        sites = _ellvor._sites_from_text(text, fmt, name)
+        if cell_options is not None:
+            o = cell_options
+            arrays = _ellvor._cells(sites, o["box"], o["periodic"], o["tolerance"], o["boundary_tolerance"],
+                                    o["rings"]).arrays()
+            return {"cells": arrays, "seconds": time.perf_counter() - start,
+                    "cpu_seconds": time.process_time() - cpu, "rss_mb": _rss_mb()}
+        d = _ellvor._build(sites, fmt, None, 0.1)
     except InputError as e:
         return {"error": (str(e), e.sites)}
     return {"hidden": d.hidden(), "edges": d.edges(), "faces": d.faces(), "hull": d.hull(),
             "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu, "rss_mb": _rss_mb()}
 
 
-def map(files, fn="build", client=None, *, fmt="ell", progress=False):
-    """One diagram per file (a simulation's snapshots), each built whole on a Dask worker: yields
-    ``(file, diagram)`` as they finish, ``diagram`` a TiledDiagram of one tile (its ``stats["fallback"]``
-    says "one file"). Every file is read and checked on the client first (InputError, as ``ellvor.build``
-    raises it), then sent as its text. ``client`` as for ``build``. ``progress``: True prints
-    "built k of n files" on standard error; the Dask dashboard shows the tasks too. ``fn``: "build"
-    (cells are not available on Dask yet)."""
-    if fn != "build":
-        raise ValueError(f"fn: expected 'build', got {fn!r} (cells are not available on Dask yet)")
+def map(files, fn="build", client=None, *, fmt="ell", progress=False, box=None, periodic=None, tolerance=1e-9,
+        boundary_tolerance=None, rings=True):
+    """One diagram per file (a simulation's snapshots), each computed whole on a Dask worker: yields
+    ``(file, result)`` as they finish. ``fn="build"``: ``result`` a TiledDiagram of one tile (its
+    ``stats["fallback"]`` says "one file"); ``fn="cells"``: a TiledCells of one tile, the cells
+    ``ellvor.build(file).cells(box=, periodic=, tolerance=, boundary_tolerance=, rings=)`` gives.
+    Every file is read and checked on the client first (InputError, as ``ellvor.build`` and ``cells``
+    raise it), then sent as its text. ``client`` as for ``build``. ``progress``: True prints
+    "built k of n files" on standard error; the Dask dashboard shows the tasks too."""
+    if fn not in ("build", "cells"):
+        raise ValueError(f"fn: expected 'build' or 'cells', got {fn!r}")
+    cell_options = None
+    if fn == "cells":
+        t = _cell_number(tolerance, "tolerance")
+        b = None if boundary_tolerance is None else _cell_number(boundary_tolerance, "boundary_tolerance")
+        cell_options = {"box": box, "periodic": periodic, "tolerance": t, "boundary_tolerance": b,
+                        "rings": bool(rings)}
     paths = [os.fspath(f) for f in files]
     checked = []
     for path in paths:  # everything is checked before anything is sent
         sites = _ellvor.read_sites(path, fmt)
+        if cell_options is not None:
+            _ellvor._check_cells(sites, box, periodic, cell_options["tolerance"], cell_options["boundary_tolerance"])
         with open(path, encoding="utf-8") as f:
             checked.append((path, sites, f.read()))
-    return _map_files(checked, fmt, client, progress)
+    return _map_files(checked, fmt, client, progress, cell_options)
 
 
-def _map_files(checked, fmt, client, progress):
+def _map_files(checked, fmt, client, progress, cell_options=None):
     from distributed import as_completed
     c, close = _client_for(client)
     try:
@@ -645,26 +1132,39 @@ def _map_files(checked, fmt, client, progress):
         for path, sites, text in checked:
             with warnings.catch_warnings():
                 warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-                futures[c.submit(_file_task, text, fmt, path, pure=False)] = (path, sites)
+                futures[c.submit(_file_task, text, fmt, path, cell_options, pure=False)] = (path, sites)
         for done, future in enumerate(as_completed(futures), 1):
             path, sites = futures.pop(future)
             result = future.result()
             if "error" in result:
                 message, pair = result["error"]
                 raise InputError(message, filename=path, sites=None if pair is None else tuple(pair))
-            tile = {"index": (0, 0), "sites": len(sites), "owned": len(sites), "halo_sites": 0, "halo": math.inf,
-                    "tile_faces": len(result["faces"]), "certified": len(result["faces"]),
-                    "faces_kept": len(result["faces"]), "retries": 0, "seconds": result["seconds"],
-                    "cpu_seconds": result["cpu_seconds"], "rss_mb": result["rss_mb"]}
-            d = TiledDiagram(sites, result["hidden"], result["edges"], result["faces"], result["hull"], [tile],
-                             {"rounds": 1, "fallback": "one file", "hull_candidates": len(sites),
-                              "seconds": result["seconds"]})
+            if cell_options is not None:
+                tile = {"index": (0, 0), "sites": len(sites), "owned": len(sites), "cells": len(sites),
+                        "retries": 0, "seconds": result["seconds"], "cpu_seconds": result["cpu_seconds"],
+                        "rss_mb": result["rss_mb"]}
+                d = TiledCells(result["cells"], [tile], {"rounds": 1, "fallback": "one file",
+                                                         "whole_set_cells": len(sites), "seconds": result["seconds"]})
+            else:
+                d = _one_file_diagram(sites, result)
             if progress:
                 import sys
-                sys.stderr.write(f"\rbuilt {done} of {len(checked)} files" + ("\n" if done == len(checked) else ""))
+                what = "cells of" if cell_options is not None else "built"
+                sys.stderr.write(f"\r{what} {done} of {len(checked)} files" + ("\n" if done == len(checked) else ""))
                 sys.stderr.flush()
             yield path, d
     finally:
         for future in futures:
             future.cancel()
         close()
+
+
+def _one_file_diagram(sites, result):
+    tile = {"index": (0, 0), "sites": len(sites), "owned": len(sites), "halo_sites": 0, "halo": math.inf,
+            "tile_faces": len(result["faces"]), "certified": len(result["faces"]),
+            "faces_kept": len(result["faces"]), "retries": 0, "seconds": result["seconds"],
+            "cpu_seconds": result["cpu_seconds"], "rss_mb": result["rss_mb"]}
+    d = TiledDiagram(sites, result["hidden"], result["edges"], result["faces"], result["hull"], [tile],
+                     {"rounds": 1, "fallback": "one file", "hull_candidates": len(sites),
+                      "seconds": result["seconds"]})
+    return d

@@ -4,6 +4,7 @@
 // Python spells them.
 #include "python/src/bindings.hpp"
 
+#include "cells/box_mirrors.hpp"
 #include "cells/cell_tessellation.hpp"
 #include "output/cell_request.hpp"
 #include "output/cells_geojson.hpp"
@@ -46,16 +47,39 @@ CellDomain domain_argument(py::handle box, py::handle periodic) {
 }
 
 std::unique_ptr<Cells> cells(py::handle sites, py::handle box, py::handle periodic, double tolerance,
-                             std::optional<double> boundary_tolerance, bool rings) {
+                             std::optional<double> boundary_tolerance, bool rings, std::vector<SiteId> only,
+                             bool reach) {
     const Sites input = sites_argument(sites, "ell");
     const CellDomain domain = domain_argument(box, periodic);
     CellOptions options;
     options.tolerance = tolerance;
     options.rings = rings;
+    options.only = std::move(only);
+    options.reach = reach;
     auto out = std::make_unique<Cells>();
     py::gil_scoped_release release;
     out->t = cells_of_site_file(input.file, domain, options, boundary_tolerance, kNames);
     return out;
+}
+
+// The checks `cells` makes before any diagram (arguments, centers in a box,
+// sites inside it), for the tiled cells to reject bad input on the client.
+// Returns the box or periodic box as Fractions (x0, y0, x1, y1), None in the plane.
+py::object check_cells(py::handle sites, py::handle box, py::handle periodic, double tolerance,
+                       std::optional<double> boundary_tolerance) {
+    const Sites input = sites_argument(sites, "ell");
+    const CellDomain domain = domain_argument(box, periodic);
+    check_cell_arguments(domain, tolerance, boundary_tolerance, kNames);
+    check_centers_in_box(input.file, domain);
+    if (domain.kind == CellDomain::Kind::plane) return py::none();
+    if (domain.kind == CellDomain::Kind::box) {
+        try {
+            require_sites_inside_box(input.file.sites, domain);
+        } catch (const InputError& e) {
+            throw site_error_at_lines(input.file, e);
+        }
+    }
+    return py::make_tuple(to_fraction(domain.x0), to_fraction(domain.y0), to_fraction(domain.x1), to_fraction(domain.y1));
 }
 
 // Per cell a ball's outward bounds into lo[k], hi[k].
@@ -104,6 +128,7 @@ py::dict arrays(const Cells& c) {
     auto site_area = new_array<double>({n});
     auto visible = new_array<bool>({n}), bounded = new_array<bool>({n});
     auto precision = new_array<std::int64_t>({n}), indptr = new_array<std::int64_t>({n + 1});
+    auto reach = new_array<double>({n});
     std::size_t sides = 0;
     for (const Cell& x : t.cells) sides += x.sides.size();
     const auto m = static_cast<py::ssize_t>(sides);
@@ -120,6 +145,7 @@ py::dict arrays(const Cells& c) {
         visible.mutable_at(k) = x.visible;
         bounded.mutable_at(k) = x.bounded;
         precision.mutable_at(k) = x.precision;
+        reach.mutable_at(k) = x.reach;
         indptr.mutable_at(k) = s;
         for (const CellSide& side : x.sides) {
             // A wall as minus its number: -1 left, -2 bottom, -3 right, -4 top.
@@ -137,15 +163,27 @@ py::dict arrays(const Cells& c) {
     indptr.mutable_at(n) = s;
     const auto nv = static_cast<py::ssize_t>(t.vertices.size());
     auto vlo = new_array<double>({nv, 2}), vhi = new_array<double>({nv, 2});
+    auto vsites = new_array<std::int64_t>({nv, 3}), vwalls = new_array<std::int64_t>({nv, 3});
+    auto vshifts = new_array<std::int64_t>({nv, 3, 2});
     for (py::ssize_t v = 0; v < nv; ++v) {
         const CellVertex& p = t.vertices[static_cast<std::size_t>(v)];
         std::tie(vlo.mutable_at(v, 0), vhi.mutable_at(v, 0)) = double_bounds(p.x);
         std::tie(vlo.mutable_at(v, 1), vhi.mutable_at(v, 1)) = double_bounds(p.y);
+        for (py::ssize_t i = 0; i < 3; ++i) {
+            const CellSiteImage& f = p.face[static_cast<std::size_t>(i)];
+            vsites.mutable_at(v, i) = f.site;
+            vwalls.mutable_at(v, i) = static_cast<std::int64_t>(f.wall);
+            vshifts.mutable_at(v, i, 0) = f.shift[0], vshifts.mutable_at(v, i, 1) = f.shift[1];
+        }
     }
     out["site_area"] = site_area;
     out["visible"] = visible;
     out["bounded"] = bounded;
     out["precision"] = precision;
+    out["reach"] = reach;
+    out["vertex_sites"] = vsites;
+    out["vertex_walls"] = vwalls;
+    out["vertex_shifts"] = vshifts;
     out["indptr"] = indptr;
     out["indices"] = indices;
     out["shifts"] = shifts;
@@ -175,7 +213,10 @@ void bind_cells(py::module_& m) {
             write_file_atomically(path, [&](std::ostream& o) { o << j.dump() << "\n"; });
         });
     m.def("_cells", &cells, py::arg("sites"), py::arg("box"), py::arg("periodic"), py::arg("tolerance"),
-          py::arg("boundary_tolerance"), py::arg("rings"));
+          py::arg("boundary_tolerance"), py::arg("rings"), py::arg("only") = std::vector<SiteId>{},
+          py::arg("reach") = false);
+    m.def("_check_cells", &check_cells, py::arg("sites"), py::arg("box"), py::arg("periodic"), py::arg("tolerance"),
+          py::arg("boundary_tolerance"));
 }
 
 }  // namespace ellvor::python

@@ -253,6 +253,25 @@ void bind_sites(py::module_& m) {
                                    return std::move(out);
                                })
         .def("to_array", &sites_array)
+        // The .ell lines (str(e)) of the sites `ids`, joined by newlines: the text a tiled build
+        // sends a tile (python/ellvor/distributed.py), made without a Python string a site.
+        .def("_lines",
+             [](const Sites& s, py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> ids) {
+                 const auto v = ids.unchecked<1>();
+                 const auto n = static_cast<std::int64_t>(s.file.sites.size());
+                 for (py::ssize_t k = 0; k < v.shape(0); ++k)
+                     if (v(k) < 0 || v(k) >= n) throw py::index_error("_lines: site id out of range");
+                 std::string out;
+                 {
+                     py::gil_scoped_release release;
+                     for (py::ssize_t k = 0; k < v.shape(0); ++k) {
+                         if (k) out += '\n';
+                         out += s.file.sites[static_cast<std::size_t>(v(k))].str();
+                     }
+                 }
+                 return out;
+             },
+             py::arg("ids"))
         .def("write", &write_sites, py::arg("path"), py::arg("fmt") = "ell")
         .def("__repr__", [](const Sites& s) {
             return "<ellvor.Sites: " + std::to_string(s.file.sites.size()) + " sites" +

@@ -77,3 +77,61 @@ TEST_CASE("cell rings lie within the boundary tolerance of the cells", "[cells]"
     }
     CHECK(bounded >= 1);
 }
+
+TEST_CASE("cells of some sites (only) are their cells among all and their reach bounds them", "[cells]") {
+    GeneratorOptions g;
+    g.kind = SiteKind::ellipses;
+    g.count = 10;
+    g.seed = 5;
+    const std::vector<Ellipse> sites = generate_sites(g);
+    CellDomain box;
+    box.kind = GENERATE(CellDomain::Kind::plane, CellDomain::Kind::box);
+    if (box.kind == CellDomain::Kind::box) {
+        box.x0 = Rational(-200), box.y0 = Rational(-200), box.x1 = Rational(200), box.y1 = Rational(200);
+    }
+    CellOptions all;
+    all.boundary_tolerance = 0.25;
+    const CellTessellation whole = cell_tessellation(sites, box, all);
+    CellOptions some;
+    some.rings = false;
+    some.reach = true;
+    some.boundary_tolerance = 0.5;
+    some.only = {2, 7};
+    const CellTessellation part = cell_tessellation(sites, box, some);
+    long bounded = 0;
+    for (SiteId s = 0; s < sites.size(); ++s) {
+        const Cell &w = whole.cells[s], &p = part.cells[s];
+        CHECK(p.site == s);
+        if (s != 2 && s != 7) {  // not asked for: left empty
+            CHECK_FALSE(p.visible);
+            CHECK(p.sides.empty());
+            CHECK(std::isinf(p.reach));
+            continue;
+        }
+        CHECK(p.visible == w.visible);
+        CHECK(p.bounded == w.bounded);
+        REQUIRE(p.sides.size() == w.sides.size());
+        for (std::size_t k = 0; k < p.sides.size(); ++k) {
+            CHECK(p.sides[k].neighbor == w.sides[k].neighbor);
+            CHECK(p.sides[k].wall == w.sides[k].wall);
+            // The vertex is named by its face, which holds the cell's own site.
+            const CellVertex& v = part.vertices.at(static_cast<std::size_t>(p.sides[k].from));
+            CHECK(std::count_if(v.face.begin(), v.face.end(), [&](const CellSiteImage& f) {
+                      return f.site == static_cast<long>(s) && f.wall == Wall::none;
+                  }) == 1);
+        }
+        if (!w.bounded) {
+            CHECK(std::isinf(p.reach));
+            continue;
+        }
+        ++bounded;
+        CHECK(arb_overlaps(p.area.get(), w.area.get()));
+        // The ring (within 0.25 of the boundary) against the reach (covers within 0.5).
+        double far = 0;
+        for (const auto& x : w.ring)
+            far = std::max(far, std::hypot(x[0] - sites[s].xc().to_double(), x[1] - sites[s].yc().to_double()));
+        CHECK(p.reach >= far - 0.25 - 1e-9);
+        CHECK(p.reach <= far + 0.25 + 0.5 + 1e-9);  // the polyline's points and the cover radius
+    }
+    CHECK(bounded >= 1);
+}

@@ -266,7 +266,7 @@ def test_map_checks_every_file_before_sending(tmp_path, write_sites):
         ed.map([good, bad], client=_Unreachable())
     assert str(mapped.value) == str(single.value) and mapped.value.lineno == 2
     with pytest.raises(ValueError, match="fn"):
-        ed.map([good], fn="cells", client=_Unreachable())
+        ed.map([good], fn="voronoi", client=_Unreachable())
 
 
 def test_map_raises_the_builds_error_for_sites_meeting_in_four_points(client, write_sites):
@@ -304,3 +304,161 @@ def test_hull_candidates_are_the_sites_near_the_hull():
     # x = 3 (into them) and, centered inside, x = 2 (their center inside the polygon: refused, conservative).
     boxes = np.array([[-5, -5, 15, 15, 6, 6], [-5, -5, 15, 15, 8, 8], [1, 1, 15, 15, 1, 1]], dtype=float)
     assert ed._disk_outside_polygon(boxes, polygon, 2.5).tolist() == [True, False, False]
+
+
+# The tiled cells (docs/DESIGN.md §8, "The tiled cells"): small sets, cells cost ~0.1 s each.
+
+def _overlap(lo1, hi1, lo2, hi2):
+    both_nan = np.isnan(lo1) & np.isnan(lo2)
+    return bool(np.all(both_nan | ((lo1 <= hi2) & (lo2 <= hi1))))
+
+
+def same_cells(sites, client, tiles, single=None, **kwargs):
+    """The tiled cells of `sites` are the single process's: the same visibility, neighbours (walls, shifts)
+    and every interval overlapping its counterpart (both contain the exact value); each vertex of a side
+    overlaps the single's. Returns the tiled cells."""
+    if single is None:
+        single = ellvor.build(sites).cells(**kwargs)
+    tiled = ed.cells(sites, tiles=tiles, client=client, **kwargs)
+    assert isinstance(tiled, ellvor.Cells) and len(tiled) == len(single)
+    for name in ("visible", "bounded", "indptr"):
+        assert np.array_equal(getattr(single, name), getattr(tiled, name)), (name, tiles, tiled.stats)
+    # Each cell's sides counter-clockwise, from wherever its graph starts: the same cycle.
+    rotated = []
+    for k in range(len(single)):
+        lo, hi = single.indptr[k], single.indptr[k + 1]
+        ours = [(i, *s) for i, s in zip(single.indices[lo:hi], single.shifts[lo:hi].tolist())]
+        theirs = [(i, *s) for i, s in zip(tiled.indices[lo:hi], tiled.shifts[lo:hi].tolist())]
+        turn = next((r for r in range(len(ours)) if theirs[r:] + theirs[:r] == ours), None) if ours else 0
+        assert turn is not None, (k, ours, theirs, tiles)
+        rotated.extend(lo + (np.arange(hi - lo) + turn) % max(hi - lo, 1))
+    rotated = np.array(rotated, dtype=np.int64)
+    for name in ("area", "site_area", "perimeter", "packing_fraction", "centroid", "second_moments"):
+        assert _overlap(getattr(single, name + "_lo"), getattr(single, name + "_hi"),
+                        getattr(tiled, name + "_lo"), getattr(tiled, name + "_hi")), name
+    finite = np.isfinite(tiled.area_hi) & (tiled.area_hi > 0)
+    tol = kwargs.get("tolerance", 1e-9)
+    assert np.all(tiled.area_hi[finite] - tiled.area_lo[finite] <= tol * tiled.area_lo[finite] * (1 + 1e-9))
+    ours, theirs = single.side_vertices, tiled.side_vertices[rotated]
+    assert np.array_equal(ours >= 0, theirs >= 0)
+    a, b = ours[ours >= 0], theirs[theirs >= 0]
+    assert np.all((single.vertices_lo[a] <= tiled.vertices_hi[b]) & (tiled.vertices_lo[b] <= single.vertices_hi[a]))
+    assert sum(t["owned"] for t in tiled.tiles) == len(sites)
+    return tiled
+
+
+def box_around(sites, margin):
+    p = sites.to_array()
+    return (int(p[:, 3].min() - margin), int(p[:, 4].min() - margin), int(p[:, 3].max() + margin) + 1,
+            int(p[:, 4].max() + margin) + 1)
+
+
+def test_cells_in_a_box_every_tiling(client):
+    sites = ellvor.generate("ellipses", 10, seed=7)
+    kwargs = dict(box=box_around(sites, 15), tolerance=1e-3, rings=False)
+    single = ellvor.build(sites).cells(**kwargs)
+    for tiles in ((2, 2), (4, 4)):
+        tiled = same_cells(sites, client, tiles, single, **kwargs)
+        assert len(tiled.tiles) > 1 and sum(t["cells"] for t in tiled.tiles) + tiled.stats["whole_set_cells"] >= 10
+        assert all(t["sites"] >= t["owned"] for t in tiled.tiles)
+        # Reach: computed for the cells proven in tiles (not in one task of the whole set).
+        assert int(np.isinf(tiled.reach).sum()) <= tiled.stats["whole_set_cells"] < 10 // 2
+
+
+def test_cells_of_nested_sites_in_a_box(client):
+    sites = ellvor.generate("nested", 12, seed=3)
+    tiled = same_cells(sites, client, (3, 3), box=box_around(sites, 10), tolerance=1e-3, rings=False)
+    assert (~tiled.visible).sum() > 0   # hidden sites: hidden in a subset is hidden
+
+
+def test_cells_in_the_plane_send_the_hull_to_the_whole_set(client):
+    sites = ellvor.generate("ellipses", 10, seed=2)
+    tiled = same_cells(sites, client, (2, 2), tolerance=1e-3, rings=False)
+    unbounded = int((tiled.visible & ~tiled.bounded).sum())
+    assert unbounded > 0 and tiled.stats["whole_set_cells"] >= unbounded
+
+
+def test_cells_of_sites_on_tile_boundaries_with_rings(client):
+    """A 3 x 4 lattice of circles, 2 x 3 tiles: the grid lines run through centers."""
+    sites = circles([(3 * x, 3 * y, 1) for x in range(3) for y in range(4)])
+    kwargs = dict(box=(-2, -2, 9, 12), tolerance=1e-3, boundary_tolerance=0.3)
+    single = ellvor.build(sites).cells(**kwargs)
+    tiled = same_cells(sites, client, (2, 3), single, **kwargs)
+    assert tiled.boundary_tolerance == single.boundary_tolerance == 0.3
+    for a, b in zip(single.rings(), tiled.rings()):
+        # Both within 0.3 of the same boundary: every tiled ring point within 0.6 of the single ring's
+        # polyline, so within 0.6 and half its longest segment of one of its points.
+        assert len(b) >= 3
+        d = np.hypot(b[:, None, 0] - a[None, :, 0], b[:, None, 1] - a[None, :, 1]).min(axis=1)
+        longest = np.hypot(*(np.roll(a, -1, axis=0) - a).T).max()
+        assert d.max() <= 0.6 + longest / 2 + 1e-9
+    assert tiled.area_lo.sum() <= 11 * 14 <= tiled.area_hi.sum() * (1 + 1e-12)   # the cells tile the box
+
+
+def test_cells_in_a_periodic_box_wrap_the_tiles(client):
+    sites = ellvor.generate("ellipses", 6, seed=4)
+    x0, y0, x1, y1 = box_around(sites, 5)
+    # The box as it is, and moved by half its size: centers outside it are wrapped in.
+    for periodic in ((x0, y0, x1, y1), (x0 + (x1 - x0) // 2, y0 - (y1 - y0) // 2, x1 + (x1 - x0) // 2,
+                                        y1 - (y1 - y0) // 2)):
+        tiled = same_cells(sites, client, (2, 2), periodic=periodic, tolerance=1e-3, rings=False)
+        assert tiled.domain == "periodic" and tiled.stats["fallback"] is False
+        assert np.any(tiled.shifts != 0) and max(t["sites"] for t in tiled.tiles) > len(sites)   # copies held
+
+
+def test_cells_one_tile_and_tiny_sets(client):
+    sites = ellvor.generate("ellipses", 4, seed=1)
+    tiled = same_cells(sites, client, (1, 1), box=box_around(sites, 40), tolerance=1e-3, rings=False)
+    assert tiled.stats["fallback"] == "one tile" and tiled.stats["whole_set_cells"] == 4
+    with pytest.raises(ellvor.Error, match="JSON"):
+        tiled.to_json()
+
+
+def test_cells_bad_input_is_refused_on_the_client():
+    sites = ellvor.generate("ellipses", 20, seed=1)
+    for kwargs in (dict(tolerance=0), dict(tolerance=2), dict(box=(0, 0, 1, 1)), dict(box=(5, 0, 1, 1)),
+                   dict(box=(0, 0, 1, 1), periodic=(0, 0, 1, 1)), dict(boundary_tolerance=-1),
+                   dict(tolerance="x")):
+        with pytest.raises(ellvor.InputError) as single:
+            ellvor.build(sites).cells(**kwargs)
+        with pytest.raises(ellvor.InputError) as tiled:
+            ed.cells(sites, client=_Unreachable(), **kwargs)
+        assert str(tiled.value) == str(single.value), kwargs
+
+
+def test_cells_of_crossing_sites_raise_the_single_error(client):
+    sites = ellvor.generate("ellipses", 30, seed=6)
+    crossing = list(sites) + [ellvor.Ellipse.circle(1000, 1000, 1), ellvor.Ellipse.circle(1001, 1000, 1)]
+    with pytest.raises(ellvor.InputError) as single:
+        ellvor.build(crossing).cells(rings=False)
+    with pytest.raises(ellvor.InputError) as tiled:
+        ed.cells(crossing, tiles=(2, 2), client=client, rings=False)
+    assert tiled.value.sites == single.value.sites and str(tiled.value) == str(single.value)
+
+
+def test_map_computes_cells_of_each_file(client, tmp_path, write_sites):
+    path = tmp_path / "snapshot.ell"
+    sites = ellvor.generate("ellipses", 4, seed=9)
+    sites.write(path)
+    box = box_around(sites, 40)
+    (got_path, got), = ed.map([path], fn="cells", client=client, box=box, tolerance=1e-3, rings=False)
+    single = ellvor.build(path).cells(box=box, tolerance=1e-3, rings=False)
+    assert got_path == str(path) and np.array_equal(single.indices, got.indices)
+    assert _overlap(single.area_lo, single.area_hi, got.area_lo, got.area_hi)
+    bad = write_sites("1 1 0 0 0\n1 1 0 5000 5000\n", "outside.ell")
+    with pytest.raises(ellvor.InputError) as refused:
+        ed.map([path, bad], fn="cells", client=_Unreachable(), box=box)
+    with pytest.raises(ellvor.InputError) as one:
+        ellvor.build(bad).cells(box=box)
+    assert str(refused.value) == str(one.value)
+
+
+def test_the_cell_certificate_refuses_what_it_cannot_prove():
+    region = (0.0, 10.0, 0.0, 10.0)
+    boxes = np.array([[4.0, 6.0, 4.0, 6.0]] * 4)
+    semi = np.array([1.0, 1.0, 1.0, 3.0])
+    # K: the box grown by 2 max(reach, semi-axis): 2 + 2 * 1.99 < 10 fits, 2.01 does not, inf never.
+    reach = np.array([1.99, 2.01, np.inf, 1.0])
+    assert ed._reach_disk_inside(boxes, semi, reach, region).tolist() == [True, False, False, False]
+    assert ed._reach_disk_inside(boxes[:1], semi[:1], np.array([np.inf]),
+                                 (-np.inf, np.inf, -np.inf, 10.0)).tolist() == [False]
