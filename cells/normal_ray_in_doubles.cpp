@@ -116,6 +116,28 @@ Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interv
     return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
 }
 
+bool strictly_inside(const Interval& x, double r) { return x.lo > -r && x.hi < r; }
+bool strictly_inside(const ComplexInterval& z, double r) { return strictly_inside(z.re, r) && strictly_inside(z.im, r); }
+
+// The Krawczyk image about the point, K = -C F + (I - C J(X)) Y, and whether
+// it lies in the interior of Y (each component within +- r_i; T: Interval or
+// ComplexInterval).
+template <class T>
+bool krawczyk_inside(const double (&C)[2][2], const T (&CF)[2], const T (&J)[2][2], const T (&Y)[2],
+                     const double (&r)[2], T (&K)[2]) {
+    bool inside = true;
+    for (int i = 0; i < 2; ++i) {
+        K[i] = -CF[i];
+        for (int j = 0; j < 2; ++j) {
+            T m = -(C[i][0] * J[0][j] + C[i][1] * J[1][j]);
+            if (i == j) m = m + Interval(1.0);
+            K[i] = K[i] + m * Y[j];
+        }
+        inside = inside && strictly_inside(K[i], r[i]);
+    }
+    return inside;
+}
+
 // C = (mid J)^-1; false when singular.
 template <class T>
 bool inverse_of_mid(const T (&J)[2][2], double (&C)[2][2]) {
@@ -253,17 +275,9 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
         // On phi0 +- r: sine and cosine move by at most r (their derivatives are at most 1).
         const Frame<Interval> bq(q_, sin_phi + sym(r[1]), cos_phi + sym(r[1]));
         const System<Interval> on_box(q_, bp, bq, s);
+        const Interval Y[2] = {sym(r[0]), sym(r[1])};
         Interval K[2];
-        bool inside = true;
-        for (int i = 0; i < 2; ++i) {
-            K[i] = -CF[i];
-            for (int j = 0; j < 2; ++j) {
-                Interval m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j]);
-                if (i == j) m = m + Interval(1.0);
-                K[i] = K[i] + m * sym(r[j]);
-            }
-            inside = inside && K[i].lo > -r[i] && K[i].hi < r[i];
-        }
+        const bool inside = krawczyk_inside(C, CF, on_box.J, Y, r, K);
         if (!inside) {
             for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));
             continue;
@@ -334,16 +348,7 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         const Frame<CI> bq(q_, sin_q, cos_q);
         const System<CI> on_box(q_, bp, bq, X[0]);
         CI K[2];
-        bool inside = true;
-        for (int i = 0; i < 2; ++i) {
-            K[i] = -CH[i];
-            for (int j = 0; j < 2; ++j) {
-                CI m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j]);
-                if (i == j) m = m + Interval(1.0);
-                K[i] = K[i] + m * Y[j];
-            }
-            inside = inside && K[i].re.lo > -r[i] && K[i].re.hi < r[i] && K[i].im.lo > -r[i] && K[i].im.hi < r[i];
-        }
+        const bool inside = krawczyk_inside(C, CH, on_box.J, Y, r, K);
         if (!inside) {
             for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * K[i].magnitude());
             continue;
