@@ -51,10 +51,7 @@ void require_disjoint_or_nested(const std::vector<Ellipse>& sites) {
         }
 }
 
-// The integrand of one pair of measures on one edge: f + i g, both real on
-// the reals, so that the real and imaginary parts of the integral enclose
-// the two integrals. Each measure is scaled by the cell's length unit L to a
-// power (area units), so that one absolute tolerance serves both.
+// A double interval as a real ball.
 ComplexBall to_ball(const Interval& x) {
     ComplexBall z;
     Arf lo, hi;
@@ -75,6 +72,10 @@ NormalRayBisector::Densities as_balls(const MeasureIntervals& I) {
 
 class DensityCache;
 
+// The integrand of one pair of measures on one edge: f + i g, both real on
+// the reals, so that the real and imaginary parts of the integral enclose
+// the two integrals. Each measure is scaled by the cell's length unit L to a
+// power (area units), so that one absolute tolerance serves both.
 struct EdgeIntegrand {
     NormalRayBisector* bisector;
     // Values at points (order 0) need only the goal's bits, not the working
@@ -225,7 +226,7 @@ public:
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
-            NormalRayInDoubles double_point(site, sites_[cell.edges[k].neighbor]);
+            NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor]);
             Ball ends[2] = {lifted[k], lifted[k + 1]};
             bool integrated = false;
             if (in_doubles) {
@@ -234,7 +235,7 @@ public:
                 for (int j = 0; j < MeasureIntervals::count; ++j)
                     tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
                 if (const std::optional<MeasureIntervals> I =
-                        integrate_edge(double_point, rules_, a, b, tolerances)) {
+                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances)) {
                     add_to_pairs(*I, unit, prec, sums);
                     integrated = true;
                     ++r.edges_in_doubles;
@@ -305,8 +306,8 @@ private:
 
     // The edge's measures between the midpoints of its end balls by Arb's
     // integrator, added to the sums; false when the area's is not finite.
-    bool integrate_with_arb(NormalRayBisector& bisector, const Ball (&ends)[2],
-                            long goal, Mag& tol, long unit, long prec, MeasureSums& sums) {
+    bool integrate_with_arb(NormalRayBisector& bisector, const Ball (&ends)[2], long goal, Mag& tol, long unit,
+                            long prec, MeasureSums& sums) {
         acb_calc_integrate_opt_t options;
         acb_calc_integrate_opt_init(options);
         // 20 bits beyond the goal, in whole limbs.

@@ -45,8 +45,7 @@ double gauss_error(const Interval& half, double M, double factor) { return (half
 }  // namespace
 
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
-                                               double b,
-                                               const double (&tolerance)[kMeasures]) {
+                                               double b, const double (&tolerance)[kMeasures]) {
     MeasureIntervals total;
     for (Interval& x : total.m) x = Interval(0.0);
     struct Piece {
@@ -86,7 +85,8 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
         const double share = (piece.b - piece.a) / length;
         int n = 1;
         for (int j = 0; j < kMeasures; ++j)
-            while (n <= GaussLegendreRules::kMaxPoints && !(gauss_error(half, (*M)[j], factor[n]) <= tolerance[j] * share))
+            while (n <= GaussLegendreRules::kMaxPoints &&
+                   !(gauss_error(half, (*M)[j], factor[n]) <= tolerance[j] * share))
                 ++n;
         if (n > GaussLegendreRules::kMaxPoints) {
             if (!halve()) return std::nullopt;
