@@ -277,6 +277,51 @@ def _disk_outside_polygon(circles, polygon, depth):
     return ok
 
 
+def _disk_misses_shrunk_polygon(circles, polygon, depth):
+    """Faces whose closed disk (radius max(rho, 0)) misses Q_depth, the points more than ``depth`` inside
+    every edge of the polygon Q (where the non-candidates lie), for every center in the face's box. Q_depth
+    lies in P = c0 + lam (Q - c0) (c0 the mean of Q's corners, lam = 1 - depth / r, r >= c0's distance to
+    every edge line: each edge of P is at most depth inside Q's), and the disk misses P when its center is
+    outside P and farther than rho from each of P's edges. Unlike _disk_outside_polygon this certifies the
+    huge disks of nearly collinear hull triples, which cross a moved edge line far from the polygon. Doubles
+    with forward error bounds: P's corners within `slack` of the computed ones, the distances within
+    64 eps of their operands."""
+    n = len(circles)
+    corners = np.array(polygon, dtype=float)
+    c0 = corners.mean(axis=0)
+    following = np.roll(corners, -1, axis=0)
+    edges = following - corners
+    lengths = np.hypot(edges[:, 0], edges[:, 1])
+    r = np.abs(edges[:, 0] * (c0[1] - corners[:, 1]) - edges[:, 1] * (c0[0] - corners[:, 0])) / lengths
+    lam = 1.0 - depth / (r.max() * (1 + 1e-9) + 1e-300)
+    if not lam > 0:
+        return np.zeros(n, dtype=bool)
+    shrunk = c0 + lam * (corners - c0)
+    scale = np.abs(c0).sum() + np.abs(corners).sum(axis=1).max()
+    slack = 16 * _EPS * scale
+    rho = np.maximum(circles[:, 5], 0.0)
+    cx, cy = 0.5 * (circles[:, 0] + circles[:, 1]), 0.5 * (circles[:, 2] + circles[:, 3])
+    half_diagonal = np.hypot(circles[:, 1] - circles[:, 0], circles[:, 3] - circles[:, 2]) * (0.5 + 4 * _EPS)
+    outside = np.zeros(n, dtype=bool)
+    nearest = np.full(n, np.inf)
+    shrunk_list = [tuple(p) for p in shrunk]
+    box_corners = [(circles[:, 0], circles[:, 2]), (circles[:, 1], circles[:, 2]), (circles[:, 0], circles[:, 3]),
+                   (circles[:, 1], circles[:, 3])]
+    with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
+        for a, b in zip(shrunk_list, shrunk_list[1:] + shrunk_list[:1]):
+            # Every corner of the center box strictly outside this edge (the reversed edge: "inside" it).
+            beyond = np.ones(n, dtype=bool)
+            for px, py in box_corners:
+                beyond &= _beyond_edge(b, a, px, py, slack, 0.0)
+            outside |= beyond
+            ex, ey = b[0] - a[0], b[1] - a[1]
+            t = np.clip(((cx - a[0]) * ex + (cy - a[1]) * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+            dist = np.hypot(cx - (a[0] + t * ex), cy - (a[1] + t * ey))
+            error = 64 * _EPS * (np.abs(cx) + np.abs(cy) + abs(a[0]) + abs(a[1]) + abs(b[0]) + abs(b[1]))
+            nearest = np.minimum(nearest, dist - error)
+        return outside & (nearest - half_diagonal - slack > rho * (1 + 4 * _EPS))
+
+
 def _beyond_edges_varying(polygon, px, py, rho, shift):
     """As _beyond_edges, with a per-point margin: cross(e, x - p) > bound + (rho + shift) |e| (|e| rounded
     up), for polygon edges given clockwise (so "inside" is outside the counter-clockwise polygon)."""
@@ -329,7 +374,8 @@ def _hull_task(text, ids, polygon, depth):
     faces = d.faces()
     circles = d.circle_boxes()
     if len(polygon) >= 3:
-        certified = _disk_outside_polygon(circles, polygon, depth) & ~_possibly_degenerate(faces, circles)
+        certified = ((_disk_outside_polygon(circles, polygon, depth) |
+                      _disk_misses_shrunk_polygon(circles, polygon, depth)) & ~_possibly_degenerate(faces, circles))
     else:
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
     return {"hull": ids[d.hull()], "faces": ids[faces[certified]], "hidden": ids[d.hidden()],

@@ -306,6 +306,56 @@ def test_hull_candidates_are_the_sites_near_the_hull():
     assert ed._disk_outside_polygon(boxes, polygon, 2.5).tolist() == [True, False, False]
 
 
+def _clearance_squared(box, x0, y0, x1, y1):
+    """Exactly (Fractions): the squared distance from the box's middle to the rectangle [x0, x1] x [y0, y1]
+    (0 inside), and the box's half-diagonal bound 2e-9 (its sides are 2e-9 wide)."""
+    cx, cy = (Fraction(box[0]) + Fraction(box[1])) / 2, (Fraction(box[2]) + Fraction(box[3])) / 2
+    dx = max(x0 - cx, Fraction(0), cx - x1)
+    dy = max(y0 - cy, Fraction(0), cy - y1)
+    return dx * dx + dy * dy, Fraction(2, 10 ** 9)
+
+
+def test_huge_hull_disks_are_certified_when_they_miss_the_shrunk_polygon():
+    """Random huge disks nearly tangent to a rectangle's side, tilted, some reaching into Q_depth: every
+    disk the certificate accepts misses Q_depth (exactly), none that reaches in is accepted, and it accepts
+    disks the one-edge-line test refuses."""
+    polygon = [(0.0, 0.0), (100.0, 0.0), (100.0, 60.0), (0.0, 60.0)]
+    rng = random.Random(3)
+    boxes, expect_clear = [], []
+    for _ in range(300):
+        R = 10 ** rng.uniform(2, 4)
+        tilt = rng.uniform(-3, 3) / R ** 0.5
+        x0 = rng.uniform(10, 90)
+        gap = rng.uniform(-2.0, 3.0)  # depth of the disk's deepest point below the side y = 0 moved in by 2
+        # The circle tangent to the line y = 2 - gap ... tilted: center below, at distance R from the touch point.
+        cx, cy = x0 + R * tilt, (2 - gap) - R * (1 - tilt * tilt / 2)
+        boxes.append([cx - 1e-9, cx + 1e-9, cy - 1e-9, cy + 1e-9, R - 1e-9, R + 1e-9])
+    boxes = np.array(boxes)
+    certified = ed._disk_misses_shrunk_polygon(boxes, polygon, 2.0)
+    line_test = ed._disk_outside_polygon(boxes, polygon, 2.0)
+    assert certified.sum() >= 50
+    # Q_2 is the open rectangle (2, 98) x (2, 58): a disk misses it when its center is at least rho from it.
+    reaching = []
+    for k, (box, ok) in enumerate(zip(boxes, certified)):
+        d2, half_diagonal = _clearance_squared(box, 2, 2, 98, 58)
+        rho = Fraction(box[5])
+        if ok:
+            assert d2 >= (rho + half_diagonal) ** 2
+        elif d2 < (rho - half_diagonal) ** 2:
+            reaching.append(k)
+    assert len(reaching) >= 20 and not certified[reaching].any()
+    # the huge tilted disks the edge-line test cannot certify
+    assert (certified & ~line_test).sum() >= 10
+
+
+def test_a_dense_packing_needs_one_round(client):
+    """The straight sides of a packing give nearly collinear hull triples whose huge disks the hull task
+    certifies (_disk_misses_shrunk_polygon): no patches."""
+    sites = ellvor.generate("packing", 3000, seed=1, packing_fraction="0.6")
+    tiled = same_graph(sites, client, (2, 2))
+    assert tiled.stats["rounds"] == 1
+
+
 # The tiled cells (docs/DESIGN.md §8, "The tiled cells"): small sets, cells cost ~0.1 s each.
 
 def _overlap(lo1, hi1, lo2, hi2):
