@@ -46,6 +46,15 @@ public:
     // Drops the face's cached solver: the cache holds live faces only.
     void forget_face(SiteId i, SiteId j, SiteId k) override { cache_.erase(i, j, k); }
 
+    // The cached Voronoi circle of the face (i, j, k) (the same circle for
+    // every rotation), nullptr if no predicate has asked about it. After a
+    // build most faces have one, certified: readers of the faces' circles
+    // need not certify them again.
+    VoronoiCircle* cached_circle(SiteId i, SiteId j, SiteId k) {
+        VoronoiCircleCache::Entry* e = cache_.find(i, j, k);
+        return e ? &e->circle : nullptr;
+    }
+
     const TraitsStats& stats() const override { return stats_; }
     std::size_t cached_circles() const { return cache_.size(); }
 

@@ -41,6 +41,11 @@ VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, S
     return entries_.emplace(ids, Entry{ids, VoronoiCircle(*sites[0], *sites[1], *sites[2])}).first->second;
 }
 
+VoronoiCircleCache::Entry* VoronoiCircleCache::find(SiteId i, SiteId j, SiteId k) {
+    const auto found = entries_.find(triple_key(i, j, k));
+    return found == entries_.end() ? nullptr : &found->second;
+}
+
 void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) { entries_.erase(triple_key(i, j, k)); }
 
 }  // namespace ellvor

@@ -28,6 +28,10 @@ public:
     // sites, created (not yet certified) on first use.
     Entry& at(SiteId i, const Ellipse& ei, SiteId j, const Ellipse& ej, SiteId k, const Ellipse& ek);
 
+    // The entry of (i, j, k) or of a rotation of it, nullptr if there is none
+    // (does not count as a hit or a miss).
+    Entry* find(SiteId i, SiteId j, SiteId k);
+
     // Removes the entry of (i, j, k) or of a rotation of it, if any.
     void erase(SiteId i, SiteId j, SiteId k);
 

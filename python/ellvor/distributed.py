@@ -120,31 +120,20 @@ def _local_sites(text):
     return _ellvor._sites_from_text(text)
 
 
-def _possibly_degenerate(faces, boxes):
-    """Faces whose circle box meets that of a face across one of their edges: possibly the same circle
-    (four or more sites on one empty circle), whose triangulation depends on the insertion order."""
-    f = len(faces)
-    if f == 0:
-        return np.zeros(0, dtype=bool)
-    m = int(faces.max()) + 1
-    a, b = faces, np.roll(faces, -1, axis=1)          # directed edges a -> b of each face
-    keys = (a * m + b).ravel()
-    owner = np.repeat(np.arange(f), 3)
-    order = np.argsort(keys, kind="stable")
-    keys, owner = keys[order], owner[order]
-    twins = (b * m + a).ravel()
-    lo, hi = np.searchsorted(keys, twins, "left"), np.searchsorted(keys, twins, "right")
-    me = np.repeat(np.arange(f), 3)
-
-    def overlap(x, y):
-        return ((x[:, 0] <= y[:, 1]) & (y[:, 0] <= x[:, 1]) & (x[:, 2] <= y[:, 3]) & (y[:, 2] <= x[:, 3]) &
-                (x[:, 4] <= y[:, 5]) & (y[:, 4] <= x[:, 5]))
-
-    suspect = np.zeros(f, dtype=bool)
-    for extra in range(int((hi - lo).max(initial=0))):   # the k-th face across each edge (an edge held twice)
-        k = np.nonzero(hi - lo > extra)[0]
-        hit = overlap(boxes[me[k]], boxes[owner[lo[k] + extra]])
-        suspect[me[k[hit]]] = True
+def _possibly_degenerate(neighbours, boxes):
+    """Faces whose circle box meets that of a face across one of their edges (``neighbours``: the
+    triangulation's adjacency, -1 for infinite faces): possibly the same circle (four or more sites on one
+    empty circle), whose triangulation depends on the insertion order."""
+    me = np.repeat(np.arange(len(neighbours)), 3)
+    other = neighbours.ravel()
+    pair = other > me                    # each finite pair once
+    me, other = me[pair], other[pair]
+    x, y = boxes[me], boxes[other]
+    hit = ((x[:, 0] <= y[:, 1]) & (y[:, 0] <= x[:, 1]) & (x[:, 2] <= y[:, 3]) & (y[:, 2] <= x[:, 3]) &
+           (x[:, 4] <= y[:, 5]) & (y[:, 4] <= x[:, 5]))
+    suspect = np.zeros(len(neighbours), dtype=bool)
+    suspect[me[hit]] = True
+    suspect[other[hit]] = True
     return suspect
 
 
@@ -187,7 +176,7 @@ def _tile_task(text, ids, boxes, region, rect, everything, whole):
         certified = np.ones(len(faces), dtype=bool)
         visible_sure = np.ones(len(ids), dtype=bool)
     else:
-        certified = _disk_misses_outside(circle, region, everything) & ~_possibly_degenerate(faces, circle)
+        certified = _disk_misses_outside(circle, region, everything) & ~_possibly_degenerate(d.face_neighbours(), circle)
         visible_sure = _inside(boxes, region)
     visible_sure[hidden[:, 0]] = False
     kept = faces[certified]
@@ -375,7 +364,7 @@ def _hull_task(text, ids, polygon, depth):
     circles = d.circle_boxes()
     if len(polygon) >= 3:
         certified = ((_disk_outside_polygon(circles, polygon, depth) |
-                      _disk_misses_shrunk_polygon(circles, polygon, depth)) & ~_possibly_degenerate(faces, circles))
+                      _disk_misses_shrunk_polygon(circles, polygon, depth)) & ~_possibly_degenerate(d.face_neighbours(), circles))
     else:
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
     return {"hull": ids[d.hull()], "faces": ids[faces[certified]], "hidden": ids[d.hidden()],
@@ -392,32 +381,34 @@ def _raise_worker_error(result):
     raise InputError(reason)
 
 
-def _edges_of(faces, hull):
-    """Finite Delaunay edges (i < j) from the faces: edge {i, j} once per directed occurrence of i -> j."""
-    directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]], hull])
-    up = directed[directed[:, 0] < directed[:, 1]]
-    return up[np.lexsort((up[:, 1], up[:, 0]))]
+class _DirectedEdges:
+    """The directed edges of the faces and hull edges, loops left out (a loop is its own twin), sorted once:
+    each as its undirected key (i < j) and a bit for its direction (1: from j to i)."""
 
+    def __init__(self, faces, hull):
+        directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]], hull])
+        directed = directed[directed[:, 0] != directed[:, 1]]
+        self.m = int(directed.max()) + 1 if len(directed) else 1
+        lo, hi = np.minimum(directed[:, 0], directed[:, 1]), np.maximum(directed[:, 0], directed[:, 1])
+        self.sorted = np.sort((lo * self.m + hi) * 2 + (directed[:, 0] > directed[:, 1]))
 
-def _open_edges(faces, hull):
-    """Sites on directed edges whose count differs from their twin's: where faces are missing. One sort:
-    each directed edge as its undirected key (i < j) and a bit for its direction; a key is balanced when
-    its runs of 0 and 1 bits are equally long."""
-    directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]], hull])
-    directed = directed[directed[:, 0] != directed[:, 1]]   # (a loop is its own twin)
-    if len(directed) == 0:
-        return np.zeros(0, dtype=np.int64)
-    m = int(directed.max()) + 1
-    lo, hi = np.minimum(directed[:, 0], directed[:, 1]), np.maximum(directed[:, 0], directed[:, 1])
-    x = np.sort((lo * m + hi) * 2 + (directed[:, 0] > directed[:, 1]))
-    key, bit = x >> 1, (x & 1).astype(np.int64)
-    starts = np.concatenate([[0], np.flatnonzero(key[1:] != key[:-1]) + 1])
-    length = np.diff(np.concatenate([starts, [len(x)]]))
-    ones = np.add.reduceat(bit, starts)
-    bad = key[starts[2 * ones != length]]
-    if len(bad) == 0:
-        return np.zeros(0, dtype=np.int64)
-    return np.unique(np.concatenate([bad // m, bad % m]))
+    def open_sites(self):
+        """Sites on directed edges whose count differs from their twin's: where faces are missing. A key is
+        balanced when its runs of 0 and 1 bits are equally long."""
+        x = self.sorted
+        if len(x) == 0:
+            return np.zeros(0, dtype=np.int64)
+        key, bit = x >> 1, (x & 1).astype(np.int64)
+        starts = np.concatenate([[0], np.flatnonzero(key[1:] != key[:-1]) + 1])
+        length = np.diff(np.concatenate([starts, [len(x)]]))
+        ones = np.add.reduceat(bit, starts)
+        bad = key[starts[2 * ones != length]]
+        return np.unique(np.concatenate([bad // self.m, bad % self.m]))
+
+    def edges(self):
+        """Finite Delaunay edges (i < j), sorted: edge {i, j} once per directed occurrence of i -> j."""
+        key = self.sorted[(self.sorted & 1) == 0] >> 1
+        return np.stack([key // self.m, key % self.m], axis=1)
 
 
 def _unique_rows(rows, n):
@@ -637,7 +628,8 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
             raise Error(f"tiled build: site {int(np.nonzero(is_hidden & is_visible)[0][0])} both hidden and visible")
         accepted = hull[is_visible[hull[:, 0]] & is_visible[hull[:, 1]]] if len(hull) else hull.reshape(-1, 2)
         unknown = np.nonzero(~is_hidden & ~is_visible)[0]
-        open_sites = np.union1d(_open_edges(faces, accepted), unknown)
+        directed = _DirectedEdges(faces, accepted)
+        open_sites = np.union1d(directed.open_sites(), unknown)
         n_visible = int(is_visible.sum())
         if len(open_sites) == 0:
             if len(faces) + len(accepted) == 2 * n_visible - 2:
@@ -668,7 +660,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
     first = np.concatenate([[True], hidden_all[1:, 0] != hidden_all[:-1, 0]]) if len(hidden_all) else []
     hidden = hidden_all[first]
     accepted = _sorted_rows(accepted, 2)
-    return TiledDiagram(sites, hidden, _edges_of(faces, accepted), _sorted_rows(faces, 3), accepted,
+    return TiledDiagram(sites, hidden, directed.edges(), _sorted_rows(faces, 3), accepted,
                         [t for t in tiles if t["retries"] >= 0],
                         {"rounds": rounds, "fallback": False, "hull_candidates": len(candidates),
                          "seconds": time.perf_counter() - start})

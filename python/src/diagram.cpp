@@ -17,6 +17,7 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 namespace ellvor::python {
 namespace {
@@ -86,6 +87,7 @@ class Diagram {
 public:
     std::unique_ptr<DelaunayGraph> graph;
     const std::vector<Ellipse>* sites = nullptr;  // owned by the graph's traits; never changes
+    EllipseDelaunayTraits* traits = nullptr;      // owned by the graph: its circle cache
     SiteFile names;                               // the file's name and lines (no sites)
     bool from_file = false;
     double build_seconds = 0, removal_seconds = 0;
@@ -142,6 +144,7 @@ std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& form
         // As `ellvor build` does (cli/command_build.cpp): the traits own the sites.
         auto traits = std::make_unique<EllipseDelaunayTraits>(std::move(input.file.sites));
         d->sites = &traits->sites();
+        d->traits = traits.get();
         const Clock::time_point start = Clock::now();
         d->graph = std::make_unique<DelaunayGraph>(std::move(traits));
         try {
@@ -293,30 +296,56 @@ std::string json(Diagram& d) {
 
 // Per face (in `faces` order) a certified box of its Voronoi circle:
 // [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles. The
-// double-interval certificate first (docs/DESIGN.md §4.1a: cheap), else the
-// Arb solver at 53 bits (the JSON's vertex value and its proven error). The
-// tiled build (python/ellvor/distributed.py) decides its seams with them.
+// double-interval certificate first (docs/DESIGN.md §4.1a: cheap; the one the
+// build made is read from the traits' circle cache), else the Arb solver at
+// 53 bits (the JSON's vertex value and its proven error). The tiled build
+// (python/ellvor/distributed.py) decides its seams with them.
 py::array_t<double> circle_boxes(Diagram& d) {
-    const auto faces = locked(d, [](Diagram& g) { return g.faces; });
-    auto out = new_array<double>({static_cast<py::ssize_t>(faces.size()), 6});
-    double* w = out.mutable_data();
-    {
-        py::gil_scoped_release release;  // the sites never change: no lock needed
-        const std::vector<Ellipse>& s = *d.sites;
-        for (std::size_t k = 0; k < faces.size(); ++k) {
-            const auto& f = faces[k];
+    std::vector<double> boxes;
+    locked(d, [&](Diagram& g) {  // the cache is the graph's: under its lock
+        const std::vector<Ellipse>& s = *g.sites;
+        boxes.reserve(6 * g.faces.size());
+        for (const auto& f : g.faces) {
+            VoronoiCircle* cached = g.traits->cached_circle(f[0], f[1], f[2]);
+            std::optional<DoubleVoronoiCircle> fresh;
+            const DoubleVoronoiCircle* c = nullptr;
+            if (cached) {
+                c = cached->in_doubles();
+            } else if ((fresh = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]]))) {
+                c = &*fresh;
+            }
             Interval x, y, r;
-            if (const auto c = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]])) {
+            if (c) {
                 x = c->center_x, y = c->center_y, r = c->radius;
             } else {
                 const VoronoiVertexValue v = voronoi_vertex_value(s, f);
                 const Interval e(-v.error, v.error);
                 x = Interval(v.x) + e, y = Interval(v.y) + e, r = Interval(v.radius) + e;
             }
-            const double box[6] = {x.lo, x.hi, y.lo, y.hi, r.lo, r.hi};
-            std::copy(box, box + 6, w + 6 * k);
+            boxes.insert(boxes.end(), {x.lo, x.hi, y.lo, y.hi, r.lo, r.hi});
         }
-    }
+    });
+    auto out = new_array<double>({static_cast<py::ssize_t>(boxes.size() / 6), 6});
+    std::copy(boxes.begin(), boxes.end(), out.mutable_data());
+    return out;
+}
+
+// Per face (in `faces` order) the numbers of the three faces across its
+// edges, -1 for an infinite face: the triangulation's adjacency, which the
+// tiled build's test for cocircular neighbours needs.
+py::array_t<std::int64_t> face_neighbours(Diagram& d) {
+    std::vector<std::int64_t> across;
+    locked(d, [&](Diagram& g) {
+        const Triangulation& tds = g.graph->triangulation();
+        across.assign(3 * g.faces.size(), -1);
+        for (FaceIndex f : tds.faces()) {
+            const long k = face_number(g.numbers, f);
+            if (k < 0) continue;
+            for (int i = 0; i < 3; ++i) across[3 * static_cast<std::size_t>(k) + i] = face_number(g.numbers, tds.neighbor({f, i}));
+        }
+    });
+    auto out = new_array<std::int64_t>({static_cast<py::ssize_t>(across.size() / 3), 3});
+    std::copy(across.begin(), across.end(), out.mutable_data());
     return out;
 }
 
@@ -425,6 +454,7 @@ void bind_diagram(py::module_& m) {
         .def("json", &json)
         .def("stats_json", [](Diagram& d) { return locked(d, [](Diagram& g) { return g.stats; }); })
         .def("circle_boxes", &circle_boxes)
+        .def("face_neighbours", &face_neighbours)
         .def("vertex", &vertex, py::arg("i"), py::arg("bits"))
         .def("trace", &trace, py::arg("tolerance"), py::arg("margin"))
         .def("validate", &validate, py::arg("brute_force"));

@@ -225,10 +225,24 @@ def test_the_seam_tests_refuse_what_they_cannot_prove():
     boxes = np.array([[4, 4, 5, 5, 1.9, 1.9], [4, 4, 5, 5, 2, 2], [3.9, 4.1, 5, 5, 1.85, 1.95],
                       [4, 4, 5, 5, -1, -0.5], [1, 1, 5, 5, -1, -0.5]])
     assert ed._disk_misses_outside(boxes, region, everything).tolist() == [True, False, False, True, False]
-    # Two faces across an edge with overlapping circle boxes: possibly one circle (degenerate).
-    faces = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 4]])
+    # Faces 0 - 1 - 2 in a row; 0 and 1 have overlapping circle boxes: possibly one circle (degenerate).
+    neighbours = np.array([[1, -1, -1], [0, 2, -1], [1, -1, -1]])
     c = np.array([[0, 1, 0, 1, 1, 2], [0.5, 1.5, 0.5, 1.5, 1.5, 3], [5, 6, 5, 6, 1, 2]], dtype=float)
-    assert ed._possibly_degenerate(faces, c).tolist() == [True, True, False]
+    assert ed._possibly_degenerate(neighbours, c).tolist() == [True, True, False]
+
+
+def test_face_neighbours_share_an_edge():
+    d = ellvor._ellvor._build(ellvor.generate("ellipses", 200, seed=3), "ell", None, 0.1)
+    faces, across = d.faces(), d.face_neighbours()
+    assert across.shape == faces.shape
+    finite = 0
+    for k, row in enumerate(across):
+        for j in row[row >= 0]:
+            finite += 1
+            assert len(set(faces[k]) & set(faces[j])) == 2
+            assert k in across[j]
+    # Every finite face has a finite neighbour; the hull's faces have infinite ones.
+    assert finite > 2 * len(faces) and (across < 0).any()
 
 
 def test_without_a_client_a_local_cluster_is_started():
