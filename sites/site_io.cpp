@@ -143,6 +143,8 @@ void require_dynamic_range(const SiteFile& file) {
 // sites whose centers round alike.
 class PointSetIndex {
 public:
+    explicit PointSetIndex(std::size_t expected_sites = 0) { buckets_.reserve(expected_sites); }
+
     // Throws unless site `id` of the file is a point set that no earlier site
     // is; the error is at the later site's line when the file has lines.
     void require_new(const SiteFile& file, std::size_t id) {
@@ -267,7 +269,7 @@ SiteFile read_site_file(const std::string& path, SiteFormat format) {
 }
 
 void check_site_set(const SiteFile& file) {
-    PointSetIndex point_sets;
+    PointSetIndex point_sets(file.sites.size());
     for (std::size_t id = 0; id < file.sites.size(); ++id) point_sets.require_new(file, id);
     require_dynamic_range(file);
 }

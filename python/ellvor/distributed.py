@@ -115,9 +115,18 @@ def _rss_mb():
         return 0.0
 
 
-def _local_sites(text):
-    """A tile's sites from the .ell lines it was sent (parsed in C++, as a file's)."""
-    return _ellvor._sites_from_text(text)
+def _payload(sites, ids):
+    """What a worker is sent of the sites ``ids``: their numerators and denominators as an int64 array, or
+    (when one needs more than 64 bits) their .ell lines."""
+    fractions = sites._fractions(ids)
+    return sites._lines(ids) if fractions is None else fractions
+
+
+def _local_sites(payload):
+    """A tile's sites from what _payload made of them (lines are parsed in C++, as a file's)."""
+    if isinstance(payload, str):
+        return _ellvor._sites_from_text(payload)
+    return _ellvor._sites_from_fractions(payload)
 
 
 def _possibly_degenerate(neighbours, boxes):
@@ -160,10 +169,10 @@ def _disk_misses_outside(circles, r, everything):
     return ok
 
 
-def _tile_task(text, ids, boxes, region, rect, everything, whole):
+def _tile_task(payload, ids, boxes, region, rect, everything, whole):
     """Builds one tile's diagram and returns what it proves about the whole one (global ids)."""
     start, cpu = time.perf_counter(), time.process_time()
-    sites = _local_sites(text)
+    sites = _local_sites(payload)
     try:
         d = _ellvor._build(sites, "ell", None, 0.1)
     except InputError as e:
@@ -351,12 +360,12 @@ def _convex_hull(points):
     return [(float(x), float(y)) for x, y in lower[:-1] + upper[:-1]]
 
 
-def _hull_task(text, ids, polygon, depth):
+def _hull_task(payload, ids, polygon, depth):
     """The candidates' graph: its hull faces are those of the whole graph, and so are its finite faces whose
     disk misses the non-candidates' region (docs/DESIGN.md §8); its hidden sites are hidden."""
     start, cpu = time.perf_counter(), time.process_time()
     try:
-        d = _ellvor._build(_local_sites(text), "ell", None, 0.1)
+        d = _ellvor._build(_local_sites(payload), "ell", None, 0.1)
     except InputError as e:
         pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
         return {"error": (e.reason, pair)}
@@ -386,11 +395,14 @@ class _DirectedEdges:
     each as its undirected key (i < j) and a bit for its direction (1: from j to i)."""
 
     def __init__(self, faces, hull):
-        directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]], hull])
-        directed = directed[directed[:, 0] != directed[:, 1]]
-        self.m = int(directed.max()) + 1 if len(directed) else 1
-        lo, hi = np.minimum(directed[:, 0], directed[:, 1]), np.maximum(directed[:, 0], directed[:, 1])
-        self.sorted = np.sort((lo * self.m + hi) * 2 + (directed[:, 0] > directed[:, 1]))
+        src = np.concatenate([faces.ravel(), hull[:, 0]])
+        dst = np.concatenate([faces[:, [1, 2, 0]].ravel(), hull[:, 1]])
+        keep = src != dst
+        src, dst = src[keep], dst[keep]
+        self.m = int(max(src.max(), dst.max())) + 1 if len(src) else 1
+        x = (np.minimum(src, dst) * self.m + np.maximum(src, dst)) * 2 + (src > dst)
+        x.sort()
+        self.sorted = x
 
     def open_sites(self):
         """Sites on directed edges whose count differs from their twin's: where faces are missing. A key is
@@ -538,7 +550,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         # tile whose worker dies runs again elsewhere (scattered data would die with the worker).
         with warnings.catch_warnings():
             warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-            return client.submit(_tile_task, sites._lines(ids), ids, boxes[ids], region, rect, everything,
+            return client.submit(_tile_task, _payload(sites, ids), ids, boxes[ids], region, rect, everything,
                                  whole, pure=False)
 
     def one_build(reason):
@@ -569,7 +581,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
              for t in range(nx * ny)]
 
     candidates, polygon = _hull_candidates(params, boxes, halos.max())
-    hull_future = client.submit(_hull_task, sites._lines(candidates), candidates, polygon,
+    hull_future = client.submit(_hull_task, _payload(sites, candidates), candidates, polygon,
                                 halos.max(), pure=False)
 
     faces_found, hidden_found, visible_found = [np.zeros((0, 3), np.int64)], [np.zeros((0, 2), np.int64)], []
@@ -649,7 +661,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
                 return one_build(f"the patch around site {p} holds the whole set")
             patch_halo[p] *= 2
             batches.setdefault(int(owner[p]), []).append(
-                (sites._lines(held), held, boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything, False))
+                (_payload(sites, held), held, boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything, False))
             tiles[int(owner[p])]["retries"] += 1
         futures = {t: client.submit(_patches_task, jobs, pure=False) for t, jobs in batches.items()}
         for t, f in futures.items():
@@ -660,7 +672,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
     first = np.concatenate([[True], hidden_all[1:, 0] != hidden_all[:-1, 0]]) if len(hidden_all) else []
     hidden = hidden_all[first]
     accepted = _sorted_rows(accepted, 2)
-    return TiledDiagram(sites, hidden, directed.edges(), _sorted_rows(faces, 3), accepted,
+    return TiledDiagram(sites, hidden, directed.edges(), faces, accepted,
                         [t for t in tiles if t["retries"] >= 0],
                         {"rounds": rounds, "fallback": False, "hull_candidates": len(candidates),
                          "seconds": time.perf_counter() - start})
@@ -702,17 +714,17 @@ _CELL_COLUMNS = ("area_lo", "area_hi", "site_area_lo", "site_area_hi", "perimete
                  "second_moments_hi", "site_area", "visible", "bounded", "precision", "reach")
 
 
-def _cells_task(text, ids, shifts, want, boxes, semi_axes, domain, tolerance, boundary_tolerance, rings, region,
+def _cells_task(payload, ids, shifts, want, boxes, semi_axes, domain, tolerance, boundary_tolerance, rings, region,
                 whole):
-    """The cells of the held sites ``want`` (local indices) among all held sites (``text``, global ``ids``;
+    """The cells of the held sites ``want`` (local indices) among all held sites (``payload``, global ``ids``;
     a periodic box's copies shifted by ``shifts`` periods, the wanted ones by none); returns those the reach
     certificate proves (all when ``whole``: the whole set), with global ids and vertices keyed by their
     faces' global sites, and the reach of those it does not."""
     start, cpu = time.perf_counter(), time.process_time()
     box, periodic = domain
     try:
-        # (Sites without the text's lines: an error names the sites by id, mapped to global ids below.)
-        core = _ellvor._cells(_ellvor.Sites(list(_local_sites(text))), box, periodic, tolerance, boundary_tolerance, rings,
+        # (Sites without lines: an error names the sites by id, mapped to global ids below.)
+        core = _ellvor._cells(_local_sites(payload), box, periodic, tolerance, boundary_tolerance, rings,
                               want.tolist(), not whole)
     except InputError as e:
         pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
@@ -888,15 +900,15 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
         """_cells_task's arguments: held = (ids, shifts)."""
         ids, shifts = held
         if period is None or not shifts.any():
-            text, held_boxes = sites._lines(ids), boxes[ids]
+            payload, held_boxes = _payload(sites, ids), boxes[ids]
         else:
             lines = []
             for k, (i, j) in zip(ids.tolist(), shifts.tolist()):
                 e = sites[k]
                 lines.append(str(e) if i == 0 and j == 0 else
                              str(type(e)(e.a, e.b, e.w, e.xc + i * period[0], e.yc + j * period[1])))
-            text, held_boxes = "\n".join(lines), _shifted_boxes(boxes[ids], shifts, period)
-        return (text, ids, shifts, want, held_boxes, semi_axes[ids], (None, None) if whole is False and period
+            payload, held_boxes = "\n".join(lines), _shifted_boxes(boxes[ids], shifts, period)
+        return (payload, ids, shifts, want, held_boxes, semi_axes[ids], (None, None) if whole is False and period
                 else domain, tolerance, tol, rings, region, whole)
 
     def submit(held, want, region, whole, tol):

@@ -7,6 +7,7 @@
 
 #include <pybind11/stl.h>
 
+#include <array>
 #include <sstream>
 
 namespace ellvor::python {
@@ -77,6 +78,58 @@ Sites sites_from_text(const std::string& text, const std::string& format, py::ob
     SiteFile file = read_site_file(in, display, f);
     if (!s.from_file) file.lines.clear();
     s.file = std::move(file);
+    return s;
+}
+
+// The sites `ids` as numerator/denominator pairs, (k, 10) int64: a_num a_den
+// b_num ... yc_den, or None when one does not fit in 64 bits. What a tiled
+// build sends a tile (python/ellvor/distributed.py): no text to format or parse.
+py::object site_fractions(const Sites& s, py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> ids) {
+    const auto v = ids.unchecked<1>();
+    const auto n = static_cast<std::int64_t>(s.file.sites.size());
+    for (py::ssize_t k = 0; k < v.shape(0); ++k)
+        if (v(k) < 0 || v(k) >= n) throw py::index_error("_fractions: site id out of range");
+    auto out = new_array<std::int64_t>({v.shape(0), static_cast<py::ssize_t>(10)});
+    std::int64_t* w = out.mutable_data();
+    bool fits = true;
+    {
+        py::gil_scoped_release release;
+        for (py::ssize_t k = 0; k < v.shape(0) && fits; ++k) {
+            const Ellipse& e = s.file.sites[static_cast<std::size_t>(v(k))];
+            for (const Rational* r : {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()}) {
+                const fmpz* parts[2] = {fmpq_numref(r->get()), fmpq_denref(r->get())};
+                for (const fmpz* part : parts) {
+                    if (!fmpz_fits_si(part)) fits = false;
+                    *w++ = fits ? fmpz_get_si(part) : 0;
+                }
+            }
+        }
+    }
+    if (!fits) return py::none();
+    return std::move(out);
+}
+
+// Sites from site_fractions' array, checked as a list of Ellipses is.
+Sites sites_from_fractions(py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> fractions) {
+    if (fractions.ndim() != 2 || fractions.shape(1) != 10)
+        throw py::value_error("_sites_from_fractions: expected a (k, 10) array");
+    const auto f = fractions.unchecked<2>();
+    Sites s;
+    py::gil_scoped_release release;
+    s.file.sites.reserve(static_cast<std::size_t>(f.shape(0)));
+    for (py::ssize_t k = 0; k < f.shape(0); ++k) {
+        std::array<Rational, 5> r;
+        for (int j = 0; j < 5; ++j) {
+            const std::int64_t num = f(k, 2 * j), den = f(k, 2 * j + 1);
+            if (den <= 0) throw InputError("_sites_from_fractions: a denominator is not positive");
+            fmpz_set_si(fmpq_numref(r[j].get()), num);
+            fmpz_set_si(fmpq_denref(r[j].get()), den);
+            fmpq_canonicalise(r[j].get());
+        }
+        s.file.sites.push_back(checked_ellipse(std::move(r[0]), std::move(r[1]), std::move(r[2]), std::move(r[3]),
+                                               std::move(r[4])));
+    }
+    check_site_set(s.file);
     return s;
 }
 
@@ -272,12 +325,14 @@ void bind_sites(py::module_& m) {
                  return out;
              },
              py::arg("ids"))
+        .def("_fractions", &site_fractions, py::arg("ids"))
         .def("write", &write_sites, py::arg("path"), py::arg("fmt") = "ell")
         .def("__repr__", [](const Sites& s) {
             return "<ellvor.Sites: " + std::to_string(s.file.sites.size()) + " sites" +
                    (s.from_file ? " from " + s.file.name : std::string()) + ">";
         });
 
+    m.def("_sites_from_fractions", &sites_from_fractions, py::arg("fractions"));
     m.def("_sites_from_text", &sites_from_text, py::arg("text"), py::arg("fmt") = "ell", py::arg("name") = py::none());
     m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");
     m.def("generate", &generate, py::arg("kind") = "ellipses", py::arg("count") = 10, py::arg("seed") = 1,

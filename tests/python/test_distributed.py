@@ -245,6 +245,27 @@ def test_face_neighbours_share_an_edge():
     assert finite > 2 * len(faces) and (across < 0).any()
 
 
+def test_sites_travel_as_fractions_or_as_lines():
+    rng = random.Random(5)
+    sites = ellvor.generate("nested", 300, seed=4)
+    ids = np.array(rng.sample(range(len(sites)), 120), dtype=np.int64)
+    payload = ed._payload(sites, ids)
+    assert isinstance(payload, np.ndarray) and payload.shape == (120, 10)
+    assert list(ed._local_sites(payload)) == [sites[int(k)] for k in ids]
+    # A numerator beyond 64 bits: the lines carry it.
+    big = ellvor.Sites([ellvor.Ellipse(2, 1, 0, 0, 0), ellvor.Ellipse(1, 1, 0, Fraction(3 ** 50, 7), 5)])
+    payload = ed._payload(big, np.array([1, 0]))
+    assert isinstance(payload, str)
+    assert list(ed._local_sites(payload)) == [big[1], big[0]]
+    # Received fractions are checked as Ellipses are.
+    with pytest.raises(ellvor.InputError, match="semi-axis a must be positive"):
+        ed._local_sites(np.array([[-1, 1, 1, 1, 0, 1, 0, 1, 0, 1]], dtype=np.int64))
+    with pytest.raises(ellvor.InputError, match="denominator"):
+        ed._local_sites(np.array([[1, 0, 1, 1, 0, 1, 0, 1, 0, 1]], dtype=np.int64))
+    with pytest.raises(ellvor.InputError, match="duplicate"):
+        ed._local_sites(np.array([[1, 1, 1, 1, 0, 1, 0, 1, 0, 1]] * 2, dtype=np.int64))
+
+
 def test_without_a_client_a_local_cluster_is_started():
     d = same_graph(ellvor.generate("nested", 300, seed=2), None, (2, 2))
     assert d.stats["fallback"] is False
