@@ -580,10 +580,6 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
               "tile_faces": 0, "certified": 0, "faces_kept": 0, "retries": -1, "seconds": 0.0, "cpu_seconds": 0.0, "rss_mb": 0.0}
              for t in range(nx * ny)]
 
-    candidates, polygon = _hull_candidates(params, boxes, halos.max())
-    hull_future = client.submit(_hull_task, _payload(sites, candidates), candidates, polygon,
-                                halos.max(), pure=False)
-
     faces_found, hidden_found, visible_found = [np.zeros((0, 3), np.int64)], [np.zeros((0, 2), np.int64)], []
 
     def covers_everything(region, held):
@@ -603,8 +599,14 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         tiles[t]["cpu_seconds"] += result["cpu_seconds"]
         tiles[t]["rss_mb"] = max(tiles[t]["rss_mb"], result["rss_mb"])
 
+    def submit_hull():
+        candidates, polygon = _hull_candidates(params, boxes, halos.max())
+        return candidates, client.submit(_hull_task, _payload(sites, candidates), candidates, polygon,
+                                         halos.max(), pure=False)
+
     # Round 1: the tiles.
     futures = {}
+    hull_job = None
     for t in range(nx * ny):
         if not (owner == t).any():
             continue
@@ -614,6 +616,13 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
             return one_build(f"the halo of tile {divmod(t, ny)} holds the whole set")
         futures[t] = submit_tile(held, region, grid.rect(t), False)
         tiles[t].update(sites=len(held), halo_sites=len(held) - tiles[t]["owned"], halo=float(halos[t]), retries=0)
+        if len(futures) == 2:
+            # The hull candidates' graph third: the workers have started on two tiles meanwhile, and it
+            # does not come last (a worker would then build it alone).
+            hull_job = submit_hull()
+    if hull_job is None:
+        hull_job = submit_hull()
+    candidates, hull_future = hull_job
     for t, f in futures.items():
         collect(t, f.result())
     h = hull_future.result()
