@@ -169,6 +169,15 @@ def _disk_misses_outside(circles, r, everything):
     return ok
 
 
+def _submit(client, fn, *args):
+    """client.submit(fn, *args), not pure (each call runs). The sites go in the task itself, not scattered:
+    the scheduler keeps a task's arguments, so a task whose worker dies runs again elsewhere (scattered data
+    would die with the worker); Dask's warning about large arguments is silenced for that."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
+        return client.submit(fn, *args, pure=False)
+
+
 def _tile_task(payload, ids, boxes, region, rect, everything, whole):
     """Builds one tile's diagram and returns what it proves about the whole one (global ids)."""
     start, cpu = time.perf_counter(), time.process_time()
@@ -546,12 +555,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
                   float(boxes[:, 3].max())) if n else (0.0, 0.0, 0.0, 0.0)
 
     def submit_tile(ids, region, rect, whole):
-        # The sites go in the task itself, not scattered: the scheduler keeps a task's arguments, so a
-        # tile whose worker dies runs again elsewhere (scattered data would die with the worker).
-        with warnings.catch_warnings():
-            warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-            return client.submit(_tile_task, _payload(sites, ids), ids, boxes[ids], region, rect, everything,
-                                 whole, pure=False)
+        return _submit(client, _tile_task, _payload(sites, ids), ids, boxes[ids], region, rect, everything, whole)
 
     def one_build(reason):
         result = submit_tile(all_ids, (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
@@ -601,8 +605,8 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
 
     def submit_hull():
         candidates, polygon = _hull_candidates(params, boxes, halos.max())
-        return candidates, client.submit(_hull_task, _payload(sites, candidates), candidates, polygon,
-                                         halos.max(), pure=False)
+        return candidates, _submit(client, _hull_task, _payload(sites, candidates), candidates, polygon,
+                                   halos.max())
 
     # Round 1: the tiles.
     futures = {}
@@ -672,7 +676,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
             batches.setdefault(int(owner[p]), []).append(
                 (_payload(sites, held), held, boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything, False))
             tiles[int(owner[p])]["retries"] += 1
-        futures = {t: client.submit(_patches_task, jobs, pure=False) for t, jobs in batches.items()}
+        futures = {t: _submit(client, _patches_task, jobs) for t, jobs in batches.items()}
         for t, f in futures.items():
             collect(t, f.result())
 
@@ -921,9 +925,7 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
                 else domain, tolerance, tol, rings, region, whole)
 
     def submit(held, want, region, whole, tol):
-        with warnings.catch_warnings():
-            warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-            return client.submit(_cells_task, *job(held, want, region, whole, tol), pure=False)
+        return _submit(client, _cells_task, *job(held, want, region, whole, tol))
 
     def check(result):
         if "error" in result:
@@ -1054,7 +1056,7 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
                 batches.setdefault(int(owner[p]), []).append(
                     job(held, owned_positions(held, np.array([p])), r, False, cover))
                 tiles[index_of[int(owner[p])]]["retries"] += 1
-            futures = {t: client.submit(_cell_patches_task, jobs, pure=False) for t, jobs in batches.items()}
+            futures = {t: _submit(client, _cell_patches_task, jobs) for t, jobs in batches.items()}
             next_pending, next_reach = [], []
             for t, f in futures.items():
                 rs = f.result()
@@ -1189,9 +1191,7 @@ def _map_files(checked, fmt, client, progress, cell_options=None):
     try:
         futures = {}
         for path, sites, text in checked:
-            with warnings.catch_warnings():
-                warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
-                futures[c.submit(_file_task, text, fmt, path, cell_options, pure=False)] = (path, sites)
+            futures[_submit(c, _file_task, text, fmt, path, cell_options)] = (path, sites)
         for done, future in enumerate(as_completed(futures), 1):
             path, sites = futures.pop(future)
             result = future.result()
