@@ -22,6 +22,7 @@ extent lies in the tile's region (§8, "The tiled cells").
 import functools
 import math
 import os
+import re
 import time
 import warnings
 from fractions import Fraction
@@ -185,8 +186,7 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
     try:
         d = _ellvor._build(sites, "ell", None, 0.1)
     except InputError as e:
-        pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
-        return {"error": (e.reason, pair)}
+        return _error_result(e, ids)
     faces = d.faces()
     hidden = d.hidden()
     circle = d.circle_boxes()
@@ -376,8 +376,7 @@ def _hull_task(payload, ids, polygon, depth):
     try:
         d = _ellvor._build(_local_sites(payload), "ell", None, 0.1)
     except InputError as e:
-        pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
-        return {"error": (e.reason, pair)}
+        return _error_result(e, ids)
     faces = d.faces()
     circles = d.circle_boxes()
     if len(polygon) >= 3:
@@ -391,11 +390,27 @@ def _hull_task(payload, ids, polygon, depth):
             "rss_mb": _rss_mb()}
 
 
-def _raise_worker_error(result):
-    reason, pair = result["error"]
+def _local_ids_to_global(message, ids):
+    """A worker's error names sites by their ids in the tile: name them by their global ids."""
+    return re.sub(r"\b(sites?|and) (\d+)\b", lambda m: f"{m.group(1)} {int(ids[int(m.group(2))])}", message)
+
+
+def _error_result(e, ids):
+    """A worker's InputError ``e`` about its sites, whose global ids are ``ids``: the reason with global ids,
+    the pair of sites (global ids), and for crossing sites how they cross."""
+    pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
+    return {"error": (_local_ids_to_global(e.reason, ids), pair, e.why)}
+
+
+def _raise_worker_error(result, sites):
+    """Raises what a worker's _error_result says, as ``ellvor.build(sites)`` would: crossing sites at the
+    later one's line when the sites are a file's."""
+    reason, pair, why = result["error"]
+    if pair is not None and why is not None:
+        _ellvor._raise_crossing_sites(sites, pair[0], pair[1], why)
     if pair is not None:
         pair = tuple(sorted(pair))
-        raise InputError(f"sites {pair[0]} and {pair[1]}: {reason}", sites=pair, reason=reason)
+        raise InputError(reason, sites=pair, reason=reason)
     raise InputError(reason)
 
 
@@ -561,7 +576,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         result = submit_tile(all_ids, (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
                              True).result()
         if "error" in result:
-            _raise_worker_error(result)
+            _raise_worker_error(result, sites)
         tile = {"index": (0, 0), "sites": n, "owned": n, "halo_sites": 0, "halo": math.inf,
                 "tile_faces": result["tile_faces"], "certified": result["certified"],
                 "faces_kept": result["certified"], "retries": 0, "seconds": result["seconds"],
@@ -592,7 +607,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
 
     def collect(t, result):
         if "error" in result:
-            _raise_worker_error(result)
+            _raise_worker_error(result, sites)
         faces_found.append(result["faces"])
         hidden_found.append(result["hidden"])
         visible_found.append(result["visible"])
@@ -631,7 +646,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         collect(t, f.result())
     h = hull_future.result()
     if "error" in h:
-        _raise_worker_error(h)
+        _raise_worker_error(h, sites)
     hull = h["hull"]
     faces_found.append(h["faces"])
     hidden_found.append(h["hidden"])
@@ -705,12 +720,6 @@ def _reach_disk_inside(boxes, semi_axes, reach, region):
                 (np.nextafter(boxes[:, 3] + r2, np.inf) <= region[3]))
 
 
-def _local_ids_to_global(message, ids):
-    """A cells error names sites by their ids in the tile: name them by their global ids."""
-    import re
-    return re.sub(r"\b(sites?|and) (\d+)\b", lambda m: f"{m.group(1)} {int(ids[int(m.group(2))])}", message)
-
-
 def _vertex_keys(a, ids, copy_shifts):
     """Per vertex of a tile's cells the sites of its face, global: rows (site, wall, shift x, shift y) x 3,
     rotated to start at the least (site, wall), so that the same face from any tile gives the same row."""
@@ -740,8 +749,7 @@ def _cells_task(payload, ids, shifts, want, boxes, semi_axes, domain, tolerance,
         core = _ellvor._cells(_local_sites(payload), box, periodic, tolerance, boundary_tolerance, rings,
                               want.tolist(), not whole)
     except InputError as e:
-        pair = None if e.sites is None else tuple(int(ids[k]) for k in e.sites)
-        return {"error": (_local_ids_to_global(e.reason, ids), pair)}
+        return _error_result(e, ids)
     a = core.arrays()
     if whole:
         certified = np.ones(len(want), dtype=bool)
@@ -929,8 +937,7 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
 
     def check(result):
         if "error" in result:
-            message, pair = result["error"]
-            raise InputError(message, sites=None if pair is None else tuple(sorted(pair)), reason=message)
+            _raise_worker_error(result, sites)
         return result
 
     def whole_task(want):

@@ -26,6 +26,7 @@ void raise_input_error(const InputError& e) {
         fields["column"] = e.column();
     }
     if (e.sites()) fields["sites"] = py::make_tuple(e.sites()->first, e.sites()->second);
+    if (const auto* crossing = dynamic_cast<const IntersectingSites*>(&e)) fields["why"] = crossing->why();
     py::object exc = cls(e.what(), **fields);
     PyErr_SetObject(cls.ptr(), exc.ptr());
 }

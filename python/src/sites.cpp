@@ -7,6 +7,7 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 
@@ -332,6 +333,17 @@ void bind_sites(py::module_& m) {
                    (s.from_file ? " from " + s.file.name : std::string()) + ">";
         });
 
+    // The error `ellvor.build(sites)` raises for sites `first` and `second` that
+    // cross as `why` says: at the later site's line when the sites are a file's.
+    m.def(
+        "_raise_crossing_sites",
+        [](const Sites& s, std::size_t first, std::size_t second, const std::string& why) {
+            const std::size_t n = s.file.sites.size();
+            if (first >= n || second >= n) throw py::index_error("_raise_crossing_sites: site id out of range");
+            if (s.from_file) throw crossing_sites_error(s.file, first, second, why);
+            throw IntersectingSites(std::min(first, second), std::max(first, second), why);
+        },
+        py::arg("sites"), py::arg("first"), py::arg("second"), py::arg("why"));
     m.def("_sites_from_fractions", &sites_from_fractions, py::arg("fractions"));
     m.def("_sites_from_text", &sites_from_text, py::arg("text"), py::arg("fmt") = "ell", py::arg("name") = py::none());
     m.def("read_sites", &read_site_path, py::arg("path"), py::arg("fmt") = "ell");

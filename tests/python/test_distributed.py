@@ -207,15 +207,21 @@ def test_bad_input_is_refused_on_the_client():
         ed.build("/nonexistent/sites.ell", client=_Unreachable())
 
 
-def test_sites_meeting_in_four_points_raise_the_single_builds_error(client):
+def test_sites_meeting_in_four_points_raise_the_single_builds_error(client, tmp_path):
     rng = random.Random(4)
     sites = [ellvor.Ellipse.circle(rng.randrange(-500, 500), rng.randrange(-500, 500), 1) for _ in range(300)]
     sites += [ellvor.Ellipse(3, Fraction(1, 5), 0, 1000, 1000), ellvor.Ellipse(3, Fraction(1, 5), 1, 1000, 1000)]
-    with pytest.raises(ellvor.InputError) as single:
-        ellvor.build(sites)
-    with pytest.raises(ellvor.InputError) as tiled:
-        ed.build(sites, tiles=(3, 3), client=client)
-    assert tiled.value.sites == single.value.sites == (300, 301)
+    path = tmp_path / "crossing.ell"
+    ellvor.Sites(sites).write(str(path))
+    for given in (sites, str(path)):   # ids in a tile differ from the global ones; a file's error has its lines
+        with pytest.raises(ellvor.InputError) as single:
+            ellvor.build(given)
+        with pytest.raises(ellvor.InputError) as tiled:
+            ed.build(given, tiles=(3, 3), client=client)
+        assert str(tiled.value) == str(single.value)
+        assert tiled.value.sites == single.value.sites == (300, 301)
+        assert tiled.value.lineno == single.value.lineno == (None if given is sites else 302)
+        assert "meet in 4 points" in tiled.value.why and tiled.value.why == single.value.why
 
 
 def test_the_seam_tests_refuse_what_they_cannot_prove():
