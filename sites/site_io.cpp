@@ -343,12 +343,12 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     }
 }
 
-InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second, const std::string& why) {
+IntersectingSites crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second, const std::string& why) {
     if (first > second) std::swap(first, second);
-    return InputError(file.name, file.lines[second], 1,
-                      "site " + std::to_string(second) + " crosses site " + std::to_string(first) + " (line " +
-                          std::to_string(file.lines[first]) + "): " + why,
-                      InputError::SitePair{first, second});
+    return IntersectingSites(file.name, file.lines[second], 1,
+                             "site " + std::to_string(second) + " crosses site " + std::to_string(first) + " (line " +
+                                 std::to_string(file.lines[first]) + "): " + why,
+                             first, second, why);
 }
 
 }  // namespace ellvor

@@ -73,7 +73,7 @@ std::vector<Ellipse> read_sites(const std::string& path, SiteFormat format = Sit
 // not accept (crossing_pair_problem in predicates/relative_position.hpp), at
 // the later site's line: "FILE:LINE:1: site j crosses site i (line L): WHY"
 // (the reader does not test pairs: the graph and the commands find crossings).
-InputError crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second, const std::string& why);
+IntersectingSites crossing_sites_error(const SiteFile& file, std::size_t first, std::size_t second, const std::string& why);
 
 // Writers. `header` lines (may be empty) are written first, each prefixed with "# ".
 void write_ell(std::ostream& out, const std::vector<Ellipse>& sites, const std::string& header = "");

@@ -4,6 +4,7 @@
 // Python module) need not parse the message.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <cstddef>
 #include <optional>
@@ -60,6 +61,13 @@ public:
         : InputError("invalid input: sites " + std::to_string(first) + " and " + std::to_string(second) +
                          " cross: " + why,
                      SitePair{first, second}),
+          first_(first),
+          second_(second),
+          why_(why) {}
+    // At the later site's line of a file: `reason` names both sites.
+    IntersectingSites(const std::string& file, long line, long column, const std::string& reason, std::size_t first,
+                      std::size_t second, const std::string& why)
+        : InputError(file, line, column, reason, SitePair{std::min(first, second), std::max(first, second)}),
           first_(first),
           second_(second),
           why_(why) {}
