@@ -25,6 +25,8 @@ constexpr long kMaxPasses = 2000;
 constexpr double kStartFraction = 0.55;        // of the RSA phase (at most)
 constexpr double kSizeRatio = 6;              // of the largest start size to the smallest
 constexpr long kPlacementAttempts = 100000;   // per site, in the RSA phase
+constexpr int kStarts = 6;                    // RSA starts, each at kStartFractionStep times the last's fraction
+constexpr double kStartFractionStep = 0.8;
 // pi bracketed by rationals, for the certified packing fraction.
 const Rational& pi_lower() { static const Rational p(Integer(314159265358979L), Integer(100000000000000L)); return p; }
 const Rational& pi_upper() { static const Rational p(Integer(314159265358980L), Integer(100000000000000L)); return p; }
@@ -161,12 +163,12 @@ Packing generate_packing(const PackingOptions& o) {
         return v + fmpz_get_ui(low.get());
     }();
 
-    SiteRandom rng(o.seed);
     // RSA in decreasing order of size at a start fraction phi0 (the asked
     // fraction when lower): site n has area A0 s_n^2 with the harmonic sizes
     // s_n = 1 / (1 + (rho - 1) n / (N - 1)), from 1 down to 1/rho, A0 such that
-    // the areas sum to phi0 L^2; b = sqrt(area / (pi r)), a = r b.
-    const double start_fraction = std::min(kStartFraction, o.fraction.to_double());
+    // the areas sum to phi0 L^2; b = sqrt(area / (pi r)), a = r b. A few large
+    // sites in a small box can jam RSA early (40 sites at 0.55): then RSA starts
+    // again, from the same seed, at a lower phi0, and the growth makes up the rest.
     const double pi = 3.141592653589793;
     auto relative_size = [&](long n) {
         return o.count > 1 ? 1 / (1 + (kSizeRatio - 1) * static_cast<double>(n) / static_cast<double>(o.count - 1))
@@ -174,20 +176,31 @@ Packing generate_packing(const PackingOptions& o) {
     };
     double size_sum = 0;
     for (long n = 0; n < o.count; ++n) size_sum += relative_size(n) * relative_size(n);
-    const double largest_area = start_fraction * static_cast<double>(side) * static_cast<double>(side) / size_sum;
-    const double smallest_axis = std::sqrt(largest_area * dyadic(k_lo, kAspectBits) / pi) / kSizeRatio;
-    // A grid of cells about twice the smallest site; queries look as far as
-    // the largest site can reach.
-    const long cells = std::max(1L, std::min(4096L, static_cast<long>(static_cast<double>(side) / (4 * smallest_axis))));
-    const double cell_width = static_cast<double>(side) / static_cast<double>(cells);
-    std::vector<std::vector<std::int32_t>> grid(static_cast<std::size_t>(cells * cells));
-    auto cell_of = [&](double v) { return std::min(cells - 1, std::max(0L, static_cast<long>(v / cell_width))); };
-    double largest_axis = 0;  // of the sites placed, an upper bound
 
+    // The RSA state, set by `restart` for each start fraction. A grid of cells
+    // about twice the smallest site; queries look as far as the largest site
+    // can reach.
+    SiteRandom rng(o.seed);
+    double largest_area = 0, cell_width = 1;
+    long cells = 1;
+    std::vector<std::vector<std::int32_t>> grid;
+    double largest_axis = 0;  // of the sites placed, an upper bound
     std::vector<PackSite> sites;
     std::vector<SlabSite> frames;
-    sites.reserve(static_cast<std::size_t>(o.count));
-    frames.reserve(static_cast<std::size_t>(o.count));
+    auto restart = [&](double start_fraction) {
+        rng = SiteRandom(o.seed);
+        largest_area = start_fraction * static_cast<double>(side) * static_cast<double>(side) / size_sum;
+        const double smallest_axis = std::sqrt(largest_area * dyadic(k_lo, kAspectBits) / pi) / kSizeRatio;
+        cells = std::max(1L, std::min(4096L, static_cast<long>(static_cast<double>(side) / (4 * smallest_axis))));
+        cell_width = static_cast<double>(side) / static_cast<double>(cells);
+        grid.assign(static_cast<std::size_t>(cells * cells), {});
+        largest_axis = 0;
+        sites.clear();
+        frames.clear();
+        sites.reserve(static_cast<std::size_t>(o.count));
+        frames.reserve(static_cast<std::size_t>(o.count));
+    };
+    auto cell_of = [&](double v) { return std::min(cells - 1, std::max(0L, static_cast<long>(v / cell_width))); };
     auto make_frame = [&](const PackSite& s) {
         const auto rot = rotation(s.j);
         const double b = dyadic(s.m, kAxisBits), a = dyadic(s.k * s.m, kAxisBits + kAspectBits);
@@ -214,8 +227,10 @@ Packing generate_packing(const PackingOptions& o) {
         return true;
     };
 
+    // Places site n at a random free center; false when none of
+    // kPlacementAttempts centers is free.
     const std::int64_t center_unit = std::int64_t(1) << kCenterBits;
-    for (long n = 0; n < o.count; ++n) {
+    auto place = [&](long n) {
         PackSite s;
         s.k = k_lo + static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(k_hi - k_lo + 1)));
         s.j = static_cast<std::int64_t>(rng.below(std::uint64_t(2) << kAngleBits)) - (std::int64_t(1) << kAngleBits);
@@ -228,30 +243,42 @@ Packing generate_packing(const PackingOptions& o) {
         const std::int64_t margin = s.k * s.m * (std::int64_t(1) << (kCenterBits - kAxisBits - kAspectBits));
         const std::int64_t span = side * center_unit - 2 * margin;
         if (span <= 0) throw Error("packing: a site does not fit in the box");
-        bool placed = false;
-        for (long attempt = 0; attempt < kPlacementAttempts && !placed; ++attempt) {
+        for (long attempt = 0; attempt < kPlacementAttempts; ++attempt) {
             s.x = margin + static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(span) + 1));
             s.y = margin + static_cast<std::int64_t>(rng.below(static_cast<std::uint64_t>(span) + 1));
             const SlabSite f = make_frame(s);
-            placed = wall_scale(f, static_cast<double>(side)) >= 1 &&
-                     for_each_near(f, 1.0, sites.size(), [&](std::size_t, const SlabSite& q) {
-                         return certified_separating_scale(f, q, gap, gap_upper, 1) >= 1;
-                     });
-            if (placed) {
+            const bool free = wall_scale(f, static_cast<double>(side)) >= 1 &&
+                              for_each_near(f, 1.0, sites.size(), [&](std::size_t, const SlabSite& q) {
+                                  return certified_separating_scale(f, q, gap, gap_upper, 1) >= 1;
+                              });
+            if (free) {
                 grid[static_cast<std::size_t>(cell_of(f.xd) * cells + cell_of(f.yd))].push_back(
                     static_cast<std::int32_t>(sites.size()));
                 sites.push_back(s);
                 frames.push_back(f);
                 largest_axis = std::max(largest_axis, f.ad);
+                return true;
             }
         }
-        if (!placed) {
+        return false;
+    };
+
+    double start_fraction = std::min(kStartFraction, o.fraction.to_double());
+    for (int start = 1;; ++start) {
+        restart(start_fraction);
+        long n = 0;
+        while (n < o.count && place(n)) ++n;
+        if (n == o.count) break;
+        if (start == kStarts) {
             AreaSum sum = 0;
             for (const PackSite& t : sites) sum += area_term(t);
             throw Error("packing fraction " + o.fraction.str() + " not reached: site " + std::to_string(n + 1) + " of " +
                         std::to_string(o.count) + " found no room after " + std::to_string(kPlacementAttempts) +
-                        " random centers, at packing fraction " + decimals(fraction_of(sum, side, pi_lower()), 4, false));
+                        " random centers, at packing fraction " + decimals(fraction_of(sum, side, pi_lower()), 4, false) +
+                        " (random sequential addition started " + std::to_string(kStarts) + " times, last at " +
+                        decimals(Rational(static_cast<long>(std::floor(start_fraction * 10000)), 10000UL), 4, false) + ")");
         }
+        start_fraction *= kStartFractionStep;
     }
 
     AreaSum sum = 0;

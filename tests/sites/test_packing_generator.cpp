@@ -219,6 +219,26 @@ TEST_CASE("packing: the same sites on every run, other seeds differ", "[packing]
     CHECK(describe(o) == "ellvor generate packing --count 300 --packing-fraction 29/50 --gap 1/1000 --aspect 1..4 --seed 11");
 }
 
+TEST_CASE("packing: a small box whose first random sequential addition jams starts again lower",
+          "[packing][generator]") {
+    // 40 sites in a 7 x 7 box at 0.55: with seed 1 the seventh site found no room at the first start.
+    const PackingOptions o = options(40, Rational(55, 100), Rational(1, 1000), 1);
+    const Packing p = generate_packing(o);
+    REQUIRE(p.sites.size() == 40);
+    CHECK(p.fraction_lower >= o.fraction);
+    for (std::size_t i = 0; i < p.sites.size(); ++i) {
+        CHECK(inside_box(p.sites[i], p.box_side));
+        for (std::size_t j = i + 1; j < p.sites.size(); ++j) {
+            if (!near(p.sites[i], p.sites[j], o.gap)) continue;
+            INFO("sites " << i << " and " << j);
+            const Decision<RelativePosition> rp = relative_position(p.sites[i], p.sites[j]);
+            REQUIRE(rp.is_decided());
+            CHECK(rp.value() == RelativePosition::separated);
+            CHECK(at_least_gap_apart(p.sites[i], p.sites[j], o.gap));
+        }
+    }
+}
+
 TEST_CASE("packing: bad options and unreachable fractions are errors", "[packing][generator]") {
     CHECK_THROWS_AS(generate_packing(options(100, Rational(0), Rational(1, 1000))), Error);
     CHECK_THROWS_AS(generate_packing(options(100, Rational(-1, 2), Rational(1, 1000))), Error);
