@@ -183,28 +183,30 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
     """Builds one tile's diagram and returns what it proves about the whole one (global ids)."""
     start, cpu = time.perf_counter(), time.process_time()
     sites = _local_sites(payload)
+    build_cpu = time.process_time()
     try:
         d = _ellvor._build(sites, "ell", None, 0.1)
     except InputError as e:
         return _error_result(e, ids)
+    build_cpu = time.process_time() - build_cpu
     faces = d.faces()
     hidden = d.hidden()
-    circle = d.circle_boxes()
-    if whole:
-        certified = np.ones(len(faces), dtype=bool)
+    if whole:  # every face is the whole graph's: no circle needed
+        certified = owned = np.ones(len(faces), dtype=bool)
         visible_sure = np.ones(len(ids), dtype=bool)
     else:
+        circle = d.circle_boxes()
         certified = _disk_misses_outside(circle, region, everything) & ~_possibly_degenerate(d.face_neighbours(), circle)
         visible_sure = _inside(boxes, region)
+        centers = np.stack([(circle[:, 0] + circle[:, 1]) / 2, (circle[:, 2] + circle[:, 3]) / 2], axis=1)[certified]
+        owned = ((centers[:, 0] >= rect[0]) & (centers[:, 0] < rect[1]) & (centers[:, 1] >= rect[2]) &
+                 (centers[:, 1] < rect[3]))
     visible_sure[hidden[:, 0]] = False
-    kept = faces[certified]
-    centers = np.stack([(circle[:, 0] + circle[:, 1]) / 2, (circle[:, 2] + circle[:, 3]) / 2], axis=1)[certified]
-    owned = ((centers[:, 0] >= rect[0]) & (centers[:, 0] < rect[1]) & (centers[:, 1] >= rect[2]) &
-             (centers[:, 1] < rect[3]))
     out = {
-        "faces": ids[kept], "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
+        "faces": ids[faces[certified]], "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
         "tile_faces": len(faces), "certified": int(certified.sum()), "owned_faces": int(owned.sum()),
-        "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu, "rss_mb": _rss_mb(),
+        "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
+        "build_cpu_seconds": build_cpu, "rss_mb": _rss_mb(),
     }
     if whole:  # the whole set: the single build's own arrays
         out.update(edges=ids[d.edges()], hull=ids[d.hull()])
@@ -218,7 +220,7 @@ def _patches_task(jobs):
         if "error" in r:
             return r
     merged = {key: np.concatenate([r[key] for r in results]) for key in ("faces", "hidden", "visible")}
-    for key in ("tile_faces", "certified", "owned_faces", "seconds", "cpu_seconds"):
+    for key in ("tile_faces", "certified", "owned_faces", "seconds", "cpu_seconds", "build_cpu_seconds"):
         merged[key] = sum(r[key] for r in results)
     merged["rss_mb"] = max(r["rss_mb"] for r in results)
     return merged
@@ -470,9 +472,9 @@ class TiledDiagram:
     computed on first use, as Diagram's; ``sites``, ``points``. (No ridges, trace or remove: build a Diagram
     for those.) ``tiles``: per tile a dict: index (i, j), sites (held), owned (center in the tile),
     halo_sites, halo (its width), tile_faces (of its graph), certified, faces_kept (certified, circle center
-    in the tile), retries (patches built later around its sites, docs/DESIGN.md §8), seconds and
-    cpu_seconds (its tile and patches), rss_mb (its worker's resident memory with the graph built: its
-    peak, near enough). ``stats``: rounds, fallback (False, or why one build of the whole set decided),
+    in the tile), retries (patches built later around its sites, docs/DESIGN.md §8), seconds,
+    cpu_seconds and build_cpu_seconds (its tile and patches; the whole task, the graph's build alone),
+    rss_mb (its worker's resident memory with the graph built: its peak, near enough). ``stats``: rounds, fallback (False, or why one build of the whole set decided),
     hull_candidates, seconds (wall time of the call)."""
 
     def __init__(self, sites, hidden, edges, faces, hull, tiles, stats):
@@ -580,7 +582,8 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         tile = {"index": (0, 0), "sites": n, "owned": n, "halo_sites": 0, "halo": math.inf,
                 "tile_faces": result["tile_faces"], "certified": result["certified"],
                 "faces_kept": result["certified"], "retries": 0, "seconds": result["seconds"],
-                "cpu_seconds": result["cpu_seconds"], "rss_mb": result["rss_mb"]}
+                "cpu_seconds": result["cpu_seconds"], "build_cpu_seconds": result["build_cpu_seconds"],
+                "rss_mb": result["rss_mb"]}
         return TiledDiagram(sites, _sorted_rows(result["hidden"], 2), result["edges"],
                             _sorted_rows(result["faces"], 3), _sorted_rows(result["hull"], 2), [tile],
                             {"rounds": 1, "fallback": reason, "hull_candidates": n,
@@ -596,7 +599,8 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
     spacing = math.sqrt(area / n) if area > 0 else float(max(hi - lo)) / n
     halos = np.full(nx * ny, halo if halo is not None else 4 * spacing + 1e-300)
     tiles = [{"index": divmod(t, ny), "sites": 0, "owned": int((owner == t).sum()), "halo_sites": 0, "halo": 0.0,
-              "tile_faces": 0, "certified": 0, "faces_kept": 0, "retries": -1, "seconds": 0.0, "cpu_seconds": 0.0, "rss_mb": 0.0}
+              "tile_faces": 0, "certified": 0, "faces_kept": 0, "retries": -1, "seconds": 0.0, "cpu_seconds": 0.0,
+              "build_cpu_seconds": 0.0, "rss_mb": 0.0}
              for t in range(nx * ny)]
 
     faces_found, hidden_found, visible_found = [np.zeros((0, 3), np.int64)], [np.zeros((0, 2), np.int64)], []
@@ -616,6 +620,7 @@ def _tiled_build(client, sites, params, nx, ny, halo, start):
         tiles[t]["faces_kept"] += result["owned_faces"]
         tiles[t]["seconds"] += result["seconds"]
         tiles[t]["cpu_seconds"] += result["cpu_seconds"]
+        tiles[t]["build_cpu_seconds"] += result["build_cpu_seconds"]
         tiles[t]["rss_mb"] = max(tiles[t]["rss_mb"], result["rss_mb"])
 
     def submit_hull():

@@ -57,6 +57,7 @@ def test_random_ellipses_every_tiling(client, tiles):
         assert len(d.tiles) == tiles[0] * tiles[1]
         assert sum(t["owned"] for t in d.tiles) == 1500
         assert all(t["sites"] == t["owned"] + t["halo_sites"] and t["halo_sites"] > 0 for t in d.tiles)
+    assert all(0 < t["build_cpu_seconds"] <= t["cpu_seconds"] for t in d.tiles)
 
 
 def test_vertices_are_the_single_builds(client):
