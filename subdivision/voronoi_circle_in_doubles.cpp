@@ -388,10 +388,10 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
         if (auto certified = newton_then_certify(shape, enclosed, r.flipped, r.x, r.length_scale, true))
             return certified;
     // Circles far larger than the sites (three sites nearly on a line): the
-    // models' circles may lead Newton to the clockwise one; the tangent-line
-    // starts of huge_circle_start.hpp lead to the right one.
+    // models' circles may lead Newton to the clockwise one, or not exist; the
+    // tangent-line starts of huge_circle_start.hpp lead to the right one.
     std::optional<DoubleVoronoiCircle> certified;
-    for_each_huge_circle_start(e1, e2, e3, precision::kHugeCircleBits, [&](const VoronoiCircleStart& start) {
+    for_each_huge_circle_start(e1, e2, e3, precision::kHugeCircleBitsInDoubles, [&](const VoronoiCircleStart& start) {
         std::array<double, 6> x;
         for (int i = 0; i < 3; ++i) x[i] = arf_get_d(arb_midref(start.parameter[i].get()), ARF_RND_NEAR);
         x[3] = arf_get_d(arb_midref(start.radius.get()), ARF_RND_NEAR);

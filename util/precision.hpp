@@ -62,6 +62,12 @@ constexpr long kSearchGuardBits = 24;
 // starts do not certify: below it, double guesses converge (a circle 2^10
 // sizes away is conditioned like 2^20, well within doubles).
 constexpr long kHugeCircleBits = 10;
+// The double certificate (subdivision/voronoi_circle_in_doubles.hpp) offers
+// them from 2^kHugeCircleBitsInDoubles sizes on: the circle models of sites in
+// a row (along a packing's walls) may have no Apollonius circle at all, and
+// their hull circles, 10 to 500 sizes away, then had no start in doubles and
+// cost the Arb solver's guesses 10-30 ms each.
+constexpr long kHugeCircleBitsInDoubles = 3;
 
 // The tangent-line starts of huge circles separate the gap g of the third site
 // from 0 at doubling precisions from kHugeCircleFirst to kHugeCircleLast: a g
