@@ -255,3 +255,34 @@ TEST_CASE("doubles: a huge circle of nearly collinear sites, from the tangent-li
     CHECK(meets(circle.in_doubles()->radius, enclose(solver.enclosure().radius)));
     CHECK(meets(circle.in_doubles()->center_x, enclose(solver.enclosure().center_x)));
 }
+
+TEST_CASE("doubles: hull circles of sites in a row along a packing's wall, from the tangent-line starts",
+          "[subdivision][voronoi_circle_in_doubles][packing]") {
+    // Faces of `ellvor generate packing --count 2000 --packing-fraction 0.58
+    // --seed 1`: sites along the box's wall, circles 14 and 190 times the
+    // largest semi-axis away. The circle models of the first triple have no
+    // Apollonius circle; those of the second lead Newton to another root. The
+    // tangent-line starts from 2^3 sizes on certify both, as Arb does.
+    auto q = [](long num, long den) { return Rational(Integer(num), Integer(den)); };
+    const Ellipse a1(q(25110794051L, 34359738368L), q(4599889, 8388608), q(507647, 1048576),
+                     q(9836711759407L, 274877906944L), q(48634812075005L, 1099511627776L));
+    const Ellipse a2(q(74725386171L, 68719476736L), q(5783251, 16777216), q(-900759, 1048576),
+                     q(22467072843067L, 549755813888L), q(24064735880157L, 549755813888L));
+    const Ellipse a3(q(828592707L, 2147483648L), q(146059, 524288), q(872607, 1048576),
+                     q(38435925520643L, 1099511627776L), q(24495072094723L, 549755813888L));
+    const Ellipse b2(q(10350545205L, 34359738368L), q(1445405, 8388608), q(163629, 262144),
+                     q(40627477479465L, 1099511627776L), q(24509465583549L, 549755813888L));
+    const Ellipse b3(q(10500467431L, 17179869184L), q(1026539, 4194304), q(135973, 1048576),
+                     q(42854867327667L, 1099511627776L), q(24372593497143L, 549755813888L));
+    for (const auto& [e1, e2, e3, radius] : {std::tuple{&a1, &a2, &a3, 95.2}, {&a2, &b2, &b3, 6.87}}) {
+        INFO("radius " << radius);
+        const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(*e1, *e2, *e3);
+        REQUIRE(d.has_value());
+        CHECK(d->from_tangent_line);
+        CHECK(d->radius.lo > radius * (1 - 1e-3));
+        CHECK(d->radius.hi < radius * (1 + 1e-3));
+        Tally tally;
+        compare_with_arb(*e1, *e2, *e3, tally);  // holds Arb's circle
+        CHECK(tally.by_doubles == 1);
+    }
+}
