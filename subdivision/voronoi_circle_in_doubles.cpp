@@ -22,6 +22,23 @@ double constant(double c, double) { return c; }
 Interval constant(double c, const Interval&) { return Interval(c); }
 double root(double x) { return std::sqrt(x); }
 Interval root(const Interval& x) { return x.sqrt(); }
+// x^2, 2 x, -x and 1/x: in intervals the square is nonnegative, doubling and
+// negation are exact (below the overflow range), and a positive divisor needs
+// two quotients, not four and their ordering.
+double square(double x) { return x * x; }
+Interval square(const Interval& x) { return x.square(); }
+double twice(double x) { return 2 * x; }
+Interval twice(const Interval& x) {
+    if (std::fabs(x.lo) < 1e300 && std::fabs(x.hi) < 1e300) return {2 * x.lo, 2 * x.hi};
+    return Interval(2.0) * x;
+}
+double negated_if(bool negate, double x) { return negate ? -x : x; }
+Interval negated_if(bool negate, const Interval& x) { return negate ? -x : x; }
+double reciprocal(double x) { return 1 / x; }
+Interval reciprocal(const Interval& x) {
+    if (x.lo > 0) return {Interval::down(1 / x.hi), Interval::up(1 / x.lo)};
+    return Interval(1.0) / x;
+}
 
 // An ellipse: semi-axes, rotation (cos, sin) and center.
 template <class N>
@@ -55,12 +72,11 @@ struct BoundaryPoint {
 // g/|g| has derivative (g' - nu (nu . g'))/|g|.
 template <class N>
 BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool with_derivatives) {
-    const N one = constant(1, t), t2 = t * t;
-    const N inverse_den = one / (one + t2);
-    const N sign = constant(flipped ? -1 : 1, t);
-    const N c = sign * (one - t2) * inverse_den, s = sign * (constant(2, t) * t) * inverse_den;
+    const N one = constant(1, t), t2 = square(t);
+    const N inverse_den = reciprocal(one + t2);
+    const N c = negated_if(flipped, (one - t2) * inverse_den), s = negated_if(flipped, twice(t) * inverse_den);
     const N gx = k.b * c, gy = k.a * s;
-    const N inverse_norm = one / root(gx * gx + gy * gy);
+    const N inverse_norm = reciprocal(root(square(gx) + square(gy)));
     const N mx = gx * inverse_norm, my = gy * inverse_norm;  // the unit normal in the ellipse's frame
     const N lx = k.a * c, ly = k.b * s;
     BoundaryPoint<N> p;
@@ -69,7 +85,7 @@ BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool w
     p.nx = k.cos * mx - k.sin * my;
     p.ny = k.sin * mx + k.cos * my;
     if (!with_derivatives) return p;
-    const N w = constant(2, t) * inverse_den;
+    const N w = twice(inverse_den);
     const N dlx = -(k.a * s) * w, dly = (k.b * c) * w, dgx = -(k.b * s) * w, dgy = (k.a * c) * w;
     const N projection = mx * dgx + my * dgy;
     const N dmx = (dgx - mx * projection) * inverse_norm, dmy = (dgy - my * projection) * inverse_norm;

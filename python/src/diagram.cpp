@@ -5,11 +5,10 @@
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/graph_json.hpp"
+#include "output/voronoi_circle_box.hpp"
 #include "output/voronoi_ridges.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-#include "subdivision/voronoi_circle_in_doubles.hpp"
-#include "util/interval.hpp"
 #include "util/error.hpp"
 
 #include <pybind11/stl.h>
@@ -292,10 +291,10 @@ std::string json(Diagram& d) {
 }
 
 // Per face (in `faces` order) a certified box of its Voronoi circle:
-// [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles. The
-// double-interval certificate first (docs/DESIGN.md §4.1a: cheap), else the
-// Arb solver at 53 bits (the JSON's vertex value and its proven error). The
-// tiled build (python/ellvor/distributed.py) decides its seams with them.
+// [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles, tight
+// (output/voronoi_circle_box.hpp: the double certificate's box, else Arb's at
+// 53 bits). The tiled build (python/ellvor/distributed.py) decides its seams
+// with them.
 py::array_t<double> circle_boxes(Diagram& d) {
     const auto faces = locked(d, [](Diagram& g) { return g.faces; });
     auto out = new_array<double>({static_cast<py::ssize_t>(faces.size()), 6});
@@ -304,16 +303,8 @@ py::array_t<double> circle_boxes(Diagram& d) {
         py::gil_scoped_release release;  // the sites never change: no lock needed
         const std::vector<Ellipse>& s = *d.sites;
         for (std::size_t k = 0; k < faces.size(); ++k) {
-            const auto& f = faces[k];
-            Interval x, y, r;
-            if (const auto c = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]])) {
-                x = c->center_x, y = c->center_y, r = c->radius;
-            } else {
-                const VoronoiVertexValue v = voronoi_vertex_value(s, f);
-                const Interval e(-v.error, v.error);
-                x = Interval(v.x) + e, y = Interval(v.y) + e, r = Interval(v.radius) + e;
-            }
-            const double box[6] = {x.lo, x.hi, y.lo, y.hi, r.lo, r.hi};
+            const VoronoiCircleBox c = voronoi_circle_box(s, faces[k]);
+            const double box[6] = {c.center_x.lo, c.center_x.hi, c.center_y.lo, c.center_y.hi, c.radius.lo, c.radius.hi};
             std::copy(box, box + 6, w + 6 * k);
         }
     }
