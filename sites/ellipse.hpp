@@ -44,7 +44,8 @@ public:
     const Rational& xc() const { return xc_; }
     const Rational& yc() const { return yc_; }
     Point center() const { return {xc_, yc_}; }
-    bool is_circle() const { return a_ == b_; }
+    // a == b, compared once: every predicate's cascade asks first.
+    bool is_circle() const { return circle_; }
     // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
     const Rational& cos_rotation() const { return cos_; }
     const Rational& sin_rotation() const { return sin_; }
@@ -108,6 +109,7 @@ private:
     Rational a_, b_, w_, xc_, yc_;
     Rational cos_, sin_;
     Enclosure enclosure_;
+    bool circle_ = false;
     // Written once, by whichever thread asks first (atomic shared_ptr access:
     // a lost race only computes the same values twice).
     mutable std::shared_ptr<const Polynomials> polynomials_;
