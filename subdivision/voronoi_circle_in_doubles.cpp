@@ -70,21 +70,28 @@ struct BoundaryPoint {
 // of length at least min(a, b). Derivatives: d/dt = w d/dtheta with
 // w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos); the unit normal
 // g/|g| has derivative (g' - nu (nu . g'))/|g|.
+// What a caller needs: Newton the point, the normal and their derivatives;
+// F(m) the point and the normal; Krawczyk's box the normal and the
+// derivatives only (J(X); F over the box is never read).
+enum class Parts { point, derivatives, all };
+
 template <class N>
-BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool with_derivatives) {
+BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts parts) {
     const N one = constant(1, t), t2 = square(t);
     const N inverse_den = reciprocal(one + t2);
     const N c = negated_if(flipped, (one - t2) * inverse_den), s = negated_if(flipped, twice(t) * inverse_den);
     const N gx = k.b * c, gy = k.a * s;
     const N inverse_norm = reciprocal(root(square(gx) + square(gy)));
     const N mx = gx * inverse_norm, my = gy * inverse_norm;  // the unit normal in the ellipse's frame
-    const N lx = k.a * c, ly = k.b * s;
     BoundaryPoint<N> p;
-    p.px = k.xc + (k.cos * lx - k.sin * ly);
-    p.py = k.yc + (k.sin * lx + k.cos * ly);
+    if (parts != Parts::derivatives) {
+        const N lx = k.a * c, ly = k.b * s;
+        p.px = k.xc + (k.cos * lx - k.sin * ly);
+        p.py = k.yc + (k.sin * lx + k.cos * ly);
+    }
     p.nx = k.cos * mx - k.sin * my;
     p.ny = k.sin * mx + k.cos * my;
-    if (!with_derivatives) return p;
+    if (parts == Parts::point) return p;
     const N w = twice(inverse_den);
     const N dlx = -(k.a * s) * w, dly = (k.b * c) * w, dgx = -(k.b * s) * w, dgy = (k.a * c) * w;
     const N projection = mx * dgx + my * dgy;
@@ -96,17 +103,20 @@ BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool w
     return p;
 }
 
-// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y), and J
-// when `J` is given; `at` receives the three boundary points.
+// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y) when `F`
+// is given, and J when `J` is; `at` receives the three boundary points (their
+// normals, and the points with F).
 template <class N>
 void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 3>& flipped,
-                       const std::array<N, 6>& x, std::array<N, 6>& F, std::array<std::array<N, 6>, 6>* J,
+                       const std::array<N, 6>& x, std::array<N, 6>* F, std::array<std::array<N, 6>, 6>* J,
                        std::array<BoundaryPoint<N>, 3>& at) {
     const N& rho = x[3];
+    const Parts parts = !J ? Parts::point : F ? Parts::all : Parts::derivatives;
     for (int i = 0; i < 3; ++i) {
-        const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], J != nullptr);
-        F[2 * i] = p.px + rho * p.nx - x[4];
-        F[2 * i + 1] = p.py + rho * p.ny - x[5];
+        const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], parts);
+        if (!F) continue;
+        (*F)[2 * i] = p.px + rho * p.nx - x[4];
+        (*F)[2 * i + 1] = p.py + rho * p.ny - x[5];
     }
     if (!J) return;
     const N zero = constant(0, x[0]), minus_one = constant(-1, x[0]);
@@ -163,7 +173,7 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
     std::array<Interval, 6> point, F;
     std::array<BoundaryPoint<Interval>, 3> at;
     for (int j = 0; j < 6; ++j) point[j] = Interval(m[j]);
-    tritangent_system<Interval>(k, flipped, point, F, nullptr, at);
+    tritangent_system<Interval>(k, flipped, point, &F, nullptr, at);
     std::array<Interval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
@@ -182,7 +192,7 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
             X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
             reach_of_box[j] = Interval::up(std::fmax(m[j] - X[j].lo, X[j].hi - m[j]));
         }
-        tritangent_system(k, flipped, X, F, &J, at);
+        tritangent_system<Interval>(k, flipped, X, nullptr, &J, at);
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
@@ -287,7 +297,7 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
         for (int i = 0; i < 3; ++i)
             if (std::fabs(trial[i]) > 1) trial[i] = -1 / trial[i], trial_flipped[i] = !trial_flipped[i];
         std::array<BoundaryPoint<double>, 3> at;
-        tritangent_system<double>(shape, trial_flipped, trial, trial_F, nullptr, at);
+        tritangent_system<double>(shape, trial_flipped, trial, &trial_F, nullptr, at);
         double trial_residual = 0;
         for (double f : trial_F) trial_residual += f * f;
         if (trial_residual < residual) break;
@@ -321,7 +331,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     for (int step = 0; step < kSteps && !converged; ++step) {
         for (int i = 0; i < 3; ++i)
             if (std::fabs(x[i]) > 1) x[i] = -1 / x[i], flipped[i] = !flipped[i];
-        tritangent_system(shape, flipped, x, F, &J, at);
+        tritangent_system<double>(shape, flipped, x, &F, &J, at);
         const TritangentNewtonSolver newton(J);
         if (!newton.usable()) return std::nullopt;
         const Vector6 correction = newton.solve(F);
