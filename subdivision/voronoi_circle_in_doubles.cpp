@@ -132,7 +132,8 @@ void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 
     }
 }
 
-double magnitude(const Interval& x) { return std::fmax(std::fabs(x.lo), std::fabs(x.hi)); }
+// Interval::max is std::fmax inlined (the library call was 1% of a build).
+double magnitude(const Interval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
 // Rounded up: |a| + |b| and c * d for nonnegative c, d.
 double add_up(double a, double b) { return Interval::up(a + b); }
@@ -190,7 +191,7 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
         std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding outward widened X beyond m +- r
         for (int j = 0; j < 6; ++j) {
             X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
-            reach_of_box[j] = Interval::up(std::fmax(m[j] - X[j].lo, X[j].hi - m[j]));
+            reach_of_box[j] = Interval::up(Interval::max(m[j] - X[j].lo, X[j].hi - m[j]));
         }
         tritangent_system<Interval>(k, flipped, X, nullptr, &J, at);
         bool inside = true;
@@ -213,13 +214,13 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
             K[i] = Interval(m[i]) - correction[i] + Interval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
             if (!(K[i].lo > X[i].lo && K[i].hi < X[i].hi)) inside = false;
-            reach[i] = std::fmax(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
+            reach[i] = Interval::max(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
         }
         if (inside) {
             if (!signed_distances(k, K[3]) || !counterclockwise(at)) return std::nullopt;
             return K;
         }
-        for (int i = 0; i < 6; ++i) r[i] = 2 * std::fmax(r[i], reach[i]);
+        for (int i = 0; i < 6; ++i) r[i] = 2 * Interval::max(r[i], reach[i]);
     }
     return std::nullopt;
 }
@@ -341,7 +342,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         for (int i = 0; i < 6; ++i) {
             x[i] -= fraction * correction[i];
             const double unit = i < 3 ? 1.0 : length_scale;
-            relative = std::fmax(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
+            relative = Interval::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
         converged = relative <= kConverged || (relative <= kStalled && relative > previous / 4);
         previous = relative;
