@@ -62,7 +62,7 @@ bool some_site_may_be_covered(const Ellipse& e1, const Ellipse& e2, const Ellips
 namespace {
 
 // voronoi_circle_count; with `whether_both`, only whether the count is
-// `both` (two of the three kappa2 signs conflicts) is asked: two signs
+// `both` (exactly two of the three kappa2 signs conflicts) is asked: two signs
 // without a conflict settle that (at most one conflict), and nullopt says
 // "not both" then, with the provenance in `early`.
 std::optional<Decision<VoronoiCircles>> count_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
