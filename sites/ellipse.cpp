@@ -43,7 +43,6 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
     : a_(std::move(a)), b_(std::move(b)), w_(std::move(w)), xc_(std::move(xc)), yc_(std::move(yc)) {
     if (a_.sign() <= 0) throw Error("semi-axis a must be positive, got " + a_.str());
     if (b_.sign() <= 0) throw Error("semi-axis b must be positive, got " + b_.str());
-    circle_ = a_ == b_;
     const Rational one(1), two(2);
     const Rational w2 = w_ * w_;
     cos_ = (one - w2) / (one + w2);
