@@ -25,6 +25,7 @@ struct Circle {
 // site is a circle.
 std::optional<Circle<0>> exact_circle(const Ellipse& e) {
     double x, y, r, b;
+    if (!e.is_circle()) return std::nullopt;  // cheaper than the conversions
     if (!exact_double(e.xc(), x) || !exact_double(e.yc(), y) || !exact_double(e.a(), r) || !exact_double(e.b(), b) ||
         b != r)
         return std::nullopt;

@@ -24,12 +24,12 @@ struct ShadowRegion {
 };
 
 Decision<ShadowRegion> shadow_region(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
-    const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, q);
-    if (*count != VoronoiCircles::both) return count.with(ShadowRegion{});
+    const Decision<bool> both = has_both_voronoi_circles(e1, e2, q);
+    if (!*both) return both.with(ShadowRegion{});
     // Both circles exist: the region holds both ends of the bisector or
     // neither; it holds the end at (E2, E1, inf) iff Q conflicts with it.
     const Decision<Sign> end = infinite_vertex_conflict(e2, e1, q);
-    Decision<ShadowRegion> shadow = count.with(ShadowRegion{true, *end == Sign::positive});
+    Decision<ShadowRegion> shadow = both.with(ShadowRegion{true, *end == Sign::positive});
     shadow.depends_on(end);
     return shadow;
 }

@@ -34,6 +34,18 @@ int sign_beyond(const Ellipse::Enclosure& kq, const Ellipse::Enclosure& k1, cons
     return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
 }
 
+// sign_beyond for a box that holds the UNIT normal n (ArrivalNormalBox's):
+// there h(n) = n.C + rho(n) with rho(n) between the inscribed and the
+// circumscribed radius, and for small sites far apart (most calls) that
+// bound decides in a third of the operations. 0 when it does not.
+int sign_beyond_by_disks(const Ellipse::Enclosure& kq, const Ellipse::Enclosure& k1, const Interval& nx,
+                         const Interval& ny) {
+    const Interval radius_q(std::fmin(kq.a.lo, kq.b.lo), std::fmax(kq.a.hi, kq.b.hi));
+    const Interval radius_1(std::fmin(k1.a.lo, k1.b.lo), std::fmax(k1.a.hi, k1.b.hi));
+    const Interval beyond = nx * (kq.xc - k1.xc) + ny * (kq.yc - k1.yc) + (radius_q - radius_1);
+    return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
+}
+
 int filter_stage(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
     const Ellipse::Enclosure& kq = q.enclosure();
     if (!(kq.a.finite() && kq.b.finite() && kq.xc.finite() && kq.yc.finite())) return 0;
@@ -131,6 +143,7 @@ int infinite_vertex_conflict_in_normal_box(const Ellipse& e1, const Ellipse& e2,
     // Q far from L is decided on the first box; each contraction costs about
     // as much as a test, and two take most of the rest.
     for (int contractions = 0;; ++contractions) {
+        if (int s = sign_beyond_by_disks(kq, e1.enclosure(), box->nx(), box->ny())) return s;
         if (int s = sign_beyond(kq, e1.enclosure(), box->nx(), box->ny())) return s;
         if (contractions == kNormalBoxContractions || !box->contract()) return 0;
     }

@@ -7,6 +7,7 @@
 #include "predicates/relative_position.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
+#include <optional>
 #include <tuple>
 
 namespace ellvor {
@@ -58,7 +59,14 @@ bool some_site_may_be_covered(const Ellipse& e1, const Ellipse& e2, const Ellips
 
 }  // namespace
 
-Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+namespace {
+
+// voronoi_circle_count; with `whether_both`, only whether the count is
+// `both` (exactly two of the three kappa2 signs conflicts) is asked: two signs
+// without a conflict settle that (at most one conflict), and nullopt says
+// "not both" then, with the provenance in `early`.
+std::optional<Decision<VoronoiCircles>> count_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                                      bool whether_both, Decision<bool>* early) {
     // Three circles in doubles first: a count it proves also proves that no
     // site contains another.
     const Decision<VoronoiCircles> fast = circle_voronoi_circle_count_semi_static(e1, e2, e3);
@@ -71,11 +79,16 @@ Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& 
     // other two, taken in the cyclic order of the triple: for three points in
     // counter-clockwise order all three do.
     Decision<VoronoiCircles> count = separated.with(VoronoiCircles::none);
-    int conflicts = 0;
+    int conflicts = 0, asked = 0;
     for (auto [p, q, r] : {std::tuple{&e1, &e2, &e3}, {&e2, &e3, &e1}, {&e3, &e1, &e2}}) {
+        if (whether_both && asked == 2 && conflicts == 0) {
+            *early = count.with(false);
+            return std::nullopt;
+        }
         const Decision<Sign> d = infinite_vertex_conflict(*p, *q, *r);
         count.depends_on(d);
         conflicts += *d == Sign::negative;
+        ++asked;
     }
     constexpr VoronoiCircles by_conflicts[] = {VoronoiCircles::cw_only, VoronoiCircles::none, VoronoiCircles::both,
                                                VoronoiCircles::ccw_only};
@@ -88,6 +101,19 @@ Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& 
         return count.with(solver.certify() ? VoronoiCircles::both : VoronoiCircles::none);
     }
     return count.with(by_conflicts[conflicts]);
+}
+
+}  // namespace
+
+Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    return *count_circles(e1, e2, e3, false, nullptr);
+}
+
+Decision<bool> has_both_voronoi_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    Decision<bool> early = Decision<bool>::decided(false, Stage::filter);
+    const std::optional<Decision<VoronoiCircles>> count = count_circles(e1, e2, e3, true, &early);
+    if (!count) return early;
+    return count->with(**count == VoronoiCircles::both);
 }
 
 }  // namespace ellvor

@@ -20,6 +20,11 @@ namespace ellvor {
 // "none". The stage is the latest any of them needed.
 Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
+// Whether voronoi_circle_count is `both`, at less cost: the count's first
+// two kappa2 signs without a conflict already exclude it (for small sites
+// apart, the three signs mostly agree). Same stages.
+Decision<bool> has_both_voronoi_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+
 // Whether no site of the three lies inside another (the premise of a Voronoi
 // circle; a nested pair has none): every pair separated, externally tangent,
 // or crossing.

@@ -44,7 +44,12 @@ public:
     const Rational& xc() const { return xc_; }
     const Rational& yc() const { return yc_; }
     Point center() const { return {xc_, yc_}; }
-    bool is_circle() const { return a_ == b_; }
+    // a == b. Every predicate's cascade asks first: the enclosures (equal
+    // for equal rationals) settle almost every ellipse without comparing
+    // the rationals.
+    bool is_circle() const {
+        return enclosure_.a.lo == enclosure_.b.lo && enclosure_.a.hi == enclosure_.b.hi && a_ == b_;
+    }
     // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
     const Rational& cos_rotation() const { return cos_; }
     const Rational& sin_rotation() const { return sin_; }

@@ -22,6 +22,23 @@ double constant(double c, double) { return c; }
 Interval constant(double c, const Interval&) { return Interval(c); }
 double root(double x) { return std::sqrt(x); }
 Interval root(const Interval& x) { return x.sqrt(); }
+// x^2, 2 x, -x and 1/x: in intervals the square is nonnegative, doubling and
+// negation are exact (below the overflow range), and a positive divisor needs
+// two quotients, not four and their ordering.
+double square(double x) { return x * x; }
+Interval square(const Interval& x) { return x.square(); }
+double twice(double x) { return 2 * x; }
+Interval twice(const Interval& x) {
+    if (std::fabs(x.lo) < 1e300 && std::fabs(x.hi) < 1e300) return {2 * x.lo, 2 * x.hi};
+    return Interval(2.0) * x;
+}
+double negated_if(bool negate, double x) { return negate ? -x : x; }
+Interval negated_if(bool negate, const Interval& x) { return negate ? -x : x; }
+double reciprocal(double x) { return 1 / x; }
+Interval reciprocal(const Interval& x) {
+    if (x.lo > 0) return {Interval::down(1 / x.hi), Interval::up(1 / x.lo)};
+    return Interval(1.0) / x;
+}
 
 // An ellipse: semi-axes, rotation (cos, sin) and center.
 template <class N>
@@ -53,23 +70,29 @@ struct BoundaryPoint {
 // of length at least min(a, b). Derivatives: d/dt = w d/dtheta with
 // w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos); the unit normal
 // g/|g| has derivative (g' - nu (nu . g'))/|g|.
+// What a caller needs: Newton the point, the normal and their derivatives;
+// F(m) the point and the normal; Krawczyk's box the normal and the
+// derivatives only (J(X); F over the box is never read).
+enum class Parts { point, derivatives, all };
+
 template <class N>
-BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool with_derivatives) {
-    const N one = constant(1, t), t2 = t * t;
-    const N inverse_den = one / (one + t2);
-    const N sign = constant(flipped ? -1 : 1, t);
-    const N c = sign * (one - t2) * inverse_den, s = sign * (constant(2, t) * t) * inverse_den;
+BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts parts) {
+    const N one = constant(1, t), t2 = square(t);
+    const N inverse_den = reciprocal(one + t2);
+    const N c = negated_if(flipped, (one - t2) * inverse_den), s = negated_if(flipped, twice(t) * inverse_den);
     const N gx = k.b * c, gy = k.a * s;
-    const N inverse_norm = one / root(gx * gx + gy * gy);
+    const N inverse_norm = reciprocal(root(square(gx) + square(gy)));
     const N mx = gx * inverse_norm, my = gy * inverse_norm;  // the unit normal in the ellipse's frame
-    const N lx = k.a * c, ly = k.b * s;
     BoundaryPoint<N> p;
-    p.px = k.xc + (k.cos * lx - k.sin * ly);
-    p.py = k.yc + (k.sin * lx + k.cos * ly);
+    if (parts != Parts::derivatives) {
+        const N lx = k.a * c, ly = k.b * s;
+        p.px = k.xc + (k.cos * lx - k.sin * ly);
+        p.py = k.yc + (k.sin * lx + k.cos * ly);
+    }
     p.nx = k.cos * mx - k.sin * my;
     p.ny = k.sin * mx + k.cos * my;
-    if (!with_derivatives) return p;
-    const N w = constant(2, t) * inverse_den;
+    if (parts == Parts::point) return p;
+    const N w = twice(inverse_den);
     const N dlx = -(k.a * s) * w, dly = (k.b * c) * w, dgx = -(k.b * s) * w, dgy = (k.a * c) * w;
     const N projection = mx * dgx + my * dgy;
     const N dmx = (dgx - mx * projection) * inverse_norm, dmy = (dgy - my * projection) * inverse_norm;
@@ -80,17 +103,20 @@ BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, bool w
     return p;
 }
 
-// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y), and J
-// when `J` is given; `at` receives the three boundary points.
+// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y) when `F`
+// is given, and J when `J` is; `at` receives the three boundary points (their
+// normals, and the points with F).
 template <class N>
 void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 3>& flipped,
-                       const std::array<N, 6>& x, std::array<N, 6>& F, std::array<std::array<N, 6>, 6>* J,
+                       const std::array<N, 6>& x, std::array<N, 6>* F, std::array<std::array<N, 6>, 6>* J,
                        std::array<BoundaryPoint<N>, 3>& at) {
     const N& rho = x[3];
+    const Parts parts = !J ? Parts::point : F ? Parts::all : Parts::derivatives;
     for (int i = 0; i < 3; ++i) {
-        const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], J != nullptr);
-        F[2 * i] = p.px + rho * p.nx - x[4];
-        F[2 * i + 1] = p.py + rho * p.ny - x[5];
+        const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], parts);
+        if (!F) continue;
+        (*F)[2 * i] = p.px + rho * p.nx - x[4];
+        (*F)[2 * i + 1] = p.py + rho * p.ny - x[5];
     }
     if (!J) return;
     const N zero = constant(0, x[0]), minus_one = constant(-1, x[0]);
@@ -106,7 +132,8 @@ void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 
     }
 }
 
-double magnitude(const Interval& x) { return std::fmax(std::fabs(x.lo), std::fabs(x.hi)); }
+// Interval::max is std::fmax inlined (the library call was 1% of a build).
+double magnitude(const Interval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
 // Rounded up: |a| + |b| and c * d for nonnegative c, d.
 double add_up(double a, double b) { return Interval::up(a + b); }
@@ -147,7 +174,7 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
     std::array<Interval, 6> point, F;
     std::array<BoundaryPoint<Interval>, 3> at;
     for (int j = 0; j < 6; ++j) point[j] = Interval(m[j]);
-    tritangent_system<Interval>(k, flipped, point, F, nullptr, at);
+    tritangent_system<Interval>(k, flipped, point, &F, nullptr, at);
     std::array<Interval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
@@ -164,9 +191,9 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
         std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding outward widened X beyond m +- r
         for (int j = 0; j < 6; ++j) {
             X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
-            reach_of_box[j] = Interval::up(std::fmax(m[j] - X[j].lo, X[j].hi - m[j]));
+            reach_of_box[j] = Interval::up(Interval::max(m[j] - X[j].lo, X[j].hi - m[j]));
         }
-        tritangent_system(k, flipped, X, F, &J, at);
+        tritangent_system<Interval>(k, flipped, X, nullptr, &J, at);
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
@@ -187,13 +214,13 @@ std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>
             K[i] = Interval(m[i]) - correction[i] + Interval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
             if (!(K[i].lo > X[i].lo && K[i].hi < X[i].hi)) inside = false;
-            reach[i] = std::fmax(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
+            reach[i] = Interval::max(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
         }
         if (inside) {
             if (!signed_distances(k, K[3]) || !counterclockwise(at)) return std::nullopt;
             return K;
         }
-        for (int i = 0; i < 6; ++i) r[i] = 2 * std::fmax(r[i], reach[i]);
+        for (int i = 0; i < 6; ++i) r[i] = 2 * Interval::max(r[i], reach[i]);
     }
     return std::nullopt;
 }
@@ -271,7 +298,7 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
         for (int i = 0; i < 3; ++i)
             if (std::fabs(trial[i]) > 1) trial[i] = -1 / trial[i], trial_flipped[i] = !trial_flipped[i];
         std::array<BoundaryPoint<double>, 3> at;
-        tritangent_system<double>(shape, trial_flipped, trial, trial_F, nullptr, at);
+        tritangent_system<double>(shape, trial_flipped, trial, &trial_F, nullptr, at);
         double trial_residual = 0;
         for (double f : trial_F) trial_residual += f * f;
         if (trial_residual < residual) break;
@@ -305,7 +332,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     for (int step = 0; step < kSteps && !converged; ++step) {
         for (int i = 0; i < 3; ++i)
             if (std::fabs(x[i]) > 1) x[i] = -1 / x[i], flipped[i] = !flipped[i];
-        tritangent_system(shape, flipped, x, F, &J, at);
+        tritangent_system<double>(shape, flipped, x, &F, &J, at);
         const TritangentNewtonSolver newton(J);
         if (!newton.usable()) return std::nullopt;
         const Vector6 correction = newton.solve(F);
@@ -315,7 +342,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         for (int i = 0; i < 6; ++i) {
             x[i] -= fraction * correction[i];
             const double unit = i < 3 ? 1.0 : length_scale;
-            relative = std::fmax(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
+            relative = Interval::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
         converged = relative <= kConverged || (relative <= kStalled && relative > previous / 4);
         previous = relative;

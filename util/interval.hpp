@@ -19,15 +19,21 @@ struct Interval {
     double lo = 0, hi = 0;
 
     // The next double below / above x (what std::nextafter does, inlined:
-    // stepping the IEEE bit pattern). Infinities and NaN pass through.
+    // stepping the IEEE bit pattern). +infinity and NaN pass through; -inf
+    // steps to the most negative double. Branch-free but for that test (it
+    // was a third of an ellipse build's instructions): -0 becomes +0 (x +
+    // 0.0), whose next double is the least subnormal; then the pattern,
+    // read as a signed integer, steps by +1 when it is positive and by -1
+    // (toward zero) when negative.
     static double up(double x) {
         if (!(x < std::numeric_limits<double>::infinity())) return x;
-        if (x == 0) return std::numeric_limits<double>::denorm_min();
-        std::uint64_t bits;
-        std::memcpy(&bits, &x, sizeof bits);
-        bits += x > 0 ? 1 : -1;
-        std::memcpy(&x, &bits, sizeof bits);
-        return x;
+        const double y = x + 0.0;
+        std::int64_t bits;
+        std::memcpy(&bits, &y, sizeof bits);
+        bits += (bits >> 63) | 1;
+        double z;
+        std::memcpy(&z, &bits, sizeof bits);
+        return z;
     }
     static double down(double x) { return -up(-x); }
     // std::fmin / std::fmax (a NaN operand yields the other one), inlined:

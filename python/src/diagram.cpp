@@ -5,11 +5,10 @@
 #include "graph/delaunay_graph.hpp"
 #include "output/bisector_trace.hpp"
 #include "output/graph_json.hpp"
+#include "output/voronoi_circle_box.hpp"
 #include "output/voronoi_ridges.hpp"
 #include "traits/ellipse_delaunay_traits.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
-#include "subdivision/voronoi_circle_in_doubles.hpp"
-#include "util/interval.hpp"
 #include "util/error.hpp"
 
 #include <pybind11/stl.h>
@@ -295,11 +294,11 @@ std::string json(Diagram& d) {
 }
 
 // Per face (in `faces` order) a certified box of its Voronoi circle:
-// [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles. The
-// double-interval certificate first (docs/DESIGN.md §4.1a: cheap; the one the
-// build made is read from the traits' circle cache), else the Arb solver at
-// 53 bits (the JSON's vertex value and its proven error). The tiled build
-// (python/ellvor/distributed.py) decides its seams with them.
+// [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles, tight
+// (output/voronoi_circle_box.hpp: the double certificate's box, else Arb's at
+// 53 bits). The double certificate the build made is read from the traits'
+// circle cache. The tiled build (python/ellvor/distributed.py) decides its
+// seams with them.
 py::array_t<double> circle_boxes(Diagram& d) {
     std::vector<double> boxes;
     locked(d, [&](Diagram& g) {  // the cache is the graph's: under its lock
@@ -307,22 +306,8 @@ py::array_t<double> circle_boxes(Diagram& d) {
         boxes.reserve(6 * g.faces.size());
         for (const auto& f : g.faces) {
             VoronoiCircle* cached = g.traits->cached_circle(f[0], f[1], f[2]);
-            std::optional<DoubleVoronoiCircle> fresh;
-            const DoubleVoronoiCircle* c = nullptr;
-            if (cached) {
-                c = cached->in_doubles();
-            } else if ((fresh = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]]))) {
-                c = &*fresh;
-            }
-            Interval x, y, r;
-            if (c) {
-                x = c->center_x, y = c->center_y, r = c->radius;
-            } else {
-                const VoronoiVertexValue v = voronoi_vertex_value(s, f);
-                const Interval e(-v.error, v.error);
-                x = Interval(v.x) + e, y = Interval(v.y) + e, r = Interval(v.radius) + e;
-            }
-            boxes.insert(boxes.end(), {x.lo, x.hi, y.lo, y.hi, r.lo, r.hi});
+            const VoronoiCircleBox c = cached ? voronoi_circle_box(s, f, cached->in_doubles()) : voronoi_circle_box(s, f);
+            boxes.insert(boxes.end(), {c.center_x.lo, c.center_x.hi, c.center_y.lo, c.center_y.hi, c.radius.lo, c.radius.hi});
         }
     });
     auto out = new_array<double>({static_cast<py::ssize_t>(boxes.size() / 6), 6});

@@ -3,6 +3,8 @@
 // (circle_oracles.hpp) and hand cases, CGAL's collinear three-site tests
 // among them.
 #include "predicates/voronoi_circle_count.hpp"
+#include "predicates/infinite_vertex_conflict.hpp"
+#include "predicates/relative_position.hpp"
 #include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
@@ -98,4 +100,39 @@ TEST_CASE("voronoi circle count on 500 random disjoint circle triples agrees wit
     }
     INFO("none " << seen[0] << " ccw " << seen[1] << " cw " << seen[2] << " both " << seen[3]);
     for (int k = 0; k < 4; ++k) CHECK(seen[k] > 5);
+}
+
+TEST_CASE("has_both_voronoi_circles agrees with the count on random ellipse triples, early exits included",
+          "[predicates][voronoi_circle_count]") {
+    // Sites of very different sizes (a big one and two small ones) give
+    // `both`; small ones apart mostly give none of the three conflicts, where
+    // two signs settle it.
+    Rng rng(20261127);
+    auto q = [&](long lo, long hi, long den) { return Rational(std::uniform_int_distribution<long>(lo, hi)(rng), den); };
+    int both = 0, early = 0, triples = 0;
+    while (triples < 400) {
+        std::vector<Ellipse> e;
+        for (int i = 0; i < 3; ++i) {
+            const long size = i == 0 && triples % 2 ? 200 : 20;
+            e.emplace_back(q(5, size, 10), q(5, size, 10), q(-300, 300, 97), q(-600, 600, 10), q(-600, 600, 10));
+        }
+        bool apart = true;
+        for (int i = 0; i < 3; ++i) apart = apart && *relative_position(e[i], e[(i + 1) % 3]) == RelativePosition::separated;
+        if (!apart) continue;
+        ++triples;
+        for (int swap = 0; swap < 2; ++swap) {
+            const Ellipse &e1 = e[0], &e2 = swap ? e[2] : e[1], &e3 = swap ? e[1] : e[2];
+            INFO(oracle::ell({&e1, &e2, &e3}));
+            const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, e3);
+            const Decision<bool> has_both = has_both_voronoi_circles(e1, e2, e3);
+            REQUIRE(has_both.is_decided());
+            CHECK(*has_both == (*count == VoronoiCircles::both));
+            CHECK(static_cast<int>(has_both.stage) <= static_cast<int>(count.stage));  // fewer signs: no later stage
+            both += *has_both;
+            early += *infinite_vertex_conflict(e1, e2, e3) == Sign::positive &&
+                     *infinite_vertex_conflict(e2, e3, e1) == Sign::positive;
+        }
+    }
+    CHECK(both >= 20);
+    CHECK(early >= 100);
 }

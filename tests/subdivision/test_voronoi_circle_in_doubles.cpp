@@ -13,6 +13,8 @@
 #include "tests/support/apollonius_oracle.hpp"
 #include "tests/support/random_sites.hpp"
 #include "tests/support/diagnostics.hpp"
+#include "tests/support/huge_hull_triple.hpp"
+#include "predicates/incircle.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -285,4 +287,43 @@ TEST_CASE("doubles: hull circles of sites in a row along a packing's wall, from 
         compare_with_arb(*e1, *e2, *e3, tally);  // holds Arb's circle
         CHECK(tally.by_doubles == 1);
     }
+
+TEST_CASE("doubles: the 3e5-radius hull circle of 10^6 random ellipses certifies and holds Arb's",
+          "[subdivision][voronoi_circle_in_doubles]") {
+    // Before the square, doubling, negation and reciprocal shortcuts of
+    // boundary_at, the one-ulp widening of the general products at rho ~ 3e5
+    // kept Krawczyk's box from contracting: no certificate, Arb ran.
+    const std::vector<Ellipse> s = ellvor::test::huge_hull_triple();
+    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(s[0], s[1], s[2]);
+    REQUIRE(d.has_value());
+    CHECK(d->from_tangent_line);
+    CHECK(d->radius.lo > 3e5);
+    // Arb's enclosure at 80 correct bits lies inside the double box.
+    VoronoiCircleSolver arb(s[0], s[1], s[2]);
+    REQUIRE(arb.refine(80));
+    const VoronoiCircleEnclosure& c = arb.enclosure();
+    auto inside = [](const Ball& b, const Interval& box) {
+        const Interval e = enclose(b);
+        return box.lo <= e.lo && e.hi <= box.hi;
+    };
+    INFO("doubles: x " << show(d->center_x) << " y " << show(d->center_y) << " radius " << show(d->radius));
+    INFO("Arb: x " << c.center_x.str(20) << " y " << c.center_y.str(20) << " radius " << c.radius.str(20));
+    CHECK(inside(c.center_x, d->center_x));
+    CHECK(inside(c.center_y, d->center_y));
+    CHECK(inside(c.radius, d->radius));
+    for (int i = 0; i < 3; ++i)
+        if (d->flipped[i] == c.flipped[i]) CHECK(inside(c.parameter[i], d->parameter[i]));
+    // InCircle decides on the double circle (the filter stage) without
+    // building the Arb solver: a site far right of the disk, one inside it.
+    VoronoiCircle circle(s[0], s[1], s[2]);
+    const Ellipse beyond(Rational(1, 10), Rational(1, 20), 0, 50, 0), within(Rational(1, 10), Rational(1, 20), 0, -300, 63);
+    const Decision<InCircle> no = incircle(s[0], s[1], s[2], beyond, {}, &circle);
+    const Decision<InCircle> yes = incircle(s[0], s[1], s[2], within, {}, &circle);
+    REQUIRE(no.is_decided());
+    REQUIRE(yes.is_decided());
+    CHECK(*no == InCircle::no_conflict);
+    CHECK(*yes == InCircle::conflict);
+    CHECK(no.stage == Stage::filter);
+    CHECK(yes.stage == Stage::filter);
+    CHECK(!circle.has_solver());
 }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -125,6 +126,43 @@ TEST_CASE("cache: erase drops the entry of any rotation and nothing else", "[pre
     CHECK(cache.misses() == misses + 1);
     CHECK(!fresh.circle.has_solver());  // recomputed on demand
     CHECK(cache.size() == 2);
+}
+
+TEST_CASE("cache: 2*10^5 random inserts and erases agree with a std::map, entries never move",
+          "[predicates][cache]") {
+    // Enough to grow the table several times and to run long probe
+    // sequences through erasures (the backward shift).
+    std::mt19937_64 rng(24);
+    std::uniform_int_distribution<SiteId> id(0, 400);
+    const Ellipse &e = site(0);
+    VoronoiCircleCache cache;
+    std::map<std::array<SiteId, 3>, VoronoiCircleCache::Entry*> model;
+    for (int step = 0; step < 200000; ++step) {
+        const SiteId i = id(rng), j = id(rng), k = id(rng);
+        if (i == j || j == k || k == i) continue;
+        std::array<SiteId, 3> key = {i, j, k};
+        std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+        auto known = model.find(key);
+        if (step % 3 == 0) {
+            cache.erase(j, k, i);
+            if (known != model.end()) model.erase(known);
+        } else {
+            const std::size_t misses = cache.misses();
+            VoronoiCircleCache::Entry& entry = cache.at(i, e, j, e, k, e);
+            CHECK(entry.ids == key);
+            if (known != model.end()) {
+                CHECK(&entry == known->second);  // found again at the same address
+                CHECK(cache.misses() == misses);
+            } else {
+                CHECK(cache.misses() == misses + 1);
+                model[key] = &entry;
+            }
+        }
+        REQUIRE(cache.size() == model.size());
+    }
+    CHECK(model.size() > 1000);
+    // Every key the model holds is still found where it was.
+    for (const auto& [key, entry] : model) CHECK(&cache.at(key[1], e, key[2], e, key[0], e) == entry);
 }
 
 TEST_CASE("cache: incircle certifies the cached circle once and reuses it", "[predicates][cache]") {

@@ -1,0 +1,56 @@
+// voronoi_circle_box (output/voronoi_circle_box.hpp): the double certificate's
+// box when it is tight, else Arb's at 53 bits; either holds the circle, which
+// Arb at 80 bits (the oracle) encloses.
+#include "output/voronoi_circle_box.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle_in_doubles.hpp"
+#include "tests/support/huge_hull_triple.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace ellvor;
+
+namespace {
+
+bool inside(const Ball& b, const Interval& box) {
+    const Interval e = enclose(b);
+    return box.lo <= e.lo && e.hi <= box.hi;
+}
+
+// The box holds Arb's 80-bit circle and is at most `width` wide.
+void check_box(const std::vector<Ellipse>& s, const VoronoiCircleBox& box, double width) {
+    VoronoiCircleSolver arb(s[0], s[1], s[2]);
+    REQUIRE(arb.refine(80));
+    const VoronoiCircleEnclosure& c = arb.enclosure();
+    INFO("Arb: x " << c.center_x.str(20) << " y " << c.center_y.str(20) << " radius " << c.radius.str(20));
+    CHECK(inside(c.center_x, box.center_x));
+    CHECK(inside(c.center_y, box.center_y));
+    CHECK(inside(c.radius, box.radius));
+    for (const Interval* x : {&box.center_x, &box.center_y, &box.radius}) CHECK(x->hi - x->lo <= width);
+}
+
+}  // namespace
+
+TEST_CASE("voronoi_circle_box: a tight double box is kept", "[output][voronoi_circle_box]") {
+    const std::vector<Ellipse> s = {Ellipse(2, 1, 0, 6, 0), Ellipse::circle(0, 6, 1), Ellipse(1, Rational(1, 2), 1, -6, 0)};
+    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(s[0], s[1], s[2]);
+    REQUIRE(d.has_value());
+    const VoronoiCircleBox box = voronoi_circle_box(s, {0, 1, 2});
+    CHECK(box.radius.lo == d->radius.lo);
+    CHECK(box.radius.hi == d->radius.hi);
+    CHECK(box.center_x.lo == d->center_x.lo);
+    CHECK(box.center_y.hi == d->center_y.hi);
+    check_box(s, box, 1e-12);
+}
+
+TEST_CASE("voronoi_circle_box: a huge circle's wide double box gives way to Arb's",
+          "[output][voronoi_circle_box]") {
+    // The hull face of 10^6 random ellipses whose ~1-wide double box made the
+    // tiled build's hull test fail (radius ~3.16e5).
+    const std::vector<Ellipse> s = ellvor::test::huge_hull_triple();
+    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(s[0], s[1], s[2]);
+    REQUIRE(d.has_value());
+    CHECK(d->radius.hi - d->radius.lo > 1e-3);
+    const VoronoiCircleBox box = voronoi_circle_box(s, {0, 1, 2});
+    check_box(s, box, 1e-9);
+}
