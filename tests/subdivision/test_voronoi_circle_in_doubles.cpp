@@ -287,6 +287,7 @@ TEST_CASE("doubles: hull circles of sites in a row along a packing's wall, from 
         compare_with_arb(*e1, *e2, *e3, tally);  // holds Arb's circle
         CHECK(tally.by_doubles == 1);
     }
+}
 
 TEST_CASE("doubles: the 3e5-radius hull circle of 10^6 random ellipses certifies and holds Arb's",
           "[subdivision][voronoi_circle_in_doubles]") {
