@@ -169,3 +169,51 @@ TEST_CASE("four ellipse boundaries through one point: rho = 0, the fourth tangen
     CHECK(*r == InCircle::tangent);
     CHECK(r.stage == Stage::exact);
 }
+
+TEST_CASE("incircle on an internal circle centered exactly on a needle's medial axis, every rotation, against MPFR",
+          "[predicates][incircle][crossing][medial-axis]") {
+    // Two circles of radius 10 at (0, 0) and (12, 0) and the needle (11/30, 10) at (6, 10): the internal
+    // circle touches the needle at two mirror feet (DESIGN.md §4.2). The oracle finds V on the axis
+    // x = 6 by bisection in MPFR (delta(V, circle) = delta(V, needle)), independently of the solver.
+    const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10);
+    const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
+    const OracleEllipse o1(c1), on(needle);
+    Real lo(7), hi(8);  // delta(V, c1) - delta(V, needle) changes sign between y = 7 and 8
+    auto gap = [&](const Real& y) { return o1.signed_distance_value({Real(6), y}) - on.signed_distance_value({Real(6), y}); };
+    REQUIRE(gap(lo).sign() * gap(hi).sign() < 0);
+    for (int k = 0; k < 150; ++k) {
+        const Real mid = (lo + hi) * Real(0.5);
+        (gap(mid).sign() == gap(lo).sign() ? lo : hi) = mid;
+    }
+    const RealPoint v{Real(6), lo};
+    const double rho = o1.signed_distance_value(v).to_double();
+    CHECK(std::abs(rho + 0.3554852164925021) < 1e-12);
+    // Queries: holding V deeper than |rho| (a conflict), holding it less deep, beside it, far below.
+    const std::vector<Ellipse> queries = {ellipse("1/2", "1/2", "0", "59/10", "38/5"), ellipse("1/5", "1/5", "0", "6", "38/5"),
+                                          ellipse("1", "1/4", "1/3", "13/2", "8"), ellipse("3", "1", "0", "6", "-5")};
+    int conflicts = 0;
+    for (const Ellipse& q : queries) {
+        const double expected_gap = OracleEllipse(q).signed_distance_value(v).to_double() - rho;
+        REQUIRE(std::abs(expected_gap) > 1e-6);
+        conflicts += expected_gap < 0;
+        const std::array<const Ellipse*, 3> triple{&c1, &c2, &needle};
+        for (int r = 0; r < 3; ++r) {
+            INFO("rotation " << r << ", query " << q.str() << ", delta - rho " << expected_gap);
+            const Decision<InCircle> d = incircle(*triple[r], *triple[(r + 1) % 3], *triple[(r + 2) % 3], q);
+            REQUIRE(d.is_decided());
+            CHECK(*d == (expected_gap < 0 ? InCircle::conflict : InCircle::no_conflict));
+            // No double certificate reaches so deep into the needle (Blaschke's bound): Arb's, with the mirror.
+            CHECK(d.stage == Stage::subdivision);
+        }
+    }
+    CHECK(conflicts == 1);
+    // The diagram of the three with two far sites: valid, and the MPFR oracle agrees with it.
+    const std::vector<Ellipse> sites = {c1, c2, needle, Ellipse::circle(30, 30, 2), ellipse("1", "3", "0", "-20", "10")};
+    DelaunayGraph g = test::ellipse_graph(sites);
+    g.insert_all();
+    CHECK(g.validate() == "");
+    CHECK(g.brute_force_check() == "");
+    const auto faces = g.faces();
+    CHECK(std::find(faces.begin(), faces.end(), std::array<SiteId, 3>{0, 1, 2}) != faces.end());
+    CHECK(test::check_diagram(sites, test::claim_of(g, sites)) == "");
+}
