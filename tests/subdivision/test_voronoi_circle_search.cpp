@@ -434,11 +434,16 @@ TEST_CASE("an internal circle centered exactly on a needle's medial axis is cert
     // roots failed it and the search ended at its cap. Oracle: MPFR signed distances of the
     // enclosure's center, which must equal rho for all three sites (the disk inside the needle).
     const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10);
+    // The same needle spelled with its a-axis along x = 6 (w = 1, a quarter turn): the mirror
+    // then maps a chart parameter s to -s in the same chart, not in the other one.
     const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
-    VoronoiCircleSolver from_starts(c1, c2, needle), by_search(c1, c2, needle);
+    const Ellipse turned(Rational(10), Rational(11, 30UL), Rational(1), Rational(6), Rational(10));
+    REQUIRE(needle.point_set_key() == turned.point_set_key());
+    VoronoiCircleSolver from_starts(c1, c2, needle), by_search(c1, c2, needle), turned_from_starts(c1, c2, turned);
     REQUIRE(from_starts.certify());
     REQUIRE(by_search.certify_by_search());
-    for (VoronoiCircleSolver* solver : {&from_starts, &by_search}) {
+    REQUIRE(turned_from_starts.certify());
+    for (VoronoiCircleSolver* solver : {&from_starts, &by_search, &turned_from_starts}) {
         REQUIRE(solver->refine(120));
         const VoronoiCircleEnclosure& e = solver->enclosure();
         const test::RealPoint v{test::Real(e.center_x.mid_double()), test::Real(e.center_y.mid_double())};
