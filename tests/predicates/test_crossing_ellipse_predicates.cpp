@@ -4,6 +4,7 @@
 // site holding its center. Oracles: the configuration's geometry (a needle
 // covered by two disks), and signed distances in MPFR
 // (tests/support/signed_distance_oracle.hpp).
+#include "predicates/covered_site.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
@@ -216,4 +217,47 @@ TEST_CASE("incircle on an internal circle centered exactly on a needle's medial 
     const auto faces = g.faces();
     CHECK(std::find(faces.begin(), faces.end(), std::array<SiteId, 3>{0, 1, 2}) != faces.end());
     CHECK(test::check_diagram(sites, test::claim_of(g, sites)) == "");
+}
+
+TEST_CASE("covered_without_circle: a site in the union of two others, no circle in any order (fuzz F6)",
+          "[predicates][crossing][covered]") {
+    // F6: a needle (minor semi-axis 10^-6) and its copy with the minor semi-axis 10/37, sharing the
+    // tips to 10^-35; the needle pokes out of its copy at one tip only, which lies in the third site.
+    const Ellipse needle = ellipse("345/127", "10e-7", "-6/35", "17909/230", "11267/144");
+    const Ellipse third = ellipse("2", "363/161", "-43/82", "9731/121", "2128/27");
+    const Ellipse fat = ellipse("345/127", "10/37", "-6/35",
+                                "77.8652173913043478260869565217391304000000000000000000000000000000000000000000004010161755154"
+                                "250351",
+                                "11267/144");
+    // The issue's union-hidden needle between two disks.
+    const Ellipse thin = ellipse("10", "1/10", "0", "0", "0"), left = Ellipse::circle(-5, 0, 6), right = Ellipse::circle(5, 0, 6);
+    for (const auto& [x, y, z] : {std::array<const Ellipse*, 3>{&needle, &fat, &third}, {&thin, &left, &right}}) {
+        CHECK(covered_without_circle(*x, *y, *z));
+        CHECK(covered_without_circle(*x, *z, *y));
+        for (const auto& order : {std::array<const Ellipse*, 3>{x, y, z}, {x, z, y}, {y, x, z}, {y, z, x}, {z, x, y}, {z, y, x}}) {
+            const Decision<VoronoiCircles> count = voronoi_circle_count(*order[0], *order[1], *order[2]);
+            CHECK(*count == VoronoiCircles::none);
+            CHECK(count.stage == Stage::exact);  // the latest folded in: the crossing pairs' intersection quartics
+        }
+    }
+    // The diagrams: the covered site hidden, checked by brute force and by the MPFR oracle
+    // (hidden sites own no point of their medial axis).
+    for (const std::vector<Ellipse>& sites : {std::vector<Ellipse>{needle, third, fat}, {thin, left, right}}) {
+        DelaunayGraph g = test::ellipse_graph(sites);
+        g.insert_all();
+        CHECK(g.validate() == "");
+        CHECK(g.brute_force_check() == "");
+        CHECK(g.hidden().size() == 1);
+        CHECK(test::check_diagram(sites, test::claim_of(g, sites)) == "");
+    }
+
+    // Not proven where it is false. A disk covered by two larger crossing disks still owns its
+    // center and the triple has an internal circle (boundary inside the union, but the depths
+    // meet near the middle); a needle sticking out of both has a point outside.
+    const Ellipse small = Ellipse::circle(0, 0, 1), big_left = ellipse("10", "10", "0", "-19/2", "0"),
+                  big_right = ellipse("10", "10", "0", "19/2", "0");
+    CHECK_FALSE(covered_without_circle(small, big_left, big_right));
+    CHECK(*voronoi_circle_count(small, big_left, big_right) != VoronoiCircles::none);
+    const Ellipse sticking = ellipse("12", "1/10", "0", "0", "0");
+    CHECK_FALSE(covered_without_circle(sticking, left, right));
 }
