@@ -3,6 +3,7 @@
 #include "cli/site_arguments.hpp"
 
 #include "predicates/relative_position.hpp"
+#include "sites/meeting_pair_candidates.hpp"
 #include "sites/site_io.hpp"
 #include "util/error.hpp"
 
@@ -10,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <numeric>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -48,8 +48,6 @@ struct PairReport {
     std::size_t i, j;  // i < j
     RelativePosition position;
 };
-
-Rational max_axis(const Ellipse& e) { return e.a() < e.b() ? e.b() : e.a(); }
 
 // Up to ten pairs "i in j" (nested) or "i x j" (crossing), then "...".
 void list_pairs(std::ostream& out, const char* what, const std::vector<PairReport>& pairs) {
@@ -115,38 +113,18 @@ int run_check(const std::vector<std::string>& args) {
     const auto& sites = file.sites;
     const std::size_t n = sites.size();
 
-    // Sweep over the x-extents of the bounding circles: only pairs whose
-    // extents overlap can meet, and among those, pairs with disjoint bounding
-    // circles are separated without calling the predicate.
-    std::vector<Rational> left(n), right(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        Rational r = max_axis(sites[i]);
-        left[i] = sites[i].xc() - r;
-        right[i] = sites[i].xc() + r;
-    }
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
-        if (left[p] != left[q]) return left[p] < left[q];
-        return p < q;
-    });
-    const bool progress = n > 2000 && ::isatty(2);
+    // Only pairs whose circumscribed disks may meet (a grid, not every pair);
+    // relative_position separates the rest of the disjoint ones at once.
+    const auto pairs = pairs_that_may_meet(sites);
+    const bool progress = pairs.size() > 20000 && ::isatty(2);
     std::vector<PairReport> reports;
-    for (std::size_t k = 0; k < n; ++k) {
-        if (progress && k % 500 == 0) std::fprintf(stderr, "\rchecking site %zu of %zu", k, n);
-        const std::size_t p = order[k];
-        for (std::size_t m = k + 1; m < n && left[order[m]] <= right[p]; ++m) {
-            const std::size_t q = order[m];
-            const std::size_t i = std::min(p, q), j = std::max(p, q);
-            const Ellipse& ei = sites[i];
-            const Ellipse& ej = sites[j];
-            Rational dx = ei.xc() - ej.xc(), dy = ei.yc() - ej.yc(), rr = max_axis(ei) + max_axis(ej);
-            if (dx * dx + dy * dy > rr * rr) continue;
-            RelativePosition pos = *relative_position(ei, ej);
-            if (pos != RelativePosition::separated) reports.push_back({i, j, pos});
-        }
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (progress && k % 5000 == 0) std::fprintf(stderr, "\rchecking pair %zu of %zu", k, pairs.size());
+        const auto [i, j] = pairs[k];
+        const RelativePosition pos = *relative_position(sites[i], sites[j]);
+        if (pos != RelativePosition::separated) reports.push_back({i, j, pos});
     }
-    if (progress) std::fprintf(stderr, "\rchecking site %zu of %zu\n", n, n);
+    if (progress) std::fprintf(stderr, "\rchecking pair %zu of %zu\n", pairs.size(), pairs.size());
     std::sort(reports.begin(), reports.end(),
               [](const PairReport& x, const PairReport& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
 

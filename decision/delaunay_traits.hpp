@@ -45,6 +45,11 @@ public:
     virtual Sign compare_weight(SiteId a, SiteId b) const = 0;
     virtual LocationHint location_hint(SiteId i) const = 0;
 
+    // Called by a graph before its first insertion: a model may check here, at
+    // once, every pair of sites it would reject later (throwing
+    // IntersectingSites), so that bad input fails before any costly predicate.
+    virtual void check_sites() {}
+
     // Is_hidden(p, q): site q lies inside site p (internal tangency and
     // identical sites included). Throws IntersectingSites when they cross.
     virtual bool is_hidden(SiteId p, SiteId q) = 0;

@@ -38,6 +38,7 @@ public:
     std::size_t size() const override { return inner_.size(); }
     Sign compare_weight(SiteId a, SiteId b) const override { return inner_.compare_weight(a, b); }
     LocationHint location_hint(SiteId i) const override { return inner_.location_hint(i); }
+    void check_sites() override { inner_.check_sites(); }
     bool is_hidden(SiteId p, SiteId q) override {
         return timed(Predicate::is_hidden, {p, q}, [=](DelaunayTraits& t) { return t.is_hidden(p, q); });
     }

@@ -44,6 +44,7 @@ void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::s
 void DelaunayGraph::insert(SiteId p) {
     if (p >= traits_->size()) throw Error("DelaunayGraph::insert: no site " + str(p));
     if (inserted_[p] == kIn) throw Error("DelaunayGraph::insert: site " + str(p) + " inserted twice");
+    traits_->check_sites();  // bad pairs fail here, before any search (a model checks once)
     if (inserted_[p] == kRemoved) removed_.erase(std::find(removed_.begin(), removed_.end(), p));
     inserted_[p] = kIn;
     ++stats_.inserted;

@@ -60,7 +60,8 @@ public:
     // graph does not depend on the order except in degenerate
     // configurations), each walk started at a site with a near location hint.
     void insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress = {});
-    // Inserts one site (each id at most once, unless removed in between).
+    // Inserts one site (each id at most once, unless removed in between). The
+    // first insertion asks the traits to check the sites (check_sites).
     void insert(SiteId id);
     // Removes an inserted site (CGAL's remove): a hidden one leaves its host's
     // list; a visible one loses its vertex -- edges of length 0 around it are

@@ -22,6 +22,8 @@ public:
     std::size_t size() const override { return ids_.size(); }
     Sign compare_weight(SiteId a, SiteId b) const override { return parent_.compare_weight(g(a), g(b)); }
     LocationHint location_hint(SiteId i) const override { return parent_.location_hint(g(i)); }
+    // The parent's sites are this one's: their check is the parent's (done once).
+    void check_sites() override { parent_.check_sites(); }
     bool is_hidden(SiteId p, SiteId q) override { return parent_.is_hidden(g(p), g(q)); }
     bool crosses(SiteId p, SiteId q) override { return parent_.crosses(g(p), g(q)); }
     Sign side_of_bisector(SiteId i, SiteId j, SiteId k) override { return parent_.side_of_bisector(g(i), g(j), g(k)); }

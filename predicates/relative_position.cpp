@@ -2,6 +2,7 @@
 
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
+#include "sites/meeting_pair_candidates.hpp"
 #include "sites/separating_slab.hpp"
 #include "util/error.hpp"
 #include "util/interval.hpp"
@@ -157,12 +158,11 @@ std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2) {
 }
 
 void require_acceptable_crossings(const std::vector<Ellipse>& sites) {
-    for (std::size_t j = 1; j < sites.size(); ++j)
-        for (std::size_t i = 0; i < j; ++i)
-            if (*relative_position(sites[i], sites[j]) == RelativePosition::intersecting) {
-                const std::string problem = crossing_pair_problem(sites[i], sites[j]);
-                if (!problem.empty()) throw IntersectingSites(i, j, problem);
-            }
+    for (const auto& [i, j] : pairs_that_may_meet(sites))
+        if (*relative_position(sites[i], sites[j]) == RelativePosition::intersecting) {
+            const std::string problem = crossing_pair_problem(sites[i], sites[j]);
+            if (!problem.empty()) throw IntersectingSites(i, j, problem);
+        }
 }
 
 bool is_hidden(const Ellipse& p, const Ellipse& q) {

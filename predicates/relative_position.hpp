@@ -47,8 +47,9 @@ std::string crossing_pair_problem(const Ellipse& e1, const Ellipse& e2);
 
 // Throws IntersectingSites (util/error.hpp) naming the first pair (i < j, in
 // the order of j, then i) that crosses in a way crossing_pair_problem rejects.
-// For the predicate commands, which take a few sites; the graph finds
-// crossings itself as it inserts.
+// Only pairs whose circumscribed disks may meet are compared
+// (pairs_that_may_meet); the graph's traits check the same before inserting
+// (EllipseDelaunayTraits::check_sites).
 void require_acceptable_crossings(const std::vector<Ellipse>& sites);
 
 // CGAL's Is_hidden(p, q): q lies inside p, internal tangency and identical

@@ -2,13 +2,16 @@
 
 #include "circles/circle_predicates.hpp"
 #include "circles/circle_semi_static.hpp"
+#include "predicates/covered_site.hpp"
 #include "predicates/distance_filter.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
+#include <array>
 #include <optional>
 #include <tuple>
+#include <vector>
 
 namespace ellvor {
 
@@ -42,19 +45,23 @@ bool has_point_outside_both(const Ellipse& x, const Ellipse& y, const Ellipse& z
     return false;
 }
 
-// Whether one site may lie in the union of the other two with an empty
-// cell. Such a site x crosses both (a site disjoint from it has no say on
-// its points, one containing it would hide it alone) and lies in their
-// union (each of its points is deeper in one of them than in x). Circles
-// never qualify: a disk owns its center unless another disk contains it.
-bool some_site_may_be_covered(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-    if (e1.is_circle() && e2.is_circle() && e3.is_circle()) return false;
+// The sites that may lie in the union of the other two with an empty cell,
+// as (x, y, z) with x the site. Such a site crosses both (a site disjoint
+// from it has no say on its points, one containing it would hide it alone)
+// and lies in their union (each of its points is deeper in one of them than
+// in x). Circles never qualify: a disk owns its center unless another disk
+// contains it.
+std::vector<std::array<const Ellipse*, 3>> sites_maybe_covered(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    std::vector<std::array<const Ellipse*, 3>> covered;
+    if (e1.is_circle() && e2.is_circle() && e3.is_circle()) return covered;
     auto crossing = [](const Ellipse& a, const Ellipse& b) {
         return *relative_position(a, b) == RelativePosition::intersecting;
     };
     const bool c12 = crossing(e1, e2), c23 = crossing(e2, e3), c31 = crossing(e3, e1);
-    return (c12 && c31 && !has_point_outside_both(e1, e2, e3)) || (c12 && c23 && !has_point_outside_both(e2, e3, e1)) ||
-           (c23 && c31 && !has_point_outside_both(e3, e1, e2));
+    if (c12 && c31 && !has_point_outside_both(e1, e2, e3)) covered.push_back({&e1, &e2, &e3});
+    if (c12 && c23 && !has_point_outside_both(e2, e3, e1)) covered.push_back({&e2, &e3, &e1});
+    if (c23 && c31 && !has_point_outside_both(e3, e1, e2)) covered.push_back({&e3, &e1, &e2});
+    return covered;
 }
 
 }  // namespace
@@ -92,11 +99,15 @@ std::optional<Decision<VoronoiCircles>> count_circles(const Ellipse& e1, const E
     }
     constexpr VoronoiCircles by_conflicts[] = {VoronoiCircles::cw_only, VoronoiCircles::none, VoronoiCircles::both,
                                                VoronoiCircles::ccw_only};
-    if (conflicts == 2 && some_site_may_be_covered(e1, e2, e3)) {
+    const auto covered = conflicts == 2 ? sites_maybe_covered(e1, e2, e3) : std::vector<std::array<const Ellipse*, 3>>{};
+    if (!covered.empty()) {
         // Two conflicts also describe a triple where one site lies in the
         // union of the other two with an empty cell: no circle at all
-        // (DESIGN.md §9). The complete solver tells the two apart.
+        // (DESIGN.md §9). A proof that a site is covered so says "none";
+        // else the complete solver tells the two apart.
         count.depends_on(Decision<bool>::decided(true, Stage::subdivision));
+        for (const auto& [x, y, z] : covered)
+            if (covered_without_circle(*x, *y, *z)) return count.with(VoronoiCircles::none);
         VoronoiCircleSolver solver(e1, e2, e3);
         return count.with(solver.certify() ? VoronoiCircles::both : VoronoiCircles::none);
     }

@@ -30,4 +30,18 @@ bool strictly_beside(const Ellipse& e, const AxisLine& line);
 // e lies strictly on one side of it; nothing otherwise.
 std::optional<AxisLine> mirror_line(const Ellipse& e, const Ellipse& f);
 
+// The axis-parallel line L that is exactly the bisector {x : delta(x, e) =
+// delta(x, f)} of two sites mirrored across it: mirror_line's, or L between
+// two equal circles that overlap (|x - C1| = |x - C2| exactly on L). Nothing
+// when f is not e's mirror image or the bisector of the crossing ellipses
+// is not known to be L.
+std::optional<AxisLine> bisector_line(const Ellipse& e, const Ellipse& f);
+
+// How the reflection across `line` acts on the boundary parameter t of e
+// (Ellipse::X, Y, W; t = tan(theta/2)) when e, not a circle, is its own
+// mirror image: P(t) -> P(-t) when the line holds e's a-axis, P(t) -> P(1/t)
+// when it holds the b-axis.
+enum class SelfMirror { none, negates_parameter, inverts_parameter };
+SelfMirror self_mirror(const Ellipse& e, const AxisLine& line);
+
 }  // namespace ellvor

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <vector>
 
 // Why the test proves the disk inside E (docs/DESIGN.md §4.1, §9). Fix one
@@ -23,6 +24,13 @@
 // boundary point is farther than |rho|, and delta(V, E) = -|rho| = rho.
 // (At rho = 0 the disk is the point P(t) itself; that case is not this
 // test's: the certificate of §4.1 covers it.)
+// With a mirror (V on an axis of symmetry of E, proven by the caller), g is
+// the same at a boundary point and at its mirror image, so the local step
+// also gives g > 0 on the mirror image of N minus t's image; the bisection
+// covers the rest. Then D meets the boundary at most at P(t) and its mirror
+// image; D minus two boundary points is still connected, and the same
+// argument puts D in E.
+
 
 namespace ellvor {
 
@@ -152,16 +160,20 @@ Poly distance_quartic(const Ellipse& e, const Ball& rho, const Ball& vx, const B
 struct Piece {
     bool flipped;
     Ball lo, hi;
+    bool within(const Piece& o) const { return flipped == o.flipped && !less(lo, o.lo) && !less(o.hi, hi); }
 };
 
 // Bisects the pieces until Q > 0 on all of them (positive), Q is certainly
 // negative at a midpoint (negative_at_midpoint), or `count` passes the cap
-// (unknown). q_t and q_u are Q in the unflipped and the flipped chart.
-Sign sign_on_pieces(std::vector<Piece> stack, const Poly& q_t, const Poly& q_u, long prec, long& count) {
+// (unknown). q_t and q_u are Q in the unflipped and the flipped chart. A
+// piece within `known` (where Q > 0 is proven otherwise, if given) is done.
+Sign sign_on_pieces(std::vector<Piece> stack, const Poly& q_t, const Poly& q_u, long prec, long& count,
+                    const Piece* known = nullptr) {
     while (!stack.empty()) {
         if (++count > kMaxPieces) return Sign::unknown;
         Piece p = std::move(stack.back());
         stack.pop_back();
+        if (known && p.within(*known)) continue;
         const Sign s = sign_on(p.flipped ? q_u : q_t, 4, p.lo, p.hi, prec);
         if (s == Sign::positive) continue;
         if (s == Sign::negative_at_midpoint) return s;
@@ -192,7 +204,7 @@ int inside_distance_minus(const Ellipse& e, const Ball& r, const Ball& vx, const
 }
 
 bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ball& rho, const Ball& vx,
-                         const Ball& vy, long prec, long* pieces) {
+                         const Ball& vy, long prec, long* pieces, AxisMirror mirror) {
     long count = 0;
     if (pieces) *pieces = 0;
     // rho = 0 and rho > 0 are not this test's (see the top of this file).
@@ -284,8 +296,18 @@ bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ba
     }
     stack.push_back({!flipped, u_start, u_end});
 
+    // The mirror image of N: s -> -s, in N's chart or the other one.
+    std::optional<Piece> image;
+    if (mirror != AxisMirror::none) {
+        Ball lo, hi;
+        arb_neg(lo.get(), n_hi.get());
+        arb_neg(hi.get(), n_lo.get());
+        image = Piece{mirror == AxisMirror::same_chart ? flipped : !flipped, lo, hi};
+    }
+
     // Not proven at the cap, or a boundary point certainly nearer than |rho|.
-    const bool proven = sign_on_pieces(std::move(stack), q_t, q_u, prec, count) == Sign::positive;
+    const bool proven =
+        sign_on_pieces(std::move(stack), q_t, q_u, prec, count, image ? &*image : nullptr) == Sign::positive;
     if (pieces) *pieces = std::min(count, kMaxPieces);
     return proven;
 }

@@ -30,8 +30,17 @@ namespace ellvor {
 // around the ball t gives Q > 0 on N minus t (Taylor at t); on the rest of the
 // boundary (both charts, the i-point included) Q > 0 by bisection with a
 // Taylor-form enclosure. Why this proves the disk inside: see the .cpp.
+//
+// With `mirror` other than none, the caller has proven that the true V lies
+// on an axis of symmetry of E, across which the reflection maps a boundary
+// point's chart parameter s to -s in the same chart (same_chart) or in the
+// other one (other_chart). Then g is symmetric, so Q > 0 on N minus t gives
+// Q > 0 on the mirror image of N minus t's mirror too, and the bisection
+// skips that image: the disk may touch E at t and at its mirror image (a
+// center exactly on the medial axis), and still lies in E (delta(V, E) = rho).
+enum class AxisMirror { none, same_chart, other_chart };
 bool disk_inside_ellipse(const Ellipse& e, bool flipped, const Ball& t, const Ball& rho, const Ball& vx,
-                         const Ball& vy, long prec, long* pieces = nullptr);
+                         const Ball& vy, long prec, long* pieces = nullptr, AxisMirror mirror = AxisMirror::none);
 
 // For V = (vx, vy) inside E (the caller has proven it) and r > 0: the sign
 // of dist(V, boundary of E) - r, proven. +1: the closed disk of radius r

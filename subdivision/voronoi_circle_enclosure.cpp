@@ -4,6 +4,7 @@
 #include "subdivision/inscribed_disk.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
+#include "sites/mirror_symmetry.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
 
@@ -181,9 +182,18 @@ Ball orientation(const Charts& charts, const BallMatrix& X, long prec, bool of_n
 // radius -rho touching E_i at P_i from inside lies in E_i (Blaschke's rolling
 // theorem), so P_i is the boundary point nearest to V; deeper, up to E_i's
 // medial axis, disk_inside_ellipse proves the same over the box K.
+//
+// A center exactly on a site's medial axis touches it at two mirror points,
+// and the test fails for that site. When the other two are mirror images
+// across an axis-parallel line L that is exactly their bisector and the site
+// is its own mirror image across L (symmetric inputs: a needle between two
+// equal circles), the two proven signed distances put the true V on L, and
+// the test may skip the mirror image of the first foot's neighbourhood
+// (disk_inside_ellipse with a mirror, DESIGN.md §4.2).
 bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::array<bool, 3>& flipped,
                       const BallMatrix& K, long prec) {
     const arb_struct* rho = K.at(3, 0);
+    int unproven = -1;
     for (int i = 0; i < 3; ++i) {
         const Ellipse* e = sites[i];
         const bool a_small = e->a() < e->b();
@@ -198,9 +208,22 @@ bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::arr
         arb_set(r.get(), rho);
         arb_set(vx.get(), K.at(4, 0));
         arb_set(vy.get(), K.at(5, 0));
-        if (!disk_inside_ellipse(*e, flipped[i], t, r, vx, vy, prec)) return false;
+        if (disk_inside_ellipse(*e, flipped[i], t, r, vx, vy, prec)) continue;
+        if (unproven >= 0) return false;
+        unproven = i;
     }
-    return true;
+    if (unproven < 0) return true;
+    const std::optional<AxisLine> line = bisector_line(*sites[(unproven + 1) % 3], *sites[(unproven + 2) % 3]);
+    if (!line) return false;
+    const SelfMirror mirror = self_mirror(*sites[unproven], *line);
+    if (mirror == SelfMirror::none) return false;
+    Ball t, r, vx, vy;
+    arb_set(t.get(), K.at(unproven, 0));
+    arb_set(r.get(), rho);
+    arb_set(vx.get(), K.at(4, 0));
+    arb_set(vy.get(), K.at(5, 0));
+    return disk_inside_ellipse(*sites[unproven], flipped[unproven], t, r, vx, vy, prec, nullptr,
+                               mirror == SelfMirror::negates_parameter ? AxisMirror::same_chart : AxisMirror::other_chart);
 }
 
 // -rho exceeds some site's smaller semi-axis (by the midpoint): no point of

@@ -5,6 +5,7 @@
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "predicates/side_of_bisector.hpp"
+#include "sites/meeting_pair_candidates.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
@@ -55,6 +56,13 @@ Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
 LocationHint EllipseDelaunayTraits::location_hint(SiteId i) const {
     const Ellipse::Enclosure& e = site(i).enclosure();
     return {e.xc.mid(), e.yc.mid()};
+}
+
+void EllipseDelaunayTraits::check_sites() {
+    if (sites_checked_) return;
+    for (const auto& [p, q] : pairs_that_may_meet(sites_))
+        if (!site(p).is_circle() || !site(q).is_circle()) crosses(p, q);  // throws for a rejected pair
+    sites_checked_ = true;
 }
 
 bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {

@@ -28,6 +28,11 @@ public:
     // The center.
     LocationHint location_hint(SiteId i) const override;
 
+    // Every pair whose circumscribed disks may meet (sites/meeting_pair_candidates.hpp),
+    // two circles aside (always acceptable): its relative position, memoized, and
+    // IntersectingSites for the first pair, by the larger id then the smaller,
+    // whose boundaries meet in three or four points. Once; later calls return.
+    void check_sites() override;
     // Memoized, both ways at once (one relative position answers both).
     bool is_hidden(SiteId p, SiteId q) override;
     // From the same relative position, memoized with it.
@@ -68,6 +73,7 @@ private:
     std::unordered_map<std::uint64_t, bool> hidden_memo_;    // (p, q): q inside p
     std::unordered_map<std::uint64_t, bool> crossing_memo_;  // (min, max): the two cross
     TraitsStats stats_;
+    bool sites_checked_ = false;
 };
 
 }  // namespace ellvor

@@ -75,6 +75,22 @@ TEST_CASE("build: ellipses crossing in four points are an input error naming the
     CHECK(!std::ifstream(json));  // nothing written
 }
 
+TEST_CASE("build: an invalid pair among valid ones is an input error before any search (issue 21, input B)",
+          "[cli][build][early-validity]") {
+    // Sites 2 and 3 meet in four points; the triple (0, 1, 2) would need a long search.
+    ScratchDirectory dir;
+    const std::string f = dir.write("b.ell", "10 10 0 0 0\n10 10 0 12 0\n11/30 10 0 6 10\n3 3 0 6 4\n");
+    const std::string json = dir.path() + "/g.json";
+    for (const char* validate : {"", " --validate"}) {
+        const auto r = dir.ellvor("build '" + f + "'" + validate + " --json '" + json + "'");
+        INFO(r.out << r.err);
+        CHECK(r.status == 2);
+        CHECK(contains(r.err, f + ":4:1: site 3 crosses site 2 (line 3): their boundaries meet in 4 points"));
+        CHECK(r.out.find("Delaunay edges") == std::string::npos);
+        CHECK(!std::ifstream(json));  // nothing written
+    }
+}
+
 TEST_CASE("build: crossing circles, an internal Voronoi circle of negative radius in the JSON", "[cli][build]") {
     // Three pairwise crossing circles of radius 10 whose common part holds the
     // point (6, 16/5), at distance 34/5 from each center: the Voronoi vertex

@@ -170,6 +170,17 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
          "2 1 1/3 0 0\n1.9999999999999999999999999999999999999999999999999998 0.9999990000000000 1/3 6e-30 0\n"
          "1 1 0 6 1\n1 1 0 -5 6\n3/2 1/2 1 5 3\n3/2 1/2 1 1 -6\n",
          nullptr},
+        // F6 (campaign 7): a needle (minor semi-axis 10^-6) and its copy with the minor semi-axis
+        // 10/37, sharing the tips to 10^-35, both crossing a third site that holds the one tip where
+        // the needle pokes out of its copy: the needle lies in the union of the two, its cell is
+        // empty, and the count's complete search could not prove that the triple has no circle
+        // (circles through the tip nearly solve: its cap in all six orders). Now the union cover is
+        // proven (covered_without_circle, test_crossing_ellipse_predicates.cpp); 0.8 s.
+        {"F6 needle and its fat copy sharing tips",
+         "345/127 10e-7 -6/35 17909/230 11267/144\n2 363/161 -43/82 9731/121 2128/27\n345/127 10/37 -6/35 "
+         "77.8652173913043478260869565217391304000000000000000000000000000000000000000000004010161755154250351 "
+         "11267/144\n",
+         nullptr},
     };
     for (const Finding& f : findings) {
         INFO(f.what << "\n" << f.text);
@@ -185,15 +196,14 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
     }
 }
 
-TEST_CASE("fuzz findings, open: pairs nearly internally tangent at two points", "[.][fuzz-open]") {
-    // Campaign 7 (experiments/results/fuzz.md, F1-F3, F6; F5 is fixed, above): mutations of the
+TEST_CASE("fuzz findings, slow: pairs nearly internally tangent at two points", "[.][fuzz-slow]") {
+    // Campaign 7 (experiments/results/fuzz.md, F1-F3; F5 and F6 are fixed, above): mutations of the
     // near-copy seeds in which one site lies in another touching it at two points (concentric, one
-    // semi-axis shared),
-    // then moved by about 10^-30 so that the two cross. Near the tangency points the pair nearly
-    // coincides, the Voronoi circles there defeat the guesses, and the exhaustive search decides in
-    // seconds (F1-F3: 2.6-17 s release, over 10 s under ASan) or stops at its cap (F6: an Error,
-    // no answer). Hidden from the default run: F6 fails until this class is solved (docs/DESIGN.md
-    // §4.2, item 4); the graph must be valid.
+    // semi-axis shared), then moved by about 10^-30 so that the two cross. Near the tangency points
+    // the pair nearly coincides, the Voronoi circles there defeat the guesses, and the exhaustive
+    // search decides in seconds (F1-F3: 2.6-17 s release, over 10 s under ASan; 35 s together).
+    // Hidden from the default run for their time only (docs/DESIGN.md §4.2, item 4); the graph must
+    // be valid.
     const char* findings[] = {
         // F1: (2, 1) inside (4, 1), touching at the ends of the minor axis, moved by 6e-30.
         "2 1 1/3 0 0\n4 1 3000000000000000000000000000005/9000000000000000000000000000000 0 -6e-30\n1 1 0 6 1\n"
@@ -203,13 +213,6 @@ TEST_CASE("fuzz findings, open: pairs nearly internally tangent at two points", 
         "1 1 0 6 1\n1 1 0 -5 3\n3/2 1/2 1 5 3\n3/2 1/2 1 1 -6\n",
         // F3: the unit circle in the ellipse (2, 1), touching at (0, +-1), moved by 1e-30.
         "1 1 1/3 0 0\n2 1 1/3 1e-30 0\n1 1 0 6 1\n1 1 0 -5 3\n3/2 1/2 5.1 1 -6e20\n",
-        // F6: a needle (minor semi-axis 10^-6) and its near copy with the minor semi-axis 10/37,
-        // both crossing a third site (the search's cap in all six orders of the triple: the tips
-        // coincide to 10^-80 and the needle's normal turns by pi within |u| < 10^-6 of its tip, so
-        // circles through the tip form a one-parameter family of near-solutions, rho 9 .. 24).
-        "345/127 10e-7 -6/35 17909/230 11267/144\n2 363/161 -43/82 9731/121 2128/27\n345/127 10/37 -6/35 "
-        "77.8652173913043478260869565217391304000000000000000000000000000000000000000000004010161755154250351 "
-        "11267/144\n",
     };
     for (const char* text : findings) {
         INFO(text);

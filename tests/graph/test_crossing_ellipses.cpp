@@ -10,6 +10,7 @@
 #include "tests/support/ellipse_graph.hpp"
 #include "tests/support/random_sites.hpp"
 #include "tests/support/signed_distance_oracle.hpp"
+#include "util/error.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -269,4 +270,43 @@ TEST_CASE("generated sets of 200 ellipses, 30% crossing another: valid, brute fo
         CHECK(g.brute_force_check() == "");
         CHECK(check_diagram(sites, g) == "");
     }
+}
+
+TEST_CASE("invalid pairs are found before any Voronoi circle is asked for", "[graph][crossing][early-validity]") {
+    // Issue 21's input B: the circle of radius 3 at (6, 4) crosses the needle (11/30, 10) at (6, 10)
+    // in four points. The triple (0, 1, 2) has its internal circle on the needle's medial axis
+    // (a search that used to end at its cap), so a build that met the invalid pair only when it
+    // asked is_hidden first searched for minutes, or, when it never asked, accepted the input.
+    const std::vector<Ellipse> input_b = {Ellipse::circle(0, 0, 10), Ellipse::circle(12, 0, 10),
+                                          ellipse("11/30", "10", "0", "6", "10"), Ellipse::circle(6, 4, 3)};
+    for (bool bulk : {true, false}) {
+        DelaunayGraph g = ellipse_graph(input_b);
+        try {
+            if (bulk)
+                g.insert_all();
+            else
+                for (SiteId i = 0; i < input_b.size(); ++i) g.insert(i);
+            FAIL("input B was accepted");
+        } catch (const IntersectingSites& e) {
+            CHECK(e.first() == 2);
+            CHECK(e.second() == 3);
+            CHECK(e.why() == "their boundaries meet in 4 points (sites may cross in at most two)");
+        }
+        for (Predicate p : {Predicate::incircle, Predicate::side_of_bisector, Predicate::infinite_vertex_conflict})
+            CHECK(g.predicate_stats()[p].calls == 0);
+    }
+    // The needle with a circle crossing its lower tip (two points), one inside it, and
+    // far circles: valid, built and checked as usual.
+    const std::vector<Ellipse> valid = {ellipse("11/30", "10", "0", "6", "10"), Ellipse::circle(6, -2, 3),
+                                        ellipse("1/5", "1/5", "0", "6", "10"), ellipse("1/10", "3", "0", "6", "14"),
+                                        Ellipse::circle(40, 0, 5), Ellipse::circle(-30, 20, 4)};
+    REQUIRE(crossing_pair_problem(valid[0], valid[1]).empty());
+    REQUIRE(*relative_position(valid[0], valid[1]) == RelativePosition::intersecting);
+    REQUIRE(*relative_position(valid[0], valid[2]) == RelativePosition::second_inside);
+    REQUIRE(*relative_position(valid[0], valid[3]) == RelativePosition::second_inside);
+    DelaunayGraph g = ellipse_graph(valid);
+    g.insert_all();
+    CHECK(g.validate() == "");
+    CHECK(g.brute_force_check() == "");
+    CHECK(g.hidden().size() == 2);
 }

@@ -4,6 +4,7 @@
 // site holding its center. Oracles: the configuration's geometry (a needle
 // covered by two disks), and signed distances in MPFR
 // (tests/support/signed_distance_oracle.hpp).
+#include "predicates/covered_site.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
@@ -168,4 +169,95 @@ TEST_CASE("four ellipse boundaries through one point: rho = 0, the fourth tangen
     const Decision<InCircle> r = incircle(e0, e1, e3, e2);
     CHECK(*r == InCircle::tangent);
     CHECK(r.stage == Stage::exact);
+}
+
+TEST_CASE("incircle on an internal circle centered exactly on a needle's medial axis, every rotation, against MPFR",
+          "[predicates][incircle][crossing][medial-axis]") {
+    // Two circles of radius 10 at (0, 0) and (12, 0) and the needle (11/30, 10) at (6, 10): the internal
+    // circle touches the needle at two mirror feet (DESIGN.md §4.2). The oracle finds V on the axis
+    // x = 6 by bisection in MPFR (delta(V, circle) = delta(V, needle)), independently of the solver.
+    const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10);
+    const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
+    const OracleEllipse o1(c1), on(needle);
+    Real lo(7), hi(8);  // delta(V, c1) - delta(V, needle) changes sign between y = 7 and 8
+    auto gap = [&](const Real& y) { return o1.signed_distance_value({Real(6), y}) - on.signed_distance_value({Real(6), y}); };
+    REQUIRE(gap(lo).sign() * gap(hi).sign() < 0);
+    for (int k = 0; k < 150; ++k) {
+        const Real mid = (lo + hi) * Real(0.5);
+        (gap(mid).sign() == gap(lo).sign() ? lo : hi) = mid;
+    }
+    const RealPoint v{Real(6), lo};
+    const double rho = o1.signed_distance_value(v).to_double();
+    CHECK(std::abs(rho + 0.3554852164925021) < 1e-12);
+    // Queries: holding V deeper than |rho| (a conflict), holding it less deep, beside it, far below.
+    const std::vector<Ellipse> queries = {ellipse("1/2", "1/2", "0", "59/10", "38/5"), ellipse("1/5", "1/5", "0", "6", "38/5"),
+                                          ellipse("1", "1/4", "1/3", "13/2", "8"), ellipse("3", "1", "0", "6", "-5")};
+    int conflicts = 0;
+    for (const Ellipse& q : queries) {
+        const double expected_gap = OracleEllipse(q).signed_distance_value(v).to_double() - rho;
+        REQUIRE(std::abs(expected_gap) > 1e-6);
+        conflicts += expected_gap < 0;
+        const std::array<const Ellipse*, 3> triple{&c1, &c2, &needle};
+        for (int r = 0; r < 3; ++r) {
+            INFO("rotation " << r << ", query " << q.str() << ", delta - rho " << expected_gap);
+            const Decision<InCircle> d = incircle(*triple[r], *triple[(r + 1) % 3], *triple[(r + 2) % 3], q);
+            REQUIRE(d.is_decided());
+            CHECK(*d == (expected_gap < 0 ? InCircle::conflict : InCircle::no_conflict));
+            // No double certificate reaches so deep into the needle (Blaschke's bound): Arb's, with the mirror.
+            CHECK(d.stage == Stage::subdivision);
+        }
+    }
+    CHECK(conflicts == 1);
+    // The diagram of the three with two far sites: valid, and the MPFR oracle agrees with it.
+    const std::vector<Ellipse> sites = {c1, c2, needle, Ellipse::circle(30, 30, 2), ellipse("1", "3", "0", "-20", "10")};
+    DelaunayGraph g = test::ellipse_graph(sites);
+    g.insert_all();
+    CHECK(g.validate() == "");
+    CHECK(g.brute_force_check() == "");
+    const auto faces = g.faces();
+    CHECK(std::find(faces.begin(), faces.end(), std::array<SiteId, 3>{0, 1, 2}) != faces.end());
+    CHECK(test::check_diagram(sites, test::claim_of(g, sites)) == "");
+}
+
+TEST_CASE("covered_without_circle: a site in the union of two others, no circle in any order (fuzz F6)",
+          "[predicates][crossing][covered]") {
+    // F6: a needle (minor semi-axis 10^-6) and its copy with the minor semi-axis 10/37, sharing the
+    // tips to 10^-35; the needle pokes out of its copy at one tip only, which lies in the third site.
+    const Ellipse needle = ellipse("345/127", "10e-7", "-6/35", "17909/230", "11267/144");
+    const Ellipse third = ellipse("2", "363/161", "-43/82", "9731/121", "2128/27");
+    const Ellipse fat = ellipse("345/127", "10/37", "-6/35",
+                                "77.8652173913043478260869565217391304000000000000000000000000000000000000000000004010161755154"
+                                "250351",
+                                "11267/144");
+    // The issue's union-hidden needle between two disks.
+    const Ellipse thin = ellipse("10", "1/10", "0", "0", "0"), left = Ellipse::circle(-5, 0, 6), right = Ellipse::circle(5, 0, 6);
+    for (const auto& [x, y, z] : {std::array<const Ellipse*, 3>{&needle, &fat, &third}, {&thin, &left, &right}}) {
+        CHECK(covered_without_circle(*x, *y, *z));
+        CHECK(covered_without_circle(*x, *z, *y));
+        for (const auto& order : {std::array<const Ellipse*, 3>{x, y, z}, {x, z, y}, {y, x, z}, {y, z, x}, {z, x, y}, {z, y, x}}) {
+            const Decision<VoronoiCircles> count = voronoi_circle_count(*order[0], *order[1], *order[2]);
+            CHECK(*count == VoronoiCircles::none);
+            CHECK(count.stage == Stage::exact);  // the latest folded in: the crossing pairs' intersection quartics
+        }
+    }
+    // The diagrams: the covered site hidden, checked by brute force and by the MPFR oracle
+    // (hidden sites own no point of their medial axis).
+    for (const std::vector<Ellipse>& sites : {std::vector<Ellipse>{needle, third, fat}, {thin, left, right}}) {
+        DelaunayGraph g = test::ellipse_graph(sites);
+        g.insert_all();
+        CHECK(g.validate() == "");
+        CHECK(g.brute_force_check() == "");
+        CHECK(g.hidden().size() == 1);
+        CHECK(test::check_diagram(sites, test::claim_of(g, sites)) == "");
+    }
+
+    // Not proven where it is false. A disk covered by two larger crossing disks still owns its
+    // center and the triple has an internal circle (boundary inside the union, but the depths
+    // meet near the middle); a needle sticking out of both has a point outside.
+    const Ellipse small = Ellipse::circle(0, 0, 1), big_left = ellipse("10", "10", "0", "-19/2", "0"),
+                  big_right = ellipse("10", "10", "0", "19/2", "0");
+    CHECK_FALSE(covered_without_circle(small, big_left, big_right));
+    CHECK(*voronoi_circle_count(small, big_left, big_right) != VoronoiCircles::none);
+    const Ellipse sticking = ellipse("12", "1/10", "0", "0", "0");
+    CHECK_FALSE(covered_without_circle(sticking, left, right));
 }

@@ -53,3 +53,64 @@ TEST_CASE("mirror_line: only exact mirrors strictly beside an axis-parallel line
     // The same shape turned the other way is not a mirror image.
     CHECK(!mirror_line(e, Ellipse(Rational(3), Rational(1), Rational(1, 3), Rational(15), Rational(2))));
 }
+
+namespace {
+
+// P(t) = (X(t), Y(t)) / W(t) exactly.
+std::array<Rational, 2> boundary_point(const Ellipse& e, const Rational& t) {
+    auto at = [&](const IntPolynomial& p) {
+        Rational value, power(1);
+        for (long k = 0; k <= p.degree(); ++k, power = power * t) value = value + Rational(p.coeff(k)) * power;
+        return value;
+    };
+    const Rational w = at(e.W());
+    return {at(e.X()) / w, at(e.Y()) / w};
+}
+
+}  // namespace
+
+TEST_CASE("bisector_line and self_mirror: the lines a medial-axis certificate may use", "[sites][medial-axis]") {
+    // Equal circles mirrored across x = 6, crossing: their bisector is exactly x = 6 (mirror_line
+    // wants them strictly beside it). Crossing mirrored ellipses: their bisector is not known to be
+    // the line. Mirrored ellipses strictly beside it: mirror_line's line.
+    const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10);
+    const std::optional<AxisLine> l = bisector_line(c1, c2);
+    REQUIRE(l);
+    CHECK(l->vertical);
+    CHECK(l->c == Rational(6));
+    CHECK(!mirror_line(c1, c2));
+    CHECK(!bisector_line(c1, Ellipse::circle(12, 1, 10)));
+    CHECK(!bisector_line(c1, Ellipse::circle(12, 0, 9)));
+    const Ellipse e(Rational(8), Rational(3), Rational(1, 3), Rational(0), Rational(0));
+    CHECK(!bisector_line(e, mirror_across(e, AxisLine{true, Rational(2)})));
+    const std::optional<AxisLine> apart = bisector_line(e, mirror_across(e, AxisLine{false, Rational(20)}));
+    REQUIRE(apart);
+    CHECK((!apart->vertical && apart->c == Rational(20)));
+
+    // The needle (11/30, 10) at (6, 10), a-axis horizontal: x = 6 holds its b-axis (P(t) -> P(1/t)),
+    // y = 10 its a-axis (P(t) -> P(-t)); turned a quarter (w = 1) the other way round. Checked on
+    // boundary points: the mirror image of P(t) is P(-t) or P(1/t) exactly.
+    const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
+    const Ellipse turned(Rational(11, 30UL), Rational(10), Rational(1), Rational(6), Rational(10));
+    const AxisLine x6{true, Rational(6)}, y10{false, Rational(10)};
+    struct Case {
+        const Ellipse* e;
+        AxisLine line;
+        SelfMirror expected;
+    };
+    for (const Case& c : {Case{&needle, x6, SelfMirror::inverts_parameter}, Case{&needle, y10, SelfMirror::negates_parameter},
+                          Case{&turned, x6, SelfMirror::negates_parameter}, Case{&turned, y10, SelfMirror::inverts_parameter}}) {
+        REQUIRE(self_mirror(*c.e, c.line) == c.expected);
+        for (const Rational& t : {Rational(1, 3UL), Rational(-5, 7UL), Rational(2)}) {
+            const std::array<Rational, 2> p = boundary_point(*c.e, t);
+            const std::array<Rational, 2> image =
+                boundary_point(*c.e, c.expected == SelfMirror::negates_parameter ? -t : Rational(1) / t);
+            const Rational two_c = Rational(2) * c.line.c;
+            CHECK(image[0] == (c.line.vertical ? two_c - p[0] : p[0]));
+            CHECK(image[1] == (c.line.vertical ? p[1] : two_c - p[1]));
+        }
+    }
+    CHECK(self_mirror(needle, AxisLine{true, Rational(7)}) == SelfMirror::none);  // not its axis
+    CHECK(self_mirror(Ellipse(Rational(3), Rational(1), Rational(1, 3), Rational(6), Rational(10)), x6) == SelfMirror::none);
+    CHECK(self_mirror(Ellipse::circle(6, 10, 1), x6) == SelfMirror::none);  // every line through a circle's center
+}

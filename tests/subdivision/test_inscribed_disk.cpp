@@ -281,7 +281,7 @@ TEST_CASE("inside_distance_minus: the depth of a point inside an ellipse against
 // The disk of radius dist(V, boundary) about such a V touches the needle at two
 // mirror feet, so the test proves the disk inside from neither foot, while
 // the same disk moved along one foot's normal, off the axis, is proved.
-TEST_CASE("inscribed disk: a center exactly on the medial axis touches two mirror feet, certified from neither",
+TEST_CASE("inscribed disk: a center exactly on the medial axis touches two mirror feet, certified with the mirror only",
           "[subdivision][inscribed-disk]") {
     const long prec = 256;
     const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
@@ -320,6 +320,11 @@ TEST_CASE("inscribed disk: a center exactly on the medial axis touches two mirro
         CHECK(arb_overlaps(wx.get(), vx.get()));
         CHECK(arb_overlaps(wy.get(), vy.get()));
         CHECK_FALSE(disk_inside_ellipse(needle, flipped, flipped ? u : t, rho, vx, vy, prec));
+        // V on the needle's axis x = 6, which holds its b-axis: the mirror maps t to -t in the
+        // other chart (P(t) -> P(1/t)). Told so, the test skips the mirror foot and proves the
+        // disk inside; told the wrong mirror (the same chart), it still meets the other foot.
+        CHECK(disk_inside_ellipse(needle, flipped, flipped ? u : t, rho, vx, vy, prec, nullptr, AxisMirror::other_chart));
+        CHECK_FALSE(disk_inside_ellipse(needle, flipped, flipped ? u : t, rho, vx, vy, prec, nullptr, AxisMirror::same_chart));
     }
     // The distance from V to the boundary is |rho| within 2^-100: the disk touches both feet.
     for (int side : {-1, 1}) {

@@ -12,6 +12,7 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/support/apollonius_oracle.hpp"
 #include "tests/support/random_sites.hpp"
+#include "tests/support/signed_distance_oracle.hpp"
 #include "util/error.hpp"
 #include "tests/support/diagnostics.hpp"
 
@@ -423,21 +424,39 @@ TEST_CASE("search on an internal circle deeper than the Blaschke bound: certifie
     CHECK(guessed.certify());  // the default path (guesses first) agrees
 }
 
-TEST_CASE("search, open: an internal circle centered exactly on a needle's medial axis", "[.][medial-axis-open]") {
+TEST_CASE("an internal circle centered exactly on a needle's medial axis is certified, by the starts and by the search",
+          "[subdivision][medial-axis]") {
     // Two circles of radius 10 at (0, 0) and (12, 0) and the needle (11/30, 10) at (6, 10), symmetric
     // about x = 6: the internal circle of the triple is centered on the needle's axis, at about
-    // (6, 7.5509), rho about -0.3555, and touches the needle at two mirror feet. The tritangent
-    // system has a regular root for each foot, but disk_inside_ellipse proves neither
-    // (test_inscribed_disk.cpp), so the boxes around both are bisected until the cap, an Error after
-    // minutes (over 200 s under load: at each offered start the disk test runs to its 4096-piece
-    // cap). Hidden from the default run until a certificate with two feet exists
-    // (docs/DESIGN.md §4.2, what still ends with an Error).
+    // (6, 7.5509), rho about -0.3555, and touches the needle at two mirror feet. The circles'
+    // proven distances put V on their bisector x = 6, the needle's axis, so the inscribed-disk test
+    // skips the second foot as the mirror image of the first (DESIGN.md §4.2); before, both regular
+    // roots failed it and the search ended at its cap. Oracle: MPFR signed distances of the
+    // enclosure's center, which must equal rho for all three sites (the disk inside the needle).
     const Ellipse c1 = Ellipse::circle(0, 0, 10), c2 = Ellipse::circle(12, 0, 10);
+    // The same needle spelled with its a-axis along x = 6 (w = 1, a quarter turn): the mirror
+    // then maps a chart parameter s to -s in the same chart, not in the other one.
     const Ellipse needle(Rational(11, 30UL), Rational(10), Rational(0), Rational(6), Rational(10));
-    VoronoiCircleSolver solver(c1, c2, needle);
-    REQUIRE(solver.certify());
-    const VoronoiCircleEnclosure& e = solver.enclosure();
-    CHECK(std::fabs(e.center_x.mid_double() - 6) < 1e-12);
-    CHECK(std::fabs(e.center_y.mid_double() - 7.550938048301991) < 1e-12);
-    CHECK(std::fabs(e.radius.mid_double() + 0.3554852164925021) < 1e-12);
+    const Ellipse turned(Rational(10), Rational(11, 30UL), Rational(1), Rational(6), Rational(10));
+    REQUIRE(needle.point_set_key() == turned.point_set_key());
+    VoronoiCircleSolver from_starts(c1, c2, needle), by_search(c1, c2, needle), turned_from_starts(c1, c2, turned);
+    REQUIRE(from_starts.certify());
+    REQUIRE(by_search.certify_by_search());
+    REQUIRE(turned_from_starts.certify());
+    for (VoronoiCircleSolver* solver : {&from_starts, &by_search, &turned_from_starts}) {
+        REQUIRE(solver->refine(120));
+        const VoronoiCircleEnclosure& e = solver->enclosure();
+        const test::RealPoint v{test::Real(e.center_x.mid_double()), test::Real(e.center_y.mid_double())};
+        const double rho = e.radius.mid_double();
+        INFO("V = (" << e.center_x.str() << ", " << e.center_y.str() << "), rho = " << e.radius.str());
+        CHECK(e.center_x.contains(Rational(6)));
+        CHECK(std::fabs(rho + 0.3554852164925021) < 1e-12);
+        for (const Ellipse* site : {&c1, &c2, &needle})
+            CHECK(std::fabs(test::OracleEllipse(*site).signed_distance_value(v).to_double() - rho) < 1e-13);
+        // Both mirror feet of the needle are nearest to V (the oracle's foot is one of them).
+        const test::SignedDistance d = test::OracleEllipse(needle).signed_distance(v);
+        const test::RealPoint mirrored{test::Real(12) - d.foot.x, d.foot.y};
+        CHECK(std::fabs((hypot(mirrored.x - v.x, mirrored.y - v.y) + test::Real(rho)).to_double()) < 1e-13);
+        CHECK(std::fabs((d.foot.x - test::Real(6)).to_double()) > 0.1);
+    }
 }
