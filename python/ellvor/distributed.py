@@ -474,8 +474,9 @@ class TiledDiagram:
     halo_sites, halo (its width), tile_faces (of its graph), certified, faces_kept (certified, circle center
     in the tile), retries (patches built later around its sites, docs/DESIGN.md §8), seconds,
     cpu_seconds and build_cpu_seconds (its tile and patches; the whole task, the graph's build alone),
-    rss_mb (its worker's resident memory with the graph built: its peak, near enough). ``stats``: rounds, fallback (False, or why one build of the whole set decided),
-    hull_candidates, seconds (wall time of the call)."""
+    rss_mb (its worker's resident memory with the graph built: its peak, near enough). ``stats``: rounds,
+    fallback (False, or why one build of the whole set decided), hull_candidates, seconds (wall time of the
+    call)."""
 
     def __init__(self, sites, hidden, edges, faces, hull, tiles, stats):
         self.sites = sites
