@@ -141,7 +141,8 @@ bool tangent_by_mirror_symmetry(const Ellipse& e1, const Ellipse& e2, const Elli
         const std::optional<AxisLine> line = mirror_line(p, mirror);
         if (!line) continue;
         // (The third site may even straddle L: the reflection still fixes V.)
-        if (mirror_across(third, *line) == q) return true;
+        // As point sets: Q may be written with other parameters (a and b swapped, the rotation turned).
+        if (mirror_across(third, *line).point_set_key() == q.point_set_key()) return true;
     }
     return false;
 }

@@ -29,6 +29,16 @@ TEST_CASE("incircle: the mirror of the third site across a mirror pair's line is
         ++tangent;
         CHECK(*d == InCircle::tangent);
         CHECK(d.stage == Stage::symmetry);
+        // The same point set written otherwise (semi-axes swapped, rotated by a quarter turn:
+        // w' = tan((omega + pi/2) / 2) = (w + 1) / (1 - w)): the same stage.
+        const Rational w = q_mirror.w();
+        const Ellipse q_rewritten(q_mirror.b(), q_mirror.a(), (w + Rational(1)) / (Rational(1) - w), q_mirror.xc(),
+                                  q_mirror.yc());
+        REQUIRE(q_rewritten.point_set_key() == q_mirror.point_set_key());
+        REQUIRE(!(q_rewritten == q_mirror));
+        const Decision<InCircle> rewritten = incircle(*triple[0], *triple[1], *triple[2], q_rewritten);
+        CHECK(*rewritten == InCircle::tangent);
+        CHECK(rewritten.stage == Stage::symmetry);
         // The circle's center is on the line (an independent check of the premise).
         VoronoiCircleSolver solver(*triple[0], *triple[1], *triple[2]);
         REQUIRE(solver.certify());
