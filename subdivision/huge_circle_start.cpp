@@ -34,16 +34,24 @@ Shape shape_relative_to(const Ellipse& e, const Ellipse& origin) {
             (e.yc() - origin.yc()).to_double()};
 }
 
-// Support value h(n) = n.C + |(a n.u, b n.v)| and its derivative along the
-// unit circle, h'(phi) = S(n) . n'(phi) with S the support point.
-double support_value(const Shape& k, double phi, double* slope) {
-    const double nx = std::cos(phi), ny = std::sin(phi);
+// Support value h(n) = n.C + |(a n.u, b n.v)| in the unit direction n and
+// the support point S (the boundary point of outward normal n).
+double support_point(const Shape& k, double nx, double ny, double& sx, double& sy) {
     const double m1 = k.c * nx + k.s * ny, m2 = k.c * ny - k.s * nx;
     const double norm = std::hypot(k.a * m1, k.b * m2);
     const double lx = k.a * k.a * m1 / norm, ly = k.b * k.b * m2 / norm;
-    const double sx = k.x + k.c * lx - k.s * ly, sy = k.y + k.s * lx + k.c * ly;
-    *slope = -sx * ny + sy * nx;
+    sx = k.x + k.c * lx - k.s * ly, sy = k.y + k.s * lx + k.c * ly;
     return nx * k.x + ny * k.y + norm;
+}
+
+// h at the angle phi and its derivative along the unit circle,
+// h'(phi) = S(n) . n'(phi).
+double support_value(const Shape& k, double phi, double* slope) {
+    const double nx = std::cos(phi), ny = std::sin(phi);
+    double sx, sy;
+    const double h = support_point(k, nx, ny, sx, sy);
+    *slope = -sx * ny + sy * nx;
+    return h;
 }
 
 // Directions phi of the external bitangents of two shapes (roots of
@@ -93,6 +101,46 @@ std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
         lo = hi, f_lo = f_hi;
     }
     return roots;
+}
+
+// The first-order circle of the bitangent direction (nx, ny) of shapes i, j
+// with the third shape k, as first_order_circle below does in balls (the
+// formulas are in the header); false when there is none of positive radius.
+// The start's tangency points, as start_of below.
+bool double_circle_start(const std::array<Shape, 3>& k, int i, int j, int m, double nx, double ny,
+                         DoubleCircleStart& start) {
+    double six, siy, sjx, sjy, skx, sky;
+    const double h = support_point(k[i], nx, ny, six, siy);
+    support_point(k[j], nx, ny, sjx, sjy);
+    const auto along_line = [&](double x, double y) { return y * nx - x * ny; };
+    const double c = 0.5 * (along_line(six, siy) + along_line(sjx, sjy));
+    const double half_spacing = along_line(six, siy) - c;
+    double ux = nx, uy = ny, radius = 0, vx = 0, vy = 0;
+    for (int round = 0; round < 3; ++round) {
+        support_point(k[m], ux, uy, skx, sky);
+        const double w_line = along_line(skx, sky) - c, w_normal = skx * nx + sky * ny - h;
+        radius = (w_line * w_line - half_spacing * half_spacing + w_normal * w_normal) / (2 * w_normal);
+        if (!(radius > 0) || !std::isfinite(radius)) return false;
+        const double height = h + radius - half_spacing * half_spacing / (2 * radius);
+        vx = height * nx - c * ny, vy = height * ny + c * nx;
+        const double dx = vx - skx, dy = vy - sky, length = std::hypot(dx, dy);
+        ux = dx / length, uy = dy / length;
+    }
+    for (int site = 0; site < 3; ++site) {
+        double tx = k[site].x, ty = k[site].y, px = 0, py = 0;
+        for (int round = 0; round < 2; ++round) {
+            const double dx = vx - tx, dy = vy - ty, length = std::hypot(dx, dy);
+            px = dx / length, py = dy / length;
+            support_point(k[site], px, py, tx, ty);
+        }
+        // (cos theta, sin theta) ~ (a m1, b m2); t = tan(theta / 2), or u = -1/t
+        const Shape& e = k[site];
+        const double p = e.a * (e.c * px + e.s * py), q = e.b * (e.c * py - e.s * px), norm = std::hypot(p, q);
+        start.flipped[site] = p < 0;
+        start.x[site] = p < 0 ? -q / (norm - p) : q / (norm + p);
+    }
+    start.x[3] = radius, start.x[4] = vx, start.x[5] = vy;
+    return std::all_of(start.x.begin(), start.x.end(), [](double v) { return std::isfinite(v); });
 }
 
 // ---------------------------------------------------------------- balls
@@ -342,6 +390,32 @@ bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Elli
                 if (try_start(start_of(s, circle, prec))) return true;
                 break;
             }
+        }
+    }
+    return false;
+}
+
+bool for_each_huge_circle_start_in_doubles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                           long min_ratio_bits,
+                                           const std::function<bool(const DoubleCircleStart&)>& try_start) {
+    const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
+    double smallest = INFINITY;
+    for (const Ellipse* e : sites) smallest = std::fmin(smallest, std::fmin(e->enclosure().a.lo, e->enclosure().b.lo));
+    constexpr int kPairs[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+    for (const auto& pair : kPairs) {
+        const int i = pair[0], j = pair[1], m = pair[2];
+        // Each pair seen from its site i, as in for_each_huge_circle_start.
+        const std::array<Shape, 3> k = {shape_relative_to(e1, *sites[i]), shape_relative_to(e2, *sites[i]),
+                                        shape_relative_to(e3, *sites[i])};
+        for (double phi : bitangent_directions(k[i], k[j])) {
+            DoubleCircleStart start;
+            if (!double_circle_start(k, i, j, m, std::cos(phi), std::sin(phi), start)) continue;
+            const double ratio = start.x[3] / smallest;
+            if (!(ratio >= std::ldexp(1.0, min_ratio_bits)) || ratio > std::ldexp(1.0, kMaxRatioBitsInDoubles))
+                continue;
+            start.x[4] += sites[i]->enclosure().xc.mid();
+            start.x[5] += sites[i]->enclosure().yc.mid();
+            if (try_start(start)) return true;
         }
     }
     return false;

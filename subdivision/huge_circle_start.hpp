@@ -38,4 +38,19 @@ namespace ellvor {
 bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, long min_ratio_bits,
                                 const std::function<bool(const VoronoiCircleStart&)>& try_start);
 
+// The same starts in doubles, for the double-precision certificate
+// (subdivision/voronoi_circle_in_doubles.hpp) and circles from 2^min_ratio_bits
+// up to 2^kMaxRatioBitsInDoubles times the sites: there the first-order
+// circle's error O(size / R) is far above the doubles' rounding, so the Arb
+// passes above add nothing but their cost. x: the three chart parameters,
+// the radius and the center, as in a VoronoiCircleStart.
+struct DoubleCircleStart {
+    std::array<bool, 3> flipped{};
+    std::array<double, 6> x{};
+};
+constexpr long kMaxRatioBitsInDoubles = 20;
+bool for_each_huge_circle_start_in_doubles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                           long min_ratio_bits,
+                                           const std::function<bool(const DoubleCircleStart&)>& try_start);
+
 }  // namespace ellvor

@@ -11,14 +11,19 @@
 // a circle of radius up to 5 10^40. (Their time per decision is measured by
 // experiments/near_degenerate.cpp.)
 #include "predicates/incircle.hpp"
+#include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/support/apollonius_oracle.hpp"
+#include "tests/support/random_sites.hpp"
 #include "util/ball_arithmetic.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 using namespace ellvor;
 
@@ -285,4 +290,50 @@ TEST_CASE("huge circles of a needle, a small circle past its side and a far site
             }
         }
     }
+}
+
+TEST_CASE("huge circle starts in doubles agree with the Arb starts from 2^3 to 2^20 sizes",
+          "[subdivision][huge-circle]") {
+    // Random triples of small ellipses nearly on a line (the third lifted by
+    // 2^-2 .. 2^-14 of the spacing, so that R runs over 2^3 .. 2^20 sizes):
+    // every Arb start in the doubles' range has a doubles start of the same
+    // charts within 1e-3 of it (the first-order circle's own error is
+    // O(size / R); the doubles add rounding only). Both are only starts: the
+    // certificate judges them (test_voronoi_circle_in_doubles.cpp).
+    std::mt19937_64 rng(20261127);
+    int compared = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        auto axis = [&] { return test::random_fraction(rng, 20, 60, 100); };
+        auto angle = [&] { return test::random_fraction(rng, -99, 99, 100); };
+        const long lift_den = 1L << (2 + trial % 13);
+        const Ellipse e1(axis(), axis(), angle(), Rational(0), Rational(0));
+        const Ellipse e2(axis(), axis(), angle(), Rational(10), Rational(0));
+        const Ellipse e3(axis(), axis(), angle(), Rational(5), test::random_fraction(rng, -10, 10, lift_den));
+        std::vector<VoronoiCircleStart> arb;
+        for_each_huge_circle_start(e1, e2, e3, 3, [&](const VoronoiCircleStart& s) {
+            arb.push_back(s);
+            return false;
+        });
+        std::vector<DoubleCircleStart> doubles;
+        for_each_huge_circle_start_in_doubles(e1, e2, e3, 3, [&](const DoubleCircleStart& s) {
+            doubles.push_back(s);
+            return false;
+        });
+        for (const VoronoiCircleStart& a : arb) {
+            const double radius = a.radius.mid_double();
+            if (radius > std::ldexp(0.2, kMaxRatioBitsInDoubles)) continue;
+            INFO("trial " << trial << " radius " << radius);
+            const auto same = [&](const DoubleCircleStart& d) {
+                if (d.flipped != a.flipped) return false;
+                for (int i = 0; i < 3; ++i)
+                    if (!(std::fabs(d.x[i] - a.parameter[i].mid_double()) <= 1e-3 * (1 + std::fabs(d.x[i]))))
+                        return false;
+                return std::fabs(d.x[3] - radius) <= 1e-3 * radius &&
+                       std::hypot(d.x[4] - a.center_x.mid_double(), d.x[5] - a.center_y.mid_double()) <= 1e-3 * radius;
+            };
+            CHECK(std::any_of(doubles.begin(), doubles.end(), same));
+            ++compared;
+        }
+    }
+    CHECK(compared >= 40);
 }
