@@ -1,5 +1,6 @@
 #include "predicates/bisector_order.hpp"
 
+#include "predicates/support_function.hpp"
 #include "predicates/voronoi_vertex_equality.hpp"
 #include "util/precision.hpp"
 
@@ -72,6 +73,52 @@ Decision<Sign> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, i
         [&](long prec) {
             return ContactComparison({a.sites(), &a, index_a}, {b.sites(), &b, index_b}).same_contact_point(prec);
         });
+}
+
+namespace {
+
+// The pseudo-angle of BisectorFrameInDoubles for a parameter of its chart.
+std::optional<Interval> pseudo_angle(const Interval& parameter, bool flipped) {
+    if (!(parameter.lo >= -1 && parameter.hi <= 1)) return std::nullopt;
+    return flipped ? parameter + Interval(2.0) : parameter;
+}
+
+}  // namespace
+
+BisectorFrameInDoubles::BisectorFrameInDoubles(const Ellipse& e1, const Ellipse& e2) {
+    const std::optional<NormalInterval> n = certified_bitangent_normal(e1, e2, false);
+    if (!n) return;
+    // The boundary point of E1 with outward normal n: (cos theta, sin theta)
+    // is along (a m1, b m2), m = R^T n (the ellipse's frame).
+    const Ellipse::Enclosure& k = e1.enclosure();
+    const Interval nx = n->nx(), ny = n->ny();
+    const Interval p = k.a * (k.cos * nx + k.sin * ny), q = k.b * (k.cos * ny - k.sin * nx);
+    const Interval norm = (p.square() + q.square()).sqrt();
+    // t = tan(theta / 2) = q / (|(p, q)| + p) where cos theta >= 0, else
+    // u = -1/t = -q / (|(p, q)| - p); near the seam (p of either sign)
+    // nothing is claimed.
+    if (p.lo >= 0) departure_ = pseudo_angle(q / (norm + p), false);
+    else if (p.hi <= 0) departure_ = pseudo_angle(-q / (norm - p), true);
+}
+
+std::optional<Interval> BisectorFrameInDoubles::position(const Interval& parameter, bool flipped) const {
+    const std::optional<Interval> angle = pseudo_angle(parameter, flipped);
+    if (!departure_ || !angle) return std::nullopt;
+    // Both in [-1, 3]: the difference lies in [-4, 4]; reduce into (0, 4).
+    Interval d = *angle - *departure_;
+    if (d.hi < 0) d = d + Interval(4.0);
+    if (!(d.lo > 0 && d.hi < 4)) return std::nullopt;
+    return d;
+}
+
+std::optional<Sign> order_on_bisector_in_doubles(const BisectorFrameInDoubles& frame, const DoubleVoronoiCircle& a,
+                                                 int index_a, const DoubleVoronoiCircle& b, int index_b) {
+    const std::optional<Interval> pa = frame.position(a.parameter[index_a], a.flipped[index_a]);
+    const std::optional<Interval> pb = frame.position(b.parameter[index_b], b.flipped[index_b]);
+    if (!pa || !pb) return std::nullopt;
+    if (pa->hi < pb->lo) return Sign::negative;
+    if (pb->hi < pa->lo) return Sign::positive;
+    return std::nullopt;
 }
 
 }  // namespace ellvor

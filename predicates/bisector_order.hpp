@@ -10,6 +10,10 @@
 #include "decision/staged_refinement.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle_in_doubles.hpp"
+#include "util/interval.hpp"
+
+#include <optional>
 
 namespace ellvor {
 
@@ -43,6 +47,34 @@ Ball vertex_position(BisectorFrame& frame, VoronoiCircleSolver& solver, int inde
 // Undecided only with options.exact_stage = false.
 Decision<Sign> order_on_bisector(BisectorFrame& frame, VoronoiCircleSolver& a, int index_a, VoronoiCircleSolver& b,
                                  int index_b, const RefinementOptions& options);
+
+// The filter stage of order_on_bisector, on the double certificates of the
+// two vertices: positions as pseudo-angles, exact about what they know.
+// Instead of theta, P = t on the chart |t| <= 1 (theta in [-pi/2, pi/2])
+// and P = 2 + u on the flipped one (u = -1/t, theta in [pi/2, 3 pi/2]):
+// increasing with theta, continuous through both seams, period 4, so it
+// orders points of E1 counter-clockwise as theta does, with no arctangent.
+// The departure point comes from the proven departure normal of
+// support_function.hpp (the boundary point with that outward normal).
+class BisectorFrameInDoubles {
+public:
+    BisectorFrameInDoubles(const Ellipse& e1, const Ellipse& e2);
+    // Position in (0, 4) of the vertex whose tangency point on E1 has this
+    // chart parameter; nullopt when these intervals cannot tell (the
+    // departure not proven, a parameter outside its chart's [-1, 1], a
+    // position touching the departure end).
+    std::optional<Interval> position(const Interval& parameter, bool flipped) const;
+
+private:
+    std::optional<Interval> departure_;  // the departure point's pseudo-angle
+};
+
+// NEGATIVE or POSITIVE when the double enclosures of the two vertices
+// (E1 at `index_a`, `index_b` of their triples) order them along the
+// bisector; nullopt otherwise (equal vertices included: the Arb and exact
+// stages of order_on_bisector decide those).
+std::optional<Sign> order_on_bisector_in_doubles(const BisectorFrameInDoubles& frame, const DoubleVoronoiCircle& a,
+                                                 int index_a, const DoubleVoronoiCircle& b, int index_b);
 
 // Angle theta of E's parametrization (t = tan(theta/2)) for a chart
 // parameter: 2 atan(t), or 2 atan2(1, -u) in the flipped chart (continuous
