@@ -56,8 +56,10 @@ double slab_scale_lower(const SlabSite& p, const SlabSite& q, double gap_upper, 
 // and those with a slab scale (or width) >= s form an arc (quasi-concave), so
 // a coarse scan and a golden-section search find it (the result is only a
 // candidate, certified by the caller).
-template <class Value>
-double best_direction(Value value) {
+// `good_enough(t, v)` may end the search early at a candidate t of value v
+// (the caller certifies it; the packing generator maximizes, so it never does).
+template <class Value, class Stop>
+double best_direction(Value value, Stop good_enough) {
     constexpr int kScan = 16;
     int best = kScan / 2;
     double best_value = value(0);
@@ -70,6 +72,7 @@ double best_direction(Value value) {
     double t1 = hi - r * (hi - lo), t2 = lo + r * (hi - lo);
     double v1 = value(t1), v2 = value(t2);
     for (int it = 0; it < 48; ++it) {
+        if (v1 < v2 ? good_enough(t2, v2) : good_enough(t1, v1)) break;
         if (v1 < v2) {
             lo = t1, t1 = t2, v1 = v2, t2 = lo + r * (hi - lo), v2 = value(t2);
         } else {
@@ -87,10 +90,12 @@ double certified_separating_scale(const SlabSite& p, const SlabSite& q, double g
     const double dx = q.xd - p.xd, dy = q.yd - p.yd;
     const double along_centers = slab_scale_lower(p, q, gap_upper, dx, dy);
     if (along_centers >= enough) return along_centers;
-    const auto n = direction(dx, dy, best_direction([&](double t) {
-        const auto m = direction(dx, dy, t);
-        return slab_scale(p, q, gap, m.first, m.second);
-    }));
+    const auto n = direction(dx, dy, best_direction(
+                                         [&](double t) {
+                                             const auto m = direction(dx, dy, t);
+                                             return slab_scale(p, q, gap, m.first, m.second);
+                                         },
+                                         [](double, double) { return false; }));
     return std::max(along_centers, slab_scale_lower(p, q, gap_upper, n.first, n.second));
 }
 
@@ -106,12 +111,25 @@ double certified_separation(const SlabSite& p, const SlabSite& q, double enough)
     };
     const double along_centers = width(dx, dy);
     if (along_centers >= enough) return along_centers;
-    const auto n = direction(dx, dy, best_direction([&](double t) {
-        const auto m = direction(dx, dy, t);
-        return (m.first * dx + m.second * dy - support(p, m.first, m.second) - support(q, m.first, m.second)) /
-               std::sqrt(m.first * m.first + m.second * m.second);
-    }));
-    return std::max(along_centers, width(n.first, n.second));
+    // The search stops at the first direction whose slab, widened by the
+    // rounding its certificate may lose, is proven at least `enough` wide
+    // (separating two sites needs any positive width, not the widest).
+    double proven = along_centers;
+    const double margin = 0x1p-40 * (std::fabs(dx) + std::fabs(dy) + p.ad + p.bd + q.ad + q.bd);
+    const auto n = direction(dx, dy, best_direction(
+                                         [&](double t) {
+                                             const auto m = direction(dx, dy, t);
+                                             return (m.first * dx + m.second * dy - support(p, m.first, m.second) -
+                                                     support(q, m.first, m.second)) /
+                                                    std::sqrt(m.first * m.first + m.second * m.second);
+                                         },
+                                         [&](double t, double v) {
+                                             if (!(v > enough + margin)) return false;
+                                             const auto m = direction(dx, dy, t);
+                                             proven = std::max(proven, width(m.first, m.second));
+                                             return proven >= enough;
+                                         }));
+    return std::max(proven, width(n.first, n.second));
 }
 
 }  // namespace ellvor
