@@ -43,13 +43,16 @@ std::uint64_t unordered_pair_key(SiteId p, SiteId q) {
 
 }  // namespace
 
-EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {
-    area_.reserve(sites_.size());
-    for (const Ellipse& e : sites_) area_.push_back(e.a() * e.b());
-}
+EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {}
 
 Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
-    const Rational &x = area_.at(a), &y = area_.at(b);
+    // The areas a b, by their double enclosures first (the insertion order
+    // sorts by them): exactly only when those overlap.
+    const Ellipse &ea = site(a), &eb = site(b);
+    const Interval area_a = ea.enclosure().a * ea.enclosure().b, area_b = eb.enclosure().a * eb.enclosure().b;
+    if (area_b.hi < area_a.lo) return Sign::positive;
+    if (area_a.hi < area_b.lo) return Sign::negative;
+    const Rational x = ea.a() * ea.b(), y = eb.a() * eb.b();
     return y < x ? Sign::positive : x < y ? Sign::negative : Sign::zero;
 }
 

@@ -68,7 +68,6 @@ private:
     Decision<InCircle> incircle_of_face(SiteId i, SiteId j, SiteId k, SiteId q);
 
     std::vector<Ellipse> sites_;
-    std::vector<Rational> area_;  // a b per site
     VoronoiCircleCache cache_;
     std::unordered_map<std::uint64_t, bool> hidden_memo_;    // (p, q): q inside p
     std::unordered_map<std::uint64_t, bool> crossing_memo_;  // (min, max): the two cross
