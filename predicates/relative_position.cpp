@@ -123,8 +123,10 @@ bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2) {
 
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2) {
     auto exactly = [](RelativePosition p) { return Decision<RelativePosition>::decided(p, Stage::exact); };
+    // The slab before the exact bounding circles: close ellipses (the pairs
+    // that get this far) rarely have their bounding circles apart.
     if (bounding_circles_apart_in_doubles(e1, e2) || supports_apart_in_doubles(e1, e2) ||
-        bounding_circles_apart_exactly(e1, e2) || separated_by_searched_slab(e1, e2))
+        separated_by_searched_slab(e1, e2) || bounding_circles_apart_exactly(e1, e2))
         return Decision<RelativePosition>::decided(RelativePosition::separated, Stage::filter);
     if (e1.is_circle() && e2.is_circle()) return exactly(circle_position(e1, e2));
     const IntPolynomial i12 = intersection_quartic(e1, e2);
