@@ -13,7 +13,8 @@ double approximate_nearest_angle(double a, double b, double x, double y) {
         if (!(dg > 0)) break;  // not near a minimum: keep the last guess
         const double step = std::fmax(-0.5, std::fmin(0.5, g / dg));
         theta -= step;
-        if (std::fabs(step) < 1e-16) break;
+        // Within a few ulps: rounding keeps a step of about one ulp forever.
+        if (std::fabs(step) <= 0x1p-50 * std::fmax(1.0, std::fabs(theta))) break;
     }
     return theta;
 }
