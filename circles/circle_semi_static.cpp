@@ -13,7 +13,7 @@ namespace {
 using namespace semi_static;
 
 // A circle site in doubles. Index 0: every parameter an exact double
-// (exact_double). Index 1: each parameter the double nearest to it
+// (Rational::is_small_dyadic). Index 1: each parameter the double nearest to it
 // (rounded_input), x = x^ (1 + t) with |t| <= u, which the lemma of
 // semi_static.hpp counts like a rounding.
 template <int K>
@@ -21,15 +21,13 @@ struct Circle {
     Rounded<K> x, y, r;
 };
 
-// Equal doubles a and b are equal rationals, so this also proves that the
-// site is a circle.
+// The doubles are read off the enclosures: enclose(q) is [down(x^),
+// up(x^)] around the nearest double x^ (util/interval.hpp), which is q itself
+// for a small dyadic q, so x^ = up(lo).
 std::optional<Circle<0>> exact_circle(const Ellipse& e) {
-    double x, y, r, b;
-    if (!e.is_circle()) return std::nullopt;  // cheaper than the conversions
-    if (!exact_double(e.xc(), x) || !exact_double(e.yc(), y) || !exact_double(e.a(), r) || !exact_double(e.b(), b) ||
-        b != r)
-        return std::nullopt;
-    return Circle<0>{exact(x), exact(y), exact(r)};
+    if (!e.is_dyadic_circle()) return std::nullopt;
+    const Ellipse::Enclosure& k = e.enclosure();
+    return Circle<0>{exact(Interval::up(k.xc.lo)), exact(Interval::up(k.yc.lo)), exact(Interval::up(k.a.lo))};
 }
 
 std::optional<Circle<1>> rounded_circle(const Ellipse& e) {

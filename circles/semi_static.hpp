@@ -39,7 +39,7 @@
 // unknown (0).
 //
 // Range. The lemma needs every nonzero result to be a normal double. The
-// inputs read by exact_double are multiples of 2^-61 below 2^53 in magnitude;
+// inputs of exact_circle (circle_semi_static.cpp: Rational::is_small_dyadic) are multiples of 2^-61 below 2^53 in magnitude;
 // then every value of degree d in them is a multiple of 2^(-61 d) (sums and
 // products of multiples stay multiples, and rounding to a double keeps a
 // multiple of 2^q when the result is at least 2^(q+53), and is exact below),
@@ -130,19 +130,6 @@ int certain_sign_with_root(Rounded<A> a, Rounded<B> b, Rounded<R> r) {
     if (sa == 0 || sb == 0) return 0;
     if (sa == sb) return sa;
     return sa * certain_sign(a * a - b * b * r);
-}
-
-// q as a double when q = n / 2^k with |n| < 2^53 and 2^k a single-word
-// integer: then the double is exact, a multiple of 2^-61 below 2^53 in
-// magnitude (the range above). False otherwise (the caller leaves the
-// decision to a later stage).
-inline bool exact_double(const Rational& q, double& out) {
-    const fmpz n = *fmpq_numref(q.get()), d = *fmpq_denref(q.get());
-    if (COEFF_IS_MPZ(n) || COEFF_IS_MPZ(d) || (d & (d - 1)) != 0) return false;
-    constexpr slong kMantissa = slong(1) << 53;
-    if (n >= kMantissa || n <= -kMantissa) return false;
-    out = static_cast<double>(n) / static_cast<double>(d);
-    return true;
 }
 
 // A rational input known by its enclosure from enclose(const Rational&)

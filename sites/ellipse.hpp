@@ -50,6 +50,11 @@ public:
     bool is_circle() const {
         return enclosure_.a.lo == enclosure_.b.lo && enclosure_.a.hi == enclosure_.b.hi && a_ == b_;
     }
+    // A circle whose center and radius are small dyadic rationals
+    // (Rational::is_small_dyadic): exact doubles, the input of the circles'
+    // semi-static filters. Decided once: those filters ask it of every site
+    // of every call.
+    bool is_dyadic_circle() const { return dyadic_circle_; }
     // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
     const Rational& cos_rotation() const { return cos_; }
     const Rational& sin_rotation() const { return sin_; }
@@ -113,6 +118,7 @@ private:
     Rational a_, b_, w_, xc_, yc_;
     Rational cos_, sin_;
     Enclosure enclosure_;
+    bool dyadic_circle_ = false;
     // Written once, by whichever thread asks first (atomic shared_ptr access:
     // a lost race only computes the same values twice).
     mutable std::shared_ptr<const Polynomials> polynomials_;

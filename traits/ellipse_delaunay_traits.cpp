@@ -63,6 +63,10 @@ LocationHint EllipseDelaunayTraits::location_hint(SiteId i) const {
 
 void EllipseDelaunayTraits::check_sites() {
     if (sites_checked_) return;
+    // Circles are valid in any position (two circles meet in two points at
+    // most): only pairs with an ellipse are checked.
+    sites_checked_ = std::all_of(sites_.begin(), sites_.end(), [](const Ellipse& e) { return e.is_circle(); });
+    if (sites_checked_) return;
     for (const auto& [p, q] : pairs_that_may_meet(sites_))
         if (!site(p).is_circle() || !site(q).is_circle()) crosses(p, q);  // throws for a rejected pair
     sites_checked_ = true;

@@ -69,6 +69,14 @@ public:
     // Bits of the larger of |numerator| and denominator.
     long bits() const;
     double to_double() const;  // the nearest double (in the normal range)
+    // n / 2^k with |n| < 2^53 and 2^k a single-word integer: exactly a
+    // double, a multiple of 2^-61 below 2^53 in magnitude (the inputs of the
+    // semi-static filters, circles/semi_static.hpp).
+    bool is_small_dyadic() const {
+        const fmpz n = *fmpq_numref(v_), d = *fmpq_denref(v_);
+        constexpr slong kMantissa = slong(1) << 53;
+        return !COEFF_IS_MPZ(n) && !COEFF_IS_MPZ(d) && (d & (d - 1)) == 0 && n < kMantissa && n > -kMantissa;
+    }
     std::string str() const;  // "p/q" or "p"
 
     friend bool operator==(const Rational& a, const Rational& b) { return fmpq_equal(a.v_, b.v_); }

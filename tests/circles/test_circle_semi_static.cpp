@@ -136,18 +136,28 @@ TEST_CASE("semi-static signs: cancellation is never read as a sign", "[semi-stat
     CHECK(certain_sign_with_root(exact(2), exact(-1), exact(4)) == 0);
 }
 
-TEST_CASE("semi-static inputs: exactly the dyadic rationals that are doubles", "[semi-static]") {
-    double x = 0;
-    CHECK(semi_static::exact_double(Rational(-85, 2), x));
-    CHECK(x == -42.5);
-    CHECK(semi_static::exact_double(Rational(0), x));
-    CHECK(x == 0);
-    CHECK(semi_static::exact_double(Rational(3, 1L << 61), x));
-    CHECK(x == 3 * 0x1p-61);
-    CHECK(!semi_static::exact_double(Rational(1, 3), x));
-    CHECK(!semi_static::exact_double(Rational(1, 10), x));
-    CHECK(!semi_static::exact_double(Rational(Integer(1L << 53)), x));  // 54 bits: beyond the range
-    CHECK(semi_static::exact_double(Rational(Integer((1L << 53) - 1)), x));
+TEST_CASE("semi-static inputs: exactly the dyadic rationals that are doubles, read off the enclosure",
+          "[semi-static]") {
+    // Rational::is_small_dyadic, and the double x^ = up(lo) of its enclosure
+    // (what exact_circle reads) equal to the rational.
+    const auto exact_double = [](const Rational& q, double want) {
+        INFO(q.str());
+        CHECK(q.is_small_dyadic());
+        CHECK(Interval::up(enclose(q).lo) == want);
+    };
+    exact_double(Rational(-85, 2), -42.5);
+    exact_double(Rational(0), 0);
+    exact_double(Rational(3, 1L << 61), 3 * 0x1p-61);
+    exact_double(Rational(Integer((1L << 53) - 1)), 0x1p53 - 1);
+    CHECK(!Rational(1, 3).is_small_dyadic());
+    CHECK(!Rational(1, 10).is_small_dyadic());
+    CHECK(!Rational(Integer(1L << 53)).is_small_dyadic());  // 54 bits: beyond the range
+    // A circle of such numbers is a dyadic circle; an ellipse, or a circle
+    // with one other coordinate, is not.
+    CHECK(Ellipse(Rational(3, 4), Rational(3, 4), Rational(1, 3), Rational(-85, 2), Rational(7)).is_dyadic_circle());
+    CHECK(!Ellipse(Rational(3, 4), Rational(3, 4), Rational(0), Rational(1, 10), Rational(7)).is_dyadic_circle());
+    CHECK(!Ellipse(Rational(3, 4), Rational(1, 4), Rational(0), Rational(1), Rational(7)).is_dyadic_circle());
+    CHECK(!Ellipse(Rational(1, 3), Rational(1, 3), Rational(0), Rational(1), Rational(7)).is_dyadic_circle());
 }
 
 // ---------------------------------------------------- random double circles --
