@@ -1,5 +1,6 @@
 #include "subdivision/voronoi_circle_in_doubles.hpp"
 
+#include "subdivision/bisector_walk_start.hpp"
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/precision.hpp"
@@ -431,6 +432,22 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
                                                   return try_start(start.flipped, start.x);
                                               }))
         return certified;
+    // The circles met along the bisectors (bisector_walk_start.hpp): sites
+    // close against their sizes, where the models' circles lead Newton to the
+    // other circle or nowhere; before the Arb pass, which costs more.
+    const auto try_walked = [&](const VoronoiCircleGuess& c) {
+        std::array<bool, 3> flipped;
+        std::array<double, 6> x = {0, 0, 0, c.radius, c.x, c.y};
+        for (int i = 0; i < 3; ++i) {
+            // t = tan(theta/2) = sin/(1 + cos); flipped, u = -1/t = -sin/(1 - cos).
+            const double cos = std::cos(c.theta[i]), sin = std::sin(c.theta[i]);
+            flipped[i] = cos < 0;
+            x[i] = flipped[i] ? -sin / (1 - cos) : sin / (1 + cos);
+        }
+        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, c.radius));
+        return certified.has_value();
+    };
+    if (for_each_bisector_walk_circle(e1, e2, e3, try_walked)) return certified;
     for_each_huge_circle_start(e1, e2, e3, precision::kHugeCircleBitsInDoubles, [&](const VoronoiCircleStart& start) {
         std::array<double, 6> x;
         for (int i = 0; i < 3; ++i) x[i] = arf_get_d(arb_midref(start.parameter[i].get()), ARF_RND_NEAR);
