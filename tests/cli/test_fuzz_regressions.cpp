@@ -233,8 +233,8 @@ TEST_CASE("fuzz findings, slow: pairs nearly internally tangent at two points", 
     // semi-axis shared), then moved by about 10^-30 so that the two cross. Near the tangency points
     // the pair nearly coincides, the Voronoi circles there defeat the guesses, and the exhaustive
     // search decides in seconds (F1-F3: 2.6-17 s release, over 10 s under ASan; 35 s together).
-    // Hidden from the default run for their time only (docs/DESIGN.md §4.2, item 4); the graph must
-    // be valid.
+    // Hidden from the default run for their time only (docs/DESIGN.md §4.2, "What still ends at the
+    // box cap", (4)); the graph must be valid.
     const char* findings[] = {
         // F1: (2, 1) inside (4, 1), touching at the ends of the minor axis, moved by 6e-30.
         "2 1 1/3 0 0\n4 1 3000000000000000000000000000005/9000000000000000000000000000000 0 -6e-30\n1 1 0 6 1\n"
