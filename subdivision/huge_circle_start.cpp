@@ -1,9 +1,11 @@
 #include "subdivision/huge_circle_start.hpp"
+#include "subdivision/near_duplicate_pair.hpp"
 #include "util/precision.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace ellvor {
@@ -35,33 +37,39 @@ Shape shape_relative_to(const Ellipse& e, const Ellipse& origin) {
 }
 
 // Support value h(n) = n.C + |(a n.u, b n.v)| in the unit direction n and
-// the support point S (the boundary point of outward normal n).
-double support_point(const Shape& k, double nx, double ny, double& sx, double& sy) {
+// its derivative along the unit circle, h'(phi) = S(n) . n'(phi) with S the
+// support point, each split into the center's part and the shape's part: two
+// sites nearly equal in shape cancel in the shape's parts, so the two parts
+// of a difference must be subtracted apart (a copy moved by 10^-20: its
+// translation is exact in the center's part and lost if added to the
+// shape's first). (sx, sy) = S - C.
+struct SupportValue {
+    double center, shape, center_slope, shape_slope, sx, sy;
+    double value() const { return center + shape; }
+};
+SupportValue support_value(const Shape& k, double nx, double ny) {
     const double m1 = k.c * nx + k.s * ny, m2 = k.c * ny - k.s * nx;
     const double norm = std::hypot(k.a * m1, k.b * m2);
     const double lx = k.a * k.a * m1 / norm, ly = k.b * k.b * m2 / norm;
-    sx = k.x + k.c * lx - k.s * ly, sy = k.y + k.s * lx + k.c * ly;
-    return nx * k.x + ny * k.y + norm;
+    const double sx = k.c * lx - k.s * ly, sy = k.s * lx + k.c * ly;
+    return {nx * k.x + ny * k.y, norm, -k.x * ny + k.y * nx, -sx * ny + sy * nx, sx, sy};
 }
 
-// h at the angle phi and its derivative along the unit circle,
-// h'(phi) = S(n) . n'(phi).
-double support_value(const Shape& k, double phi, double* slope) {
-    const double nx = std::cos(phi), ny = std::sin(phi);
-    double sx, sy;
-    const double h = support_point(k, nx, ny, sx, sy);
-    *slope = -sx * ny + sy * nx;
-    return h;
+// h(n) and the support point S itself.
+double support_point(const Shape& k, double nx, double ny, double& sx, double& sy) {
+    const SupportValue h = support_value(k, nx, ny);
+    sx = k.x + h.sx, sy = k.y + h.sy;
+    return h.value();
 }
 
 // Directions phi of the external bitangents of two shapes (roots of
 // h_i - h_j), in doubles: sampling, then Newton safeguarded by bisection.
 std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
     auto f = [&](double phi, double* slope) {
-        double sp, sq;
-        const double v = support_value(p, phi, &sp) - support_value(q, phi, &sq);
-        *slope = sp - sq;
-        return v;
+        const double nx = std::cos(phi), ny = std::sin(phi);
+        const SupportValue hp = support_value(p, nx, ny), hq = support_value(q, nx, ny);
+        *slope = (hp.shape_slope - hq.shape_slope) + (hp.center_slope - hq.center_slope);
+        return (hp.shape - hq.shape) + (hp.center - hq.center);
     };
     // Samples half a step off the axes, all around the circle (the last
     // interval wraps past pi: bitangents along the axes of a triple lie there),
@@ -368,14 +376,23 @@ bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Elli
         for (const Rational* axis : {&e->a(), &e->b()})
             if (smallest.is_zero() || *axis < smallest) smallest = *axis;
     const long size_bits = magnitude(Ball(smallest, 64));
+    // A nearly coincident pair (a copy moved by 10^-20, fuzz F9) has h_i - h_j
+    // of the order of its difference h, so its bitangent's direction needs
+    // log2(1 / h) bits more than a pair apart to be resolved at all, and as
+    // many again to be within h / R of the true one, which the pair's
+    // nearly singular system needs of a start.
+    const std::optional<NearDuplicatePair> close_pair = closest_near_duplicate_pair(e1, e2, e3, kNearDuplicateBits);
     constexpr int kPairs[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
     for (const auto& pair : kPairs) {
         const int i = pair[0], j = pair[1], k = pair[2];
         const Ellipse &ei = *sites[i], &ej = *sites[j];
+        const bool nearly_coincident =
+            close_pair && std::min(i, j) == close_pair->first && std::max(i, j) == close_pair->second;
+        const long first_precision = kFirstPrecision + (nearly_coincident ? 2 * close_pair->bits : 0);
         for (double phi0 : bitangent_directions(shape_relative_to(ei, ei), shape_relative_to(ej, ei))) {
             // Raise the precision until g is resolved, then to what the
             // circle's size needs.
-            for (long prec = kFirstPrecision; prec <= kLastPrecision; prec *= 2) {
+            for (long prec = first_precision; prec <= kLastPrecision; prec *= 2) {
                 const std::array<ArbSite, 3> s = {ArbSite(e1, prec), ArbSite(e2, prec), ArbSite(e3, prec)};
                 const Ball phi = refine_direction(s[i], s[j], phi0, prec);
                 FirstOrderCircle circle;

@@ -3,6 +3,7 @@
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/inscribed_disk.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
+#include "subdivision/thin_needle.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "sites/mirror_symmetry.hpp"
 #include "util/error.hpp"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <deque>
 #include <cmath>
 #include <optional>
 
@@ -63,6 +65,7 @@ const char* circle_start_name(CircleStart s) {
         case CircleStart::guess: return "guess";
         case CircleStart::tangent_line: return "tangent-line";
         case CircleStart::near_duplicate: return "near-duplicate";
+        case CircleStart::thin_needle: return "thin-needle";
         case CircleStart::search: return "search";
     }
     return "?";
@@ -371,8 +374,77 @@ bool VoronoiCircleSolver::certify_from_starts() {
         enclosure_.found_by = CircleStart::tangent_line;
         return true;
     }
-    if ((certified_ = certify_near_duplicate())) enclosure_.found_by = CircleStart::near_duplicate;
+    if ((certified_ = certify_near_duplicate())) {
+        enclosure_.found_by = CircleStart::near_duplicate;
+        return true;
+    }
+    if ((certified_ = certify_thin_needle())) enclosure_.found_by = CircleStart::thin_needle;
     return certified_;
+}
+
+bool VoronoiCircleSolver::certify_thin_needle() {
+    const std::optional<int> needle = thinnest_needle(*work_sites_[0], *work_sites_[1], *work_sites_[2]);
+    return needle && (certify_along_needle_chain(*needle, NeedleChain::thicker) ||
+                      certify_along_needle_chain(*needle, NeedleChain::shorter));
+}
+
+bool VoronoiCircleSolver::certify_along_needle_chain(int i, NeedleChain chain) {
+    const Ellipse& site = *work_sites_[i];
+    const long aspect = aspect_bits(site);
+    // The stout end of the chain: its own starts, else a short search (a few
+    // hundred boxes at aspect 2^4); no circle there, or the search's cap,
+    // leaves the triple to the search. The links' sites are this solver's,
+    // near the unit: their frame is the identity. (A deque: the solvers keep
+    // pointers to their sites.)
+    std::array<const Ellipse*, 3> sites = work_sites_;
+    std::deque<Ellipse> links{needle_link(site, chain, kStoutNeedleBits)};
+    sites[i] = &links.back();
+    auto previous = std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2]);
+    previous->set_frame();
+    if (!previous->frame().is_identity()) return false;
+    if (!previous->certify_from_starts()) {
+        VoronoiCircleSearchOptions capped;
+        capped.max_boxes = kMovedSearchBoxes;
+        try {
+            if (!previous->certify_by_search(capped)) return false;
+        } catch (const Error&) {
+            return false;
+        }
+    }
+    // Each link: the needle's contact carried over (thin_needle.hpp; the
+    // second map if the first fails), the rest as the last circle has them.
+    const long prec = start_precision();
+    for (long bits = kStoutNeedleBits; bits < aspect;) {
+        bits = std::min(aspect, std::max(bits + 2, bits * 3 / 2));
+        const bool last = bits == aspect;
+        const Ellipse& from = links.back();
+        const Ellipse& to = last ? site : links.emplace_back(needle_link(site, chain, bits));
+        sites[i] = &to;
+        std::unique_ptr<VoronoiCircleSolver> next;
+        if (!last) {
+            next = std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2]);
+            next->set_frame();
+            if (!next->frame().is_identity()) return false;
+        }
+        VoronoiCircleSolver& solver = last ? *this : *next;
+        const VoronoiCircleEnclosure& c = previous->enclosure_;
+        bool certified = false;
+        for (ContactMap map : contact_maps(from, chain, c.flipped[i], c.parameter[i], prec)) {
+            VoronoiCircleStart start;
+            start.flipped = c.flipped;
+            start.precision = prec;
+            for (int k = 0; k < 3; ++k) arb_get_mid_arb(start.parameter[k].get(), c.parameter[k].get());
+            carry_contact(from, to, map, start.flipped[i], start.parameter[i], prec);
+            arb_get_mid_arb(start.radius.get(), c.radius.get());
+            arb_get_mid_arb(start.center_x.get(), c.center_x.get());
+            arb_get_mid_arb(start.center_y.get(), c.center_y.get());
+            if ((certified = solver.certify_from(start))) break;
+        }
+        if (!certified) return false;
+        if (last) return true;
+        previous = std::move(next);
+    }
+    return false;
 }
 
 bool VoronoiCircleSolver::certify_near_duplicate() {

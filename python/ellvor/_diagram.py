@@ -59,7 +59,8 @@ class VoronoiCircle:
     with ``t`` (Ball, or None at the site's point t = infinity), ``chart``
     (``"t"`` or ``"-1/t"``) and ``chart_parameter`` (Ball); ``correct_bits``
     (of the least accurate of them), ``precision``, ``newton_steps``,
-    ``found_by`` (``"guess"``, ``"tangent-line"`` or ``"search"``),
+    ``found_by`` (``"guess"``, ``"tangent-line"``, ``"near-duplicate"``,
+    ``"thin-needle"`` or ``"search"``),
     ``search_boxes``; ``face`` for a vertex of a diagram.
     """
 

@@ -261,3 +261,32 @@ TEST_CASE("covered_without_circle: a site in the union of two others, no circle 
     const Ellipse sticking = ellipse("12", "1/10", "0", "0", "0");
     CHECK_FALSE(covered_without_circle(sticking, left, right));
 }
+
+TEST_CASE("covered_without_circle: a thin site crossing a band 10^6 times longer and a third site (fuzz F10)",
+          "[predicates][crossing][covered]") {
+    // F10: the site x (4.7 x 0.04) crosses the band (8.4e6 x 9.8) and the ellipse z; its axis
+    // leaves the band's depth band [-2r, r] (r = 0.04) where it is 0.3 deep in z, and z's where
+    // it is 0.4 deep in the band. (B)'s depth test on a piece 0.01 long, about the piece as a box,
+    // blurred the distance quartic by the piece's width times z's size and proved neither depth:
+    // the count went to the search, which never excluded (its cap). About the piece's midpoint
+    // with the radius widened by the piece it proves them.
+    const Ellipse x = ellipse("47/10", "03/74", "-47/49", "91/5", "116/5");
+    const Ellipse band = ellipse("84E5", "49/5", "1/05", "5", "137/5");
+    const Ellipse z = ellipse("92/5", "10", "-13/50", "206/11", "58/5");
+    CHECK(covered_without_circle(x, band, z));
+    CHECK(covered_without_circle(x, z, band));
+    for (const auto& order : {std::array<const Ellipse*, 3>{&x, &band, &z}, {&x, &z, &band}, {&band, &x, &z},
+                              {&band, &z, &x}, {&z, &x, &band}, {&z, &band, &x}}) {
+        const Decision<VoronoiCircles> count = voronoi_circle_count(*order[0], *order[1], *order[2]);
+        CHECK(*count == VoronoiCircles::none);
+        CHECK(count.stage == Stage::exact);  // the crossing pairs' intersection quartics, not the search
+    }
+    // The diagram: x hidden by the union, checked by brute force and by the MPFR oracle.
+    const std::vector<Ellipse> sites{x, band, z};
+    DelaunayGraph g = test::ellipse_graph(sites);
+    g.insert_all();
+    CHECK(g.validate() == "");
+    CHECK(g.brute_force_check() == "");
+    REQUIRE(g.hidden().size() == 1);
+    CHECK(test::check_diagram(sites, test::claim_of(g, sites)) == "");
+}

@@ -337,3 +337,42 @@ TEST_CASE("huge circle starts in doubles agree with the Arb starts from 2^3 to 2
     }
     CHECK(compared >= 40);
 }
+
+TEST_CASE("huge circles of an ellipse, its copy moved by 10^-20 .. 10^-30 and a far circle are certified from the "
+          "pair's exact bitangent (fuzz F9)",
+          "[subdivision][huge-circle][near-duplicate]") {
+    // The pair's bitangent is the tangent line parallel to the move (here
+    // the x-axis): the support values differ by n.(move) only, which rounding
+    // lost when added to the shapes' parts first. The circle touches the pair
+    // where the normal is perpendicular to the move, up to ~h / R (the pair
+    // decides it), and the far circle 10^20 away: R ~ 10^39.
+    for (const Rational& x : {Rational(0), power_of_ten(20)}) {
+        for (int k : {20, 30}) {
+            const Rational h = power_of_ten(-k);
+            const Ellipse e(2, 1, Rational(1, 3UL), x, 0), copy(2, 1, Rational(1, 3UL), x + h, 0),
+                far = Ellipse::circle(x - power_of_ten(20), 3, 1);
+            INFO("at x = " << x.to_double() << ", moved by 10^-" << k);
+            VoronoiCircleSolver solver(e, copy, far);
+            REQUIRE(solver.refine(128));
+            const VoronoiCircleEnclosure& found = solver.enclosure();
+            CHECK(found.found_by == CircleStart::tangent_line);
+            CHECK(found.radius.mid_double() > 1e38);
+            // The test's own feet from the certified center: every site at the
+            // certified radius, and the pair's feet with normals perpendicular
+            // to the move (a circle of the pair's first-order bitangent alone
+            // has them 10^-20 off).
+            const Ball vx = BallArithmetic::mid(found.center_x), vy = BallArithmetic::mid(found.center_y);
+            for (const Ellipse* site : {&e, &copy, &far})
+                CHECK(arb_contains(widened(found.radius, 100).get(), distance_by_multiplier(*site, vx, vy).get()));
+            for (const Ellipse* site : {&e, &copy}) {
+                const Foot f = foot(*site, vx, vy);
+                Ball bound;
+                arb_set(bound.get(), BallArithmetic::mid(BallArithmetic{kOraclePrecision}.q(h)).get());
+                arb_mul_2exp_si(bound.get(), bound.get(), -20);
+                CHECK(arb_lt(f.ux.get(), bound.get()));
+                arb_neg(bound.get(), bound.get());
+                CHECK(arb_gt(f.ux.get(), bound.get()));
+            }
+        }
+    }
+}
