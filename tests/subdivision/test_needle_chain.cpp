@@ -1,4 +1,4 @@
-// The needle chains (subdivision/thin_needle.hpp, docs/DESIGN.md §4.2 item 4):
+// The needle chains (subdivision/needle_chain.hpp, docs/DESIGN.md §4.2 item 4):
 // the links and the maps that carry a contact from one link to the next,
 // checked against the boundary itself; and the circles of fuzz F7, F8 (past a
 // needle's tip) and F10 (beside a band 10^6 times longer than the other
@@ -6,7 +6,7 @@
 // (tests/support/signed_distance_oracle.hpp), which calls no solver.
 #include "predicates/incircle.hpp"
 #include "subdivision/boundary_chart.hpp"
-#include "subdivision/thin_needle.hpp"
+#include "subdivision/needle_chain.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/support/ellipse_graph.hpp"
 #include "tests/support/signed_distance_oracle.hpp"
@@ -116,7 +116,7 @@ TEST_CASE("thin needle: circles past a needle's tip and beside a long band are c
         VoronoiCircleSolver solver(needle, second, third);
         REQUIRE(solver.certify());
         const VoronoiCircleEnclosure& found = solver.enclosure();
-        CHECK(found.found_by == CircleStart::thin_needle);
+        CHECK(found.found_by == CircleStart::needle_chain);
         // The oracle's signed distances from the certified center: each site at the radius.
         const RealPoint v{Real(found.center_x.mid_double()), Real(found.center_y.mid_double())};
         const double rho = found.radius.mid_double();
