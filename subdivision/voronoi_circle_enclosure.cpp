@@ -490,7 +490,11 @@ bool VoronoiCircleSolver::certify_from_moved_pair(const NearDuplicatePair& pair,
     // off). Contacts apart (an internal circle centered near E_i's medial
     // axis, touching E_i and E_j at nearly mirror points): a regular root,
     // which moves by O(2^-moved_bits) only; the moved circle is the start.
-    const long prec = start_precision() + 2 * pair.bits;
+    // Newton and Krawczyk need twice the pair's closeness, and a circle R
+    // times the sites' size (about 1 in this frame) is conditioned like R^2
+    // on top (fuzz F9: the pair 2^-66 apart and R ~ 2^130 failed at 250 bits).
+    const long radius_bits = std::max(0L, static_cast<long>(arf_abs_bound_lt_2exp_si(arb_midref(c.radius.get()))));
+    const long prec = start_precision() + 2 * pair.bits + 2 * radius_bits;
     std::array<Ball, 3> parameter;
     std::array<bool, 3> flipped = c.flipped;
     for (int k = 0; k < 3; ++k) arb_get_mid_arb(parameter[k].get(), c.parameter[k].get());
