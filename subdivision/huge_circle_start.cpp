@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -54,14 +55,20 @@ SupportValue support_value(const Shape& k, double phi) {
     return {nx * k.x + ny * k.y, norm, -k.x * ny + k.y * nx, -sx * ny + sy * nx};
 }
 
-// Directions phi of the external bitangents of two shapes (roots of
-// h_i - h_j), in doubles: sampling, then Newton safeguarded by bisection.
-std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
-    auto f = [&](double phi, double* slope) {
+// h_i - h_j at the direction phi, and its derivative in phi.
+using SupportDifference = std::function<double(double phi, double* slope)>;
+
+SupportDifference support_difference_in_doubles(const Shape& p, const Shape& q) {
+    return [p, q](double phi, double* slope) {
         const SupportValue hp = support_value(p, phi), hq = support_value(q, phi);
         *slope = (hp.shape_slope - hq.shape_slope) + (hp.center_slope - hq.center_slope);
         return (hp.shape - hq.shape) + (hp.center - hq.center);
     };
+}
+
+// Directions phi of the external bitangents of two shapes (roots of
+// h_i - h_j = f), in doubles: sampling, then Newton safeguarded by bisection.
+std::vector<double> bitangent_directions(const Shape& p, const Shape& q, const SupportDifference& f) {
     // Samples half a step off the axes, all around the circle (the last
     // interval wraps past pi: bitangents along the axes of a triple lie there),
     // and at the four axis directions of both shapes: a needle's support value
@@ -179,6 +186,26 @@ BallVector direction(const Ball& phi, long prec) {
     BallVector n;
     arb_sin_cos(n.y.get(), n.x.get(), phi.get(), prec);
     return n;
+}
+
+// h_i - h_j in balls at precision prec, rounded to doubles: for a nearly
+// coincident pair, whose difference in shape (a copy turned by 10^-30)
+// vanishes in doubles.
+SupportDifference support_difference_in_balls(const ArbSite& p, const ArbSite& q, long prec) {
+    return [&p, &q, prec](double phi0, double* slope) {
+        Ball phi, f, s, dx, dy;
+        arb_set_d(phi.get(), phi0);
+        const BallVector n = direction(phi, prec);
+        BallVector sp, sq;
+        arb_sub(f.get(), p.support(n, &sp, prec).get(), q.support(n, &sq, prec).get(), prec);
+        // slope = (S_p - S_q) . (-sin, cos)
+        arb_sub(dx.get(), sp.x.get(), sq.x.get(), prec);
+        arb_sub(dy.get(), sp.y.get(), sq.y.get(), prec);
+        arb_mul(s.get(), dy.get(), n.x.get(), prec);
+        arb_submul(s.get(), dx.get(), n.y.get(), prec);
+        *slope = s.mid_double();
+        return f.mid_double();
+    };
 }
 
 // Newton on h_i(phi) - h_j(phi) = 0 in midpoint arithmetic, from a
@@ -340,7 +367,13 @@ bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Elli
         const bool nearly_coincident =
             close_pair && std::min(i, j) == close_pair->first && std::max(i, j) == close_pair->second;
         const long first_precision = kFirstPrecision + (nearly_coincident ? 2 * close_pair->bits : 0);
-        for (double phi0 : bitangent_directions(shape_relative_to(ei, ei), shape_relative_to(ej, ei))) {
+        // The pair's difference in balls when it is below the doubles' rounding (a copy turned by 10^-30).
+        const Shape pi = shape_relative_to(ei, ei), pj = shape_relative_to(ej, ei);
+        std::optional<ArbSite> ai, aj;
+        if (nearly_coincident) ai.emplace(ei, first_precision), aj.emplace(ej, first_precision);
+        const std::vector<double> directions = bitangent_directions(
+            pi, pj, nearly_coincident ? support_difference_in_balls(*ai, *aj, first_precision) : support_difference_in_doubles(pi, pj));
+        for (double phi0 : directions) {
             // Raise the precision until g is resolved, then to what the
             // circle's size needs.
             for (long prec = first_precision; prec <= kLastPrecision; prec *= 2) {
