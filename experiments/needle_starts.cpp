@@ -84,7 +84,7 @@ Row run(long k, int triples, unsigned seed) {
                 ++row.errors;
             }
             row.slowest = std::max(row.slowest, seconds_since(start));
-            if (!solver.certified() || solver.enclosure().found_by != CircleStart::thin_needle) continue;
+            if (!solver.certified() || solver.enclosure().found_by != CircleStart::needle_chain) continue;
             ++row.chain_circles;
             VoronoiCircleSolver alone(needle, b, c);
             VoronoiCircleSearchOptions capped;

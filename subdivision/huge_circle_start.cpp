@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -62,15 +63,21 @@ double support_point(const Shape& k, double nx, double ny, double& sx, double& s
     return h.value();
 }
 
-// Directions phi of the external bitangents of two shapes (roots of
-// h_i - h_j), in doubles: sampling, then Newton safeguarded by bisection.
-std::vector<double> bitangent_directions(const Shape& p, const Shape& q) {
-    auto f = [&](double phi, double* slope) {
+// h_i - h_j at the direction phi, and its derivative in phi.
+using SupportDifference = std::function<double(double phi, double* slope)>;
+
+SupportDifference support_difference_in_doubles(const Shape& p, const Shape& q) {
+    return [p, q](double phi, double* slope) {
         const double nx = std::cos(phi), ny = std::sin(phi);
         const SupportValue hp = support_value(p, nx, ny), hq = support_value(q, nx, ny);
         *slope = (hp.shape_slope - hq.shape_slope) + (hp.center_slope - hq.center_slope);
         return (hp.shape - hq.shape) + (hp.center - hq.center);
     };
+}
+
+// Directions phi of the external bitangents of two shapes (roots of
+// h_i - h_j = f), in doubles: sampling, then Newton safeguarded by bisection.
+std::vector<double> bitangent_directions(const Shape& p, const Shape& q, const SupportDifference& f) {
     // Samples half a step off the axes, all around the circle (the last
     // interval wraps past pi: bitangents along the axes of a triple lie there),
     // and at the four axis directions of both shapes: a needle's support value
@@ -228,6 +235,26 @@ BallVector direction(const Ball& phi, long prec) {
     BallVector n;
     arb_sin_cos(n.y.get(), n.x.get(), phi.get(), prec);
     return n;
+}
+
+// h_i - h_j in balls at precision prec, rounded to doubles: for a nearly
+// coincident pair, whose difference in shape (a copy turned by 10^-30)
+// vanishes in doubles.
+SupportDifference support_difference_in_balls(const ArbSite& p, const ArbSite& q, long prec) {
+    return [&p, &q, prec](double phi0, double* slope) {
+        Ball phi, f, s, dx, dy;
+        arb_set_d(phi.get(), phi0);
+        const BallVector n = direction(phi, prec);
+        BallVector sp, sq;
+        arb_sub(f.get(), p.support(n, &sp, prec).get(), q.support(n, &sq, prec).get(), prec);
+        // slope = (S_p - S_q) . (-sin, cos)
+        arb_sub(dx.get(), sp.x.get(), sq.x.get(), prec);
+        arb_sub(dy.get(), sp.y.get(), sq.y.get(), prec);
+        arb_mul(s.get(), dy.get(), n.x.get(), prec);
+        arb_submul(s.get(), dx.get(), n.y.get(), prec);
+        *slope = s.mid_double();
+        return f.mid_double();
+    };
 }
 
 // Newton on h_i(phi) - h_j(phi) = 0 in midpoint arithmetic, from a
@@ -389,7 +416,13 @@ bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Elli
         const bool nearly_coincident =
             close_pair && std::min(i, j) == close_pair->first && std::max(i, j) == close_pair->second;
         const long first_precision = kFirstPrecision + (nearly_coincident ? 2 * close_pair->bits : 0);
-        for (double phi0 : bitangent_directions(shape_relative_to(ei, ei), shape_relative_to(ej, ei))) {
+        // The pair's difference in balls when it is below the doubles' rounding (a copy turned by 10^-30).
+        const Shape pi = shape_relative_to(ei, ei), pj = shape_relative_to(ej, ei);
+        std::optional<ArbSite> ai, aj;
+        if (nearly_coincident) ai.emplace(ei, first_precision), aj.emplace(ej, first_precision);
+        const std::vector<double> directions = bitangent_directions(
+            pi, pj, nearly_coincident ? support_difference_in_balls(*ai, *aj, first_precision) : support_difference_in_doubles(pi, pj));
+        for (double phi0 : directions) {
             // Raise the precision until g is resolved, then to what the
             // circle's size needs.
             for (long prec = first_precision; prec <= kLastPrecision; prec *= 2) {
@@ -424,7 +457,7 @@ bool for_each_huge_circle_start_in_doubles(const Ellipse& e1, const Ellipse& e2,
         // Each pair seen from its site i, as in for_each_huge_circle_start.
         const std::array<Shape, 3> k = {shape_relative_to(e1, *sites[i]), shape_relative_to(e2, *sites[i]),
                                         shape_relative_to(e3, *sites[i])};
-        for (double phi : bitangent_directions(k[i], k[j])) {
+        for (double phi : bitangent_directions(k[i], k[j], support_difference_in_doubles(k[i], k[j]))) {
             DoubleCircleStart start;
             if (!double_circle_start(k, i, j, m, std::cos(phi), std::sin(phi), start)) continue;
             const double ratio = start.x[3] / smallest;

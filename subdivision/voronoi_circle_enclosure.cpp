@@ -3,7 +3,7 @@
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/inscribed_disk.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
-#include "subdivision/thin_needle.hpp"
+#include "subdivision/needle_chain.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "sites/mirror_symmetry.hpp"
 #include "util/error.hpp"
@@ -65,7 +65,7 @@ const char* circle_start_name(CircleStart s) {
         case CircleStart::guess: return "guess";
         case CircleStart::tangent_line: return "tangent-line";
         case CircleStart::near_duplicate: return "near-duplicate";
-        case CircleStart::thin_needle: return "thin-needle";
+        case CircleStart::needle_chain: return "needle-chain";
         case CircleStart::search: return "search";
     }
     return "?";
@@ -378,11 +378,11 @@ bool VoronoiCircleSolver::certify_from_starts() {
         enclosure_.found_by = CircleStart::near_duplicate;
         return true;
     }
-    if ((certified_ = certify_thin_needle())) enclosure_.found_by = CircleStart::thin_needle;
+    if ((certified_ = certify_from_needle_chains())) enclosure_.found_by = CircleStart::needle_chain;
     return certified_;
 }
 
-bool VoronoiCircleSolver::certify_thin_needle() {
+bool VoronoiCircleSolver::certify_from_needle_chains() {
     const std::optional<int> needle = thinnest_needle(*work_sites_[0], *work_sites_[1], *work_sites_[2]);
     return needle && (certify_along_needle_chain(*needle, NeedleChain::thicker) ||
                       certify_along_needle_chain(*needle, NeedleChain::shorter));
@@ -411,7 +411,7 @@ bool VoronoiCircleSolver::certify_along_needle_chain(int i, NeedleChain chain) {
             return false;
         }
     }
-    // Each link: the needle's contact carried over (thin_needle.hpp; the
+    // Each link: the needle's contact carried over (needle_chain.hpp; the
     // second map if the first fails), the rest as the last circle has them.
     const long prec = start_precision();
     for (long bits = kStoutNeedleBits; bits < aspect;) {
@@ -490,7 +490,11 @@ bool VoronoiCircleSolver::certify_from_moved_pair(const NearDuplicatePair& pair,
     // off). Contacts apart (an internal circle centered near E_i's medial
     // axis, touching E_i and E_j at nearly mirror points): a regular root,
     // which moves by O(2^-moved_bits) only; the moved circle is the start.
-    const long prec = start_precision() + 2 * pair.bits;
+    // Newton and Krawczyk need twice the pair's closeness, and a circle R
+    // times the sites' size (about 1 in this frame) is conditioned like R^2
+    // on top (fuzz F9: the pair 2^-66 apart and R ~ 2^130 failed at 250 bits).
+    const long radius_bits = std::max(0L, static_cast<long>(arf_abs_bound_lt_2exp_si(arb_midref(c.radius.get()))));
+    const long prec = start_precision() + 2 * pair.bits + 2 * radius_bits;
     std::array<Ball, 3> parameter;
     std::array<bool, 3> flipped = c.flipped;
     for (int k = 0; k < 3; ++k) arb_get_mid_arb(parameter[k].get(), c.parameter[k].get());

@@ -18,7 +18,8 @@
 // larger than the sites, from their nearly common tangent line
 // (huge_circle_start.hpp); for a pair of nearly coincident sites, from the
 // circle of the pair moved apart (near_duplicate_pair.hpp); for a needle, from
-// the circle with the needle thickened (thin_needle.hpp); when none certifies, from the exhaustive search
+// the circle with the needle made stout (needle_chain.hpp); when none
+// certifies, from the exhaustive search
 // (voronoi_circle_search.hpp), which either certifies the circle or proves
 // that there is none. The work happens in a similarity frame of the triple
 // (docs/DESIGN.md §4.3).
@@ -28,7 +29,7 @@
 #include "sites/similarity_frame.hpp"
 #include "subdivision/boundary_chart.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
-#include "subdivision/thin_needle.hpp"
+#include "subdivision/needle_chain.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "subdivision/voronoi_circle_search.hpp"
 
@@ -42,8 +43,8 @@ namespace ellvor {
 // (voronoi_circle_guess.hpp), the tangent line of a huge circle
 // (huge_circle_start.hpp), the circle of the triple with a nearly
 // coincident pair moved apart (near_duplicate_pair.hpp), the circle of the
-// triple with its needle thickened (thin_needle.hpp), or the exhaustive search.
-enum class CircleStart { guess, tangent_line, near_duplicate, thin_needle, search };
+// triple with its needle made stout (needle_chain.hpp), or the exhaustive search.
+enum class CircleStart { guess, tangent_line, near_duplicate, needle_chain, search };
 const char* circle_start_name(CircleStart s);
 
 struct VoronoiCircleEnclosure {
@@ -122,12 +123,12 @@ private:
     bool certify_near_duplicate();
     // One attempt of it: the pair moved apart to 2^-moved_bits of its size.
     bool certify_from_moved_pair(const NearDuplicatePair& pair, long moved_bits);
-    // A triple with a needle (thin_needle.hpp): the circle of the triple with
+    // A triple with a needle (needle_chain.hpp): the circle of the triple with
     // the needle made stout (aspect 2^4: thicker, else shorter), certified by
     // the starts or a short search, carried to the needle along the chain of
     // links between, each started from the last circle with the needle's
     // contact carried over.
-    bool certify_thin_needle();
+    bool certify_from_needle_chains();
     bool certify_along_needle_chain(int needle, NeedleChain chain);
     bool certify_from(const VoronoiCircleGuess& guess);
     // A cheap attempt from the midpoint of a search box: Newton at the box's

@@ -185,7 +185,7 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
         // the circle past its tip had no start (the guesses and the search do not resolve a contact
         // whose normal turns over 10^-8 radians) and the search's cap ended the validation. Now the
         // circle of the triple with the needle thickened to aspect 16, carried to the needle
-        // through thinner copies, is the start (thin_needle.hpp, test_thin_needle.cpp); 0.1 s.
+        // through thinner copies, is the start (needle_chain.hpp, test_needle_chain.cpp); 0.1 s.
         {"F7 needle 10^8 : 1 past a long ellipse",
          "47/1444446440 24/5 -47/50 91/5 058/5\n9/54 49/5 1/50 5 137/5\n92/5 09 -13/50 2080/1 58/5\n"
          "3 6310. -7/10 24/2 41/29",
@@ -199,7 +199,7 @@ TEST_CASE("fuzz findings: inputs that crashed, failed or hung now build or are i
         // (covered_without_circle's depth test about a piece's midpoint,
         // test_crossing_ellipse_predicates.cpp), where the count's search hit its cap; 0.01 s. (A
         // circle beside the band, no longer asked, is certified from the band shortened to aspect
-        // 16: thin_needle.hpp, test_thin_needle.cpp.)
+        // 16: needle_chain.hpp, test_needle_chain.cpp.)
         {"F10 band 8.4e6 x 9.8 among small crossing sites",
          "47/10 03/74 -47/49 91/5 116/5\n84E5 49/5 1/05 5 137/5\n92/5 10 -13/50 206/11 58/5\n"
          "3 63/95 -7/10 25/2 41/2\n",

@@ -376,3 +376,26 @@ TEST_CASE("huge circles of an ellipse, its copy moved by 10^-20 .. 10^-30 and a 
         }
     }
 }
+
+TEST_CASE("huge circles of an ellipse, its copy turned by 10^-20 .. 10^-30 and a circle 10^20 away along its axis are "
+          "certified from the pair's bitangent found in balls",
+          "[subdivision][huge-circle][near-duplicate]") {
+    // The copy differs in shape only: in doubles its support values equal the ellipse's, so the
+    // pair's bitangents (along its axes) are found in balls at 2 log2(1/h) bits more. Before, the
+    // turn by 10^-30 ended at the search's cap.
+    for (int k : {20, 30}) {
+        const Ellipse e(2, 1, Rational(1, 3UL), 0, 0), turned(2, 1, Rational(1, 3UL) + power_of_ten(-k), 0, 0);
+        // The major axis is along (4/5, 3/5), the minor along (-3/5, 4/5).
+        const Rational d = power_of_ten(20);
+        const Ellipse far = Ellipse::circle(d * Rational(4, 5UL) - Rational(9, 5UL), d * Rational(3, 5UL) + Rational(12, 5UL), 1);
+        INFO("turned by 10^-" << k);
+        VoronoiCircleSolver solver(e, turned, far);
+        REQUIRE(solver.refine(128));
+        const VoronoiCircleEnclosure& found = solver.enclosure();
+        CHECK(found.found_by == CircleStart::tangent_line);
+        CHECK(found.radius.mid_double() > 1e38);
+        const Ball vx = BallArithmetic::mid(found.center_x), vy = BallArithmetic::mid(found.center_y);
+        for (const Ellipse* site : {&e, &turned, &far})
+            CHECK(arb_contains(widened(found.radius, 100).get(), distance_by_multiplier(*site, vx, vy).get()));
+    }
+}

@@ -1,4 +1,4 @@
-#include "subdivision/thin_needle.hpp"
+#include "subdivision/needle_chain.hpp"
 
 #include <cmath>
 
