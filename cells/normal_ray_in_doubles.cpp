@@ -1,7 +1,7 @@
 #include "cells/normal_ray_in_doubles.hpp"
 
-#include "util/complex_ball.hpp"
 #include "util/complex_interval.hpp"
+#include "util/interval_trig.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,40 +14,6 @@ using Site = NormalRayInDoubles::Site;
 double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
 Interval sym(double r) { return {-r, r}; }
-
-// Sine and cosine over an interval, by Arb, widened to intervals.
-void sin_cos(const Interval& angle, Interval& sin, Interval& cos) {
-    Ball x, s, c;
-    Arf lo, hi;
-    arf_set_d(lo.get(), angle.lo);
-    arf_set_d(hi.get(), angle.hi);
-    arb_set_interval_arf(x.get(), lo.get(), hi.get(), 64);
-    arb_sin_cos(s.get(), c.get(), x.get(), 64);
-    sin = enclose(s);
-    cos = enclose(c);
-}
-
-// Over a complex rectangle, by Arb.
-void sin_cos(const ComplexInterval& angle, ComplexInterval& sin, ComplexInterval& cos) {
-    ComplexBall z, s, c;
-    Arf lo, hi;
-    const Interval* parts[2] = {&angle.re, &angle.im};
-    arb_struct* ends[2] = {z.real(), z.imag()};
-    for (int i = 0; i < 2; ++i) {
-        arf_set_d(lo.get(), parts[i]->lo);
-        arf_set_d(hi.get(), parts[i]->hi);
-        arb_set_interval_arf(ends[i], lo.get(), hi.get(), 64);
-    }
-    acb_sin_cos(s.get(), c.get(), z.get(), 64);
-    const auto to_rectangle = [](const ComplexBall& w) {
-        Ball re, im;
-        arb_set(re.get(), w.real());
-        arb_set(im.get(), w.imag());
-        return ComplexInterval(enclose(re), enclose(im));
-    };
-    sin = to_rectangle(s);
-    cos = to_rectangle(c);
-}
 
 template <class T>
 T dot(const T& ax, const T& ay, const T& bx, const T& by) {

@@ -9,8 +9,7 @@
 // over the whole interval of theta, proves one real root in the box X for
 // every theta in it; Re s > 0 and (V - Q) . n~q > 0 on X make that root the
 // bisector point of p's normal ray, as the header of normal_ray_bisector.hpp
-// argues. Sines and cosines come from Arb (64 bits) and are widened to
-// intervals. Anything it cannot prove is "not certified", and the caller
+// argues. Sines and cosines come from util/interval_trig.hpp. Anything it cannot prove is "not certified", and the caller
 // asks the Arb solver instead.
 #pragma once
 

@@ -2,68 +2,58 @@
 
 #include "util/flint_types.hpp"
 
-#include <array>
 #include <cmath>
 #include <limits>
 
 namespace ellvor {
 namespace {
 
-// Sines take the Taylor terms to r^17, cosines to r^18 (both to y^17, y^18
-// for the hyperbolic ones).
-constexpr int kDegree = 18;
 // Beyond these the argument goes to Arb.
 constexpr double kMaxReduced = 0x1p19;
 constexpr double kMaxHyperbolic = 16;
 constexpr long kFallbackPrecision = 128;
-// |r| below this needs no reduction (pi/4 = 0.78539...).
+// |x| below this needs no reduction (pi/4 = 0.78539...).
 constexpr double kNoReduction = 0.785;
+// The series' domain: |r| <= pi/4 + 2^-31 after reduction; z = r^2 <= 0.618.
+constexpr double kMaxSeries = 0.786;
+// Below this the series' first term and a cubic bound suffice (and r^2
+// cannot underflow above it).
+constexpr double kTiny = 0x1p-26;
+// Hyperbolic arguments are halved to at most this.
+constexpr double kMaxHalved = 0.5;
 // 2/pi rounded: only chooses k; any k gives a correct (if larger) r.
 constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
+// The unit roundoff of doubles.
+constexpr double kU = 0x1p-53;
 
-// Enclosures of 1/n!, n = 0 .. kDegree + 2, by interval division.
-struct InverseFactorials {
-    std::array<Interval, kDegree + 3> of;
-    InverseFactorials() {
-        of[0] = Interval(1.0);
-        for (int n = 1; n < static_cast<int>(of.size()); ++n) of[n] = of[n - 1] / Interval(static_cast<double>(n));
+double up_product(double a, double b) { return Interval::up(a * b); }  // a, b >= 0
+double up_sum(double a, double b) { return Interval::up(a + b); }
+
+// The odd and even parts of the series at a double r, |r| <= kMaxSeries:
+// sin r = r - r z A(-z), cos r = 1 - z B(-z) (z = r^2), or sinh r = r + r z
+// A(z), cosh r = 1 + z B(z) (hyperbolic), each enclosed with the bound of
+// interval_trig.hpp on its rounding errors and Taylor remainder.
+void series(double r, bool hyperbolic, Interval& odd, Interval& even) {
+    const double m = std::fabs(r);
+    if (m < kTiny) {
+        // |sin r - r|, |sinh r - r| <= |r|^3; |cos r - 1|, |cosh r - 1| <= r^2.
+        const double z_up = up_product(m, m), cube = up_product(m, z_up);
+        odd = Interval(Interval::down(r - cube), Interval::up(r + cube));
+        even = hyperbolic ? Interval(1.0, up_sum(1.0, z_up)) : Interval(Interval::down(1.0 - z_up), 1.0);
+        return;
     }
-};
-
-const InverseFactorials& inverse_factorials() {
-    static const InverseFactorials table;
-    return table;
-}
-
-// An upper bound of m^n for m >= 0.
-double power_up(double m, int n) {
-    Interval p(1.0), base(m);
-    for (; n > 0; n >>= 1) {
-        if (n & 1) p = p * base;
-        base = base.square();
-    }
-    return p.hi;
-}
-
-// The even and odd Taylor sums of sin / cos (alternating = true) or sinh /
-// cosh at the interval r, each with its Lagrange remainder: the derivatives
-// of order 19 and 20 are at most `derivative_bound` in modulus between 0
-// and r.
-void taylor(const Interval& r, bool alternating, double derivative_bound, Interval& odd, Interval& even) {
-    const InverseFactorials& f = inverse_factorials();
-    const auto coefficient = [&f, alternating](int n) {
-        return alternating && (n / 2) % 2 ? -f.of[n] : f.of[n];
-    };
-    const Interval r2 = r.square();
-    Interval s = coefficient(kDegree - 1), c = coefficient(kDegree);
-    for (int n = kDegree - 3; n >= 1; n -= 2) s = coefficient(n) + r2 * s;
-    for (int n = kDegree - 2; n >= 0; n -= 2) c = coefficient(n) + r2 * c;
-    s = r * s;
-    const double m = std::fmax(std::fabs(r.lo), std::fabs(r.hi));
-    const double odd_error = (Interval(power_up(m, kDegree + 1)) * f.of[kDegree + 1] * Interval(derivative_bound)).hi;
-    const double even_error = (Interval(power_up(m, kDegree + 2)) * f.of[kDegree + 2] * Interval(derivative_bound)).hi;
-    odd = s + Interval(-odd_error, odd_error);
-    even = c + Interval(-even_error, even_error);
+    using A = SeriesCoefficients;
+    const double z = r * r, w = hyperbolic ? z : -z;
+    double a = A::odd[A::kOddTerms - 1], b = A::even[A::kEvenTerms - 1];
+    for (int k = A::kOddTerms - 2; k >= 0; --k) a = a * w + A::odd[k];
+    for (int k = A::kEvenTerms - 2; k >= 0; --k) b = b * w + A::even[k];
+    const double t = (r * z) * a, u = z * b;
+    const double s = hyperbolic ? r + t : r - t, c = hyperbolic ? 1.0 + u : 1.0 - u;
+    const double z_up = Interval::up(z);
+    const double odd_error = up_product(up_product(kU * m, z_up), up_sum(0.84, up_product(0.07, z_up)));
+    const double even_error = up_product(kU * z_up, up_sum(2.01, up_product(0.31, z_up)));
+    odd = Interval(Interval::down(Interval::down(s) - odd_error), Interval::up(Interval::up(s) + odd_error));
+    even = Interval(Interval::down(Interval::down(c) - even_error), Interval::up(Interval::up(c) + even_error));
 }
 
 // s = fl(x + y) and its error e = x + y - s, exact (Knuth's TwoSum, round
@@ -87,10 +77,7 @@ void sin_cos_by_arb(double x, Interval& sin, Interval& cos) {
 
 // sin and cos at a finite double.
 void sin_cos_at(double x, Interval& sin, Interval& cos) {
-    if (std::fabs(x) <= kNoReduction) {
-        taylor(Interval(x), true, 1.0, sin, cos);
-        return;
-    }
+    if (std::fabs(x) <= kNoReduction) return series(x, false, sin, cos);
     if (!(std::fabs(x) <= kMaxReduced)) return sin_cos_by_arb(x, sin, cos);
     // x = k pi/2 + r. k c1 and k c2 are exact; the two differences are kept
     // exactly as double + error (nearly always exact anyway: Sterbenz), so r
@@ -101,8 +88,14 @@ void sin_cos_at(double x, Interval& sin, Interval& cos) {
     const double b = two_sum(a, -(k * HalfPiSplit::c2), b_error);
     const Interval r = Interval(b) + ((Interval(a_error) + Interval(b_error)) - k * Interval(HalfPiSplit::c3) -
                                       k * Interval(-HalfPiSplit::error, HalfPiSplit::error));
+    // The series at r's middle, widened by r's radius (|sin'|, |cos'| <= 1).
+    const double middle = r.mid();
+    if (!(std::fabs(middle) <= kMaxSeries)) return sin_cos_by_arb(x, sin, cos);
     Interval s, c;
-    taylor(r, true, 1.0, s, c);
+    series(middle, false, s, c);
+    const double h = Interval::max(Interval::up(r.hi - middle), Interval::up(middle - r.lo));
+    s = s + Interval(-h, h);
+    c = c + Interval(-h, h);
     switch (static_cast<long long>(k) & 3) {
         case 0: sin = s, cos = c; break;
         case 1: sin = c, cos = -s; break;
@@ -123,11 +116,11 @@ void sinh_cosh_at(double y, Interval& sinh, Interval& cosh) {
         cosh = enclose(c);
         return;
     }
-    // y = 2^k t with t <= 1/2 (exact), where cosh t <= 2 bounds every derivative.
+    // y = 2^k t with t <= 1/2 (exact).
     int k = 0;
     double t = y;
-    while (t > 0.5) t *= 0.5, ++k;
-    taylor(Interval(t), false, 2.0, sinh, cosh);
+    while (t > kMaxHalved) t *= 0.5, ++k;
+    series(t, true, sinh, cosh);
     for (; k > 0; --k) {
         const Interval s = sinh;
         sinh = 2.0 * (s * cosh);

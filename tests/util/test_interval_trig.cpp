@@ -97,6 +97,23 @@ TEST_CASE("interval_trig: the split of pi/2 is within its stated error of Arb's 
     }
 }
 
+TEST_CASE("interval_trig: the series' coefficients are 1/n! rounded to nearest", "[interval][trig]") {
+    const auto check = [](double c, unsigned long n) {
+        // |c - 1/n!| <= 2^-53 / n!, i.e. |c n! - 1| <= 2^-53.
+        Ball x, f;
+        arb_fac_ui(f.get(), n, kPrec);
+        arb_set_d(x.get(), c);
+        arb_mul(x.get(), x.get(), f.get(), kPrec);
+        arb_sub_ui(x.get(), x.get(), 1, kPrec);
+        Mag bound;
+        arb_get_mag(bound.get(), x.get());
+        INFO("1/" << n << "! as " << c);
+        CHECK(mag_cmp_2exp_si(bound.get(), -53) <= 0);
+    };
+    for (int k = 0; k < SeriesCoefficients::kOddTerms; ++k) check(SeriesCoefficients::odd[k], 2 * k + 3);
+    for (int k = 0; k < SeriesCoefficients::kEvenTerms; ++k) check(SeriesCoefficients::even[k], 2 * k + 2);
+}
+
 TEST_CASE("interval_trig: sin and cos at points contain Arb's, a few ulps wide", "[interval][trig]") {
     std::mt19937_64 rng(20261127);
     double widest = 0;
