@@ -235,7 +235,7 @@ public:
                 for (int j = 0; j < MeasureIntervals::count; ++j)
                     tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
                 if (const std::optional<MeasureIntervals> I =
-                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances)) {
+                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature)) {
                     add_to_pairs(*I, unit, prec, sums);
                     integrated = true;
                     ++r.edges_in_doubles;

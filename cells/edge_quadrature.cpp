@@ -45,7 +45,10 @@ double gauss_error(const Interval& half, double M, double factor) { return (half
 }  // namespace
 
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
-                                               double b, const double (&tolerance)[kMeasures]) {
+                                               double b, const double (&tolerance)[kMeasures],
+                                               QuadratureCounts* counts) {
+    QuadratureCounts local;
+    QuadratureCounts& count = counts ? *counts : local;
     MeasureIntervals total;
     for (Interval& x : total.m) x = Interval(0.0);
     struct Piece {
@@ -77,6 +80,7 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
         const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
         const std::optional<std::array<double, kMeasures>> M = bounds_on_ellipse(bisector, mid, half);
         if (!M) {
+            ++count.failed_boxes;
             if (!halve()) return std::nullopt;
             continue;
         }
@@ -96,6 +100,7 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
         MeasureIntervals sum;
         for (Interval& x : sum.m) x = Interval(0.0);
         bool certified = true;
+        count.nodes += n;
         for (int k = 0; k < n && certified; ++k) {
             const std::optional<MeasureIntervals> f = bisector.densities(mid + half * rule.nodes[k]);
             certified = f.has_value();
@@ -105,6 +110,7 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
             if (!halve()) return std::nullopt;
             continue;
         }
+        ++count.pieces;
         for (int j = 0; j < kMeasures; ++j) {
             const double error = gauss_error(half, (*M)[j], factor[n]);
             total.m[j] = total.m[j] + half * sum.m[j] + Interval(-error, error);
