@@ -20,7 +20,43 @@ T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
 }
 
+// A function of one variable t near 0 to second order: c[0] + c[1] t + c[2]
+// t^2, each coefficient an interval (K = Interval) or a rectangle (K =
+// ComplexInterval). Evaluated with the expansion point ranging over a box,
+// every coefficient encloses the Taylor coefficient of the composed function
+// at every point of the box (the rules below are those of truncated power
+// series, each operation an enclosure).
+template <class K>
+struct Jet {
+    K c[3];
+    friend Jet operator+(const Jet& a, const Jet& b) { return {{a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]}}; }
+    friend Jet operator-(const Jet& a, const Jet& b) { return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]}}; }
+    Jet operator-() const { return {{-c[0], -c[1], -c[2]}}; }
+    friend Jet operator*(const Jet& a, const Jet& b) {
+        return {{a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0], a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0]}};
+    }
+    friend Jet operator*(const Interval& a, const Jet& b) { return {{a * b.c[0], a * b.c[1], a * b.c[2]}}; }
+    friend Jet operator*(const Jet& a, const Interval& b) { return b * a; }
+    friend Jet operator*(double a, const Jet& b) { return {{a * b.c[0], a * b.c[1], a * b.c[2]}}; }
+    friend Jet operator+(const Jet& a, const Interval& b) { return {{a.c[0] + b, a.c[1], a.c[2]}}; }
+    friend Jet operator-(const Jet& a, const Interval& b) { return {{a.c[0] - b, a.c[1], a.c[2]}}; }
+};
+
+// sin and cos of u0 + u1 t (the angles here are linear in t).
+template <class K>
+void sin_cos(const K& u0, const K& u1, Jet<K>& sin, Jet<K>& cos) {
+    K s, c;
+    sin_cos(u0, s, c);
+    const K half_u1_squared = 0.5 * (u1 * u1);
+    sin = {{s, c * u1, -(s * half_u1_squared)}};
+    cos = {{c, -(s * u1), -(c * half_u1_squared)}};
+}
+
 Interval square(const Interval& x) { return x.square(); }
+template <class K>
+Jet<K> square(const Jet<K>& x) {
+    return x * x;
+}
 ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
 double mid(const Interval& x) { return x.mid(); }
@@ -33,10 +69,13 @@ double mid(double x) { return x; }
 // (the same member names).
 template <class T>
 struct Frame {
-    T x, y, nx, ny, dx, dy, dnx, dny, n2;
+    // What a frame holds: always the point and n~; q's frames the tangent
+    // too (F and J need it); p's frames everything (F_theta, the densities).
+    enum Parts { point_normal = 0, tangent = 1, all = 3 };
+    T x{}, y{}, nx{}, ny{}, dx{}, dy{}, dnx{}, dny{}, n2{};
 
     template <class S>
-    Frame(const S& e, const T& sin, const T& cos) {
+    Frame(const S& e, const T& sin, const T& cos, int parts = all) {
         const auto rotate = [&e](const T& lx, const T& ly, T& X, T& Y) {
             X = lx * e.c - ly * e.s;
             Y = lx * e.s + ly * e.c;
@@ -46,9 +85,23 @@ struct Frame {
         x = x + e.xc;
         y = y + e.yc;
         rotate(bc, as, nx, ny);
+        if (parts & tangent) rotate(-as, bc, dx, dy);
+        if (parts != all) return;
         n2 = square(as) + square(bc);
-        rotate(-as, bc, dx, dy);
         rotate(-bs, ac, dnx, dny);
+    }
+};
+
+// V - Q, P - Q and (P - Q) . n~ at s (V = P + s n~), and F from them.
+template <class T>
+struct Differences {
+    T dx, dy, ex, ey, e_n;
+    Differences(const Frame<T>& bp, const Frame<T>& bq, const T& s)
+        : dx(bp.x + s * bp.nx - bq.x), dy(bp.y + s * bp.ny - bq.y), ex(bp.x - bq.x), ey(bp.y - bq.y),
+          e_n(dot(ex, ey, bp.nx, bp.ny)) {}
+    void residual(const Frame<T>& bq, const T& s, T (&F)[2]) const {
+        F[0] = dot(dx, dy, bq.dx, bq.dy);
+        F[1] = dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
     }
 };
 
@@ -61,12 +114,9 @@ struct System {
 
     template <class S>
     System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s) {
-        const T vx = bp.x + s * bp.nx, vy = bp.y + s * bp.ny;  // V = P + s n~
-        const T dx = vx - bq.x, dy = vy - bq.y;                 // V - Q
-        const T ex = bp.x - bq.x, ey = bp.y - bq.y;             // P - Q
-        const T e_n = dot(ex, ey, bp.nx, bp.ny);
-        F[0] = dot(dx, dy, bq.dx, bq.dy);
-        F[1] = dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
+        const Differences<T> d(bp, bq, s);
+        d.residual(bq, s, F);
+        const T &dx = d.dx, &dy = d.dy, &ex = d.ex, &ey = d.ey, &e_n = d.e_n;
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
         J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
         J[1][0] = 2.0 * e_n;
@@ -80,6 +130,12 @@ struct System {
 // (V - Q) . n~q: positive when V lies outside q along its normal at Q.
 Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interval& s) {
     return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
+}
+
+// The intersection of two enclosures of the same set (not empty).
+ComplexInterval intersect(const ComplexInterval& a, const ComplexInterval& b) {
+    return {Interval(Interval::max(a.re.lo, b.re.lo), Interval::min(a.re.hi, b.re.hi)),
+            Interval(Interval::max(a.im.lo, b.im.lo), Interval::min(a.im.hi, b.im.hi))};
 }
 
 bool strictly_inside(const Interval& x, double r) { return x.lo > -r && x.hi < r; }
@@ -134,7 +190,7 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
     // (rounding noise).
     double previous = INFINITY;
     for (int step = 0; step < 8; ++step) {
-        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1])), x[0]);
+        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), Frame<double>::tangent), x[0]);
         double C[2][2];
         if (!inverse_of_mid(at.J, C)) return false;
         const double f0 = at.F[0], f1 = at.F[1];
@@ -197,7 +253,6 @@ std::optional<std::array<Interval, 2>> NormalRayInDoubles::point(const Interval&
 }
 
 std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval& theta) {
-    const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const double theta0 = theta.mid();
     if (!std::isfinite(theta0)) return std::nullopt;
     // Newton in doubles from the last node's root, which Gauss nodes, close
@@ -207,15 +262,21 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval&
     double x0[2];
     if (newton(theta0, last_, x0))
         if (std::optional<Root> r = certified(theta, x0)) return r;
+    double start[2];
+    if (!ray_start(theta0, start) || !newton(theta0, start, x0)) return std::nullopt;
+    return certified(theta, x0);
+}
+
+bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
+    const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const std::optional<double> rho = equal_distance_on_normal(ps, qs, theta0, 1e12 * size_);
-    if (!rho || !(*rho > 0)) return std::nullopt;
+    if (!rho || !(*rho > 0)) return false;
     double px, py, nx, ny;
     ps.point(theta0, px, py);
     ps.normal(theta0, nx, ny);
-    const double start[2] = {*rho / std::hypot(ps.b * std::cos(theta0), ps.a * std::sin(theta0)),
-                             qs.nearest_angle(px + *rho * nx, py + *rho * ny)};
-    if (!newton(theta0, start, x0)) return std::nullopt;
-    return certified(theta, x0);
+    start[0] = *rho / std::hypot(ps.b * std::cos(theta0), ps.a * std::sin(theta0));
+    start[1] = qs.nearest_angle(px + *rho * nx, py + *rho * ny);
+    return true;
 }
 
 std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2]) {
@@ -225,7 +286,7 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     const Frame<Interval> bp(p_, sin, cos);
     Interval sin_phi, cos_phi;
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
-    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin_phi, cos_phi), Interval(x0[0]));
+    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin_phi, cos_phi, Frame<Interval>::tangent), Interval(x0[0]));
     double C[2][2];
     if (!inverse_of_mid(at.J, C)) return std::nullopt;
     const Interval* F = at.F;
@@ -239,7 +300,7 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
         const Interval s = Interval(x0[0]) + sym(r[0]);
         if (!s.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
         // On phi0 +- r: sine and cosine move by at most r (their derivatives are at most 1).
-        const Frame<Interval> bq(q_, sin_phi + sym(r[1]), cos_phi + sym(r[1]));
+        const Frame<Interval> bq(q_, sin_phi + sym(r[1]), cos_phi + sym(r[1]), Frame<Interval>::tangent);
         const System<Interval> on_box(q_, bp, bq, s);
         const Interval Y[2] = {sym(r[0]), sym(r[1])};
         Interval K[2];
@@ -258,6 +319,24 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     return std::nullopt;
 }
 
+namespace {
+
+// F(x_lin(theta), theta) as a jet in t = theta - theta_c, x_lin(theta_c + t)
+// = (s_c, phi_c) + slope t.
+template <class K>
+void residual_jet(const Site& p, const Site& q, const K& theta_c, const K& s_c, const K& phi_c,
+                  const double (&slope)[2], Jet<K> (&F)[2]) {
+    Jet<K> sin, cos;
+    sin_cos(theta_c, K(Interval(1.0)), sin, cos);
+    const Frame<Jet<K>> bp(p, sin, cos, Frame<Jet<K>>::point_normal);
+    sin_cos(phi_c, K(Interval(slope[1])), sin, cos);
+    const Frame<Jet<K>> bq(q, sin, cos, Frame<Jet<K>>::tangent);
+    const Jet<K> s{{s_c, K(Interval(slope[0])), K(Interval(0.0))}};
+    Differences<Jet<K>>(bp, bq, s).residual(bq, s, F);
+}
+
+}  // namespace
+
 // The certificate on a complex box of theta: the root there, and what the
 // densities and the linear model need.
 struct NormalRayInDoubles::BoxRoot {
@@ -269,20 +348,19 @@ struct NormalRayInDoubles::BoxRoot {
 
 std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
     using CI = ComplexInterval;
-    const std::optional<Root> at_mid = root(Interval(mid));
-    if (!at_mid) return std::nullopt;
-    const double* x0 = at_mid->x0;
-    // The system at the real middle: F, the midpoint inverse C of J, and the
-    // root's slope x' = -C F_theta (any slope is correct; this one keeps Y small).
-    Interval sin, cos;
-    sin_cos(Interval(mid), sin, cos);
-    const Frame<Interval> bp_mid(p_, sin, cos);
-    sin_cos(Interval(x0[1]), sin, cos);
-    const System<Interval> at(q_, bp_mid, Frame<Interval>(q_, sin, cos), Interval(x0[0]));
+    // Newton's root x0 at the real middle (the certificate below covers it:
+    // a wrong root fails its checks), the inverse C of J there and the
+    // root's slope x' = -C F_theta, all in doubles (any C and slope are
+    // correct; these keep Y small).
+    double x0[2], start[2];
+    if (!newton(mid, last_, x0) && !(ray_start(mid, start) && newton(mid, start, x0))) return std::nullopt;
+    const Frame<double> bp_mid(p_.shape, std::sin(mid), std::cos(mid));
+    const System<double> at(q_.shape, bp_mid, Frame<double>(q_.shape, std::sin(x0[1]), std::cos(x0[1]), Frame<double>::tangent),
+                                x0[0]);
     double C[2][2];
     if (!inverse_of_mid(at.J, C)) return std::nullopt;
     double slope[2];
-    for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0].mid() + C[i][1] * at.F_theta[1].mid());
+    for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
 
     // x = x_lin(theta) + y, x_lin = x0 + x' (theta - mid), over the box.
     const CI dtheta(sym(along), sym(across));
@@ -292,13 +370,19 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     CI sin_t, cos_t, sin_q, cos_q;
     sin_cos(theta, sin_t, cos_t);
     const Frame<CI> bp(p_, sin_t, cos_t);
-    sin_cos(x_lin[1], sin_q, cos_q);
-    const System<CI> on_line(q_, bp, Frame<CI>(q_, sin_q, cos_q), x_lin[0]);
-    // H(theta) = F(x_lin(theta), theta) = F(x0, mid) + H'(Theta) (theta - mid),
-    // H' = J x' + F_theta over the box (the mean-value form).
+    // H(theta) = F(x_lin(theta), theta) to second order about mid, with
+    // Taylor's remainder in integral form: H(mid + d) lies in H(mid) +
+    // H'(mid) d + (H''/2)(Theta) d^2 (the rectangle is convex). The jets in
+    // t = theta - theta_c carry the dependence of x_lin on theta, which an
+    // interval evaluation over the box loses (a first-order mean-value form
+    // here overestimated H several times over and kept the boxes small).
+    Jet<Interval> at_middle[2];
+    residual_jet(p_, q_, Interval(mid), Interval(x0[0]), Interval(x0[1]), slope, at_middle);
+    Jet<CI> over_box[2];
+    residual_jet(p_, q_, theta, x_lin[0], x_lin[1], slope, over_box);
+    const CI dtheta2 = dtheta * dtheta;
     CI CH[2], H[2];
-    for (int i = 0; i < 2; ++i)
-        H[i] = CI(at.F[i]) + (slope[0] * on_line.J[i][0] + slope[1] * on_line.J[i][1] + on_line.F_theta[i]) * dtheta;
+    for (int i = 0; i < 2; ++i) H[i] = CI(at_middle[i].c[0]) + at_middle[i].c[1] * dtheta + over_box[i].c[2] * dtheta2;
     for (int i = 0; i < 2; ++i) CH[i] = C[i][0] * H[0] + C[i][1] * H[1];
     double r[2];
     for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i].magnitude() + std::ldexp(1 + std::fabs(x0[i]), -44);
@@ -311,10 +395,16 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         }
         if (!X[0].re.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
         sin_cos(X[1], sin_q, cos_q);
-        const Frame<CI> bq(q_, sin_q, cos_q);
+        const Frame<CI> bq(q_, sin_q, cos_q, Frame<CI>::tangent);
         const System<CI> on_box(q_, bp, bq, X[0]);
+        // dF1/dphi = -2 F0, and on X(theta) F0 is its value on the line plus
+        // the first row of J(X) times y (the integral form of the mean value
+        // theorem; the rectangle J(X) is convex): far tighter than F0 over
+        // the box, which does not see that x follows theta.
+        CI J[2][2] = {{on_box.J[0][0], on_box.J[0][1]}, {on_box.J[1][0], on_box.J[1][1]}};
+        J[1][1] = intersect(J[1][1], -2.0 * (H[0] + on_box.J[0][0] * Y[0] + on_box.J[0][1] * Y[1]));
         CI K[2];
-        const bool inside = krawczyk_inside(C, CH, on_box.J, Y, r, K);
+        const bool inside = krawczyk_inside(C, CH, J, Y, r, K);
         if (!inside) {
             for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * K[i].magnitude());
             continue;
