@@ -59,8 +59,6 @@ Jet<K> square(const Jet<K>& x) {
 }
 ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
-double mid(const Interval& x) { return x.mid(); }
-double mid(double x) { return x; }
 
 // A site's boundary at an angle with the given sine and cosine: the point,
 // the unnormalized outward normal n~, their derivatives in the angle, and
@@ -160,10 +158,9 @@ bool krawczyk_inside(const double (&C)[2][2], const T (&CF)[2], const T (&J)[2][
     return inside;
 }
 
-// C = (mid J)^-1; false when singular.
-template <class T>
-bool inverse_of_mid(const T (&J)[2][2], double (&C)[2][2]) {
-    const double a = mid(J[0][0]), b = mid(J[0][1]), c = mid(J[1][0]), d = mid(J[1][1]);
+// C = J^-1 in doubles; false when singular.
+bool inverse(const double (&J)[2][2], double (&C)[2][2]) {
+    const double a = J[0][0], b = J[0][1], c = J[1][0], d = J[1][1];
     const double det = a * d - b * c;
     if (!(std::fabs(det) > 0) || !std::isfinite(det)) return false;
     C[0][0] = d / det, C[0][1] = -b / det, C[1][0] = -c / det, C[1][1] = a / det;
@@ -182,7 +179,7 @@ NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q) : p_(
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
 }
 
-bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2]) const {
+bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const {
     if (!std::isfinite(start[0])) return false;
     x[0] = start[0], x[1] = start[1];
     const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
@@ -191,8 +188,7 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
     double previous = INFINITY;
     for (int step = 0; step < 8; ++step) {
         const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), Frame<double>::tangent), x[0]);
-        double C[2][2];
-        if (!inverse_of_mid(at.J, C)) return false;
+        if (!inverse(at.J, C)) return false;
         const double f0 = at.F[0], f1 = at.F[1];
         const double d0 = C[0][0] * f0 + C[0][1] * f1, d1 = C[1][0] * f0 + C[1][1] * f1;
         x[0] -= d0, x[1] -= d1;
@@ -259,12 +255,12 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval&
     // to each other, make a good start; else from the bisector point on the
     // ray (it may lead to another root of the system, which the certificate
     // rejects).
-    double x0[2];
-    if (newton(theta0, last_, x0))
-        if (std::optional<Root> r = certified(theta, x0)) return r;
+    double x0[2], C[2][2];
+    if (newton(theta0, last_, x0, C))
+        if (std::optional<Root> r = certified(theta, x0, C)) return r;
     double start[2];
-    if (!ray_start(theta0, start) || !newton(theta0, start, x0)) return std::nullopt;
-    return certified(theta, x0);
+    if (!ray_start(theta0, start) || !newton(theta0, start, x0, C)) return std::nullopt;
+    return certified(theta, x0, C);
 }
 
 bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
@@ -279,17 +275,19 @@ bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
     return true;
 }
 
-std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2]) {
-    // F(x0) over the whole interval of theta, and C the midpoint inverse of the Jacobian.
+std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2],
+                                                                      const double (&C)[2][2]) {
+    // F(x0) over the whole interval of theta (C, Newton's inverse of the
+    // Jacobian, may be any matrix to the proof).
     Interval sin, cos;
     sin_cos(theta, sin, cos);
     const Frame<Interval> bp(p_, sin, cos);
     Interval sin_phi, cos_phi;
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
-    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin_phi, cos_phi, Frame<Interval>::tangent), Interval(x0[0]));
-    double C[2][2];
-    if (!inverse_of_mid(at.J, C)) return std::nullopt;
-    const Interval* F = at.F;
+    const Frame<Interval> bq0(q_, sin_phi, cos_phi, Frame<Interval>::tangent);
+    const Interval s0(x0[0]);
+    Interval F[2];
+    Differences<Interval>(bp, bq0, s0).residual(bq0, s0, F);
     // K = -C F(x0) + (I - C J(X)) (X - x0) inside the interior of X - x0?
     Interval CF[2];
     for (int i = 0; i < 2; ++i) CF[i] = C[i][0] * F[0] + C[i][1] * F[1];
@@ -352,13 +350,12 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     // a wrong root fails its checks), the inverse C of J there and the
     // root's slope x' = -C F_theta, all in doubles (any C and slope are
     // correct; these keep Y small).
-    double x0[2], start[2];
-    if (!newton(mid, last_, x0) && !(ray_start(mid, start) && newton(mid, start, x0))) return std::nullopt;
+    double x0[2], start[2], C[2][2];
+    if (!newton(mid, last_, x0, C) && !(ray_start(mid, start) && newton(mid, start, x0, C))) return std::nullopt;
     const Frame<double> bp_mid(p_.shape, std::sin(mid), std::cos(mid));
     const System<double> at(q_.shape, bp_mid, Frame<double>(q_.shape, std::sin(x0[1]), std::cos(x0[1]), Frame<double>::tangent),
                                 x0[0]);
-    double C[2][2];
-    if (!inverse_of_mid(at.J, C)) return std::nullopt;
+    if (!inverse(at.J, C)) return std::nullopt;
     double slope[2];
     for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
 

@@ -72,7 +72,8 @@ private:
     // Newton on the system in doubles at the angle theta from `start`; false
     // unless it converges to a root with s > 0 (any root it finds is only a
     // start: the certificate judges it).
-    bool newton(double theta, const double (&start)[2], double (&x)[2]) const;
+    // C: the inverse of the Jacobian at the last step.
+    bool newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const;
     // Newton's start from the bisector point on p's normal ray at theta.
     bool ray_start(double theta, double (&start)[2]) const;
     struct Root;
@@ -81,7 +82,7 @@ private:
     // The certified root at theta, from the last root or from the ray.
     std::optional<Root> root(const Interval& theta);
     // The certificate about the point x0 (Newton's root).
-    std::optional<Root> certified(const Interval& theta, const double (&x0)[2]);
+    std::optional<Root> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2]);
 
     Site p_, q_;
     double size_;  // scale of the pair, for the double start
