@@ -15,6 +15,9 @@ double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs
 
 Interval sym(double r) { return {-r, r}; }
 
+// 1, 1/2, 1/3, 1/4 enclosed (the densities' coefficients 1/(k + 1)).
+const Interval kInverse[4] = {Interval(1.0), Interval(0.5), Interval(1.0) / Interval(3.0), Interval(0.25)};
+
 template <class T>
 T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
@@ -217,9 +220,9 @@ std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& th
     const Interval ab = p_.a * p_.b;
     Interval m[3], power = s;  // power = s^(k+1)
     for (int k = 0; k < 3; ++k) {
-        m[k] = bp.n2 * power / Interval(k + 1.0);
+        m[k] = bp.n2 * power * kInverse[k];
         power = power * s;
-        m[k] = m[k] + ab * power / Interval(k + 2.0);
+        m[k] = m[k] + ab * power * kInverse[k + 1];
     }
     const Interval rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
     MeasureIntervals out;
@@ -428,9 +431,9 @@ std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::b
     const Interval ab = p_.a * p_.b;
     CI m[3], power = s;
     for (int k = 0; k < 3; ++k) {
-        m[k] = bp.n2 * power * (Interval(1.0) / Interval(k + 1.0));
+        m[k] = bp.n2 * power * kInverse[k];
         power = power * s;
-        m[k] = m[k] + ab * power * (Interval(1.0) / Interval(k + 2.0));
+        m[k] = m[k] + ab * power * kInverse[k + 1];
     }
     const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
     std::array<double, MeasureIntervals::count> M;

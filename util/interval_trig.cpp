@@ -19,6 +19,8 @@ constexpr double kMaxSeries = 0.786;
 // Below this the series' first term and a cubic bound suffice (and r^2
 // cannot underflow above it).
 constexpr double kTiny = 0x1p-26;
+// Intervals narrower than this (radius) take the first-order widening.
+constexpr double kNarrow = 0x1p-20;
 // Hyperbolic arguments are halved to at most this.
 constexpr double kMaxHalved = 0.5;
 // 2/pi rounded: only chooses k; any k gives a correct (if larger) r.
@@ -149,6 +151,12 @@ void sin_cos(const Interval& x, Interval& sin, Interval& cos) {
     const double h = Interval::max((Interval(x.hi) - Interval(m)).hi, (Interval(m) - Interval(x.lo)).hi);
     if (!(h < 4)) {
         sin = cos = Interval(-1.0, 1.0);
+        return;
+    }
+    if (h <= kNarrow) {
+        // |sin'|, |cos'| <= 1; the second-order form below gains nothing here.
+        sin = clamp_unit(sm + Interval(-h, h));
+        cos = clamp_unit(cm + Interval(-h, h));
         return;
     }
     // sin(m + t) = sin m cos t + cos m sin t, |t| <= h.
