@@ -180,6 +180,9 @@ Site site_of(const Ellipse& e) {
 NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q) : p_(site_of(p)), q_(site_of(q)) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
+    const double a = magnitude(q_.a), b = magnitude(q_.b), c = magnitude(q_.c), s = magnitude(q_.s);
+    q_slack_[0] = Interval::up(Interval::up(a * c) + Interval::up(b * s));
+    q_slack_[1] = Interval::up(Interval::up(a * s) + Interval::up(b * c));
 }
 
 bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const {
@@ -300,8 +303,12 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
         const Interval s = Interval(x0[0]) + sym(r[0]);
         if (!s.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
-        // On phi0 +- r: sine and cosine move by at most r (their derivatives are at most 1).
-        const Frame<Interval> bq(q_, sin_phi + sym(r[1]), cos_phi + sym(r[1]), Frame<Interval>::tangent);
+        // On phi0 +- r: sine and cosine move by at most r (their derivatives
+        // are at most 1), and q's frame, linear in them, by r times q_slack_.
+        Frame<Interval> bq = bq0;
+        const Interval move[2] = {sym(Interval::up(r[1] * q_slack_[0])), sym(Interval::up(r[1] * q_slack_[1]))};
+        bq.x = bq.x + move[0], bq.dx = bq.dx + move[0], bq.ny = bq.ny + move[0];
+        bq.y = bq.y + move[1], bq.dy = bq.dy + move[1], bq.nx = bq.nx + move[1];
         const System<Interval> on_box(q_, bp, bq, s);
         const Interval Y[2] = {sym(r[0]), sym(r[1])};
         Interval K[2];

@@ -86,6 +86,9 @@ private:
 
     Site p_, q_;
     double size_;  // scale of the pair, for the double start
+    // How far q's frame moves (x, dx, ny; y, dy, nx) per unit change of its
+    // sine and cosine: |a||c| + |b||s| and |a||s| + |b||c|, rounded up.
+    double q_slack_[2];
     // The root at the last node: the next node's start.
     double last_[2] = {NAN, NAN};
 };
