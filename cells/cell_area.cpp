@@ -235,7 +235,7 @@ public:
                 for (int j = 0; j < MeasureIntervals::count; ++j)
                     tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
                 if (const std::optional<MeasureIntervals> I =
-                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances)) {
+                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature)) {
                     add_to_pairs(*I, unit, prec, sums);
                     integrated = true;
                     ++r.edges_in_doubles;
@@ -248,11 +248,19 @@ public:
                 ++r.edges_by_arb;
             }
             // The pieces between the certified end angles and their midpoints:
-            // at most the radius times a bound of the density on the ball.
+            // at most the radius times a bound of the density on the ball
+            // (in double intervals over the ball's real interval when the
+            // edge was integrated so, else, or if that fails, by Arb).
             for (const Ball* end : {&ends[0], &ends[1]}) {
-                ComplexBall theta(*end);
                 NormalRayBisector::Densities d;
-                if (!bisector.densities(theta, prec, d)) return std::nullopt;
+                const std::optional<MeasureIntervals> fast =
+                    integrated ? bisector_in_doubles.densities(enclose(*end)) : std::nullopt;
+                if (fast) {
+                    d = as_balls(*fast);
+                } else {
+                    ComplexBall theta(*end);
+                    if (!bisector.densities(theta, prec, d)) return std::nullopt;
+                }
                 Mag radius;
                 mag_set(radius.get(), arb_radref(end->get()));
                 for (int pair = 0; pair < kMeasurePairs; ++pair) {

@@ -5,6 +5,7 @@
 // plane).
 #pragma once
 
+#include "cells/quadrature_counts.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
@@ -46,6 +47,8 @@ struct CellArea {
     // The stages that integrated the edges in that pass: Gauss-Legendre in
     // double intervals (cells/edge_quadrature.hpp) or Arb's integrator.
     std::size_t edges_in_doubles = 0, edges_by_arb = 0;
+    // What the double-interval stage did on those edges (every attempt of that pass).
+    QuadratureCounts quadrature;
 };
 
 // The working precision for a tolerance: 64 bits beyond its own bits.

@@ -247,6 +247,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
         c.precision = areas[s].precision;
         c.edges_in_doubles = areas[s].edges_in_doubles;
         c.edges_by_arb = areas[s].edges_by_arb;
+        c.quadrature = areas[s].quadrature;
         c.perimeter = areas[s].perimeter;
         c.centroid = areas[s].centroid;
         c.second_moments = areas[s].second_moments;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "cells/cell_domain.hpp"
+#include "cells/quadrature_counts.hpp"
 #include "decision/site_id.hpp"
 #include "sites/ellipse.hpp"
 #include "util/ball_arithmetic.hpp"
@@ -86,6 +87,7 @@ struct Cell {
     std::vector<std::array<double, 2>> ring;  // closed (first point not repeated); empty if unbounded or hidden
     long precision = 0;                       // Arb precision that met the tolerance
     std::size_t edges_in_doubles = 0, edges_by_arb = 0;  // the stages of its integrals (CellArea)
+    QuadratureCounts quadrature;                         // CellArea's
     // With CellOptions::reach or rings, an upper bound (rounded up) of |x - c|
     // over the points x of the cell's boundary, c the site's center; +inf
     // otherwise and for unbounded or hidden cells.

@@ -18,13 +18,16 @@
 
 #include "cells/gauss_legendre_rule.hpp"
 #include "cells/normal_ray_in_doubles.hpp"
+#include "cells/quadrature_counts.hpp"
 
 #include <optional>
 
 namespace ellvor {
 
 // tolerance[j]: the absolute tolerance of measure j over the whole [a, b].
+// `counts`, when given, is added to.
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
-                                               double b, const double (&tolerance)[MeasureIntervals::count]);
+                                               double b, const double (&tolerance)[MeasureIntervals::count],
+                                               QuadratureCounts* counts = nullptr);
 
 }  // namespace ellvor

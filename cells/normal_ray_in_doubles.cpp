@@ -1,7 +1,7 @@
 #include "cells/normal_ray_in_doubles.hpp"
 
-#include "util/complex_ball.hpp"
 #include "util/complex_interval.hpp"
+#include "util/interval_trig.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,50 +15,53 @@ double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs
 
 Interval sym(double r) { return {-r, r}; }
 
-// Sine and cosine over an interval, by Arb, widened to intervals.
-void sin_cos(const Interval& angle, Interval& sin, Interval& cos) {
-    Ball x, s, c;
-    Arf lo, hi;
-    arf_set_d(lo.get(), angle.lo);
-    arf_set_d(hi.get(), angle.hi);
-    arb_set_interval_arf(x.get(), lo.get(), hi.get(), 64);
-    arb_sin_cos(s.get(), c.get(), x.get(), 64);
-    sin = enclose(s);
-    cos = enclose(c);
-}
-
-// Over a complex rectangle, by Arb.
-void sin_cos(const ComplexInterval& angle, ComplexInterval& sin, ComplexInterval& cos) {
-    ComplexBall z, s, c;
-    Arf lo, hi;
-    const Interval* parts[2] = {&angle.re, &angle.im};
-    arb_struct* ends[2] = {z.real(), z.imag()};
-    for (int i = 0; i < 2; ++i) {
-        arf_set_d(lo.get(), parts[i]->lo);
-        arf_set_d(hi.get(), parts[i]->hi);
-        arb_set_interval_arf(ends[i], lo.get(), hi.get(), 64);
-    }
-    acb_sin_cos(s.get(), c.get(), z.get(), 64);
-    const auto to_rectangle = [](const ComplexBall& w) {
-        Ball re, im;
-        arb_set(re.get(), w.real());
-        arb_set(im.get(), w.imag());
-        return ComplexInterval(enclose(re), enclose(im));
-    };
-    sin = to_rectangle(s);
-    cos = to_rectangle(c);
-}
+// 1, 1/2, 1/3, 1/4 enclosed (the densities' coefficients 1/(k + 1)).
+const Interval kInverse[4] = {Interval(1.0), Interval(0.5), Interval(1.0) / Interval(3.0), Interval(0.25)};
 
 template <class T>
 T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
 }
 
+// A function of one variable t near 0 to second order: c[0] + c[1] t + c[2]
+// t^2, each coefficient an interval (K = Interval) or a rectangle (K =
+// ComplexInterval). Evaluated with the expansion point ranging over a box,
+// every coefficient encloses the Taylor coefficient of the composed function
+// at every point of the box (the rules below are those of truncated power
+// series, each operation an enclosure).
+template <class K>
+struct Jet {
+    K c[3];
+    friend Jet operator+(const Jet& a, const Jet& b) { return {{a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]}}; }
+    friend Jet operator-(const Jet& a, const Jet& b) { return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]}}; }
+    Jet operator-() const { return {{-c[0], -c[1], -c[2]}}; }
+    friend Jet operator*(const Jet& a, const Jet& b) {
+        return {{a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0], a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0]}};
+    }
+    friend Jet operator*(const Interval& a, const Jet& b) { return {{a * b.c[0], a * b.c[1], a * b.c[2]}}; }
+    friend Jet operator*(const Jet& a, const Interval& b) { return b * a; }
+    friend Jet operator*(double a, const Jet& b) { return {{a * b.c[0], a * b.c[1], a * b.c[2]}}; }
+    friend Jet operator+(const Jet& a, const Interval& b) { return {{a.c[0] + b, a.c[1], a.c[2]}}; }
+    friend Jet operator-(const Jet& a, const Interval& b) { return {{a.c[0] - b, a.c[1], a.c[2]}}; }
+};
+
+// sin and cos of u0 + u1 t (the angles here are linear in t).
+template <class K>
+void sin_cos(const K& u0, const K& u1, Jet<K>& sin, Jet<K>& cos) {
+    K s, c;
+    sin_cos(u0, s, c);
+    const K half_u1_squared = 0.5 * (u1 * u1);
+    sin = {{s, c * u1, -(s * half_u1_squared)}};
+    cos = {{c, -(s * u1), -(c * half_u1_squared)}};
+}
+
 Interval square(const Interval& x) { return x.square(); }
+template <class K>
+Jet<K> square(const Jet<K>& x) {
+    return x * x;
+}
 ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
-double mid(const Interval& x) { return x.mid(); }
-double mid(double x) { return x; }
 
 // A site's boundary at an angle with the given sine and cosine: the point,
 // the unnormalized outward normal n~, their derivatives in the angle, and
@@ -67,10 +70,13 @@ double mid(double x) { return x; }
 // (the same member names).
 template <class T>
 struct Frame {
-    T x, y, nx, ny, dx, dy, dnx, dny, n2;
+    // What a frame holds: always the point and n~; q's frames the tangent
+    // too (F and J need it); p's frames everything (F_theta, the densities).
+    enum Parts { point_normal = 0, tangent = 1, all = 3 };
+    T x{}, y{}, nx{}, ny{}, dx{}, dy{}, dnx{}, dny{}, n2{};
 
     template <class S>
-    Frame(const S& e, const T& sin, const T& cos) {
+    Frame(const S& e, const T& sin, const T& cos, int parts = all) {
         const auto rotate = [&e](const T& lx, const T& ly, T& X, T& Y) {
             X = lx * e.c - ly * e.s;
             Y = lx * e.s + ly * e.c;
@@ -80,9 +86,23 @@ struct Frame {
         x = x + e.xc;
         y = y + e.yc;
         rotate(bc, as, nx, ny);
+        if (parts & tangent) rotate(-as, bc, dx, dy);
+        if (parts != all) return;
         n2 = square(as) + square(bc);
-        rotate(-as, bc, dx, dy);
         rotate(-bs, ac, dnx, dny);
+    }
+};
+
+// V - Q, P - Q and (P - Q) . n~ at s (V = P + s n~), and F from them.
+template <class T>
+struct Differences {
+    T dx, dy, ex, ey, e_n;
+    Differences(const Frame<T>& bp, const Frame<T>& bq, const T& s)
+        : dx(bp.x + s * bp.nx - bq.x), dy(bp.y + s * bp.ny - bq.y), ex(bp.x - bq.x), ey(bp.y - bq.y),
+          e_n(dot(ex, ey, bp.nx, bp.ny)) {}
+    void residual(const Frame<T>& bq, const T& s, T (&F)[2]) const {
+        F[0] = dot(dx, dy, bq.dx, bq.dy);
+        F[1] = dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
     }
 };
 
@@ -95,12 +115,9 @@ struct System {
 
     template <class S>
     System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s) {
-        const T vx = bp.x + s * bp.nx, vy = bp.y + s * bp.ny;  // V = P + s n~
-        const T dx = vx - bq.x, dy = vy - bq.y;                 // V - Q
-        const T ex = bp.x - bq.x, ey = bp.y - bq.y;             // P - Q
-        const T e_n = dot(ex, ey, bp.nx, bp.ny);
-        F[0] = dot(dx, dy, bq.dx, bq.dy);
-        F[1] = dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
+        const Differences<T> d(bp, bq, s);
+        d.residual(bq, s, F);
+        const T &dx = d.dx, &dy = d.dy, &ex = d.ex, &ey = d.ey, &e_n = d.e_n;
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
         J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
         J[1][0] = 2.0 * e_n;
@@ -114,6 +131,12 @@ struct System {
 // (V - Q) . n~q: positive when V lies outside q along its normal at Q.
 Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interval& s) {
     return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
+}
+
+// The intersection of two enclosures of the same set (not empty).
+ComplexInterval intersect(const ComplexInterval& a, const ComplexInterval& b) {
+    return {Interval(Interval::max(a.re.lo, b.re.lo), Interval::min(a.re.hi, b.re.hi)),
+            Interval(Interval::max(a.im.lo, b.im.lo), Interval::min(a.im.hi, b.im.hi))};
 }
 
 bool strictly_inside(const Interval& x, double r) { return x.lo > -r && x.hi < r; }
@@ -138,10 +161,9 @@ bool krawczyk_inside(const double (&C)[2][2], const T (&CF)[2], const T (&J)[2][
     return inside;
 }
 
-// C = (mid J)^-1; false when singular.
-template <class T>
-bool inverse_of_mid(const T (&J)[2][2], double (&C)[2][2]) {
-    const double a = mid(J[0][0]), b = mid(J[0][1]), c = mid(J[1][0]), d = mid(J[1][1]);
+// C = J^-1 in doubles; false when singular.
+bool inverse(const double (&J)[2][2], double (&C)[2][2]) {
+    const double a = J[0][0], b = J[0][1], c = J[1][0], d = J[1][1];
     const double det = a * d - b * c;
     if (!(std::fabs(det) > 0) || !std::isfinite(det)) return false;
     C[0][0] = d / det, C[0][1] = -b / det, C[1][0] = -c / det, C[1][1] = a / det;
@@ -158,9 +180,12 @@ Site site_of(const Ellipse& e) {
 NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q) : p_(site_of(p)), q_(site_of(q)) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
+    const double a = magnitude(q_.a), b = magnitude(q_.b), c = magnitude(q_.c), s = magnitude(q_.s);
+    q_slack_[0] = Interval::up(Interval::up(a * c) + Interval::up(b * s));
+    q_slack_[1] = Interval::up(Interval::up(a * s) + Interval::up(b * c));
 }
 
-bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2]) const {
+bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const {
     if (!std::isfinite(start[0])) return false;
     x[0] = start[0], x[1] = start[1];
     const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
@@ -168,9 +193,8 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
     // (rounding noise).
     double previous = INFINITY;
     for (int step = 0; step < 8; ++step) {
-        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1])), x[0]);
-        double C[2][2];
-        if (!inverse_of_mid(at.J, C)) return false;
+        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), Frame<double>::tangent), x[0]);
+        if (!inverse(at.J, C)) return false;
         const double f0 = at.F[0], f1 = at.F[1];
         const double d0 = C[0][0] * f0 + C[0][1] * f1, d1 = C[1][0] * f0 + C[1][1] * f1;
         x[0] -= d0, x[1] -= d1;
@@ -199,9 +223,9 @@ std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& th
     const Interval ab = p_.a * p_.b;
     Interval m[3], power = s;  // power = s^(k+1)
     for (int k = 0; k < 3; ++k) {
-        m[k] = bp.n2 * power / Interval(k + 1.0);
+        m[k] = bp.n2 * power * kInverse[k];
         power = power * s;
-        m[k] = m[k] + ab * power / Interval(k + 2.0);
+        m[k] = m[k] + ab * power * kInverse[k + 1];
     }
     const Interval rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
     MeasureIntervals out;
@@ -231,38 +255,45 @@ std::optional<std::array<Interval, 2>> NormalRayInDoubles::point(const Interval&
 }
 
 std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval& theta) {
-    const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const double theta0 = theta.mid();
     if (!std::isfinite(theta0)) return std::nullopt;
     // Newton in doubles from the last node's root, which Gauss nodes, close
     // to each other, make a good start; else from the bisector point on the
     // ray (it may lead to another root of the system, which the certificate
     // rejects).
-    double x0[2];
-    if (newton(theta0, last_, x0))
-        if (std::optional<Root> r = certified(theta, x0)) return r;
+    double x0[2], C[2][2];
+    if (newton(theta0, last_, x0, C))
+        if (std::optional<Root> r = certified(theta, x0, C)) return r;
+    double start[2];
+    if (!ray_start(theta0, start) || !newton(theta0, start, x0, C)) return std::nullopt;
+    return certified(theta, x0, C);
+}
+
+bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
+    const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const std::optional<double> rho = equal_distance_on_normal(ps, qs, theta0, 1e12 * size_);
-    if (!rho || !(*rho > 0)) return std::nullopt;
+    if (!rho || !(*rho > 0)) return false;
     double px, py, nx, ny;
     ps.point(theta0, px, py);
     ps.normal(theta0, nx, ny);
-    const double start[2] = {*rho / std::hypot(ps.b * std::cos(theta0), ps.a * std::sin(theta0)),
-                             qs.nearest_angle(px + *rho * nx, py + *rho * ny)};
-    if (!newton(theta0, start, x0)) return std::nullopt;
-    return certified(theta, x0);
+    start[0] = *rho / std::hypot(ps.b * std::cos(theta0), ps.a * std::sin(theta0));
+    start[1] = qs.nearest_angle(px + *rho * nx, py + *rho * ny);
+    return true;
 }
 
-std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2]) {
-    // F(x0) over the whole interval of theta, and C the midpoint inverse of the Jacobian.
+std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2],
+                                                                      const double (&C)[2][2]) {
+    // F(x0) over the whole interval of theta (C, Newton's inverse of the
+    // Jacobian, may be any matrix to the proof).
     Interval sin, cos;
     sin_cos(theta, sin, cos);
     const Frame<Interval> bp(p_, sin, cos);
     Interval sin_phi, cos_phi;
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
-    const System<Interval> at(q_, bp, Frame<Interval>(q_, sin_phi, cos_phi), Interval(x0[0]));
-    double C[2][2];
-    if (!inverse_of_mid(at.J, C)) return std::nullopt;
-    const Interval* F = at.F;
+    const Frame<Interval> bq0(q_, sin_phi, cos_phi, Frame<Interval>::tangent);
+    const Interval s0(x0[0]);
+    Interval F[2];
+    Differences<Interval>(bp, bq0, s0).residual(bq0, s0, F);
     // K = -C F(x0) + (I - C J(X)) (X - x0) inside the interior of X - x0?
     Interval CF[2];
     for (int i = 0; i < 2; ++i) CF[i] = C[i][0] * F[0] + C[i][1] * F[1];
@@ -272,8 +303,12 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
         const Interval s = Interval(x0[0]) + sym(r[0]);
         if (!s.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
-        // On phi0 +- r: sine and cosine move by at most r (their derivatives are at most 1).
-        const Frame<Interval> bq(q_, sin_phi + sym(r[1]), cos_phi + sym(r[1]));
+        // On phi0 +- r: sine and cosine move by at most r (their derivatives
+        // are at most 1), and q's frame, linear in them, by r times q_slack_.
+        Frame<Interval> bq = bq0;
+        const Interval move[2] = {sym(Interval::up(r[1] * q_slack_[0])), sym(Interval::up(r[1] * q_slack_[1]))};
+        bq.x = bq.x + move[0], bq.dx = bq.dx + move[0], bq.ny = bq.ny + move[0];
+        bq.y = bq.y + move[1], bq.dy = bq.dy + move[1], bq.nx = bq.nx + move[1];
         const System<Interval> on_box(q_, bp, bq, s);
         const Interval Y[2] = {sym(r[0]), sym(r[1])};
         Interval K[2];
@@ -292,6 +327,24 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     return std::nullopt;
 }
 
+namespace {
+
+// F(x_lin(theta), theta) as a jet in t = theta - theta_c, x_lin(theta_c + t)
+// = (s_c, phi_c) + slope t.
+template <class K>
+void residual_jet(const Site& p, const Site& q, const K& theta_c, const K& s_c, const K& phi_c,
+                  const double (&slope)[2], Jet<K> (&F)[2]) {
+    Jet<K> sin, cos;
+    sin_cos(theta_c, K(Interval(1.0)), sin, cos);
+    const Frame<Jet<K>> bp(p, sin, cos, Frame<Jet<K>>::point_normal);
+    sin_cos(phi_c, K(Interval(slope[1])), sin, cos);
+    const Frame<Jet<K>> bq(q, sin, cos, Frame<Jet<K>>::tangent);
+    const Jet<K> s{{s_c, K(Interval(slope[0])), K(Interval(0.0))}};
+    Differences<Jet<K>>(bp, bq, s).residual(bq, s, F);
+}
+
+}  // namespace
+
 // The certificate on a complex box of theta: the root there, and what the
 // densities and the linear model need.
 struct NormalRayInDoubles::BoxRoot {
@@ -303,20 +356,18 @@ struct NormalRayInDoubles::BoxRoot {
 
 std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
     using CI = ComplexInterval;
-    const std::optional<Root> at_mid = root(Interval(mid));
-    if (!at_mid) return std::nullopt;
-    const double* x0 = at_mid->x0;
-    // The system at the real middle: F, the midpoint inverse C of J, and the
-    // root's slope x' = -C F_theta (any slope is correct; this one keeps Y small).
-    Interval sin, cos;
-    sin_cos(Interval(mid), sin, cos);
-    const Frame<Interval> bp_mid(p_, sin, cos);
-    sin_cos(Interval(x0[1]), sin, cos);
-    const System<Interval> at(q_, bp_mid, Frame<Interval>(q_, sin, cos), Interval(x0[0]));
-    double C[2][2];
-    if (!inverse_of_mid(at.J, C)) return std::nullopt;
+    // Newton's root x0 at the real middle (the certificate below covers it:
+    // a wrong root fails its checks), the inverse C of J there and the
+    // root's slope x' = -C F_theta, all in doubles (any C and slope are
+    // correct; these keep Y small).
+    double x0[2], start[2], C[2][2];
+    if (!newton(mid, last_, x0, C) && !(ray_start(mid, start) && newton(mid, start, x0, C))) return std::nullopt;
+    const Frame<double> bp_mid(p_.shape, std::sin(mid), std::cos(mid));
+    const System<double> at(q_.shape, bp_mid, Frame<double>(q_.shape, std::sin(x0[1]), std::cos(x0[1]), Frame<double>::tangent),
+                                x0[0]);
+    if (!inverse(at.J, C)) return std::nullopt;
     double slope[2];
-    for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0].mid() + C[i][1] * at.F_theta[1].mid());
+    for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
 
     // x = x_lin(theta) + y, x_lin = x0 + x' (theta - mid), over the box.
     const CI dtheta(sym(along), sym(across));
@@ -326,13 +377,19 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     CI sin_t, cos_t, sin_q, cos_q;
     sin_cos(theta, sin_t, cos_t);
     const Frame<CI> bp(p_, sin_t, cos_t);
-    sin_cos(x_lin[1], sin_q, cos_q);
-    const System<CI> on_line(q_, bp, Frame<CI>(q_, sin_q, cos_q), x_lin[0]);
-    // H(theta) = F(x_lin(theta), theta) = F(x0, mid) + H'(Theta) (theta - mid),
-    // H' = J x' + F_theta over the box (the mean-value form).
+    // H(theta) = F(x_lin(theta), theta) to second order about mid, with
+    // Taylor's remainder in integral form: H(mid + d) lies in H(mid) +
+    // H'(mid) d + (H''/2)(Theta) d^2 (the rectangle is convex). The jets in
+    // t = theta - theta_c carry the dependence of x_lin on theta, which an
+    // interval evaluation over the box loses (a first-order mean-value form
+    // here overestimated H several times over and kept the boxes small).
+    Jet<Interval> at_middle[2];
+    residual_jet(p_, q_, Interval(mid), Interval(x0[0]), Interval(x0[1]), slope, at_middle);
+    Jet<CI> over_box[2];
+    residual_jet(p_, q_, theta, x_lin[0], x_lin[1], slope, over_box);
+    const CI dtheta2 = dtheta * dtheta;
     CI CH[2], H[2];
-    for (int i = 0; i < 2; ++i)
-        H[i] = CI(at.F[i]) + (slope[0] * on_line.J[i][0] + slope[1] * on_line.J[i][1] + on_line.F_theta[i]) * dtheta;
+    for (int i = 0; i < 2; ++i) H[i] = CI(at_middle[i].c[0]) + at_middle[i].c[1] * dtheta + over_box[i].c[2] * dtheta2;
     for (int i = 0; i < 2; ++i) CH[i] = C[i][0] * H[0] + C[i][1] * H[1];
     double r[2];
     for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i].magnitude() + std::ldexp(1 + std::fabs(x0[i]), -44);
@@ -345,10 +402,16 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         }
         if (!X[0].re.positive()) return std::nullopt;  // Re s > 0 (normal_ray_bisector.hpp)
         sin_cos(X[1], sin_q, cos_q);
-        const Frame<CI> bq(q_, sin_q, cos_q);
+        const Frame<CI> bq(q_, sin_q, cos_q, Frame<CI>::tangent);
         const System<CI> on_box(q_, bp, bq, X[0]);
+        // dF1/dphi = -2 F0, and on X(theta) F0 is its value on the line plus
+        // the first row of J(X) times y (the integral form of the mean value
+        // theorem; the rectangle J(X) is convex): far tighter than F0 over
+        // the box, which does not see that x follows theta.
+        CI J[2][2] = {{on_box.J[0][0], on_box.J[0][1]}, {on_box.J[1][0], on_box.J[1][1]}};
+        J[1][1] = intersect(J[1][1], -2.0 * (H[0] + on_box.J[0][0] * Y[0] + on_box.J[0][1] * Y[1]));
         CI K[2];
-        const bool inside = krawczyk_inside(C, CH, on_box.J, Y, r, K);
+        const bool inside = krawczyk_inside(C, CH, J, Y, r, K);
         if (!inside) {
             for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * K[i].magnitude());
             continue;
@@ -375,9 +438,9 @@ std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::b
     const Interval ab = p_.a * p_.b;
     CI m[3], power = s;
     for (int k = 0; k < 3; ++k) {
-        m[k] = bp.n2 * power * (Interval(1.0) / Interval(k + 1.0));
+        m[k] = bp.n2 * power * kInverse[k];
         power = power * s;
-        m[k] = m[k] + ab * power * (Interval(1.0) / Interval(k + 2.0));
+        m[k] = m[k] + ab * power * kInverse[k + 1];
     }
     const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
     std::array<double, MeasureIntervals::count> M;

@@ -9,9 +9,20 @@
 // over the whole interval of theta, proves one real root in the box X for
 // every theta in it; Re s > 0 and (V - Q) . n~q > 0 on X make that root the
 // bisector point of p's normal ray, as the header of normal_ray_bisector.hpp
-// argues. Sines and cosines come from Arb (64 bits) and are widened to
-// intervals. Anything it cannot prove is "not certified", and the caller
-// asks the Arb solver instead.
+// argues. Sines and cosines come from util/interval_trig.hpp. Anything it
+// cannot prove is "not certified", and the caller asks the Arb solver
+// instead.
+//
+// On a complex box of theta the Krawczyk test runs about the root's tangent
+// line x_lin(theta) = x0 + x' (theta - mid) (x0, x' from Newton in doubles),
+// one preconditioner C for the whole box. Its constant term, H(theta) =
+// F(x_lin(theta), theta), is enclosed to second order: H(mid) + H'(mid) d +
+// (H''/2)(box) d^2 (d = theta - mid, Taylor's remainder in integral form;
+// the coefficients from jets, truncated power series in theta - theta_c
+// evaluated at mid and over the box), not by the first-order mean-value form,
+// which overestimated H several times over and halved the certified pieces.
+// And dF1/dphi = -2 F0 is enclosed on X(theta) as -2 (H0 + (row 0 of J(X)) y)
+// as well as directly (their intersection).
 #pragma once
 
 #include "cells/normal_ray_bisector.hpp"
@@ -61,17 +72,23 @@ private:
     // Newton on the system in doubles at the angle theta from `start`; false
     // unless it converges to a root with s > 0 (any root it finds is only a
     // start: the certificate judges it).
-    bool newton(double theta, const double (&start)[2], double (&x)[2]) const;
+    // C: the inverse of the Jacobian at the last step.
+    bool newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const;
+    // Newton's start from the bisector point on p's normal ray at theta.
+    bool ray_start(double theta, double (&start)[2]) const;
     struct Root;
     struct BoxRoot;
     std::optional<BoxRoot> box_root(double mid, double along, double across);
     // The certified root at theta, from the last root or from the ray.
     std::optional<Root> root(const Interval& theta);
     // The certificate about the point x0 (Newton's root).
-    std::optional<Root> certified(const Interval& theta, const double (&x0)[2]);
+    std::optional<Root> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2]);
 
     Site p_, q_;
     double size_;  // scale of the pair, for the double start
+    // How far q's frame moves (x, dx, ny; y, dy, nx) per unit change of its
+    // sine and cosine: |a||c| + |b||s| and |a||s| + |b||c|, rounded up.
+    double q_slack_[2];
     // The root at the last node: the next node's start.
     double last_[2] = {NAN, NAN};
 };

@@ -75,11 +75,14 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
     const double time = now_cpu() - c0;
     long bounded = 0;
     std::size_t in_doubles = 0, by_arb = 0;
+    QuadratureCounts quadrature;
     for (const ellvor::Cell& c : cells.cells) {
         bounded += c.bounded;
         in_doubles += c.edges_in_doubles;
         by_arb += c.edges_by_arb;
+        quadrature += c.quadrature;
     }
+    const double edges = static_cast<double>(std::max<std::size_t>(1, in_doubles));
     const PeakMemory peak = peak_memory_in_child([] {}, [&] { cell_tessellation(set.sites, domain, options); });
     std::cerr << "[cells_timing] " << set.name << " " << set.sites.size() << (box ? " box" : " plane") << " T "
               << tolerance << ": cells " << time << " s\n";
@@ -93,6 +96,9 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
             fmt("%.0f", time / build),
             fmt("%.1f", 1e3 * time / static_cast<double>(std::max(1L, bounded))),
             fmt("%.1f", 100.0 * static_cast<double>(in_doubles) / static_cast<double>(std::max<std::size_t>(1, in_doubles + by_arb))),
+            in_doubles ? fmt("%.1f", static_cast<double>(quadrature.pieces) / edges) : "-",
+            in_doubles ? fmt("%.1f", static_cast<double>(quadrature.failed_boxes) / edges) : "-",
+            in_doubles ? fmt("%.0f", static_cast<double>(quadrature.nodes) / edges) : "-",
             peak.error.empty() ? fmt("%.1f", (peak.peak_kb - peak.start_kb) / 1024.0) : peak.error};
 }
 
@@ -103,7 +109,8 @@ int main(int argc, char** argv) {
     if (!parse_bench_arguments(argc, argv, "cells_timing", "usage: cells_timing [--full] [--out DIR]\n", args)) return 2;
     Report report("Certified cells against the build", "cells_timing", args.command);
     Table table("cells", {"set", "sites", "domain", "T", "bounded cells", "build s", "cells s", "cells / build",
-                          "ms per bounded cell", "edges in doubles %", "cells peak MB"});
+                          "ms per bounded cell", "edges in doubles %", "pieces per edge", "failed boxes per edge",
+                          "nodes per edge", "cells peak MB"});
     const CellSet random20 = random_set(20);
     table.add(measure(random20, false, 1e-9));
     for (double T : {1e-9, 1e-15}) table.add(measure(random20, true, T));
@@ -119,7 +126,10 @@ int main(int argc, char** argv) {
                  "original cell's area, perimeter, centroid and second moments certified to T; `+ rings`: "
                  "the rings too, at the default boundary tolerance, 10^-3 of the median semi-axis). `edges in "
                  "doubles`: the share of the cells' edges integrated by the double-interval stage "
-                 "(cells/edge_quadrature.hpp), the rest by Arb's integrator. Peak memory: " +
+                 "(cells/edge_quadrature.hpp), the rest by Arb's integrator; `pieces`, `failed boxes` and `nodes per "
+                 "edge`: that stage's work on each such edge (seen from one of its two sites), the pieces it "
+                 "integrated, the pieces whose complex box it could not certify (then halved) and the density "
+                 "nodes. Peak memory: " +
                  std::string(kPeakMemoryMethod) + ", here of one cell_tessellation.");
     report.table(table);
     report.publish(args.out_dir, "cells_timing.md");

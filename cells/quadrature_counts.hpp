@@ -1,0 +1,20 @@
+// Counts of the double-interval quadrature's work (cells/edge_quadrature.hpp),
+// for the benchmarks.
+#pragma once
+
+#include <cstddef>
+
+namespace ellvor {
+
+// What integrate_edge did, added up (for the benchmarks): the pieces it
+// integrated, the boxes whose certificate failed (the piece was halved), the
+// density nodes it evaluated.
+struct QuadratureCounts {
+    std::size_t pieces = 0, failed_boxes = 0, nodes = 0;
+    QuadratureCounts& operator+=(const QuadratureCounts& o) {
+        pieces += o.pieces, failed_boxes += o.failed_boxes, nodes += o.nodes;
+        return *this;
+    }
+};
+
+}  // namespace ellvor
