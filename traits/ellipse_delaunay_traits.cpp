@@ -46,9 +46,11 @@ std::uint64_t unordered_pair_key(SiteId p, SiteId q) {
 EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {}
 
 Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
-    // The areas a b, by their double enclosures first (the insertion order
-    // sorts by them): exactly only when those overlap.
+    // The areas a b: equal sizes first (circles of one radius: common), then
+    // their double enclosures (the insertion order sorts by them), exactly
+    // only when those overlap.
     const Ellipse &ea = site(a), &eb = site(b);
+    if (ea.a() == eb.a() && ea.b() == eb.b()) return Sign::zero;
     const Interval area_a = ea.enclosure().a * ea.enclosure().b, area_b = eb.enclosure().a * eb.enclosure().b;
     if (area_b.hi < area_a.lo) return Sign::positive;
     if (area_a.hi < area_b.lo) return Sign::negative;
