@@ -1,28 +1,18 @@
 #include "subdivision/bisector_walk_start.hpp"
 
-#include "subdivision/nearest_point.hpp"
-
 #include <cmath>
+
+#include "subdivision/nearest_point.hpp"
+#include "subdivision/shape_in_doubles.hpp"
 
 namespace ellvor {
 namespace {
 
-// A site in doubles, its center relative to a reference point (the first
-// site's center: a triple far from the origin keeps its relative digits).
-struct Site {
-    double a, b, c, s, x, y;
-};
-
-Site site_relative_to(const Ellipse& e, const Ellipse& origin) {
-    const Ellipse::Enclosure& k = e.enclosure();
-    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - origin.xc()).to_double(),
-            (e.yc() - origin.yc()).to_double()};
-}
-
 // Distance from (px, py) to the site and, if asked, the angle of its nearest
 // point and the unit vector from there to (px, py); NaN inside (or on) the
 // site, where no external circle has its center.
-double distance(const Site& k, double px, double py, double* angle, double* ux = nullptr, double* uy = nullptr) {
+double distance(const ShapeInDoubles& k, double px, double py, double* angle, double* ux = nullptr,
+                double* uy = nullptr) {
     const double dx = px - k.x, dy = py - k.y;
     const double x = k.c * dx + k.s * dy, y = k.c * dy - k.s * dx;
     if (!((x / k.a) * (x / k.a) + (y / k.b) * (y / k.b) > 1)) return NAN;
@@ -44,7 +34,8 @@ struct Sample {
 // (h' = n . u - 1, u the unit vector from q's nearest point): Newton from
 // `hint` (the neighbouring sample's rho), kept in the bracket [lo, hi] that
 // it narrows, bisecting when a step leaves it.
-Sample sample(const Site& p, const Site& q, const Site& k, double theta, double size, double hint) {
+Sample sample(const ShapeInDoubles& p, const ShapeInDoubles& q, const ShapeInDoubles& k, double theta, double size,
+              double hint) {
     Sample out{theta, NAN, NAN, NAN, NAN};
     const double ct = std::cos(theta), st = std::sin(theta);
     const double px = p.x + p.c * p.a * ct - p.s * p.b * st, py = p.y + p.s * p.a * ct + p.c * p.b * st;
@@ -84,10 +75,10 @@ Sample sample(const Site& p, const Site& q, const Site& k, double theta, double 
 // The walk along the bisector of (p, q) with k; sites[3] in argument order,
 // i, j, m the indices of p, q, k there; (x0, y0) the reference point. A sign
 // change of g between two samples is refined by regula falsi (Illinois).
-bool walk(const std::array<Site, 3>& sites, int i, int j, int m, double size, double x0, double y0,
+bool walk(const std::array<ShapeInDoubles, 3>& sites, int i, int j, int m, double size, double x0, double y0,
           const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
     constexpr int kSamples = 32, kRefinements = 40;
-    const Site &p = sites[i], &q = sites[j], &k = sites[m];
+    const ShapeInDoubles &p = sites[i], &q = sites[j], &k = sites[m];
     Sample previous = sample(p, q, k, -M_PI, size, NAN);
     for (int n = 1; n <= kSamples; ++n) {
         const Sample next = sample(p, q, k, -M_PI + 2 * M_PI * n / kSamples, size, previous.rho);
@@ -129,9 +120,10 @@ bool walk(const std::array<Site, 3>& sites, int i, int j, int m, double size, do
 
 bool for_each_bisector_walk_circle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
                                    const std::function<bool(const VoronoiCircleGuess&)>& try_guess) {
-    const std::array<Site, 3> sites = {site_relative_to(e1, e1), site_relative_to(e2, e1), site_relative_to(e3, e1)};
+    const std::array<ShapeInDoubles, 3> sites = {shape_relative_to(e1, e1), shape_relative_to(e2, e1),
+                                                 shape_relative_to(e3, e1)};
     double size = 0;
-    for (const Site& s : sites) size = std::fmax(size, std::fmax(s.a, s.b) + std::hypot(s.x, s.y));
+    for (const ShapeInDoubles& s : sites) size = std::fmax(size, std::fmax(s.a, s.b) + std::hypot(s.x, s.y));
     const double x0 = e1.enclosure().xc.mid(), y0 = e1.enclosure().yc.mid();
     return walk(sites, 0, 1, 2, size, x0, y0, try_guess) || walk(sites, 1, 2, 0, size, x0, y0, try_guess) ||
            walk(sites, 2, 0, 1, size, x0, y0, try_guess);

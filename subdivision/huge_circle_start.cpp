@@ -1,4 +1,5 @@
 #include "subdivision/huge_circle_start.hpp"
+#include "subdivision/shape_in_doubles.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
 #include "util/precision.hpp"
 
@@ -24,19 +25,6 @@ constexpr long kMarginBits = 64;
 
 // ---------------------------------------------------------------- doubles
 
-struct Shape {
-    double a, b, c, s, x, y;  // semi-axes, rotation, center relative to a reference point
-};
-
-// The shape of e with its center relative to origin's, in doubles. Each pair
-// is seen from one of its own sites: a third site far away (10^29 sizes)
-// would round a close pair's relative position away.
-Shape shape_relative_to(const Ellipse& e, const Ellipse& origin) {
-    const auto& k = e.enclosure();
-    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), (e.xc() - origin.xc()).to_double(),
-            (e.yc() - origin.yc()).to_double()};
-}
-
 // Support value h(n) = n.C + |(a n.u, b n.v)| in the unit direction n and
 // its derivative along the unit circle, h'(phi) = S(n) . n'(phi) with S the
 // support point, each split into the center's part and the shape's part: two
@@ -48,7 +36,7 @@ struct SupportValue {
     double center, shape, center_slope, shape_slope, sx, sy;
     double value() const { return center + shape; }
 };
-SupportValue support_value(const Shape& k, double nx, double ny) {
+SupportValue support_value(const ShapeInDoubles& k, double nx, double ny) {
     const double m1 = k.c * nx + k.s * ny, m2 = k.c * ny - k.s * nx;
     const double norm = std::hypot(k.a * m1, k.b * m2);
     const double lx = k.a * k.a * m1 / norm, ly = k.b * k.b * m2 / norm;
@@ -57,7 +45,7 @@ SupportValue support_value(const Shape& k, double nx, double ny) {
 }
 
 // h(n) and the support point S itself.
-double support_point(const Shape& k, double nx, double ny, double& sx, double& sy) {
+double support_point(const ShapeInDoubles& k, double nx, double ny, double& sx, double& sy) {
     const SupportValue h = support_value(k, nx, ny);
     sx = k.x + h.sx, sy = k.y + h.sy;
     return h.value();
@@ -66,7 +54,7 @@ double support_point(const Shape& k, double nx, double ny, double& sx, double& s
 // h_i - h_j at the direction phi, and its derivative in phi.
 using SupportDifference = std::function<double(double phi, double* slope)>;
 
-SupportDifference support_difference_in_doubles(const Shape& p, const Shape& q) {
+SupportDifference support_difference_in_doubles(const ShapeInDoubles& p, const ShapeInDoubles& q) {
     return [p, q](double phi, double* slope) {
         const double nx = std::cos(phi), ny = std::sin(phi);
         const SupportValue hp = support_value(p, nx, ny), hq = support_value(q, nx, ny);
@@ -77,7 +65,7 @@ SupportDifference support_difference_in_doubles(const Shape& p, const Shape& q) 
 
 // Directions phi of the external bitangents of two shapes (roots of
 // h_i - h_j = f), in doubles: sampling, then Newton safeguarded by bisection.
-std::vector<double> bitangent_directions(const Shape& p, const Shape& q, const SupportDifference& f) {
+std::vector<double> bitangent_directions(const ShapeInDoubles& p, const ShapeInDoubles& q, const SupportDifference& f) {
     // Samples half a step off the axes, all around the circle (the last
     // interval wraps past pi: bitangents along the axes of a triple lie there),
     // and at the four axis directions of both shapes: a needle's support value
@@ -87,7 +75,7 @@ std::vector<double> bitangent_directions(const Shape& p, const Shape& q, const S
     const double step = 2 * M_PI / kSamples, first = -M_PI + step / 2;
     std::vector<double> samples;
     for (int i = 0; i <= kSamples; ++i) samples.push_back(first + i * step);
-    for (const Shape* k : {&p, &q})
+    for (const ShapeInDoubles* k : {&p, &q})
         for (int quarter = 0; quarter < 4; ++quarter) {
             double axis = std::atan2(k->s, k->c) + quarter * M_PI / 2;
             while (axis < first) axis += 2 * M_PI;
@@ -122,7 +110,7 @@ std::vector<double> bitangent_directions(const Shape& p, const Shape& q, const S
 // with the third shape k, as first_order_circle below does in balls (the
 // formulas are in the header); false when there is none of positive radius.
 // The start's tangency points, as start_of below.
-bool double_circle_start(const std::array<Shape, 3>& k, int i, int j, int m, double nx, double ny,
+bool double_circle_start(const std::array<ShapeInDoubles, 3>& k, int i, int j, int m, double nx, double ny,
                          DoubleCircleStart& start) {
     double six, siy, sjx, sjy, skx, sky;
     const double h = support_point(k[i], nx, ny, six, siy);
@@ -149,7 +137,7 @@ bool double_circle_start(const std::array<Shape, 3>& k, int i, int j, int m, dou
             support_point(k[site], px, py, tx, ty);
         }
         // (cos theta, sin theta) ~ (a m1, b m2); t = tan(theta / 2), or u = -1/t
-        const Shape& e = k[site];
+        const ShapeInDoubles& e = k[site];
         const double p = e.a * (e.c * px + e.s * py), q = e.b * (e.c * py - e.s * px), norm = std::hypot(p, q);
         start.flipped[site] = p < 0;
         start.x[site] = p < 0 ? -q / (norm - p) : q / (norm + p);
@@ -417,11 +405,13 @@ bool for_each_huge_circle_start(const Ellipse& e1, const Ellipse& e2, const Elli
             close_pair && std::min(i, j) == close_pair->first && std::max(i, j) == close_pair->second;
         const long first_precision = kFirstPrecision + (nearly_coincident ? 2 * close_pair->bits : 0);
         // The pair's difference in balls when it is below the doubles' rounding (a copy turned by 10^-30).
-        const Shape pi = shape_relative_to(ei, ei), pj = shape_relative_to(ej, ei);
+        const ShapeInDoubles pi = shape_relative_to(ei, ei), pj = shape_relative_to(ej, ei);
         std::optional<ArbSite> ai, aj;
         if (nearly_coincident) ai.emplace(ei, first_precision), aj.emplace(ej, first_precision);
-        const std::vector<double> directions = bitangent_directions(
-            pi, pj, nearly_coincident ? support_difference_in_balls(*ai, *aj, first_precision) : support_difference_in_doubles(pi, pj));
+        const std::vector<double> directions =
+            bitangent_directions(pi, pj,
+                                 nearly_coincident ? support_difference_in_balls(*ai, *aj, first_precision)
+                                                   : support_difference_in_doubles(pi, pj));
         for (double phi0 : directions) {
             // Raise the precision until g is resolved, then to what the
             // circle's size needs.
@@ -455,7 +445,7 @@ bool for_each_huge_circle_start_in_doubles(const Ellipse& e1, const Ellipse& e2,
     for (const auto& pair : kPairs) {
         const int i = pair[0], j = pair[1], m = pair[2];
         // Each pair seen from its site i, as in for_each_huge_circle_start.
-        const std::array<Shape, 3> k = {shape_relative_to(e1, *sites[i]), shape_relative_to(e2, *sites[i]),
+        const std::array<ShapeInDoubles, 3> k = {shape_relative_to(e1, *sites[i]), shape_relative_to(e2, *sites[i]),
                                         shape_relative_to(e3, *sites[i])};
         for (double phi : bitangent_directions(k[i], k[j], support_difference_in_doubles(k[i], k[j]))) {
             DoubleCircleStart start;

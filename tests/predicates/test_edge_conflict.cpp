@@ -762,7 +762,8 @@ TEST_CASE("order on a bisector in doubles: never contradicts Arb's order, decide
         auto axis = [&] { return test::random_fraction(rng, 10, 100, 50); };
         auto angle = [&] { return test::random_fraction(rng, -99, 99, 100); };
         const Ellipse e1(axis(), axis(), angle(), Rational(0), Rational(0));
-        const Ellipse e2(axis(), axis(), angle(), test::random_fraction(rng, 300, 600, 100), test::random_fraction(rng, -100, 100, 100));
+        const Ellipse e2(axis(), axis(), angle(), test::random_fraction(rng, 300, 600, 100),
+                         test::random_fraction(rng, -100, 100, 100));
         if (!test::bounding_circles_apart(e1, e2)) continue;
         std::vector<Ellipse> thirds;
         while (thirds.size() < 6) {
