@@ -24,7 +24,7 @@ const char* const kHelp =
     "(tangency parameters t on E1, E2, E3; center; radius) has at least N correct bits\n"
     "(relative to the value when |value| >= 1, absolute below). Prints JSON:\n"
     "  {\"exists\": true, \"bits\": N, \"correct_bits\", \"precision\", \"newton_steps\", \"time_ms\",\n"
-    "   \"found_by\": \"guess\"|\"tangent-line\"|\"near-duplicate\"|\"needle-chain\"|\"search\",\n"
+    "   \"found_by\": \"guess\"|\"tangent-line\"|\"near-duplicate\"|\"bisector-walk\"|\"needle-chain\"|\"search\",\n"
     "   \"search_boxes\",\n"
     "   \"tangency\": [{\"t\": BALL, \"chart\": \"t\"|\"-1/t\", \"chart_parameter\": BALL}, ...],\n"
     "   \"center\": [BALL, BALL], \"radius\": BALL}\n"

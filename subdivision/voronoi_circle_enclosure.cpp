@@ -1,5 +1,6 @@
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
+#include "subdivision/bisector_walk_start.hpp"
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/inscribed_disk.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
@@ -66,6 +67,7 @@ const char* circle_start_name(CircleStart s) {
         case CircleStart::tangent_line: return "tangent-line";
         case CircleStart::near_duplicate: return "near-duplicate";
         case CircleStart::needle_chain: return "needle-chain";
+        case CircleStart::bisector_walk: return "bisector-walk";
         case CircleStart::search: return "search";
     }
     return "?";
@@ -378,6 +380,19 @@ bool VoronoiCircleSolver::certify_from_starts() {
         enclosure_.found_by = CircleStart::near_duplicate;
         return true;
     }
+    for_each_bisector_walk_circle(*work_sites_[0], *work_sites_[1], *work_sites_[2],
+                                  [&](const VoronoiCircleGuess& guess) { return certified_ = certify_from(guess); });
+    if (certified_) {
+        enclosure_.found_by = CircleStart::bisector_walk;
+        return true;
+    }
+    if ((certified_ = certify_from_needle_chains())) enclosure_.found_by = CircleStart::needle_chain;
+    return certified_;
+}
+
+bool VoronoiCircleSolver::certify_by_needle_chains() {
+    if (certified_) return true;
+    set_frame();
     if ((certified_ = certify_from_needle_chains())) enclosure_.found_by = CircleStart::needle_chain;
     return certified_;
 }

@@ -44,7 +44,7 @@ namespace ellvor {
 // (huge_circle_start.hpp), the circle of the triple with a nearly
 // coincident pair moved apart (near_duplicate_pair.hpp), the circle of the
 // triple with its needle made stout (needle_chain.hpp), or the exhaustive search.
-enum class CircleStart { guess, tangent_line, near_duplicate, needle_chain, search };
+enum class CircleStart { guess, tangent_line, near_duplicate, bisector_walk, needle_chain, search };
 const char* circle_start_name(CircleStart s);
 
 struct VoronoiCircleEnclosure {
@@ -87,6 +87,10 @@ public:
     // The exhaustive search alone (tests and experiments force this path);
     // the same contract as certify().
     bool certify_by_search(const VoronoiCircleSearchOptions& options = {});
+    // The needle chains alone (docs/DESIGN.md §4.2, item 5), which certify()
+    // tries after the other starts: for the tests and experiments that
+    // compare starts. False means only "not certified".
+    bool certify_by_needle_chains();
     // Refines the enclosure until every component has at least `bits`
     // correct bits, doubling the working precision; certifies first if
     // needed. False only when certify() is (no counter-clockwise circle);
@@ -115,7 +119,8 @@ public:
 
 private:
     // certify() without the exhaustive search: the guesses, the tangent-line
-    // starts and the near-duplicate start. False means only "not certified".
+    // starts, the near-duplicate start, the bisector walk and the needle
+    // chains. False means only "not certified".
     bool certify_from_starts();
     // A triple with a nearly coincident pair (near_duplicate_pair.hpp): the
     // circle of the triple with the pair moved apart, certified first, gives

@@ -60,7 +60,7 @@ class VoronoiCircle:
     (``"t"`` or ``"-1/t"``) and ``chart_parameter`` (Ball); ``correct_bits``
     (of the least accurate of them), ``precision``, ``newton_steps``,
     ``found_by`` (``"guess"``, ``"tangent-line"``, ``"near-duplicate"``,
-    ``"needle-chain"`` or ``"search"``),
+    ``"bisector-walk"``, ``"needle-chain"`` or ``"search"``),
     ``search_boxes``; ``face`` for a vertex of a diagram.
     """
 

@@ -1,15 +1,19 @@
 // The bisector walk (subdivision/bisector_walk_start.hpp): its candidates
-// against Arb's certified circles, and the double certificate that starts
-// from them where the circle models' starts fail.
+// against Arb's certified circles, the double certificate that starts from
+// them where the circle models' starts fail, and the Arb solver's start for a
+// triple of needles (fuzz F11) against the MPFR signed-distance oracle.
 #include "subdivision/bisector_walk_start.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "subdivision/voronoi_circle_in_doubles.hpp"
+#include "sites/rational_parse.hpp"
 #include "tests/support/random_sites.hpp"
+#include "tests/support/signed_distance_oracle.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 using namespace ellvor;
@@ -89,5 +93,28 @@ TEST_CASE("bisector walk: every counter-clockwise circle of random close triples
         INFO("radius " << r);
         CHECK(walk_offers(e[0], e[1], e[2], arb.enclosure(), 1e-9));
         ++compared;
+    }
+}
+
+TEST_CASE("bisector walk: the Arb solver's start for two needles and a small site (fuzz F11)",
+          "[subdivision][needle][fuzz]") {
+    // The triple of fuzz F11 in its similarity frame: a needle 1.4e8 : 1, a band of aspect 9.2e5 and
+    // a small site, all within 2e-6 of each other. The guesses and the needle chains miss the
+    // counter-clockwise circle (the search then ended at its cap); the walk, certified in Arb,
+    // finds it. Checked against the MPFR signed distances (no solver): each site at the radius.
+    auto q = [](const char* s) { return parse_rational(s); };
+    const Ellipse needle(q("47/12116894962155520"), q("23/41943040"), q("-47/50"), q("3/5368709120"),
+                         q("3/5368709120"));
+    const Ellipse band(q("71875/65536"), q("5/4194304"), q("-13/85"), q("231/1073741824"), q("-7421/5368709120"));
+    const Ellipse small(q("3/8388608"), q("63/83886080"), q("-7/18"), q("-793/1073741824"), q("-345/1073741824"));
+    for (const auto& [e1, e2, e3] : {std::tuple{&needle, &band, &small}, {&band, &small, &needle}}) {
+        VoronoiCircleSolver solver(*e1, *e2, *e3);
+        REQUIRE(solver.certify());
+        const VoronoiCircleEnclosure& found = solver.enclosure();
+        CHECK(found.found_by == CircleStart::bisector_walk);
+        const test::RealPoint v{test::Real(found.center_x.mid_double()), test::Real(found.center_y.mid_double())};
+        const double rho = found.radius.mid_double();
+        for (const Ellipse* e : {&needle, &band, &small})
+            CHECK(std::fabs(test::OracleEllipse(*e).signed_distance_value(v).to_double() - rho) < 1e-9 * rho);
     }
 }
