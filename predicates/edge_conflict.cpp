@@ -87,7 +87,8 @@ public:
             }
         }
         if (!frame_) frame_.emplace(e1_, e2_);
-        const Decision<Sign> order = order_on_bisector(*frame_, circle(va).solver(), 0, circle(vb).solver(), 0, options_);
+        const Decision<Sign> order =
+            order_on_bisector(*frame_, circle(va).solver(), 0, circle(vb).solver(), 0, options_);
         provenance_.depends_on(order);
         if (!order.is_decided()) return std::nullopt;
         return *order;
