@@ -1,8 +1,10 @@
 // Starts for the Voronoi circles of three ellipses from a walk along the
-// bisector of two of them, in doubles: the Arb solver's last start before the
-// exhaustive search (voronoi_circle_enclosure.hpp), for triples where the
-// guesses lead Newton to the other circle or nowhere (sites close against
-// their sizes, as in dense packings, where the search took 30 ms).
+// bisector of two of them, in doubles, for triples where the guesses lead
+// Newton to the other circle or nowhere: sites close against their sizes, as
+// in dense packings, and needles beside other thin sites (fuzz F11). The
+// double certificate (voronoi_circle_in_doubles.hpp) tries them before its
+// Arb tangent-line pass, the Arb solver (voronoi_circle_enclosure.hpp) before
+// the needle chains (docs/DESIGN.md §4.1a, §4.2 item 4).
 //
 // Each point P(theta) of E_i's boundary, with outward unit normal n, has at
 // most one circle tangent to E_i there and to E_j: the center V = P + rho n
