@@ -16,9 +16,9 @@
 namespace ellvor {
 
 // The Voronoi vertex of a finite face (i, j, k) as the JSON gives it: the
-// center and radius of its certified Voronoi circle at 53 correct bits, as
-// the doubles nearest the balls' midpoints, and `error`, the largest of the
-// three balls' radii.
+// center and radius of its certified Voronoi circle (voronoi_circle_box:
+// within about 2^-40 of the circle's magnitude, usually 2^-50) as doubles in
+// the boxes, and `error`, a bound on each one's distance to the exact value.
 struct VoronoiVertexValue {
     double x = 0, y = 0, radius = 0, error = 0;
 };

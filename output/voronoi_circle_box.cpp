@@ -1,6 +1,6 @@
 #include "output/voronoi_circle_box.hpp"
 
-#include "output/graph_json.hpp"
+#include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <cmath>
 
@@ -30,10 +30,10 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
                                     const DoubleVoronoiCircle* c) {
     if (c && tight(*c)) return {c->center_x, c->center_y, c->radius};
-    // voronoi_vertex_value's doubles are each within `error` of the truth.
-    const VoronoiVertexValue v = voronoi_vertex_value(sites, face);
-    const Interval e(-v.error, v.error);
-    return {Interval(v.x) + e, Interval(v.y) + e, Interval(v.radius) + e};
+    VoronoiCircleSolver solver(sites[face[0]], sites[face[1]], sites[face[2]]);
+    solver.refine_existing(53);  // a face of a graph has its counter-clockwise circle
+    const VoronoiCircleEnclosure& e = solver.enclosure();
+    return {enclose(e.center_x), enclose(e.center_y), enclose(e.radius)};
 }
 
 }  // namespace ellvor

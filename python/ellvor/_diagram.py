@@ -154,10 +154,10 @@ class Diagram:
                                the Delaunay edge ridge_points[k][0] -> ridge_points[k][1]
     Voronoi vertices, as the JSON gives them (computed on first use):
         vertices (f, 2), vertex_radii (f,)   centers and signed radii of the Voronoi circles, the
-                                             doubles nearest the midpoints of their certified balls
+                                             midpoints of their certified boxes, rounded
                                              (a negative radius: inside three crossing sites)
         vertex_errors (f,)                   every exact value is within this of the double given
-                                             (the ball's radius plus the midpoint's rounding)
+                                             (at most about 2^-40 of |center| + |radius|)
     Cells, as scipy.spatial.Voronoi: ``regions`` (per site the Voronoi vertices of its cell
     counter-clockwise, -1 at infinity, [] when hidden) and ``point_region`` (site k's region is
     regions[k]); ``cells()`` computes the certified cells (areas, packing fractions).
