@@ -52,7 +52,31 @@ struct Interval {
     friend Interval operator+(Interval a, Interval b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
     friend Interval operator-(Interval a, Interval b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }
     Interval operator-() const { return {-hi, -lo}; }
+    // By the endpoints' signs, two products where one factor keeps its sign
+    // (all but the last case; the filters' intervals rarely hold zero);
+    // the NaN-ignoring hull of all four when both hold zero or a product is
+    // NaN (0 * inf), which the sign cases cannot order.
     friend Interval operator*(Interval a, Interval b) {
+        double lo, hi;
+        if (a.lo >= 0) {
+            if (b.lo >= 0) lo = a.lo * b.lo, hi = a.hi * b.hi;
+            else if (b.hi <= 0) lo = a.hi * b.lo, hi = a.lo * b.hi;
+            else lo = a.hi * b.lo, hi = a.hi * b.hi;
+        } else if (a.hi <= 0) {
+            if (b.lo >= 0) lo = a.lo * b.hi, hi = a.hi * b.lo;
+            else if (b.hi <= 0) lo = a.hi * b.hi, hi = a.lo * b.lo;
+            else lo = a.lo * b.hi, hi = a.lo * b.lo;
+        } else if (b.lo >= 0) {
+            lo = a.lo * b.hi, hi = a.hi * b.hi;
+        } else if (b.hi <= 0) {
+            lo = a.hi * b.lo, hi = a.lo * b.lo;
+        } else {
+            return hull_of_products(a, b);
+        }
+        if (lo != lo || hi != hi) return hull_of_products(a, b);
+        return {down(lo), up(hi)};
+    }
+    static Interval hull_of_products(Interval a, Interval b) {
         const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
         return {down(min(min(p1, p2), min(p3, p4))), up(max(max(p1, p2), max(p3, p4)))};
     }
