@@ -1,6 +1,7 @@
 #include "output/graph_json.hpp"
 
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@
 namespace ellvor {
 
 VoronoiVertexValue voronoi_vertex_value(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& f) {
-    VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]]);
+    VoronoiCircleSolver solver(sites[f[0]], sites[f[1]], sites[f[2]], common_medial_axis_tangency);
     solver.refine_existing(53);  // a face of the graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& c = solver.enclosure();
     VoronoiVertexValue v;
