@@ -9,6 +9,8 @@
 #include "exact/medial_axis_tangency.hpp"
 #include "exact/real_roots.hpp"
 #include "graph/delaunay_graph.hpp"
+#include "predicates/incircle.hpp"
+#include "subdivision/voronoi_circle.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "tests/support/ellipse_graph.hpp"
 #include "tests/support/signed_distance_oracle.hpp"
@@ -206,4 +208,21 @@ TEST_CASE("the Delaunay graph of a set holding the medial-axis triple is valid",
                   return std::max({f[0], f[1], f[2]}) == 2;
               }) == 1);
     } while (std::next_permutation(order.begin(), order.begin() + 3));
+}
+
+TEST_CASE("InCircle on the medial-axis triple decides in the subdivision stage, through the axis proof",
+          "[medial-axis][predicates][crossing]") {
+    const AxisTriple k;
+    const Ellipse e = k.axis_site(), f = k.site_j(), g = k.site_k();
+    // Circles about V: delta(V, Q) = -3 < rho = -12/5 (conflict), -2 > rho (none).
+    const Ellipse deeper = Ellipse::circle(k.vx(), k.vy(), 3), shallower = Ellipse::circle(k.vx(), k.vy(), 2);
+    VoronoiCircle circle(e, f, g, common_medial_axis_tangency);
+    const Decision<InCircle> conflict = incircle(e, f, g, deeper, {}, &circle);
+    CHECK(*conflict == InCircle::conflict);
+    CHECK(conflict.stage == Stage::subdivision);
+    REQUIRE(circle.has_solver());
+    CHECK(circle.solver().enclosure().on_medial_axis);
+    const Decision<InCircle> none = incircle(e, f, g, shallower);  // its own circle, made with the proof
+    CHECK(*none == InCircle::no_conflict);
+    CHECK(none.stage == Stage::subdivision);
 }
