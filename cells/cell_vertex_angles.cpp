@@ -1,6 +1,7 @@
 #include "cells/cell_vertex_angles.hpp"
 
 #include "util/error.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,8 @@ VoronoiCircleSolver& CellVertexAngles::solver(long face, long prec) {
     const auto f = static_cast<std::size_t>(face);
     if (face < 0 || f >= faces_.size()) throw Error("CellVertexAngles: no face " + std::to_string(face));
     if (!solvers_[f])
-        solvers_[f] = std::make_unique<VoronoiCircleSolver>(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]]);
+        solvers_[f] = std::make_unique<VoronoiCircleSolver>(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]],
+                                                               common_medial_axis_tangency);
     solvers_[f]->refine_existing(prec - 24);
     return *solvers_[f];
 }

@@ -4,6 +4,7 @@
 #include "cli/site_arguments.hpp"
 #include "predicates/incircle.hpp"
 #include "util/precision.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -51,7 +52,7 @@ int run(const std::vector<std::string>& args) {
     const auto& s = file.sites;
 
     const auto start = std::chrono::steady_clock::now();
-    VoronoiCircle circle(s[0], s[1], s[2]);
+    VoronoiCircle circle(s[0], s[1], s[2], common_medial_axis_tangency);
     const Decision<InCircle> d = incircle(s[0], s[1], s[2], s[3], options, &circle);
     // Arb Newton steps: none when the double-interval stage decided.
     const long newton_steps = circle.has_solver() ? circle.solver().enclosure().newton_steps : 0;

@@ -5,6 +5,7 @@
 #include "cli/site_arguments.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -67,7 +68,7 @@ int run(const std::vector<std::string>& args) {
         return kExitOk;
     }
     const auto start = std::chrono::steady_clock::now();
-    VoronoiCircleSolver solver(s[0], s[1], s[2]);
+    VoronoiCircleSolver solver(s[0], s[1], s[2], common_medial_axis_tangency);
     // The count said the circle exists; the certification is complete, so a
     // search that proves otherwise is an internal contradiction (thrown).
     solver.refine_existing(bits);

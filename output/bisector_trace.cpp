@@ -2,6 +2,7 @@
 
 #include "subdivision/nearest_point.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -272,7 +273,7 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
         const Triangulation::Face& F = tds.face(f);
         VoronoiVertexPoint v;
         for (int k = 0; k < 3; ++k) v.face[k] = tds.vertex(F.v[k]).site;
-        VoronoiCircleSolver solver(sites[v.face[0]], sites[v.face[1]], sites[v.face[2]]);
+        VoronoiCircleSolver solver(sites[v.face[0]], sites[v.face[1]], sites[v.face[2]], common_medial_axis_tangency);
         if (solver.refine(53)) {
             const VoronoiCircleEnclosure& c = solver.enclosure();
             v.certified = true;

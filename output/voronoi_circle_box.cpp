@@ -1,5 +1,6 @@
 #include "output/voronoi_circle_box.hpp"
 
+#include "exact/medial_axis_tangency.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
 #include <cmath>
@@ -30,7 +31,7 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
                                     const DoubleVoronoiCircle* c) {
     if (c && tight(*c)) return {c->center_x, c->center_y, c->radius};
-    VoronoiCircleSolver solver(sites[face[0]], sites[face[1]], sites[face[2]]);
+    VoronoiCircleSolver solver(sites[face[0]], sites[face[1]], sites[face[2]], common_medial_axis_tangency);
     solver.refine_existing(53);  // a face of a graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& e = solver.enclosure();
     return {enclose(e.center_x), enclose(e.center_y), enclose(e.radius)};

@@ -7,6 +7,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/voronoi_circle.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <memory>
 #include <optional>
@@ -112,7 +113,8 @@ private:
     // its time there).
     VoronoiCircle& circle(Vertex& v) {
         if (!v.enclosure) {
-            v.enclosure = std::make_unique<VoronoiCircle>(*v.triple[0], *v.triple[1], *v.triple[2]);
+            v.enclosure =
+                std::make_unique<VoronoiCircle>(*v.triple[0], *v.triple[1], *v.triple[2], common_medial_axis_tangency);
             v.enclosure->in_doubles();
         }
         return *v.enclosure;

@@ -12,6 +12,7 @@
 #include "subdivision/point_ellipse_distance.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <algorithm>
 #include <array>
@@ -121,7 +122,8 @@ bool tangent_exactly(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, co
     if (with_q == VoronoiCircles::ccw_only || with_q == VoronoiCircles::both) candidates.push_back({&s, &p, &q});
     if (with_q == VoronoiCircles::cw_only || with_q == VoronoiCircles::both) candidates.push_back({&s, &q, &p});
     for (const auto& triple : candidates) {
-        VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2]);  // exists: voronoi_circle_count said so
+        // exists: voronoi_circle_count said so
+        VoronoiCircleSolver other(*triple[0], *triple[1], *triple[2], common_medial_axis_tangency);
         if (ContactComparison({{&e1, &e2, &e3}, &solver, shared}, {triple, &other, 0}).same_contact_point(prec))
             return true;
     }
@@ -170,7 +172,7 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         return circle_incircle_exactly(e1, e2, e3, q);
     std::unique_ptr<VoronoiCircle> own;
     if (!circle) {
-        own = std::make_unique<VoronoiCircle>(e1, e2, e3);
+        own = std::make_unique<VoronoiCircle>(e1, e2, e3, common_medial_axis_tangency);
         circle = own.get();
     }
     // The double-interval stage: a certified circle also proves that it exists.

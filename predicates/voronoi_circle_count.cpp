@@ -7,6 +7,7 @@
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <array>
 #include <optional>
@@ -108,7 +109,7 @@ std::optional<Decision<VoronoiCircles>> count_circles(const Ellipse& e1, const E
         count.depends_on(Decision<bool>::decided(true, Stage::subdivision));
         for (const auto& [x, y, z] : covered)
             if (covered_without_circle(*x, *y, *z)) return count.with(VoronoiCircles::none);
-        VoronoiCircleSolver solver(e1, e2, e3);
+        VoronoiCircleSolver solver(e1, e2, e3, common_medial_axis_tangency);
         return count.with(solver.certify() ? VoronoiCircles::both : VoronoiCircles::none);
     }
     return count.with(by_conflicts[conflicts]);

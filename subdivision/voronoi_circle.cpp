@@ -13,7 +13,7 @@ const DoubleVoronoiCircle* VoronoiCircle::in_doubles() {
 
 VoronoiCircleSolver& VoronoiCircle::solver() {
     if (!solver_) {
-        solver_ = std::make_unique<VoronoiCircleSolver>(*sites_[0], *sites_[1], *sites_[2]);
+        solver_ = std::make_unique<VoronoiCircleSolver>(*sites_[0], *sites_[1], *sites_[2], common_axis_tangency_);
         // A certified double circle is a start right at the root.
         if (doubles_tried_ == Tried::certified)
             solver_->certify_near(doubles_.flipped, {doubles_.parameter[0].mid(), doubles_.parameter[1].mid(),

@@ -18,7 +18,10 @@ namespace ellvor {
 class VoronoiCircle {
 public:
     // The sites must outlive this object.
-    VoronoiCircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) : sites_{&e1, &e2, &e3} {}
+    // common_axis_tangency: passed to the solver (VoronoiCircleSolver).
+    VoronoiCircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                  CommonAxisTangency common_axis_tangency = nullptr)
+        : sites_{&e1, &e2, &e3}, common_axis_tangency_(common_axis_tangency) {}
 
     // The certified double enclosure, computed on the first call; nullptr
     // when the doubles could not certify it (which proves nothing: the
@@ -38,6 +41,7 @@ private:
     Tried doubles_tried_ = Tried::not_yet;
     DoubleVoronoiCircle doubles_;
     std::unique_ptr<VoronoiCircleSolver> solver_;
+    CommonAxisTangency common_axis_tangency_ = nullptr;
 };
 
 }  // namespace ellvor

@@ -3,6 +3,7 @@
 #include "subdivision/bisector_walk_start.hpp"
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/inscribed_disk.hpp"
+#include "subdivision/medial_axis_circle.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
 #include "subdivision/needle_chain.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
@@ -88,8 +89,9 @@ long VoronoiCircleEnclosure::correct_bits() const {
     return bits;
 }
 
-VoronoiCircleSolver::VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3)
-    : sites_{&e1, &e2, &e3}, work_sites_{&e1, &e2, &e3} {}
+VoronoiCircleSolver::VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                         CommonAxisTangency common_axis_tangency)
+    : sites_{&e1, &e2, &e3}, work_sites_{&e1, &e2, &e3}, common_axis_tangency_(common_axis_tangency) {}
 
 void VoronoiCircleSolver::set_frame() {
     if (framed_) return;
@@ -194,9 +196,13 @@ Ball orientation(const Charts& charts, const BallMatrix& X, long prec, bool of_n
 // is its own mirror image across L (symmetric inputs: a needle between two
 // equal circles), the two proven signed distances put the true V on L, and
 // the test may skip the mirror image of the first foot's neighbourhood
-// (disk_inside_ellipse with a mirror, DESIGN.md §4.2).
+// (disk_inside_ellipse with a mirror, DESIGN.md §4.1). Without such a line,
+// center_on_medial_axis may prove V on the site's own major axis (§4.2, "On a
+// medial axis"; *on_axis reports it), and the same skip follows.
 bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::array<bool, 3>& flipped,
-                      const BallMatrix& K, long prec) {
+                      const std::array<const BoundaryChart*, 3>& charts, const BallMatrix& K, long prec,
+                      CommonAxisTangency common_axis_tangency, bool* on_axis) {
+    *on_axis = false;
     const arb_struct* rho = K.at(3, 0);
     int unproven = -1;
     for (int i = 0; i < 3; ++i) {
@@ -219,9 +225,14 @@ bool signed_distances(const std::array<const Ellipse*, 3>& sites, const std::arr
     }
     if (unproven < 0) return true;
     const std::optional<AxisLine> line = bisector_line(*sites[(unproven + 1) % 3], *sites[(unproven + 2) % 3]);
-    if (!line) return false;
-    const SelfMirror mirror = self_mirror(*sites[unproven], *line);
-    if (mirror == SelfMirror::none) return false;
+    SelfMirror mirror = line ? self_mirror(*sites[unproven], *line) : SelfMirror::none;
+    if (mirror == SelfMirror::none) {
+        if (!center_on_medial_axis(sites, charts, K, unproven, prec, common_axis_tangency)) return false;
+        // The reflection across the major axis: t -> -t for the a-axis, 1/t for the b-axis.
+        *on_axis = true;
+        mirror = sites[unproven]->b() < sites[unproven]->a() ? SelfMirror::negates_parameter
+                                                              : SelfMirror::inverts_parameter;
+    }
     Ball t, r, vx, vy;
     arb_set(t.get(), K.at(unproven, 0));
     arb_set(r.get(), rho);
@@ -327,6 +338,7 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     arb_mat_add(K.get(), K.get(), midpoint_.get(), prec);
     for (int j = 0; j < kUnknowns; ++j)
         if (!arb_contains_interior(X.at(j, 0), K.at(j, 0))) return false;
+    bool on_axis = false;
     // The root in K: a counter-clockwise circle of positive radius?
     if (arb_is_positive(K.at(3, 0))) {
         // The tangency points' coordinates cancel in the orientation: it needs
@@ -340,7 +352,8 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
         // each site, and the tangency points, V + |rho| nu_i, are
         // counter-clockwise iff the normals are (at rho = 0 only the normals
         // tell).
-        if (!signed_distances(work_sites_, enclosure_.flipped, K, prec)) return false;
+        if (!signed_distances(work_sites_, enclosure_.flipped, charts(), K, prec, common_axis_tangency_, &on_axis))
+            return false;
         if (!arb_is_positive(orientation(charts(), K, prec, true).get())) return false;
     }
 
@@ -349,6 +362,7 @@ bool VoronoiCircleSolver::krawczyk(long prec) {
     arb_set(enclosure_.center_x.get(), K.at(4, 0));
     arb_set(enclosure_.center_y.get(), K.at(5, 0));
     enclosure_.precision = prec;
+    enclosure_.on_medial_axis = on_axis;
     for (int j = 0; j < kUnknowns; ++j) arb_get_mid_arb(midpoint_.at(j, 0), K.at(j, 0));
     return true;
 }
@@ -414,7 +428,7 @@ bool VoronoiCircleSolver::certify_along_needle_chain(int i, NeedleChain chain) {
     std::array<const Ellipse*, 3> sites = work_sites_;
     std::deque<Ellipse> links{needle_link(site, chain, kStoutNeedleBits)};
     sites[i] = &links.back();
-    auto previous = std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2]);
+    auto previous = std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2], common_axis_tangency_);
     previous->set_frame();
     if (!previous->frame().is_identity()) return false;
     if (!previous->certify_from_starts()) {
@@ -437,7 +451,7 @@ bool VoronoiCircleSolver::certify_along_needle_chain(int i, NeedleChain chain) {
         sites[i] = &to;
         std::unique_ptr<VoronoiCircleSolver> next;
         if (!last) {
-            next = std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2]);
+            next = std::make_unique<VoronoiCircleSolver>(*sites[0], *sites[1], *sites[2], common_axis_tangency_);
             next->set_frame();
             if (!next->frame().is_identity()) return false;
         }
@@ -485,7 +499,7 @@ bool VoronoiCircleSolver::certify_from_moved_pair(const NearDuplicatePair& pair,
     const Ellipse moved = ellipse_moved_apart(*work_sites_[i], *work_sites_[j], mu);
     std::array<const Ellipse*, 3> sites = work_sites_;
     sites[j] = &moved;
-    VoronoiCircleSolver apart(*sites[0], *sites[1], *sites[2]);
+    VoronoiCircleSolver apart(*sites[0], *sites[1], *sites[2], common_axis_tangency_);
     if (!apart.certify_from_starts()) {
         // Internal circles of a crossing third site are often found by the
         // search only; moved apart, it takes a few hundred boxes. A search that

@@ -28,6 +28,7 @@
 #include "sites/ellipse.hpp"
 #include "sites/similarity_frame.hpp"
 #include "subdivision/boundary_chart.hpp"
+#include "subdivision/medial_axis_circle.hpp"
 #include "subdivision/near_duplicate_pair.hpp"
 #include "subdivision/needle_chain.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
@@ -59,6 +60,10 @@ struct VoronoiCircleEnclosure {
     // Boxes the exhaustive search examined (also when it proved that there
     // is no circle); 0 when it did not run.
     long search_boxes = 0;
+    // The certificate proved rho the signed distance to a site through a
+    // proof that V lies exactly on its medial axis (medial_axis_circle.hpp,
+    // docs/DESIGN.md §4.2, "On a medial axis").
+    bool on_medial_axis = false;
 
     // Tangency parameter t_i on E_i (an unbounded ball when the box holds the i-point).
     Ball tangency_parameter(int i, long prec) const;
@@ -69,7 +74,12 @@ struct VoronoiCircleEnclosure {
 
 class VoronoiCircleSolver {
 public:
-    VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
+    // common_axis_tangency (exact/medial_axis_tangency.hpp, passed in from
+    // above: this layer does not know exact/) lets the certificate accept an
+    // internal circle centered exactly on a site's medial axis; without it
+    // such a triple ends at the search's cap (docs/DESIGN.md §4.2).
+    VoronoiCircleSolver(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                        CommonAxisTangency common_axis_tangency = nullptr);
 
     // Finds and certifies the counter-clockwise Voronoi circle at about 64
     // bits (more when the sites' magnitudes exceed their size in the frame):
@@ -177,6 +187,7 @@ private:
     // is not the identity (one per cached face: keep the solver small).
     mutable std::unique_ptr<VoronoiCircleEnclosure> original_;
     bool certified_ = false;
+    CommonAxisTangency common_axis_tangency_ = nullptr;
 };
 
 }  // namespace ellvor

@@ -1,6 +1,7 @@
 #include "traits/voronoi_circle_cache.hpp"
 
 #include "util/error.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -87,7 +88,7 @@ VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, S
         place = static_cast<std::uint32_t>(pool_.size());
         pool_.emplace_back();
     }
-    pool_[place].emplace(Entry{ids, VoronoiCircle(*sites[0], *sites[1], *sites[2])});
+    pool_[place].emplace(Entry{ids, VoronoiCircle(*sites[0], *sites[1], *sites[2], common_medial_axis_tangency)});
     slots_[n] = Slot{*key, place};
     ++size_;
     return *pool_[place];

@@ -10,6 +10,7 @@
 #include "traits/ellipse_delaunay_traits.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "util/error.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <pybind11/stl.h>
 
@@ -342,7 +343,7 @@ py::dict vertex(Diagram& d, long i, long bits) {
     if (i < 0 || i >= n) throw py::index_error("vertex index out of range");
     const std::array<SiteId, 3> f = faces[static_cast<std::size_t>(i)];
     const std::vector<Ellipse>& s = *d.sites;
-    VoronoiCircleSolver solver(s[f[0]], s[f[1]], s[f[2]]);
+    VoronoiCircleSolver solver(s[f[0]], s[f[1]], s[f[2]], common_medial_axis_tangency);
     {
         py::gil_scoped_release release;  // the sites never change: no lock needed
         solver.refine_existing(bits);    // a face has its counter-clockwise circle

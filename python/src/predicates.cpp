@@ -9,6 +9,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
+#include "exact/medial_axis_tangency.hpp"
 
 #include <chrono>
 
@@ -44,7 +45,7 @@ py::dict incircle_answer(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3
         py::gil_scoped_release release;
         require_valid_sites({&e1, &e2, &e3, &q});
         const Clock::time_point start = Clock::now();
-        VoronoiCircle circle(e1, e2, e3);
+        VoronoiCircle circle(e1, e2, e3, common_medial_axis_tangency);
         d = incircle(e1, e2, e3, q, options, &circle);
         newton_steps = circle.has_solver() ? circle.solver().enclosure().newton_steps : 0;
         us = microseconds_since(start);
@@ -93,7 +94,7 @@ py::dict voronoi_circle_answer(const Ellipse& e1, const Ellipse& e2, const Ellip
         count = voronoi_circle_count(e1, e2, e3);
         if (*count == VoronoiCircles::ccw_only || *count == VoronoiCircles::both) {
             const Clock::time_point start = Clock::now();
-            solver = std::make_unique<VoronoiCircleSolver>(e1, e2, e3);
+            solver = std::make_unique<VoronoiCircleSolver>(e1, e2, e3, common_medial_axis_tangency);
             solver->refine_existing(bits);  // the count proved it exists
             ms = microseconds_since(start) / 1000;
         }
