@@ -38,6 +38,8 @@ SMALL = {
     "crossing-through-a-point.ell": "5 5 0 -5 0\n5 5 0 0 -5\n5 5 0 5 0\n5 5 0 0 5\n",
     "crossing-ellipse.ell": "2 1 0 0 0\n2 1 0 1 1\n1 1 0 5 5\n",
     "union-hidden-needle.ell": "10 1/10 0 0 0\n6 6 0 -5 0\n6 6 0 5 0\n2 1 0 20 3\n",
+    # An internal circle centered exactly on the ellipse's medial axis, no symmetry (DESIGN §4.2).
+    "medial-axis-center.ell": "5 3 1/3 7/3 -11/7\n4 4 0 2171/375 -507/875\n4 4 0 3763/975 3229/2275\n",
     "crossing-ellipses-internal.ell": "47/10 23/5 -47/50 91/5 116/5\n84/5 49/5 1/50 5 137/5\n"
     "92/5 10 -13/50 261/10 58/5\n3 63/10 -7/10 25/2 41/2\n",
     "meeting-in-three-points.ell": "1 1 0 0 0\n1 3/2 0 0 -1/2\n",
