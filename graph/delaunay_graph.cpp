@@ -33,7 +33,7 @@ void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::s
     std::vector<LocationHint> hints;
     hints.reserve(order.size());
     for (SiteId i = 0; i < traits_->size(); ++i) hints.push_back(traits_->location_hint(i));
-    grid_ = std::make_unique<SiteGrid>(hints);
+    grid_ = std::make_unique<SiteGrid>(std::move(hints));
     std::size_t done = 0;
     for (SiteId i : order) {
         insert(i);
@@ -284,11 +284,12 @@ VertexIndex DelaunayGraph::nearest_vertex(SiteId p) {
 }
 
 VertexIndex DelaunayGraph::walk_start(SiteId p) const {
+    auto has_vertex = [&](SiteId s) {
+        const VertexIndex v = vertex_of_site_[s];
+        return tds_.is_vertex(v) && v != Triangulation::kInfiniteVertex && site_of(v) == s;
+    };
     if (grid_)
-        for (SiteId s : grid_->near(p)) {
-            const VertexIndex v = vertex_of_site_[s];
-            if (tds_.is_vertex(v) && v != Triangulation::kInfiniteVertex && site_of(v) == s) return v;
-        }
+        if (const std::optional<SiteId> s = grid_->nearest(p, has_vertex)) return vertex_of_site_[*s];
     return last_vertex_;
 }
 
