@@ -49,7 +49,8 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
     sin_ = two * w_ / (one + w2);
 
     enclosure_ = {enclose(a_), enclose(b_), enclose(cos_), enclose(sin_), enclose(xc_), enclose(yc_)};
-    dyadic_circle_ = a_ == b_ && a_.is_small_dyadic() && xc_.is_small_dyadic() && yc_.is_small_dyadic();
+    circle_ = a_ == b_;
+    dyadic_circle_ = circle_ && a_.is_small_dyadic() && xc_.is_small_dyadic() && yc_.is_small_dyadic();
 }
 
 const Ellipse::Polynomials& Ellipse::polynomials() const {

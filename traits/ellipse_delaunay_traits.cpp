@@ -1,5 +1,6 @@
 #include "traits/ellipse_delaunay_traits.hpp"
 
+#include "circles/circle_semi_static.hpp"
 #include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
@@ -124,9 +125,14 @@ Sign EllipseDelaunayTraits::infinite_vertex_conflict(SiteId i, SiteId j, SiteId 
 }
 
 Decision<InCircle> EllipseDelaunayTraits::incircle_of_face(SiteId i, SiteId j, SiteId k, SiteId q) {
-    // Four circles take the closed form: no solver to cache.
-    if (site(i).is_circle() && site(j).is_circle() && site(k).is_circle() && site(q).is_circle())
-        return ellvor::incircle(site(i), site(j), site(k), site(q));
+    const Ellipse &ei = site(i), &ej = site(j), &ek = site(k), &eq = site(q);
+    // Four circles of doubles: the semi-static sign, straight (a build's
+    // usual call); then the closed forms, no solver to cache.
+    if (ei.is_dyadic_circle() && ej.is_dyadic_circle() && ek.is_dyadic_circle() && eq.is_dyadic_circle()) {
+        const Decision<InCircle> fast = circle_incircle_semi_static(ei, ej, ek, eq);
+        if (fast.is_decided()) return fast;
+    }
+    if (ei.is_circle() && ej.is_circle() && ek.is_circle() && eq.is_circle()) return ellvor::incircle(ei, ej, ek, eq);
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached circle is that of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = ellvor::incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
