@@ -51,6 +51,13 @@ Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
     // their double enclosures (the insertion order sorts by them), exactly
     // only when those overlap.
     const Ellipse &ea = site(a), &eb = site(b);
+    // Circles of doubles (a build's sort compares n log n pairs): the radius
+    // is its double, up(lo) of its enclosure (circles/semi_static.hpp), and
+    // a b = r^2 orders as r.
+    if (ea.is_dyadic_circle() && eb.is_dyadic_circle()) {
+        const double ra = Interval::up(ea.enclosure().a.lo), rb = Interval::up(eb.enclosure().a.lo);
+        return ra > rb ? Sign::positive : ra < rb ? Sign::negative : Sign::zero;
+    }
     if (ea.a() == eb.a() && ea.b() == eb.b()) return Sign::zero;
     const Interval area_a = ea.enclosure().a * ea.enclosure().b, area_b = eb.enclosure().a * eb.enclosure().b;
     if (area_b.hi < area_a.lo) return Sign::positive;
@@ -77,8 +84,9 @@ void EllipseDelaunayTraits::check_sites() {
 
 bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     if (p == q) return true;
-    // Most pairs are far apart: decided at once, cheaper than the memo.
-    if (bounding_circles_apart_in_doubles(site(p), site(q))) {
+    // Most pairs are far apart, or (circles) q is the larger: decided at
+    // once, cheaper than the memo.
+    if (circle_not_inside_in_doubles(site(p), site(q)) || bounding_circles_apart_in_doubles(site(p), site(q))) {
         return counted(stats_, Predicate::is_hidden, Decision<bool>::decided(false, Stage::filter), {p, q});
     }
     const std::uint64_t key = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint64_t>(q);
