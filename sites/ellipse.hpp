@@ -53,8 +53,11 @@ public:
     // of every call.
     bool is_dyadic_circle() const { return dyadic_circle_; }
     // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
-    const Rational& cos_rotation() const { return cos_; }
-    const Rational& sin_rotation() const { return sin_; }
+    // Computed on each call (1 and 0 for w = 0): only exact and Arb stages
+    // ask, and keeping them cost 32 bytes a site; the filters read the
+    // enclosures.
+    Rational cos_rotation() const;
+    Rational sin_rotation() const;
 
     // Double enclosures of a, b, cos, sin of the rotation and the center, for
     // the floating-point filters (computed once; the ellipse is immutable).
@@ -113,7 +116,6 @@ private:
     std::array<Rational, 3> quadratic_form() const;
 
     Rational a_, b_, w_, xc_, yc_;
-    Rational cos_, sin_;
     Enclosure enclosure_;
     bool dyadic_circle_ = false, circle_ = false;
     // Written once, by whichever thread asks first (atomic shared_ptr access:
