@@ -221,4 +221,34 @@ Decision<Sign> circle_infinite_vertex_conflict_semi_static(const Ellipse& c1, co
     return Decision<Sign>::decided(side > 0 ? Sign::negative : Sign::positive, Stage::filter);
 }
 
+Decision<Sign> circle_side_of_bisector_at_center_semi_static(const Ellipse& c1, const Ellipse& c2,
+                                                             const Ellipse& site) {
+    const Decision<Sign> undecided = Decision<Sign>::undecided(Stage::filter, 0);
+    auto decided = [](int s) { return Decision<Sign>::decided(s > 0 ? Sign::positive : Sign::negative, Stage::filter); };
+    const auto e1 = exact_circle(c1), e2 = exact_circle(c2), p = exact_circle(site);
+    if (!e1 || !e2 || !p) return undecided;
+    // sign(d2 - d1), d_i = sqrt(A_i) - r_i, A_i = |p - C_i|^2, as
+    // sign_of_root_difference (side_of_bisector.cpp) decides it exactly:
+    // with delta = r2 - r1, sqrt(A_2) - sqrt(A_1) has the sign u of A_2 - A_1;
+    // if u and delta have opposite signs, u; else u times the sign of
+    // M - 2 sqrt(A_1 A_2), M = A_1 + A_2 - delta^2: -1 if M < 0, else that of
+    // M^2 - 4 A_1 A_2. Each sign certain (semi_static.hpp) or undecided.
+    auto squared_distance = [&](const Circle<0>& c) {
+        const Rounded<1> dx = difference(p->x.value, c.x.value), dy = difference(p->y.value, c.y.value);
+        return dx * dx + dy * dy;
+    };
+    const auto a1 = squared_distance(*e1), a2 = squared_distance(*e2);
+    const Rounded<1> delta = difference(e2->r.value, e1->r.value);
+    const int u = certain_sign(a2 - a1), d = certain_sign(delta);
+    if (u == 0) return undecided;
+    if (u != d) return decided(u);  // d = 0 (equal radii) included
+    const auto m = a1 + a2 - delta * delta;
+    const int sm = certain_sign(m);
+    if (sm < 0) return decided(-u);
+    if (sm == 0) return undecided;
+    const int s = certain_sign(m * m - twice(twice(a1 * a2)));
+    if (s == 0) return undecided;
+    return decided(u * s);
+}
+
 }  // namespace ellvor

@@ -30,4 +30,10 @@ Decision<VoronoiCircles> circle_voronoi_circle_count_semi_static(const Ellipse& 
 // not touch the bitangent line (the tie-break is left to the exact stage).
 Decision<Sign> circle_infinite_vertex_conflict_semi_static(const Ellipse& c1, const Ellipse& c2, const Ellipse& q);
 
+// kappa1 of two circle sites at the center of a third (side_of_bisector.hpp:
+// POSITIVE when that center is nearer to C1), when all three are exact
+// doubles; an exact tie and its near misses are left to the exact stage.
+Decision<Sign> circle_side_of_bisector_at_center_semi_static(const Ellipse& c1, const Ellipse& c2,
+                                                             const Ellipse& site);
+
 }  // namespace ellvor

@@ -25,6 +25,8 @@
 //   build/experiments/build_scaling                       # default (make bench): n <= 1000, stdout only
 //   build/experiments/build_scaling --full --out experiments/results
 //       # adds n = 10^4, 10^5 and 10^6 (about 20 minutes); writes build_scaling.csv, .md and .png
+//   build/experiments/build_scaling --full --max-n 100000
+//       # the same without the counts above 10^5 (a quick check of the 10^4 and 10^5 rows)
 // At 10^6 the nested set and CGAL's plain graph (whose nearest-neighbour walk
 // is linear: 4 s at 10^5) are left out.
 //
@@ -432,15 +434,33 @@ std::string target_list(const std::vector<Row>& rows, const std::vector<long>& n
 }  // namespace
 
 int main(int argc, char** argv) {
+    const char* usage =
+        "usage: build_scaling [--full] [--max-n N] [--out DIR]\n"
+        "  --full     also n = 10^4, 10^5 and 10^6 (about 20 minutes)\n"
+        "  --max-n N  leave out the counts above N (e.g. --full --max-n 100000: no 10^6 rows)\n"
+        "  --out DIR  write DIR/build_scaling.csv, .md and .png\n";
+    // --max-n is this program's own; the rest is the common command line.
+    long max_n = 0;  // 0: no limit
+    std::vector<char*> common = {argv[0]};
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--max-n") == 0) {
+            char* end = nullptr;
+            max_n = i + 1 < argc ? std::strtol(argv[++i], &end, 10) : 0;
+            if (max_n <= 0 || !end || *end != '\0') {
+                std::fputs(usage, stderr);
+                return 2;
+            }
+        } else {
+            common.push_back(argv[i]);
+        }
+    }
     BenchArguments args;
-    if (!parse_bench_arguments(argc, argv, "build_scaling",
-                               "usage: build_scaling [--full] [--out DIR]\n"
-                               "  --full     also n = 10^4, 10^5 and 10^6 (about 20 minutes)\n"
-                               "  --out DIR  write DIR/build_scaling.csv, .md and .png\n",
-                               args))
-        return 2;
+    if (!parse_bench_arguments(static_cast<int>(common.size()), common.data(), "build_scaling", usage, args)) return 2;
+    args.command = "build/experiments/build_scaling";
+    for (int i = 1; i < argc; ++i) args.command += std::string(" ") + argv[i];
     std::vector<long> ns = {5, 10, 15, 20, 25, 100, 1000};
     if (args.full) ns.insert(ns.end(), {10000, 100000, 1000000});
+    if (max_n > 0) ns.erase(std::remove_if(ns.begin(), ns.end(), [&](long n) { return n > max_n; }), ns.end());
     Report report("Build time against the number of sites", "build_scaling", args.command);
 
     // The measurements.
@@ -490,7 +510,8 @@ int main(int argc, char** argv) {
     report.heading("Targets");
     report.text(target_list(rows, ns) + "\nAnomalies (invalid graph, disagreement with CGAL, exception): " +
                 std::to_string(anomalies) + ".\n" +
-                (args.full ? "" : "\nn = 10^4, 10^5 and 10^6 skipped (run with --full).\n"));
+                (args.full ? "" : "\nn = 10^4, 10^5 and 10^6 skipped (run with --full).\n") +
+                (max_n > 0 ? "\nn above " + std::to_string(max_n) + " left out (--max-n).\n" : std::string()));
 
     report.publish(args.out_dir, "build_scaling.md", {{"build_scaling.csv", csv_table(rows).csv()}});
     if (!args.out_dir.empty()) {

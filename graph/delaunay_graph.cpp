@@ -21,7 +21,6 @@ constexpr SiteId kNoHost = std::numeric_limits<SiteId>::max();
 
 DelaunayGraph::DelaunayGraph(std::unique_ptr<DelaunayTraits> traits) : traits_(std::move(traits)) {
     if (!traits_) throw Error("DelaunayGraph: no traits");
-    hidden_in_.resize(traits_->size());
     host_.assign(traits_->size(), kNoHost);
     inserted_.assign(traits_->size(), kOut);
     vertex_of_site_.resize(traits_->size());
@@ -33,7 +32,7 @@ void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::s
     std::vector<LocationHint> hints;
     hints.reserve(order.size());
     for (SiteId i = 0; i < traits_->size(); ++i) hints.push_back(traits_->location_hint(i));
-    grid_ = std::make_unique<SiteGrid>(hints);
+    grid_ = std::make_unique<SiteGrid>(std::move(hints));
     std::size_t done = 0;
     for (SiteId i : order) {
         insert(i);
@@ -54,15 +53,30 @@ void DelaunayGraph::insert(SiteId p) {
         insert_general(p);
 }
 
+std::vector<SiteId> DelaunayGraph::take_hidden(SiteId s) {
+    const auto found = hidden_in_.find(s);
+    if (found == hidden_in_.end()) return {};
+    std::vector<SiteId> list = std::move(found->second);
+    hidden_in_.erase(found);
+    return list;
+}
+
+void DelaunayGraph::forget_hidden(SiteId hidden) {
+    const auto found = hidden_in_.find(host_[hidden]);
+    std::vector<SiteId>& list = found->second;
+    list.erase(std::find(list.begin(), list.end(), hidden));
+    if (list.empty()) hidden_in_.erase(found);
+}
+
 void DelaunayGraph::hide(SiteId hidden, SiteId by) {
+    const std::vector<SiteId> inside = take_hidden(hidden);
     auto& list = hidden_in_[by];
     list.push_back(hidden);
     host_[hidden] = by;
-    for (SiteId h : hidden_in_[hidden]) {
+    for (SiteId h : inside) {
         list.push_back(h);
         host_[h] = by;
     }
-    hidden_in_[hidden].clear();
 }
 
 void DelaunayGraph::hide_in_union(SiteId hidden, SiteId host, std::vector<SiteId>& again) {
@@ -73,11 +87,10 @@ void DelaunayGraph::hide_in_union(SiteId hidden, SiteId host, std::vector<SiteId
                     ", nearest to its center, does not cross it (internal error)");
     // The sites `hidden` hid lie in it, not in `host`: they look for their
     // own host.
-    for (SiteId h : hidden_in_[hidden]) {
+    for (SiteId h : take_hidden(hidden)) {
         forget_union_hidden(h);
         again.push_back(h);
     }
-    hidden_in_[hidden].clear();
     hidden_in_[host].push_back(hidden);
     host_[hidden] = host;
     union_hidden_.push_back(hidden);
@@ -268,27 +281,29 @@ VertexIndex DelaunayGraph::nearest_vertex(SiteId p) {
     VertexIndex v = walk_start(p);
     if (!tds_.is_vertex(v) || v == Triangulation::kInfiniteVertex) v = tds_.finite_vertices().front();
     for (bool moved = true; moved;) {
-        moved = false;
-        for (FaceIndex f : tds_.incident_faces(v)) {
+        VertexIndex next;
+        moved = tds_.any_incident_face(v, [&](FaceIndex f) {
             const VertexIndex w = tds_.face(f).v[ccw(tds_.index(f, v))];
-            if (w == Triangulation::kInfiniteVertex || w == v) continue;
-            if (traits_->side_of_bisector(site_of(v), site_of(w), p) == Sign::negative) {
-                v = w;
-                moved = true;
-                ++stats_.walk_steps;
-                break;
-            }
+            if (w == Triangulation::kInfiniteVertex || w == v) return false;
+            if (traits_->side_of_bisector(site_of(v), site_of(w), p) != Sign::negative) return false;
+            next = w;
+            return true;
+        });
+        if (moved) {
+            v = next;
+            ++stats_.walk_steps;
         }
     }
     return v;
 }
 
 VertexIndex DelaunayGraph::walk_start(SiteId p) const {
+    auto has_vertex = [&](SiteId s) {
+        const VertexIndex v = vertex_of_site_[s];
+        return tds_.is_vertex(v) && v != Triangulation::kInfiniteVertex && site_of(v) == s;
+    };
     if (grid_)
-        for (SiteId s : grid_->near(p)) {
-            const VertexIndex v = vertex_of_site_[s];
-            if (tds_.is_vertex(v) && v != Triangulation::kInfiniteVertex && site_of(v) == s) return v;
-        }
+        if (const std::optional<SiteId> s = grid_->nearest(p, has_vertex)) return vertex_of_site_[*s];
     return last_vertex_;
 }
 
@@ -304,8 +319,12 @@ bool DelaunayGraph::hide_in_nearest(SiteId p, VertexIndex nearest) {
 
 // The first conflict: a Voronoi vertex around the nearest site in conflict with p.
 std::optional<FaceIndex> DelaunayGraph::find_first_conflict(ConflictRegion& region, VertexIndex nearest) {
-    for (FaceIndex f : tds_.incident_faces(nearest))
-        if (region.in_conflict(f)) return f;
+    FaceIndex first;
+    const bool found = tds_.any_incident_face(nearest, [&](FaceIndex f) {
+        first = f;
+        return region.in_conflict(f);
+    });
+    if (found) return first;
     return std::nullopt;
 }
 
@@ -453,14 +472,12 @@ void DelaunayGraph::remove(SiteId s) {
     ++stats_.removed;
     removed_.push_back(s);
     if (host_[s] != kNoHost) {
-        auto& list = hidden_in_[host_[s]];
-        list.erase(std::find(list.begin(), list.end(), s));
+        forget_hidden(s);
         host_[s] = kNoHost;
         forget_union_hidden(s);
         return;
     }
-    std::vector<SiteId> orphans;
-    orphans.swap(hidden_in_[s]);
+    std::vector<SiteId> orphans = take_hidden(s);
     for (SiteId h : orphans) forget_union_hidden(h);
     // A site emptied by a union comes back if s was one of the sites
     // covering it: s crosses it (a site it does not meet has no say on its
@@ -468,8 +485,7 @@ void DelaunayGraph::remove(SiteId s) {
     for (std::size_t k = 0; k < union_hidden_.size();) {
         const SiteId h = union_hidden_[k];
         if (traits_->crosses(h, s) || traits_->is_hidden(s, h)) {
-            auto& list = hidden_in_[host_[h]];
-            list.erase(std::find(list.begin(), list.end(), h));
+            forget_hidden(h);
             orphans.push_back(h);
             union_hidden_[k] = union_hidden_.back();
             union_hidden_.pop_back();
@@ -705,8 +721,8 @@ std::vector<SiteId> DelaunayGraph::visible_sites() const {
 
 std::vector<std::pair<SiteId, SiteId>> DelaunayGraph::hidden() const {
     std::vector<std::pair<SiteId, SiteId>> out;
-    for (SiteId s = 0; s < hidden_in_.size(); ++s)
-        for (SiteId h : hidden_in_[s]) out.push_back({h, s});
+    for (const auto& [s, list] : hidden_in_)
+        for (SiteId h : list) out.push_back({h, s});
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -30,6 +30,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -112,6 +113,8 @@ private:
     SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site; }
     TriangulationPredicates predicates() { return {tds_, *traits_}; }
     void hide(SiteId hidden, SiteId by);  // moves `hidden`'s own hidden list to `by` too
+    std::vector<SiteId> take_hidden(SiteId s);  // s's hidden list, emptied
+    void forget_hidden(SiteId hidden);           // `hidden` leaves its host's list
     // `hidden`'s cell is empty though `host` does not contain it; the sites
     // `hidden` itself hid are appended to `again` (to be inserted again).
     void hide_in_union(SiteId hidden, SiteId host, std::vector<SiteId>& again);
@@ -166,7 +169,9 @@ private:
     std::unique_ptr<DelaunayTraits> traits_;
     Triangulation tds_;
     std::vector<SiteId> small_;                  // the visible sites while tds_ is empty (< 3)
-    std::vector<std::vector<SiteId>> hidden_in_; // per visible site: the sites it hides
+    // The sites each visible site hides, for the hosts only: a vector per
+    // site cost 24 bytes a site, and most sites hide nothing.
+    std::unordered_map<SiteId, std::vector<SiteId>> hidden_in_;
     std::vector<SiteId> host_;                   // per hidden site: the visible site that hides it
     std::vector<SiteId> union_hidden_;           // hidden sites whose host does not contain them
     // A small graph that decides hiding (hiding_among_sites_meeting): a site

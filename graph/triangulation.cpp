@@ -261,17 +261,14 @@ void Triangulation::replace_star(VertexIndex v, const std::vector<NewFace>& fill
 
 std::vector<FaceIndex> Triangulation::incident_faces(VertexIndex v) const {
     std::vector<FaceIndex> out;
-    const FaceIndex start = vertex(v).face;
-    FaceIndex f = start;
-    do {
+    any_incident_face(v, [&](FaceIndex f) {
         out.push_back(f);
-        const int k = index(f, v);
-        if (k < 0) throw Error("Triangulation: vertex not in its face");
-        f = face(f).n[ccw(k)];
-        if (out.size() > faces_.size()) throw Error("Triangulation: circulator does not close");
-    } while (f != start);
+        return false;
+    });
     return out;
 }
+
+void Triangulation::circulator_error(const char* what) { throw Error(what); }
 
 std::string Triangulation::check() const {
     if (empty()) return number_of_vertices_ == 1 ? "" : "vertices without faces";

@@ -117,6 +117,11 @@ public:
     VertexIndex mirror_vertex(Edge e) const { return face(neighbor(e)).v[mirror_index(e)]; }
     // Faces around v, counter-clockwise, starting at v's face.
     std::vector<FaceIndex> incident_faces(VertexIndex v) const;
+    // The same faces in the same order, without a vector (the walk and the
+    // first conflict ask this in every insertion): visit(f) until it returns
+    // true; whether it did.
+    template <class Visit>
+    bool any_incident_face(VertexIndex v, Visit&& visit) const;
 
     // Combinatorial consistency (neighbours mutual, vertex faces, Euler,
     // 2E = 3F, circulators close); the infinite vertex alone is valid.
@@ -133,11 +138,28 @@ private:
         face_at(g).n[j] = f;
     }
 
+    [[noreturn]] static void circulator_error(const char* what);
+
     std::vector<Vertex> vertices_;
     std::vector<Face> faces_;
     std::vector<FaceIndex> free_faces_;
     std::vector<VertexIndex> free_vertices_;
     std::size_t number_of_faces_ = 0, number_of_vertices_ = 0;
 };
+
+template <class Visit>
+bool Triangulation::any_incident_face(VertexIndex v, Visit&& visit) const {
+    const FaceIndex start = vertex(v).face;
+    FaceIndex f = start;
+    std::size_t count = 0;
+    do {
+        if (visit(f)) return true;
+        const int k = index(f, v);
+        if (k < 0) circulator_error("Triangulation: vertex not in its face");
+        f = face(f).n[ccw(k)];
+        if (++count > faces_.size()) circulator_error("Triangulation: circulator does not close");
+    } while (f != start);
+    return false;
+}
 
 }  // namespace ellvor

@@ -121,6 +121,15 @@ bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2) {
     return gap.finite() && gap.positive();
 }
 
+bool circle_not_inside_in_doubles(const Ellipse& p, const Ellipse& q) {
+    if (!p.is_circle() || !q.is_circle()) return false;
+    const Ellipse::Enclosure &kp = p.enclosure(), &kq = q.enclosure();
+    const Interval room = kp.a - kq.a, dx = kp.xc - kq.xc, dy = kp.yc - kq.yc;
+    // A lower bound of |dx| (and of |dy|) is one of |C_p - C_q|.
+    auto least = [](const Interval& d) { return d.lo > 0 ? d.lo : d.hi < 0 ? -d.hi : 0.0; };
+    return std::fmax(least(dx), least(dy)) > room.hi;
+}
+
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2) {
     auto exactly = [](RelativePosition p) { return Decision<RelativePosition>::decided(p, Stage::exact); };
     // The slab before the exact bounding circles: close ellipses (the pairs

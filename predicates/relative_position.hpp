@@ -35,6 +35,13 @@ Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e
 // tell; then relative_position decides. Cheaper than any memo lookup.
 bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2);
 
+// Two circles: q is not inside p (tangency and identity included), proved in
+// outward-rounded doubles from one coordinate: q in p needs |C_p - C_q| <=
+// r_p - r_q, so a larger q, or an equal one elsewhere, is not. False when
+// the doubles cannot tell, or for an ellipse. A build asks whether its new,
+// smaller site hides a neighbour: this settles it in a few operations.
+bool circle_not_inside_in_doubles(const Ellipse& p, const Ellipse& q);
+
 // How many distinct points the boundaries of two different sites share (0
 // to 4), exactly: the real roots of the intersection quartic, t = infinity
 // included.

@@ -1,5 +1,6 @@
 #include "predicates/side_of_bisector.hpp"
 
+#include "circles/circle_semi_static.hpp"
 #include "exact/algebraic_real.hpp"
 #include "exact/real_roots.hpp"
 #include "sites/ellipse_polynomials.hpp"
@@ -192,6 +193,11 @@ Decision<Sign> side_of_bisector(const Ellipse& e1, const Ellipse& e2, const Poin
 
 Decision<Sign> side_of_bisector_at_center(const Ellipse& e1, const Ellipse& e2, const Ellipse& site,
                                           const SideOfBisectorOptions& options) {
+    // The walk's calls on circles of doubles: one semi-static sign, no interval.
+    if (options.use_filter && e1.is_dyadic_circle() && e2.is_dyadic_circle() && site.is_dyadic_circle()) {
+        const Decision<Sign> fast = circle_side_of_bisector_at_center_semi_static(e1, e2, site);
+        if (fast.is_decided()) return fast;
+    }
     const Ellipse::Enclosure& k = site.enclosure();
     return decide_side(e1, e2, site.xc(), site.yc(), k.xc, k.yc, options);
 }

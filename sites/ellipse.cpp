@@ -43,13 +43,20 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
     : a_(std::move(a)), b_(std::move(b)), w_(std::move(w)), xc_(std::move(xc)), yc_(std::move(yc)) {
     if (a_.sign() <= 0) throw Error("semi-axis a must be positive, got " + a_.str());
     if (b_.sign() <= 0) throw Error("semi-axis b must be positive, got " + b_.str());
-    const Rational one(1), two(2);
-    const Rational w2 = w_ * w_;
-    cos_ = (one - w2) / (one + w2);
-    sin_ = two * w_ / (one + w2);
+    enclosure_ = {enclose(a_), enclose(b_), enclose(cos_rotation()), enclose(sin_rotation()), enclose(xc_), enclose(yc_)};
+    circle_ = a_ == b_;
+    dyadic_circle_ = circle_ && a_.is_small_dyadic() && xc_.is_small_dyadic() && yc_.is_small_dyadic();
+}
 
-    enclosure_ = {enclose(a_), enclose(b_), enclose(cos_), enclose(sin_), enclose(xc_), enclose(yc_)};
-    dyadic_circle_ = a_ == b_ && a_.is_small_dyadic() && xc_.is_small_dyadic() && yc_.is_small_dyadic();
+Rational Ellipse::cos_rotation() const {
+    if (w_.is_zero()) return Rational(1);
+    const Rational w2 = w_ * w_, one(1);
+    return (one - w2) / (one + w2);
+}
+
+Rational Ellipse::sin_rotation() const {
+    if (w_.is_zero()) return Rational(0);
+    return Rational(2) * w_ / (Rational(1) + w_ * w_);
 }
 
 const Ellipse::Polynomials& Ellipse::polynomials() const {
@@ -60,10 +67,11 @@ const Ellipse::Polynomials& Ellipse::polynomials() const {
     //   X = xc (1 + t^2) + a cos (1 - t^2) - 2 b sin t
     //   Y = yc (1 + t^2) + a sin (1 - t^2) + 2 b cos t
     //   W = 1 + t^2
-    const Rational ac = a_ * cos_, as = a_ * sin_;
+    const Rational c = cos_rotation(), s = sin_rotation();
+    const Rational ac = a_ * c, as = a_ * s;
     std::array<std::array<Rational, 3>, 3> coeffs = {{
-        {xc_ + ac, -(two * b_ * sin_), xc_ - ac},
-        {yc_ + as, two * b_ * cos_, yc_ - as},
+        {xc_ + ac, -(two * b_ * s), xc_ - ac},
+        {yc_ + as, two * b_ * c, yc_ - as},
         {one, Rational(0), one},
     }};
     scale_to_integers(coeffs, {&made->X, &made->Y, &made->W});
@@ -96,7 +104,7 @@ Point Ellipse::point_at(const Rational& t) const {
     return {x / w, y / w};
 }
 
-Point Ellipse::i_point() const { return {xc_ - a_ * cos_, yc_ - a_ * sin_}; }
+Point Ellipse::i_point() const { return {xc_ - a_ * cos_rotation(), yc_ - a_ * sin_rotation()}; }
 
 BallPoint Ellipse::point_at(const Ball& t, long prec) const {
     BallPoint p;
@@ -127,7 +135,7 @@ bool operator==(const Ellipse& p, const Ellipse& q) {
 
 std::array<Rational, 3> Ellipse::quadratic_form() const {
     const Rational a2 = a_ * a_, b2 = b_ * b_;
-    const Rational &c = cos_, &s = sin_;
+    const Rational c = cos_rotation(), s = sin_rotation();
     return {b2 * c * c + a2 * s * s, (b2 - a2) * c * s, b2 * s * s + a2 * c * c};
 }
 

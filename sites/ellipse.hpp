@@ -44,20 +44,20 @@ public:
     const Rational& xc() const { return xc_; }
     const Rational& yc() const { return yc_; }
     Point center() const { return {xc_, yc_}; }
-    // a == b. Every predicate's cascade asks first: the enclosures (equal
-    // for equal rationals) settle almost every ellipse without comparing
-    // the rationals.
-    bool is_circle() const {
-        return enclosure_.a.lo == enclosure_.b.lo && enclosure_.a.hi == enclosure_.b.hi && a_ == b_;
-    }
+    // a == b, decided once: every predicate's cascade asks first (a flag in
+    // the padding after dyadic_circle_: no byte more).
+    bool is_circle() const { return circle_; }
     // A circle whose center and radius are small dyadic rationals
     // (Rational::is_small_dyadic): exact doubles, the input of the circles'
     // semi-static filters. Decided once: those filters ask it of every site
     // of every call.
     bool is_dyadic_circle() const { return dyadic_circle_; }
     // cos and sin of the rotation angle, exactly: (1-w^2)/(1+w^2), 2w/(1+w^2).
-    const Rational& cos_rotation() const { return cos_; }
-    const Rational& sin_rotation() const { return sin_; }
+    // Computed on each call (1 and 0 for w = 0): only exact and Arb stages
+    // ask, and keeping them cost 32 bytes a site; the filters read the
+    // enclosures.
+    Rational cos_rotation() const;
+    Rational sin_rotation() const;
 
     // Double enclosures of a, b, cos, sin of the rotation and the center, for
     // the floating-point filters (computed once; the ellipse is immutable).
@@ -116,9 +116,8 @@ private:
     std::array<Rational, 3> quadratic_form() const;
 
     Rational a_, b_, w_, xc_, yc_;
-    Rational cos_, sin_;
     Enclosure enclosure_;
-    bool dyadic_circle_ = false;
+    bool dyadic_circle_ = false, circle_ = false;
     // Written once, by whichever thread asks first (atomic shared_ptr access:
     // a lost race only computes the same values twice).
     mutable std::shared_ptr<const Polynomials> polynomials_;

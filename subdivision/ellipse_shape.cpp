@@ -53,8 +53,10 @@ EllipseShape EllipseShape::of(const Ellipse& e) {
     EllipseShape s;
     s.a = e.a().to_double();
     s.b = e.b().to_double();
-    s.c = e.cos_rotation().to_double();
-    s.s = e.sin_rotation().to_double();
+    // The nearest doubles of cos and sin, as to_double gives them: up(lo) of
+    // their enclosures (util/interval.hpp, enclose), + 0.0 making -0 +0.
+    s.c = Interval::up(e.enclosure().cos.lo) + 0.0;
+    s.s = Interval::up(e.enclosure().sin.lo) + 0.0;
     s.xc = e.xc().to_double();
     s.yc = e.yc().to_double();
     return s;

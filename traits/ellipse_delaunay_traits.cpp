@@ -1,5 +1,6 @@
 #include "traits/ellipse_delaunay_traits.hpp"
 
+#include "circles/circle_semi_static.hpp"
 #include "predicates/edge_conflict.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
@@ -50,6 +51,13 @@ Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
     // their double enclosures (the insertion order sorts by them), exactly
     // only when those overlap.
     const Ellipse &ea = site(a), &eb = site(b);
+    // Circles of doubles (a build's sort compares n log n pairs): the radius
+    // is its double, up(lo) of its enclosure (circles/semi_static.hpp), and
+    // a b = r^2 orders as r.
+    if (ea.is_dyadic_circle() && eb.is_dyadic_circle()) {
+        const double ra = Interval::up(ea.enclosure().a.lo), rb = Interval::up(eb.enclosure().a.lo);
+        return ra > rb ? Sign::positive : ra < rb ? Sign::negative : Sign::zero;
+    }
     if (ea.a() == eb.a() && ea.b() == eb.b()) return Sign::zero;
     const Interval area_a = ea.enclosure().a * ea.enclosure().b, area_b = eb.enclosure().a * eb.enclosure().b;
     if (area_b.hi < area_a.lo) return Sign::positive;
@@ -76,8 +84,9 @@ void EllipseDelaunayTraits::check_sites() {
 
 bool EllipseDelaunayTraits::is_hidden(SiteId p, SiteId q) {
     if (p == q) return true;
-    // Most pairs are far apart: decided at once, cheaper than the memo.
-    if (bounding_circles_apart_in_doubles(site(p), site(q))) {
+    // Most pairs are far apart, or (circles) q is the larger: decided at
+    // once, cheaper than the memo.
+    if (circle_not_inside_in_doubles(site(p), site(q)) || bounding_circles_apart_in_doubles(site(p), site(q))) {
         return counted(stats_, Predicate::is_hidden, Decision<bool>::decided(false, Stage::filter), {p, q});
     }
     const std::uint64_t key = (static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint64_t>(q);
@@ -124,9 +133,14 @@ Sign EllipseDelaunayTraits::infinite_vertex_conflict(SiteId i, SiteId j, SiteId 
 }
 
 Decision<InCircle> EllipseDelaunayTraits::incircle_of_face(SiteId i, SiteId j, SiteId k, SiteId q) {
-    // Four circles take the closed form: no solver to cache.
-    if (site(i).is_circle() && site(j).is_circle() && site(k).is_circle() && site(q).is_circle())
-        return ellvor::incircle(site(i), site(j), site(k), site(q));
+    const Ellipse &ei = site(i), &ej = site(j), &ek = site(k), &eq = site(q);
+    // Four circles of doubles: the semi-static sign, straight (a build's
+    // usual call); then the closed forms, no solver to cache.
+    if (ei.is_dyadic_circle() && ej.is_dyadic_circle() && ek.is_dyadic_circle() && eq.is_dyadic_circle()) {
+        const Decision<InCircle> fast = circle_incircle_semi_static(ei, ej, ek, eq);
+        if (fast.is_decided()) return fast;
+    }
+    if (ei.is_circle() && ej.is_circle() && ek.is_circle() && eq.is_circle()) return ellvor::incircle(ei, ej, ek, eq);
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
     // The cached circle is that of the rotated triple entry.ids: ask in that order.
     const Decision<InCircle> d = ellvor::incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},

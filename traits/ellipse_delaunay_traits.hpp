@@ -49,7 +49,9 @@ public:
     bool is_degenerate_edge(SiteId p1, SiteId p2, SiteId p3, SiteId p4) override;
 
     // Drops the face's cached solver: the cache holds live faces only.
-    void forget_face(SiteId i, SiteId j, SiteId k) override { cache_.erase(i, j, k); }
+    void forget_face(SiteId i, SiteId j, SiteId k) override {
+        if (cache_.size() != 0) cache_.erase(i, j, k);  // a circle build caches nothing
+    }
 
     // The cached Voronoi circle of the face (i, j, k) (the same circle for
     // every rotation), nullptr if no predicate has asked about it. After a

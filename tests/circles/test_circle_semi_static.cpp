@@ -14,6 +14,7 @@
 #include "circles/circle_semi_static.hpp"
 #include "predicates/incircle.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
+#include "predicates/side_of_bisector.hpp"
 #include "circles/semi_static.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "sites/site_generators.hpp"
@@ -292,6 +293,67 @@ TEST_CASE("semi-static: Q tangent to the Voronoi circle is left to the exact sta
             check_cascade(c1, c2, c3, moved);
         }
     }
+}
+
+TEST_CASE("semi-static kappa1 at a circle's center agrees with the exact closed form; ties go to the exact stage",
+          "[semi-static][circle-predicates]") {
+    // The exact closed form: kappa1 with the filters off (circle_exact).
+    SideOfBisectorOptions exact_only;
+    exact_only.use_filter = false;
+    Rng rng(20261127);
+    int n = 0, decided = 0;
+    while (n < 3000) {
+        // 0 to 12 fraction bits; a quarter with equal radii; a fifth of the
+        // points inside or near a site (signed distances of both signs).
+        const int k = static_cast<int>(rng() % 13);
+        const Rational r0 = dyadic_positive(rng, 4, k);
+        const oracle::Circle c1{dyadic(rng, -20, 20, k), dyadic(rng, -20, 20, k), dyadic_positive(rng, 4, k)};
+        const oracle::Circle c2{dyadic(rng, -20, 20, k), dyadic(rng, -20, 20, k), n % 4 == 0 ? c1.r : dyadic_positive(rng, 4, k)};
+        const bool near = n % 5 == 0;
+        const oracle::Circle at{near ? c1.x + dyadic(rng, -2, 2, k) : dyadic(rng, -20, 20, k),
+                                near ? c1.y + dyadic(rng, -2, 2, k) : dyadic(rng, -20, 20, k), r0};
+        ++n;
+        const Ellipse e1 = c1.ellipse(), e2 = c2.ellipse(), site = at.ellipse();
+        INFO(ell({&e1, &e2, &site}));
+        const Sign want = *side_of_bisector(e1, e2, site.center(), exact_only);
+        const Decision<Sign> fast = circle_side_of_bisector_at_center_semi_static(e1, e2, site);
+        const Decision<Sign> cascade = side_of_bisector_at_center(e1, e2, site);
+        CHECK(*cascade == want);
+        if (fast.is_decided()) {
+            ++decided;
+            CHECK(fast.stage == Stage::filter);
+            CHECK(*fast == want);
+            CHECK(cascade.stage == Stage::filter);
+            CHECK(*circle_side_of_bisector_at_center_semi_static(e2, e1, site) == -want);
+        }
+    }
+    INFO("decided " << decided << " of " << n);
+    CHECK(decided >= n * 99 / 100);
+
+    // Exact ties (Pythagorean distances 5 and 10 from (0, 0), radii 1 and 6:
+    // signed distances 4 and 4; inside both: 5 - 7 = 10 - 12) and their
+    // near misses by 2^-40 in a radius: undecided or right, the cascade exact.
+    const Ellipse origin = Ellipse::circle(Rational(0), Rational(0), Rational(1));
+    for (const auto& [r1, r2] : {std::pair{1L, 6L}, std::pair{7L, 12L}}) {
+        const Ellipse a = Ellipse::circle(Rational(3), Rational(4), Rational(r1));
+        const Ellipse b = Ellipse::circle(Rational(-6), Rational(8), Rational(r2));
+        INFO(ell({&a, &b, &origin}));
+        CHECK_FALSE(circle_side_of_bisector_at_center_semi_static(a, b, origin).is_decided());
+        const Decision<Sign> tie = side_of_bisector_at_center(a, b, origin);
+        CHECK(*tie == Sign::zero);
+        CHECK(tie.stage == Stage::exact);
+        for (const Rational& shift : {Rational(1, 1L << 40), Rational(-1, 1L << 40)}) {
+            const Ellipse moved = Ellipse::circle(Rational(-6), Rational(8), Rational(r2) + shift);
+            const Sign want = *side_of_bisector(a, moved, origin.center(), exact_only);
+            CHECK(want == (shift.sign() > 0 ? Sign::negative : Sign::positive));  // farther from the larger E2
+            const Decision<Sign> fast = circle_side_of_bisector_at_center_semi_static(a, moved, origin);
+            if (fast.is_decided()) CHECK(*fast == want);
+            CHECK(*side_of_bisector_at_center(a, moved, origin) == want);
+        }
+    }
+    // A site that is not a double: undecided here, decided by the cascade.
+    const Ellipse third = Ellipse::circle(Rational(1, 3), Rational(0), Rational(1));
+    CHECK_FALSE(circle_side_of_bisector_at_center_semi_static(third, origin, origin).is_decided());
 }
 
 TEST_CASE("semi-static: a common tangent line and collinear centers", "[semi-static][circle-predicates]") {

@@ -201,6 +201,34 @@ TEST_CASE("insertion order: the Hilbert index runs through adjacent cells", "[gr
     CHECK(bulk_insertion_rounds(5000) == std::vector<std::size_t>{1024, 1024, 2048, 904});
 }
 
+TEST_CASE("insertion order: compare_weight on circles of doubles (their radii's doubles) is the exact order of a b",
+          "[graph][order]") {
+    // Radii with 0 to 60 fraction bits, many equal, against the rationals'
+    // products; and a circle against an ellipse and a non-double circle.
+    std::mt19937_64 rng(27);
+    std::vector<Ellipse> sites;
+    for (int i = 0; i < 300; ++i) {
+        const long bits = static_cast<long>(rng() % 61), num = 1 + static_cast<long>(rng() % 40);
+        const Rational r = i % 3 == 0 ? Rational(num % 5 + 1) : Rational(num, 1UL << bits);
+        sites.push_back(Ellipse::circle(Rational(static_cast<long>(rng() % 100)), Rational(i), r));
+    }
+    sites.push_back(Ellipse(Rational(3), Rational(1, 3), Rational(0), Rational(0), Rational(-5)));
+    sites.push_back(Ellipse::circle(Rational(0), Rational(-9), Rational(1, 3)));
+    const EllipseDelaunayTraits traits(sites);
+    int dyadic_pairs = 0, ties = 0;
+    for (SiteId x = 0; x < sites.size(); ++x)
+        for (SiteId y = 0; y < sites.size(); y += 7) {
+            const Rational wx = sites[x].a() * sites[x].b(), wy = sites[y].a() * sites[y].b();
+            const Sign want = wx > wy ? Sign::positive : wx < wy ? Sign::negative : Sign::zero;
+            INFO(sites[x].str() << " / " << sites[y].str());
+            CHECK(traits.compare_weight(x, y) == want);
+            dyadic_pairs += sites[x].is_dyadic_circle() && sites[y].is_dyadic_circle();
+            ties += want == Sign::zero && x != y;
+        }
+    CHECK(dyadic_pairs > 10000);
+    CHECK(ties > 100);
+}
+
 TEST_CASE("insertion order: the bulk order is largest first by rounds, local within them, and gives the weight order's graph",
           "[graph][order]") {
     const std::vector<Ellipse> sites = generated(SiteKind::ellipses, 2400, 11);

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdlib>
 #include <random>
 
 using namespace ellvor;
@@ -156,7 +158,7 @@ TEST_CASE("relative position of random circles agrees with the exact closed form
     // Pythagorean d) and nestings happen often.
     std::mt19937_64 rng(20240611);
     std::uniform_int_distribution<long> coord(-6, 6), rad(1, 5);
-    int counts[8] = {};
+    int counts[8] = {}, shortcut_decided = 0, shortcut_left = 0;
     for (int i = 0; i < 600; ++i) {
         const long x1 = coord(rng), y1 = coord(rng), r1 = rad(rng);
         long x2 = coord(rng), y2 = coord(rng), r2 = rad(rng);
@@ -176,7 +178,16 @@ TEST_CASE("relative position of random circles agrees with the exact closed form
         CHECK(*relative_position(e1, e2) == want);
         const bool hidden = want == RP::second_inside || want == RP::second_inside_tangent || want == RP::identical;
         CHECK(is_hidden(e1, e2) == hidden);
+        // The doubles' shortcut never claims a hidden pair, and decides every
+        // pair whose radii or centers differ enough (exact integers here).
+        const bool not_inside = circle_not_inside_in_doubles(e1, e2);
+        if (not_inside) CHECK_FALSE(hidden);
+        const long reach = std::max(std::labs(x1 - x2), std::labs(y1 - y2));
+        if (reach > r1 - r2) CHECK(not_inside);
+        ++(not_inside ? shortcut_decided : shortcut_left);
     }
+    CHECK(shortcut_decided > 300);
+    CHECK(shortcut_left > 0);
     for (int k = 0; k < 8; ++k) {
         INFO("class " << relative_position_name(static_cast<RP>(k)) << " occurred " << counts[k] << " times");
         CHECK(counts[k] > 0);
