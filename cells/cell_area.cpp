@@ -5,7 +5,6 @@
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
 #include "cells/normal_ray_in_doubles.hpp"
-#include "predicates/relative_position.hpp"
 #include "util/error.hpp"
 
 #include <acb_calc.h>
@@ -14,42 +13,14 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace ellvor {
 namespace {
 
-// Cells assume that every visible site lies in its own cell (docs/DESIGN.md
-// §10): no two sites may touch or cross; nesting is fine (the inner site is
-// hidden). A sweep over the bounding circles finds the candidate pairs.
-void require_disjoint_or_nested(const std::vector<Ellipse>& sites) {
-    struct Disk {
-        double x, r;  // the center's abscissa and max(a, b), widened below
-        SiteId id;
-    };
-    std::vector<Disk> disks;
-    for (SiteId i = 0; i < sites.size(); ++i) {
-        const EllipseShape e = EllipseShape::of(sites[i]);
-        // The slack covers the rounding of x and r to doubles many times over;
-        // the pairs it admits are decided by the proved test below.
-        const double r = std::max(e.a, e.b);
-        disks.push_back({e.xc, r + 1e-9 * (std::fabs(e.xc) + r), i});
-    }
-    std::sort(disks.begin(), disks.end(), [](const Disk& p, const Disk& q) { return p.x - p.r < q.x - q.r; });
-    for (std::size_t i = 0; i < disks.size(); ++i)
-        for (std::size_t j = i + 1; j < disks.size() && disks[j].x - disks[j].r <= disks[i].x + disks[i].r; ++j) {
-            const Disk &p = disks[i], &q = disks[j];
-            if (bounding_circles_apart_in_doubles(sites[p.id], sites[q.id])) continue;  // proved apart
-            const SiteId a = std::min(p.id, q.id), b = std::max(p.id, q.id);
-            const RelativePosition rp = *relative_position(sites[a], sites[b]);
-            if (rp == RelativePosition::intersecting || rp == RelativePosition::externally_tangent)
-                throw InputError("cells: sites " + std::to_string(a) + " and " + std::to_string(b) + " " +
-                                     (rp == RelativePosition::intersecting ? "cross" : "touch") +
-                                     "; cells of touching or crossing sites are not supported yet",
-                                 InputError::SitePair{a, b});
-        }
-}
+constexpr double kTwoPi = 6.28318530717958647692;
 
 // A double interval as a real ball.
 ComplexBall to_ball(const Interval& x) {
@@ -195,10 +166,22 @@ double centre_on_double(Ball& end) {
     return c;
 }
 
+// Does p's normal line reach the bisector of p and q all along the angles
+// [a, b] (floating point, 33 samples)? Where the edge of sites that meet runs
+// through p's medial axis it does not (docs/DESIGN.md §10). A sample, not a
+// proof: it only refuses early what the certificate would fail on.
+bool normal_line_reaches(const Ellipse& p, const Ellipse& q, double a, double b) {
+    const EllipseShape ps = EllipseShape::of(p), qs = EllipseShape::of(q);
+    for (int i = 0; i <= 32; ++i)
+        if (!equal_distance_on_normal(ps, qs, a + (b - a) * i / 32, INFINITY)) return false;
+    return true;
+}
+
 class CellAreaSolver {
 public:
-    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance)
-        : sites_(sites), tolerance_(tolerance), angles_(graph, sites) {}
+    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance,
+                   const std::vector<SiteId>& input_ids)
+        : sites_(sites), tolerance_(tolerance), angles_(graph, sites), input_ids_(input_ids) {}
 
     // The measures of a bounded cell at precision prec, or nothing when the
     // pass could not certify its area within the tolerance. Pass k asks Arb
@@ -209,12 +192,20 @@ public:
         r.site_area = site_area(site, prec);
         const std::size_t m = cell.edges.size();
         const std::vector<Ball> lifted = angles_.lifted(cell, prec);
+        std::vector<std::unique_ptr<NormalRayBisector>> bisectors;
+        bool meets = false;  // a neighbour crosses or touches the site
+        for (const CellEdge& e : cell.edges) {
+            bisectors.push_back(std::make_unique<NormalRayBisector>(site, sites_[e.neighbor]));
+            meets = meets || bisectors.back()->sites_meet();
+        }
 
         // The scale of the tolerances and the length unit: the cell is at
-        // least the site; on the first pass half an estimate of its area (the
-        // final check below, not the estimate, decides).
-        double area_floor = r.site_area.mid_double();
-        if (pass == 0) area_floor = std::max(area_floor, 0.5 * estimated_area(cell, lifted));
+        // least the site unless a neighbour meets it; on the first pass (on
+        // every pass when a neighbour meets the site) half an estimate of its
+        // area (the final check below, not the estimate, decides).
+        double area_floor = meets ? 0.0 : r.site_area.mid_double();
+        if (pass == 0 || meets) area_floor = std::max(area_floor, 0.5 * estimated_area(cell, lifted, bisectors));
+        if (!(area_floor > 0)) area_floor = r.site_area.mid_double();
         const long unit = std::lround(0.5 * std::log2(area_floor));  // L = 2^unit, about sqrt(area)
         const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
         Mag tol;
@@ -225,11 +216,13 @@ public:
         const bool in_doubles = goal <= kDoubleGoalBits;
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
-            NormalRayBisector bisector(site, sites_[cell.edges[k].neighbor]);
+            NormalRayBisector& bisector = *bisectors[k];
             NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor]);
             Ball ends[2] = {lifted[k], lifted[k + 1]};
             bool integrated = false;
-            if (in_doubles) {
+            // The double-interval stage has the unsigned system only (its
+            // certificate fails where the edge crosses a site's boundary).
+            if (in_doubles && !bisector.sites_meet()) {
                 const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
                 double tolerances[MeasureIntervals::count];
                 for (int j = 0; j < MeasureIntervals::count; ++j)
@@ -283,6 +276,38 @@ public:
         return r;
     }
 
+    // Before any integral: every edge of the cell with a neighbour that meets
+    // its site can be followed (require_normal_lines_reach).
+    void require_followable_edges(const VoronoiCell& cell, long prec) {
+        std::vector<Ball> lifted;
+        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
+            if (!NormalRayBisector::meet(sites_[cell.site], sites_[cell.edges[k].neighbor])) continue;
+            if (lifted.empty()) lifted = angles_.lifted(cell, prec);
+            require_normal_lines_reach(cell, k, lifted, prec);
+        }
+    }
+
+    // The edge k of a cell whose neighbour meets its site: an InputError
+    // naming both (as input ids) when the edge runs through either site's
+    // medial axis, seen from either side (normal_line_reaches), which the
+    // normal-line parametrization of §10 cannot follow.
+    void require_normal_lines_reach(const VoronoiCell& cell, std::size_t k, const std::vector<Ball>& lifted, long prec) {
+        const SiteId p = cell.site, q = cell.edges[k].neighbor;
+        Ball phi_to = angles_.angle(cell.edges[k].to, q, prec), phi_from = angles_.angle(cell.edges[k].from, q, prec);
+        // Around q the edge runs from `to` to `from`.
+        const double phi_lo = phi_to.mid_double();
+        double phi_hi = phi_from.mid_double();
+        phi_hi -= kTwoPi * std::floor((phi_hi - phi_lo + 1e-9) / kTwoPi);
+        if (normal_line_reaches(sites_[p], sites_[q], lifted[k].mid_double(), lifted[k + 1].mid_double()) &&
+            normal_line_reaches(sites_[q], sites_[p], phi_lo, phi_hi))
+            return;
+        const SiteId a = input_id(p), b = input_id(q);
+        throw InputError("cells: sites " + std::to_string(a) + " and " + std::to_string(b) +
+                             " cross so deeply that their Voronoi edge runs through a site's medial axis; cells of "
+                             "such crossings are not supported",
+                         InputError::SitePair{std::min(a, b), std::max(a, b)});
+    }
+
     static Ball site_area(const Ellipse& e, long prec) {
         Ball area, a(e.a(), prec), b(e.b(), prec);
         arb_const_pi(area.get(), prec);
@@ -293,20 +318,37 @@ public:
 
 private:
     // The cell's area by 8 Gauss nodes an edge in floating point, or 0 when
-    // a node fails: a scale, not a bound.
-    double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted) {
+    // a node fails: a scale, not a bound. The nodes of an edge with a site
+    // that meets this one (where the double certificate fails) come from the
+    // bisector point on the normal line in plain doubles.
+    double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted,
+                          const std::vector<std::unique_ptr<NormalRayBisector>>& bisectors) {
         const Ellipse& site = sites_[cell.site];
+        const EllipseShape shape = EllipseShape::of(site);
         const GaussLegendreRule& rule = rules_.rule(8);
         double area = site_area(site, 64).mid_double();
         for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor]);
+            const Ellipse& neighbor = sites_[cell.edges[k].neighbor];
+            NormalRayInDoubles nodes(site, neighbor);
+            const EllipseShape neighbor_shape = EllipseShape::of(neighbor);
             const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
             for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-                const std::optional<MeasureIntervals> d = nodes.densities(Interval(mid + half * rule.nodes[i].mid()));
-                if (!d) return 0;
-                area += half * rule.weights[i].mid() * d->m[MeasureIntervals::area].mid();
+                const double theta = mid + half * rule.nodes[i].mid();
+                double density;
+                if (bisectors[k]->sites_meet()) {
+                    // rho N + kappa N rho^2 / 2 with kappa N = a b / N^2 (the density with rho = s N).
+                    const std::optional<double> rho = equal_distance_on_normal(shape, neighbor_shape, theta, INFINITY);
+                    if (!rho) return 0;
+                    const double n = std::hypot(shape.b * std::cos(theta), shape.a * std::sin(theta));
+                    density = *rho * n + shape.a * shape.b * *rho * *rho / (2 * n * n);
+                } else {
+                    const std::optional<MeasureIntervals> d = nodes.densities(Interval(theta));
+                    if (!d) return 0;
+                    density = d->m[MeasureIntervals::area].mid();
+                }
+                area += half * rule.weights[i].mid() * density;
             }
         }
         return std::isfinite(area) ? area : 0;
@@ -320,7 +362,7 @@ private:
         acb_calc_integrate_opt_init(options);
         // 20 bits beyond the goal, in whole limbs.
         const long point_precision = 64 * ((goal + 20 + 63) / 64);
-        NormalRayBisector point_bisector(bisector.first(), bisector.second());
+        NormalRayBisector point_bisector(bisector.first(), bisector.second(), bisector.sites_meet());
         DensityCache cache;
         ComplexBall a, b;
         arb_get_mid_arb(a.real(), ends[0].get());
@@ -382,9 +424,12 @@ private:
         }
     }
 
+    SiteId input_id(SiteId s) const { return input_ids_.empty() ? s : input_ids_[s]; }
+
     const std::vector<Ellipse>& sites_;
     double tolerance_;
     CellVertexAngles angles_;
+    const std::vector<SiteId>& input_ids_;
     GaussLegendreRules rules_;
 };
 
@@ -396,14 +441,15 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
                                  const CellAreaOptions& options) {
     const double T = options.tolerance;
     if (!(T > 0 && T <= 1)) throw InputError("cell_areas: the tolerance must be in (0, 1]");
-    require_disjoint_or_nested(sites);
     const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
-    CellAreaSolver solver(graph, sites, T);
+    CellAreaSolver solver(graph, sites, T, options.input_ids);
     std::vector<CellArea> out(cells.size());
     const long start = cell_area_precision(T);
     std::vector<SiteId> which = options.only;
     if (which.empty())
         for (SiteId s = 0; s < cells.size(); ++s) which.push_back(s);
+    for (SiteId s : which)
+        if (cells.at(s).visible && cells[s].bounded()) solver.require_followable_edges(cells[s], start);
     std::size_t done = 0;
     for (SiteId s : which) {
         if (options.progress && done) options.progress(done, which.size());

@@ -1,5 +1,6 @@
-// Certified measures of the Voronoi cells of disjoint (and nested) sites in
-// the free plane (docs/DESIGN.md §10): area, perimeter, centroid and second
+// Certified measures of the Voronoi cells of sites in the free plane (disjoint,
+// nested, crossing or touching: signed distances, docs/DESIGN.md §9 and §10):
+// area, perimeter, centroid and second
 // moments, each an Arb ball that provably contains the exact value; the area
 // includes the site's own (the set-Voronoi convention: the cells tile the
 // plane).
@@ -27,6 +28,9 @@ struct CellAreaOptions {
     // The sites whose cells are measured (the others are left at their
     // defaults); empty: every site.
     std::vector<SiteId> only;
+    // The input id of each site in the errors (the originals of mirrors and
+    // periodic copies); empty: the ids themselves.
+    std::vector<SiteId> input_ids;
     // Called after each measured cell (done, total); may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
@@ -45,7 +49,8 @@ struct CellArea {
     std::array<Ball, 3> second_moments;
     long precision = 0;      // Arb precision of the pass that met the tolerance (0: none was needed)
     // The stages that integrated the edges in that pass: Gauss-Legendre in
-    // double intervals (cells/edge_quadrature.hpp) or Arb's integrator.
+    // double intervals (cells/edge_quadrature.hpp) or Arb's integrator (every
+    // edge with a neighbour that crosses or touches the site).
     std::size_t edges_in_doubles = 0, edges_by_arb = 0;
     // What the double-interval stage did on those edges (every attempt of that pass).
     QuadratureCounts quadrature;
@@ -55,9 +60,10 @@ struct CellArea {
 long cell_area_precision(double tolerance);
 
 // Every cell's area, indexed by site id. Throws InputError when the
-// tolerance is not in (0, 1], or when two sites touch or cross (their cells
-// are out of scope: the integrals assume positive distances), naming the
-// pair; Error if a cell cannot be certified within the precision limit.
+// tolerance is not in (0, 1], or when two sites cross so deeply that their
+// edge runs through a site's medial axis (the normal-line parametrization
+// cannot follow it: docs/DESIGN.md §10), naming the pair; Error if a cell
+// cannot be certified within the precision limit.
 std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
                                  const CellAreaOptions& options = {});
 

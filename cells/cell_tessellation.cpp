@@ -6,7 +6,6 @@
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
 #include "cells/periodic_copies.hpp"
-#include "cells/site_separation.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "cells/voronoi_edge_cover.hpp"
 #include "graph/delaunay_graph.hpp"
@@ -239,6 +238,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
     for (SiteId s = 0; s < sites.originals; ++s)
         if (wanted[s]) o.only.push_back(s);
     o.progress = options.progress;
+    o.input_ids = sites.original;
     const std::vector<CellArea> areas = cell_areas(graph, sites.sites, o);
     for (SiteId s : o.only) {
         Cell& c = out.cells[s];
@@ -269,11 +269,12 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     out.boundary_tolerance = options.rings ? boundary_tolerance : 0;
 
     std::vector<Ellipse> sites = input;
-    if (domain.kind == CellDomain::Kind::periodic)
+    if (domain.kind == CellDomain::Kind::periodic) {
         for (Ellipse& e : sites) e = wrap_into_box(e, domain);
-    else if (domain.kind == CellDomain::Kind::box)
+        require_sites_fit_periodic_box(sites, domain);
+    } else if (domain.kind == CellDomain::Kind::box) {
         require_sites_inside_box(sites, domain);
-    require_sites_apart(sites, domain);
+    }
     std::vector<char> wanted(sites.size(), options.only.empty() ? 1 : 0);
     for (SiteId s : options.only) {
         if (s >= sites.size()) throw InputError("cells: asked for the cell of site " + std::to_string(s) + " of " + std::to_string(sites.size()));

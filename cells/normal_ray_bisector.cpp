@@ -1,5 +1,7 @@
 #include "cells/normal_ray_bisector.hpp"
 
+#include "predicates/relative_position.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -148,6 +150,32 @@ void ray_point(const Boundary& bp, const ComplexBall& s, long prec, ComplexBall&
     acb_add(vy.get(), vy.get(), bp.y.get(), prec);
 }
 
+// N and Nq, the normals' lengths (principal square roots: indeterminate if a
+// ball reaches the cut, which the certificate then fails).
+void normal_lengths(const Boundary& bp, const Boundary& bq, long prec, ComplexBall& np, ComplexBall& nq) {
+    acb_sqrt_analytic(np.get(), bp.n2.get(), 1, prec);
+    acb_sqrt_analytic(nq.get(), bq.n2.get(), 1, prec);
+}
+
+// The signed tie of sites that meet (see the header), g = (V - Q) . n~q -
+// s N Nq, and dg/ds = n~ . n~q - N Nq (its derivative in the foot point,
+// Nq' (t Nq - s N), vanishes on the bisector).
+void signed_tie(const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec, ComplexBall& g,
+                ComplexBall& dg_ds) {
+    ComplexBall vx, vy, np, nq, nn, t;
+    ray_point(bp, s, prec, vx, vy);
+    acb_sub(vx.get(), vx.get(), bq.x.get(), prec);
+    acb_sub(vy.get(), vy.get(), bq.y.get(), prec);
+    normal_lengths(bp, bq, prec, np, nq);
+    acb_mul(nn.get(), np.get(), nq.get(), prec);
+    dot(vx, vy, bq.nx, bq.ny, prec, g);
+    acb_mul(t.get(), s.get(), nn.get(), prec);
+    acb_sub(g.get(), g.get(), t.get(), prec);
+    dot(bp.nx, bp.ny, bq.nx, bq.ny, prec, dg_ds);
+    acb_sub(dg_ds.get(), dg_ds.get(), nn.get(), prec);
+}
+
+
 
 // A 2 x 2 complex matrix.
 struct Matrix2 {
@@ -181,12 +209,17 @@ struct Matrix2 {
 //     J = [ n~ . Q'         -|Q'|^2 - (V - Q) . (Q - Cq) ]
 //         [ 2 (P - Q) . n~  -2 F0                        ]
 //     F_theta = ( (P' + s n~') . Q',  2 (P - Q) . (P' + s n~') ).
+// For sites that meet, the signed tie F1 = (V - Q) . n~q - s N Nq (the
+// header) has the row (with Q' . n~q = 0 and N' = n~ . n~' / N)
+//     [ n~ . n~q - N Nq,   (V - Q) . n~q' - s N (n~q . n~q') / Nq ],
+//     F_theta = (P' + s n~') . n~q - s (n~ . n~' / N) Nq.
 // Evaluated over boxes, each entry contains its values at every point.
 struct BisectorSystem {
     ComplexBall F[2], F_theta[2];
     Matrix2 J;
 
-    void evaluate(const SiteBalls& q, const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec) {
+    void evaluate(const SiteBalls& q, const Boundary& bp, const Boundary& bq, const ComplexBall& s, bool meet,
+                  long prec) {
         ComplexBall vx, vy, dx, dy, ex, ey, wx, wy, cx, cy, t;
         ray_point(bp, s, prec, vx, vy);
         acb_sub(dx.get(), vx.get(), bq.x.get(), prec);  // V - Q
@@ -220,6 +253,32 @@ struct BisectorSystem {
         dot(wx, wy, bq.dx, bq.dy, prec, F_theta[0]);
         dot(ex, ey, wx, wy, prec, F_theta[1]);
         acb_mul_2exp_si(F_theta[1].get(), F_theta[1].get(), 1);
+        if (meet) signed_row(bp, bq, s, dx, dy, wx, wy, prec);
+    }
+
+    // Row 1 of the signed tie (above), V - Q = (dx, dy), P' + s n~' = (wx, wy).
+    void signed_row(const Boundary& bp, const Boundary& bq, const ComplexBall& s, const ComplexBall& dx,
+                    const ComplexBall& dy, const ComplexBall& wx, const ComplexBall& wy, long prec) {
+        ComplexBall np, nq, nn, t;
+        normal_lengths(bp, bq, prec, np, nq);
+        acb_mul(nn.get(), np.get(), nq.get(), prec);
+        dot(dx, dy, bq.nx, bq.ny, prec, F[1]);
+        acb_mul(t.get(), s.get(), nn.get(), prec);
+        acb_sub(F[1].get(), F[1].get(), t.get(), prec);
+        dot(bp.nx, bp.ny, bq.nx, bq.ny, prec, J.m[1][0]);
+        acb_sub(J.m[1][0].get(), J.m[1][0].get(), nn.get(), prec);
+        dot(dx, dy, bq.dnx, bq.dny, prec, J.m[1][1]);
+        dot(bq.nx, bq.ny, bq.dnx, bq.dny, prec, t);
+        acb_mul(t.get(), t.get(), s.get(), prec);
+        acb_mul(t.get(), t.get(), np.get(), prec);
+        acb_div(t.get(), t.get(), nq.get(), prec);
+        acb_sub(J.m[1][1].get(), J.m[1][1].get(), t.get(), prec);
+        dot(wx, wy, bq.nx, bq.ny, prec, F_theta[1]);
+        dot(bp.nx, bp.ny, bp.dnx, bp.dny, prec, t);
+        acb_mul(t.get(), t.get(), s.get(), prec);
+        acb_mul(t.get(), t.get(), nq.get(), prec);
+        acb_div(t.get(), t.get(), np.get(), prec);
+        acb_sub(F_theta[1].get(), F_theta[1].get(), t.get(), prec);
     }
 
     // C = (mid J)^-1, a midpoint matrix; false if mid J is singular.
@@ -252,16 +311,29 @@ SiteBalls::SiteBalls(const Ellipse& e, long prec)
     : a(e.a(), prec), b(e.b(), prec), cos(e.cos_rotation(), prec), sin(e.sin_rotation(), prec), xc(e.xc(), prec),
       yc(e.yc(), prec) {}
 
-NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q)
-    : p_(&p), q_(&q), p_shape_(EllipseShape::of(p)), q_shape_(EllipseShape::of(q)) {
+NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q) : NormalRayBisector(p, q, meet(p, q)) {}
+
+NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q, bool sites_meet)
+    : p_(&p), q_(&q), p_shape_(EllipseShape::of(p)), q_shape_(EllipseShape::of(q)), meet_(sites_meet) {
     size_ = std::max({p_shape_.a, p_shape_.b, q_shape_.a, q_shape_.b,
                       std::hypot(p_shape_.xc - q_shape_.xc, p_shape_.yc - q_shape_.yc)});
+}
+
+bool NormalRayBisector::meet(const Ellipse& p, const Ellipse& q) {
+    if (bounding_circles_apart_in_doubles(p, q)) return false;
+    const RelativePosition position = *relative_position(p, q);
+    return position == RelativePosition::intersecting || position == RelativePosition::externally_tangent;
 }
 
 void NormalRayBisector::set_precision(long prec) {
     if (prec == prec_) return;
     pb_ = SiteBalls(*p_, prec);
     qb_ = SiteBalls(*q_, prec);
+    // r = min(a, b) / max(a, b), the depth of the medial axis in units of n~.
+    for (auto [r, e] : {std::pair<Ball*, const SiteBalls*>{&medial_p_, &pb_}, {&medial_q_, &qb_}}) {
+        const bool a_major = arb_ge(e->a.get(), e->b.get());
+        arb_div(r->get(), (a_major ? e->b : e->a).get(), (a_major ? e->a : e->b).get(), prec);
+    }
     prec_ = prec;
 }
 
@@ -282,7 +354,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     const double theta0 = arf_get_d(arb_midref(theta.real()), ARF_RND_NEAR);
     if (!std::isfinite(theta0)) return false;
     const std::optional<double> rho = equal_distance_on_normal(p_shape_, q_shape_, theta0, 1e12 * size_);
-    if (!rho || !(*rho > 0)) return false;
+    if (!rho || !(meet_ || *rho > 0)) return false;
     double px, py, nx, ny;
     p_shape_.point(theta0, px, py);
     p_shape_.normal(theta0, nx, ny);
@@ -308,7 +380,10 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         ray_point(bp, s0, prec, vx, vy);
         foot_newton(qb_, vx, vy, 1, prec, phi0);
         boundary_at(qb_, phi0, prec, bq);
-        tie(bp, bq, s0, prec, &g, &dg, nullptr);
+        if (meet_)
+            signed_tie(bp, bq, s0, prec, g, dg);
+        else
+            tie(bp, bq, s0, prec, &g, &dg, nullptr);
         acb_div(step.get(), g.get(), dg.get(), prec);
         acb_sub(s0.get(), s0.get(), step.get(), prec);
         acb_get_mid(s0.get(), s0.get());
@@ -322,7 +397,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
 
     // The system in x = (s, phi) with theta as a parameter, at the middle.
     BisectorSystem at_mid;
-    at_mid.evaluate(qb_, bp, bq, s0, prec);
+    at_mid.evaluate(qb_, bp, bq, s0, meet_, prec);
     Matrix2 C;  // the midpoint inverse of the Jacobian
     if (!at_mid.inverse_of_mid_jacobian(prec, C)) return false;
     // The root moves with theta at about x' = -J^-1 F_theta: the unknown is
@@ -349,7 +424,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     boundary_at(pb_, theta, prec, bpT);
     boundary_at(qb_, x_lin[1], prec, bq);
     BisectorSystem on_line;
-    on_line.evaluate(qb_, bpT, bq, x_lin[0], prec);
+    on_line.evaluate(qb_, bpT, bq, x_lin[0], meet_, prec);
     ComplexBall H[2];
     for (int i = 0; i < 2; ++i) {
         ComplexBall& h = H[i];
@@ -370,10 +445,17 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return false;
         ComplexBall Y[2] = {square(zero, r[0]), square(zero, r[1])}, X[2];
         for (int i = 0; i < 2; ++i) acb_add(X[i].get(), x_lin[i].get(), Y[i].get(), prec);
-        if (!arb_is_positive(X[0].real())) return false;  // Re s > 0 (see the header)
+        // Re s > 0, or Re s > -r_p for sites that meet (see the header).
+        if (meet_) {
+            Ball depth;
+            arb_add(depth.get(), X[0].real(), medial_p_.get(), prec);
+            if (!arb_is_positive(depth.get())) return false;
+        } else if (!arb_is_positive(X[0].real())) {
+            return false;
+        }
         boundary_at(qb_, X[1], prec, bq);
         BisectorSystem on_box;
-        on_box.evaluate(qb_, bpT, bq, X[0], prec);
+        on_box.evaluate(qb_, bpT, bq, X[0], meet_, prec);
         // K = -C H + (I - C J(X)) Y inside the interior of Y?
         Matrix2 CJ;
         C.times(on_box.J, prec, CJ);
@@ -391,12 +473,19 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         }
         if (inside) {
             // One root in X, holomorphic in theta; Q is q's nearest point to V
-            // when V - Q points out of q (Re (V - Q) . n~q > 0, see the header).
+            // when V - Q points out of q (Re (V - Q) . n~q > 0), or for sites
+            // that meet when V is above q's medial axis (Re ((V - Q) . n~q +
+            // r_q Nq^2) > 0; see the header).
             ComplexBall side;
             ray_point(bpT, X[0], prec, vx, vy);
             acb_sub(vx.get(), vx.get(), bq.x.get(), prec);
             acb_sub(vy.get(), vy.get(), bq.y.get(), prec);
             dot(vx, vy, bq.nx, bq.ny, prec, side);
+            if (meet_) {
+                ComplexBall depth;
+                acb_mul_arb(depth.get(), bq.n2.get(), medial_q_.get(), prec);
+                acb_add(side.get(), side.get(), depth.get(), prec);
+            }
             if (!arb_is_positive(side.real())) return false;
             acb_add(s_out.get(), x_lin[0].get(), K[0].get(), prec);
             // The derivatives over the box X contain their values at the root.

@@ -1,17 +1,26 @@
-// The Voronoi edge of two disjoint sites p, q seen from p, certified on
-// complex balls of p's boundary angle theta (docs/DESIGN.md §10).
+// The Voronoi edge of two sites p, q seen from p, certified on complex balls
+// of p's boundary angle theta (docs/DESIGN.md §10).
 //
 // With P(theta) = C + a cos(theta) u + b sin(theta) v and the unnormalized
 // outward normal n~(theta) = b cos(theta) u + a sin(theta) v (length N(theta),
-// N^2 = a^2 sin^2 + b^2 cos^2 = |P'|^2), the bisector point on p's normal ray
-// is V = P(theta) + s n~(theta), at distance rho = s N(theta) from p. With
-// Q(phi) a boundary point of q, the system in x = (s, phi)
+// N^2 = a^2 sin^2 + b^2 cos^2 = |P'|^2), the bisector point on p's normal
+// line is V = P(theta) + s n~(theta), at signed distance rho = s N(theta)
+// from p. With Q(phi) a boundary point of q, the system in x = (s, phi)
 //     F0 = (V - Q(phi)) . Q'(phi)          = 0   (Q is a foot point of V on q)
 //     F1 = |V - Q(phi)|^2 - s^2 N(theta)^2 = 0   (V as far from q as from p)
 // is polynomial in the cosines and sines: holomorphic in theta, s, phi, with
 // no square root. (dF1/dphi = -2 F0 vanishes at a root: the distance to q is
 // stationary in the foot point, which keeps the system well conditioned far
 // along the edge, where the ray meets the bisector at a small angle.)
+//
+// Sites that meet (cross or touch, docs/DESIGN.md §9) have edge points with
+// s = 0 on both boundaries, where F1 has a double root and the Jacobian is
+// singular. For them F1 is the signed tie
+//     F1 = (V - Q) . n~q(phi) - s N(theta) Nq(phi)   (Nq = |n~q|),
+// which says V = Q + t n~q with t Nq = s N: equal signed distances. Its
+// Jacobian in (s, phi) is nonsingular wherever the two boundaries are not
+// tangent with the same normal; N and Nq are square roots, holomorphic near
+// the reals (N^2 > 0 there).
 //
 // Certificate: with x0 a Newton point at the (real) middle m of the ball and
 // x' its slope there, the root is sought as x = x0 + x' (theta - m) + y; the
@@ -25,7 +34,11 @@
 // roots), s > 0, and V - Q lies along q's outward normal at Q,
 // so Q is the nearest point of the convex q to V and dist(V, q) = |V - Q| =
 // s N = dist(V, p): V is the one point of p's normal ray equidistant from p
-// and q (docs/DESIGN.md §10).
+// and q (docs/DESIGN.md §10). For sites that meet the conditions are Re s >
+// -r_p and Re ((V - Q) . n~q + r_q Nq^2) > 0 (t > -r_q), r = min(a, b) /
+// max(a, b): the inward normal of an ellipse at P(theta) meets its medial axis
+// at s = -r, and up to there P(theta) is the nearest boundary point, so the
+// signed distances of V to p and q are s N and t Nq, equal by F1.
 #pragma once
 
 #include "sites/ellipse.hpp"
@@ -46,8 +59,15 @@ struct SiteBalls {
 
 class NormalRayBisector {
 public:
-    // The sites must outlive this object.
+    // The sites must outlive this object. The first form finds out whether
+    // they meet (sites_meet()).
     NormalRayBisector(const Ellipse& p, const Ellipse& q);
+    NormalRayBisector(const Ellipse& p, const Ellipse& q, bool sites_meet);
+
+    // Whether two sites cross or touch from outside (exact,
+    // predicates/relative_position.hpp, after the bounding circles' filter):
+    // then the system is the signed one above.
+    static bool meet(const Ellipse& p, const Ellipse& q);
 
     // Encloses s(theta) for every theta in the complex ball `theta`, at
     // precision prec; false when the certificate fails there (the ball is too
@@ -89,6 +109,7 @@ public:
 
     const Ellipse& first() const { return *p_; }
     const Ellipse& second() const { return *q_; }
+    bool sites_meet() const { return meet_; }
 
     struct Boundary;  // p's or q's boundary at a complex angle (the .cpp)
 
@@ -104,8 +125,10 @@ private:
     const Ellipse* q_;
     EllipseShape p_shape_, q_shape_;
     double size_;  // scale of the pair, for the double guesses
+    bool meet_;    // the signed tie (see above)
     long prec_ = 0;
     SiteBalls pb_, qb_;
+    Ball medial_p_, medial_q_;  // r_p, r_q (see above)
 };
 
 }  // namespace ellvor

@@ -1,5 +1,7 @@
 #include "cells/periodic_copies.hpp"
 
+#include "predicates/relative_position.hpp"
+#include "subdivision/ellipse_shape.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
@@ -89,6 +91,28 @@ bool periodic_cell_is_proven(double reach, const Ellipse& p, const Rational& d_o
     Rational r;
     arf_get_fmpq(r.get(), a.get());
     return Rational(2) * r < d_out + std::min(p.a(), p.b()) - e_max;
+}
+
+void require_sites_fit_periodic_box(const std::vector<Ellipse>& wrapped, const CellDomain& box) {
+    const Rational lx = box.x1 - box.x0, ly = box.y1 - box.y0;
+    const double dlx = lx.to_double(), dly = ly.to_double();
+    for (SiteId p = 0; p < wrapped.size(); ++p) {
+        const EllipseShape e = EllipseShape::of(wrapped[p]);
+        // The shifts whose copy's bounding circle may meet p's: the slack
+        // covers the doubles' rounding; the exact test decides.
+        const double reach = 2 * std::max(e.a, e.b) * (1 + 1e-9) + 1e-9 * (dlx + dly);
+        const long ki = static_cast<long>(std::ceil(reach / dlx)), kj = static_cast<long>(std::ceil(reach / dly));
+        for (long i = -ki; i <= ki; ++i)
+            for (long j = -kj; j <= kj; ++j) {
+                if ((i == 0 && j == 0) || std::hypot(i * dlx, j * dly) > reach) continue;
+                const RelativePosition rp = *relative_position(wrapped[p], shifted(wrapped[p], Rational(i) * lx, Rational(j) * ly));
+                if (rp != RelativePosition::intersecting && rp != RelativePosition::externally_tangent) continue;
+                throw InputError("cells: site " + std::to_string(p) + " meets its own periodic image shifted by (" +
+                                     std::to_string(i) + ", " + std::to_string(j) +
+                                     ") periods: the periodic box is too small for it",
+                                 InputError::SitePair{p, p});
+            }
+    }
 }
 
 }  // namespace ellvor

@@ -32,6 +32,14 @@ struct PeriodicCopies {
 };
 PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, long rings);
 
+// Throws InputError naming the site and the shift (in periods) when a site
+// meets one of its own periodic images: the periodic box is too small for
+// it. Different sites may cross or touch, on the torus as in the plane
+// (docs/DESIGN.md §9). Exact (predicates/relative_position.hpp) after a
+// bounding-circle filter; the sites must have their centers in the box
+// (wrap_into_box).
+void require_sites_fit_periodic_box(const std::vector<Ellipse>& wrapped, const CellDomain& box);
+
 // The lowest ring level with kx Lx and ky Ly > 2 max semi-axis: then every
 // copy outside the rings is apart from every site in the box.
 long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box);

@@ -78,9 +78,13 @@ const char* const kHelp =
     "  properties site, area_lo, area_hi, packing_fraction_lo, packing_fraction_hi (as the JSON's);\n"
     "  \"cells_without_ring\" counts the cells left out.\n"
     "\n"
+    "Sites may touch or cross (signed distances, as in build), unless two cross so deeply that\n"
+    "their Voronoi edge runs through a site's medial axis (e.g. a needle's tip deep inside\n"
+    "another site): that is refused.\n"
+    "\n"
     "exit status: 0 done; 1 a cell could not be certified; 2 bad input (a tolerance out of range,\n"
     "an empty box, a site not strictly inside the box or meeting its own periodic image, sites\n"
-    "that touch or cross: FILE:LINE:COLUMN), nothing written.\n";
+    "that cross so deeply: FILE:LINE:COLUMN), nothing written.\n";
 
 // "--box X0 Y0 X1 Y1" (or --periodic) taken out of args: Arguments knows
 // options with one value only.

@@ -873,7 +873,8 @@ def cells(sites, box=None, periodic=None, tolerance=1e-9, tiles="auto", client=N
     (cells reaching infinity, a patch that would hold every site) in one task of the whole set. With a
     periodic box the tiles wrap: they hold the sites' copies shifted by whole periods that meet them.
     ``client``, ``halo`` as for ``build``. Bad input (arguments, sites outside the box) raises InputError
-    here, before anything is sent; touching or crossing sites raise it from the tiles that meet them."""
+    here, before anything is sent; sites that cross so deeply that their edge runs through a medial axis raise
+    it from the tiles that meet them."""
     sites = _sites_of(sites, fmt)
     t = _cell_number(tolerance, "tolerance")
     b = None if boundary_tolerance is None else _cell_number(boundary_tolerance, "boundary_tolerance")

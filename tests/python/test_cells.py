@@ -175,11 +175,15 @@ def test_site_errors_carry_the_cli_message(cli, sites_path, write_sites):
     assert status == 2
     assert err.strip() == f"ellvor: {e.value}"
     assert (e.value.filename, e.value.lineno) == (str(sites_path), 5)
-    touching = write_sites("1 1 0 0 0\n1 1 0 2 0\n1 1 0 5 0\n", "touching.ell")
+    # A needle whose tip lies deep in a fatter ellipse: their edge runs
+    # through the needle's medial axis (crossing sites are fine otherwise).
+    deep = write_sites("993/245 32/75 9/103 3609/52 68\n55/41 349/142 59/101 15621/212 15052/217\n"
+                       "1 1 0 60 60\n1 1 0 80 60\n1 1 0 70 80\n", "deep.ell")
     with pytest.raises(ellvor.InputError) as e:
-        ellvor.build(touching).cells()
-    status, _, err = cli("cells", touching, check=False)
+        ellvor.build(deep).cells()
+    status, _, err = cli("cells", deep, check=False)
     assert status == 2 and err.strip() == f"ellvor: {e.value}"
+    assert "cross so deeply" in str(e.value)
     assert e.value.sites == (0, 1)
 
 
