@@ -177,11 +177,31 @@ bool normal_line_reaches(const Ellipse& p, const Ellipse& q, double a, double b)
     return true;
 }
 
+// The edge k of a cell whose neighbour meets its site: an InputError naming
+// both (as input ids) when the edge runs through either site's medial axis,
+// seen from either side (normal_line_reaches).
+void require_normal_lines_reach(const std::vector<Ellipse>& sites, const VoronoiCell& cell, std::size_t k,
+                                const std::vector<Ball>& lifted, CellVertexAngles& angles,
+                                const std::vector<SiteId>& input_ids, long prec) {
+    const SiteId p = cell.site, q = cell.edges[k].neighbor;
+    // Around q the edge runs from `to` to `from`.
+    const double phi_lo = angles.angle(cell.edges[k].to, q, prec).mid_double();
+    double phi_hi = angles.angle(cell.edges[k].from, q, prec).mid_double();
+    phi_hi -= kTwoPi * std::floor((phi_hi - phi_lo + 1e-9) / kTwoPi);
+    if (normal_line_reaches(sites[p], sites[q], lifted[k].mid_double(), lifted[k + 1].mid_double()) &&
+        normal_line_reaches(sites[q], sites[p], phi_lo, phi_hi))
+        return;
+    const SiteId a = input_ids.empty() ? p : input_ids[p], b = input_ids.empty() ? q : input_ids[q];
+    throw InputError("cells: sites " + std::to_string(std::min(a, b)) + " and " + std::to_string(std::max(a, b)) +
+                         " cross so deeply that their Voronoi edge runs through a site's medial axis; cells of such "
+                         "crossings are not supported",
+                     InputError::SitePair{std::min(a, b), std::max(a, b)});
+}
+
 class CellAreaSolver {
 public:
-    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance,
-                   const std::vector<SiteId>& input_ids)
-        : sites_(sites), tolerance_(tolerance), angles_(graph, sites), input_ids_(input_ids) {}
+    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance)
+        : sites_(sites), tolerance_(tolerance), angles_(graph, sites) {}
 
     // The measures of a bounded cell at precision prec, or nothing when the
     // pass could not certify its area within the tolerance. Pass k asks Arb
@@ -274,38 +294,6 @@ public:
         if (!(l > 0) || !(w <= tolerance_ * l)) return std::nullopt;
         finish_moments(site, sums, unit, prec, r);
         return r;
-    }
-
-    // Before any integral: every edge of the cell with a neighbour that meets
-    // its site can be followed (require_normal_lines_reach).
-    void require_followable_edges(const VoronoiCell& cell, long prec) {
-        std::vector<Ball> lifted;
-        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            if (!NormalRayBisector::meet(sites_[cell.site], sites_[cell.edges[k].neighbor])) continue;
-            if (lifted.empty()) lifted = angles_.lifted(cell, prec);
-            require_normal_lines_reach(cell, k, lifted, prec);
-        }
-    }
-
-    // The edge k of a cell whose neighbour meets its site: an InputError
-    // naming both (as input ids) when the edge runs through either site's
-    // medial axis, seen from either side (normal_line_reaches), which the
-    // normal-line parametrization of §10 cannot follow.
-    void require_normal_lines_reach(const VoronoiCell& cell, std::size_t k, const std::vector<Ball>& lifted, long prec) {
-        const SiteId p = cell.site, q = cell.edges[k].neighbor;
-        Ball phi_to = angles_.angle(cell.edges[k].to, q, prec), phi_from = angles_.angle(cell.edges[k].from, q, prec);
-        // Around q the edge runs from `to` to `from`.
-        const double phi_lo = phi_to.mid_double();
-        double phi_hi = phi_from.mid_double();
-        phi_hi -= kTwoPi * std::floor((phi_hi - phi_lo + 1e-9) / kTwoPi);
-        if (normal_line_reaches(sites_[p], sites_[q], lifted[k].mid_double(), lifted[k + 1].mid_double()) &&
-            normal_line_reaches(sites_[q], sites_[p], phi_lo, phi_hi))
-            return;
-        const SiteId a = input_id(p), b = input_id(q);
-        throw InputError("cells: sites " + std::to_string(a) + " and " + std::to_string(b) +
-                             " cross so deeply that their Voronoi edge runs through a site's medial axis; cells of "
-                             "such crossings are not supported",
-                         InputError::SitePair{std::min(a, b), std::max(a, b)});
     }
 
     static Ball site_area(const Ellipse& e, long prec) {
@@ -424,16 +412,34 @@ private:
         }
     }
 
-    SiteId input_id(SiteId s) const { return input_ids_.empty() ? s : input_ids_[s]; }
-
     const std::vector<Ellipse>& sites_;
     double tolerance_;
     CellVertexAngles angles_;
-    const std::vector<SiteId>& input_ids_;
     GaussLegendreRules rules_;
 };
 
 }  // namespace
+
+void require_followable_edges(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                              const std::vector<SiteId>& which, const std::vector<SiteId>& input_ids) {
+    const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
+    std::vector<char> wanted(cells.size(), which.empty());
+    for (SiteId s : which) wanted.at(s) = 1;
+    std::unique_ptr<CellVertexAngles> angles;  // made at the first pair that meets
+    const long prec = 64;
+    for (SiteId s = 0; s < cells.size(); ++s) {
+        if (!wanted[s]) continue;
+        const VoronoiCell& cell = cells[s];
+        if (!cell.visible || !cell.bounded()) continue;
+        std::vector<Ball> lifted;
+        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
+            if (!NormalRayBisector::meet(sites[s], sites[cell.edges[k].neighbor])) continue;
+            if (!angles) angles = std::make_unique<CellVertexAngles>(graph, sites);
+            if (lifted.empty()) lifted = angles->lifted(cell, prec);
+            require_normal_lines_reach(sites, cell, k, lifted, *angles, input_ids, prec);
+        }
+    }
+}
 
 long cell_area_precision(double tolerance) { return 64 + static_cast<long>(std::ceil(-std::log2(tolerance))); }
 
@@ -442,14 +448,13 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
     const double T = options.tolerance;
     if (!(T > 0 && T <= 1)) throw InputError("cell_areas: the tolerance must be in (0, 1]");
     const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
-    CellAreaSolver solver(graph, sites, T, options.input_ids);
+    CellAreaSolver solver(graph, sites, T);
     std::vector<CellArea> out(cells.size());
     const long start = cell_area_precision(T);
     std::vector<SiteId> which = options.only;
     if (which.empty())
         for (SiteId s = 0; s < cells.size(); ++s) which.push_back(s);
-    for (SiteId s : which)
-        if (cells.at(s).visible && cells[s].bounded()) solver.require_followable_edges(cells[s], start);
+    require_followable_edges(graph, sites, which, options.input_ids);
     std::size_t done = 0;
     for (SiteId s : which) {
         if (options.progress && done) options.progress(done, which.size());

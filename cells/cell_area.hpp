@@ -56,6 +56,15 @@ struct CellArea {
     QuadratureCounts quadrature;
 };
 
+// Throws InputError naming the pair (as input_ids, or the ids themselves when
+// it is empty) when two sites cross so deeply that their edge, on a bounded
+// cell of `which` (empty: every site), runs through a site's medial axis: the
+// normal-line parametrization cannot follow it (docs/DESIGN.md §10). Decided
+// by floating-point samples of the edge, before any integral: cell_areas
+// asks it first; cell_tessellation before its rings.
+void require_followable_edges(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                              const std::vector<SiteId>& which, const std::vector<SiteId>& input_ids);
+
 // The working precision for a tolerance: 64 bits beyond its own bits.
 long cell_area_precision(double tolerance);
 

@@ -286,6 +286,10 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     std::vector<double> reach(sites.size());
     std::map<long, long> vertex_ids;
     auto describe_all = [&]() {
+        std::vector<SiteId> originals;
+        for (SiteId s = 0; s < plane->originals; ++s)
+            if (wanted[s]) originals.push_back(s);
+        require_followable_edges(cells->graph(), plane->sites, originals, plane->original);
         out.cells.assign(sites.size(), Cell{});
         vertex_ids.clear();
         // In the plane the vertices are the diagram's, numbered as DelaunayGraph::faces()

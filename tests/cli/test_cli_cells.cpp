@@ -264,12 +264,15 @@ TEST_CASE("cells: bad arguments and bad sites exit 2 naming them, nothing writte
         CHECK(!std::ifstream(out));
         CHECK(r.out.empty());
     }
-    // Touching sites: the library refuses them; the message points at the later site's line.
-    const std::string touching = dir.write("t.ell", "1 1 0 0 0\n# a comment\n1 1 0 2 0\n1 1 0 5 0\n");
-    const auto r = dir.ellvor("cells '" + touching + "' -o '" + out + "'");
+    // A crossing through a medial axis (a needle's tip deep inside another
+    // site): the library refuses it; the message points at the later site's line.
+    const std::string deep = dir.write("t.ell", "993/245 32/75 9/103 3609/52 68\n# a comment\n"
+                                                "55/41 349/142 59/101 15621/212 15052/217\n"
+                                                "1 1 0 60 60\n1 1 0 80 60\n1 1 0 70 80\n");
+    const auto r = dir.ellvor("cells '" + deep + "' -o '" + out + "'");
     INFO(r.err);
     CHECK(r.status == 2);
-    CHECK(contains(r.err, touching + ":3:1: cells: sites 0 and 1 touch"));
+    CHECK(contains(r.err, deep + ":3:1: cells: sites 0 and 1 cross so deeply"));
     CHECK(contains(r.err, "(site 0: line 1)"));
     CHECK(!std::ifstream(out));
 }
