@@ -6,10 +6,13 @@
 //   random   generate_sites (seed 1, bits 8, box 100, 10% nested)
 //   packing  generate_packing (packing fraction 0.55, gap 1/1000, aspect 1..4, seed 1), box [0, L]^2
 // The box of a random set: its sites' bounding box widened by 1 on each side.
-//   build/experiments/cells_timing [--full] [--out DIR]
+//   crossing circles  generate_sites (circles, seed 1, half of them crossing another)
+//   build/experiments/cells_timing [--full | --large] [--out DIR]
 // Without rings but for one row (they cost more than the areas). Default: 20
-// random sites (plane and box, T = 1e-9 and 1e-15) and a packing of 30 (about
-// a minute); --full adds 100 and 1000 of each (an hour).
+// random sites (plane and box, T = 1e-9 and 1e-15), a packing of 30 and 20
+// crossing circles (about a minute); --full adds 100 and 1000 of each (an
+// hour); --large has only 10^4 and 10^5 of each, at 1e-9 (about an hour and a
+// half), in cells_timing_large.md.
 #include "cells/cell_tessellation.hpp"
 #include "experiments/peak_memory.hpp"
 #include "experiments/report.hpp"
@@ -36,11 +39,13 @@ struct CellSet {
     CellDomain box;  // kind box
 };
 
-CellSet random_set(long n) {
+CellSet random_set(long n, SiteKind kind = SiteKind::ellipses, Rational crossing = Rational(0)) {
     GeneratorOptions o;
     o.count = n;
-    o.nested_fraction = Rational(1, 10);
-    CellSet set{"random", generate_sites(o), {}};
+    o.kind = kind;
+    o.crossing_fraction = crossing;
+    o.nested_fraction = crossing == Rational(0) ? Rational(1, 10) : Rational(0);
+    CellSet set{crossing == Rational(0) ? "random" : "crossing circles", generate_sites(o), {}};
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (const Ellipse& e : set.sites) {
         const double r = std::max(e.a().to_double(), e.b().to_double()), x = e.xc().to_double(), y = e.yc().to_double();
@@ -105,18 +110,37 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
 }  // namespace
 
 int main(int argc, char** argv) {
+    // --large: only the rows of 10^4 and 10^5 sites (about an hour and a half), in cells_timing_large.md.
+    bool large = false;
+    std::vector<char*> common;
+    for (int i = 0; i < argc; ++i)
+        if (std::string(argv[i]) == "--large")
+            large = true;
+        else
+            common.push_back(argv[i]);
     BenchArguments args;
-    if (!parse_bench_arguments(argc, argv, "cells_timing", "usage: cells_timing [--full] [--out DIR]\n", args)) return 2;
+    if (!parse_bench_arguments(static_cast<int>(common.size()), common.data(), "cells_timing",
+                               "usage: cells_timing [--full | --large] [--out DIR]\n", args))
+        return 2;
+    if (large) args.command += " --large";
     Report report("Certified cells against the build", "cells_timing", args.command);
     Table table("cells", {"set", "sites", "domain", "T", "bounded cells", "build s", "cells s", "cells / build",
                           "ms per bounded cell", "edges in doubles %", "pieces per edge", "failed boxes per edge",
                           "nodes per edge", "cells peak MB"});
-    const CellSet random20 = random_set(20);
-    table.add(measure(random20, false, 1e-9));
-    for (double T : {1e-9, 1e-15}) table.add(measure(random20, true, T));
-    table.add(measure(random20, true, 1e-9, true));
-    table.add(measure(packing_set(30), true, 1e-9));
-    if (args.full)
+    if (large) {
+        for (long n : {10000L, 100000L}) {
+            table.add(measure(random_set(n), true, 1e-9));
+            table.add(measure(packing_set(n), true, 1e-9));
+        }
+    } else {
+        const CellSet random20 = random_set(20);
+        table.add(measure(random20, false, 1e-9));
+        for (double T : {1e-9, 1e-15}) table.add(measure(random20, true, T));
+        table.add(measure(random20, true, 1e-9, true));
+        table.add(measure(packing_set(30), true, 1e-9));
+        table.add(measure(random_set(20, SiteKind::circles, Rational(1, 2)), true, 1e-9));
+    }
+    if (args.full && !large)
         for (long n : {100L, 1000L}) {
             table.add(measure(random_set(n), true, 1e-9));
             table.add(measure(packing_set(n), true, 1e-9));
@@ -132,6 +156,6 @@ int main(int argc, char** argv) {
                  "nodes. Peak memory: " +
                  std::string(kPeakMemoryMethod) + ", here of one cell_tessellation.");
     report.table(table);
-    report.publish(args.out_dir, "cells_timing.md");
+    report.publish(args.out_dir, large ? "cells_timing_large.md" : "cells_timing.md");
     return 0;
 }
