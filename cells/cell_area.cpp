@@ -237,12 +237,10 @@ public:
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector& bisector = *bisectors[k];
-            NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor]);
+            NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor], bisector.sites_meet());
             Ball ends[2] = {lifted[k], lifted[k + 1]};
             bool integrated = false;
-            // The double-interval stage has the unsigned system only (its
-            // certificate fails where the edge crosses a site's boundary).
-            if (in_doubles && !bisector.sites_meet()) {
+            if (in_doubles) {
                 const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
                 double tolerances[MeasureIntervals::count];
                 for (int j = 0; j < MeasureIntervals::count; ++j)
@@ -306,37 +304,21 @@ public:
 
 private:
     // The cell's area by 8 Gauss nodes an edge in floating point, or 0 when
-    // a node fails: a scale, not a bound. The nodes of an edge with a site
-    // that meets this one (where the double certificate fails) come from the
-    // bisector point on the normal line in plain doubles.
+    // a node fails: a scale, not a bound.
     double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted,
                           const std::vector<std::unique_ptr<NormalRayBisector>>& bisectors) {
         const Ellipse& site = sites_[cell.site];
-        const EllipseShape shape = EllipseShape::of(site);
         const GaussLegendreRule& rule = rules_.rule(8);
         double area = site_area(site, 64).mid_double();
         for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            const Ellipse& neighbor = sites_[cell.edges[k].neighbor];
-            NormalRayInDoubles nodes(site, neighbor);
-            const EllipseShape neighbor_shape = EllipseShape::of(neighbor);
+            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor], bisectors[k]->sites_meet());
             const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
             for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-                const double theta = mid + half * rule.nodes[i].mid();
-                double density;
-                if (bisectors[k]->sites_meet()) {
-                    // rho N + kappa N rho^2 / 2 with kappa N = a b / N^2 (the density with rho = s N).
-                    const std::optional<double> rho = equal_distance_on_normal(shape, neighbor_shape, theta, INFINITY);
-                    if (!rho) return 0;
-                    const double n = std::hypot(shape.b * std::cos(theta), shape.a * std::sin(theta));
-                    density = *rho * n + shape.a * shape.b * *rho * *rho / (2 * n * n);
-                } else {
-                    const std::optional<MeasureIntervals> d = nodes.densities(Interval(theta));
-                    if (!d) return 0;
-                    density = d->m[MeasureIntervals::area].mid();
-                }
-                area += half * rule.weights[i].mid() * density;
+                const std::optional<MeasureIntervals> d = nodes.densities(Interval(mid + half * rule.nodes[i].mid()));
+                if (!d) return 0;
+                area += half * rule.weights[i].mid() * d->m[MeasureIntervals::area].mid();
             }
         }
         return std::isfinite(area) ? area : 0;

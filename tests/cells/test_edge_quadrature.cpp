@@ -127,6 +127,50 @@ TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bit
     CHECK(certified >= compared * 9 / 10);
 }
 
+TEST_CASE("NormalRayInDoubles on crossing sites: the signed tie's densities contain Arb's at 200 bits", "[cells][quadrature]") {
+    // Fat ellipses (aspect <= 1.5) crossing shallowly, and the angles of p
+    // facing q: there the edge runs from outside both sites (s > 0) through
+    // a boundary crossing (s = 0) into both (s < 0, negative area densities).
+    std::mt19937_64 rng(27);
+    std::uniform_real_distribution<double> spread(-1.2, 1.2);
+    int compared = 0, certified = 0, inside = 0, outside = 0;
+    for (int trial = 0; trial < 80; ++trial) {
+        const Rational a = test::random_fraction(rng, 20, 30, 10), b = a * test::random_fraction(rng, 7, 10, 10);
+        const Rational c = test::random_fraction(rng, 20, 30, 10), d = c * test::random_fraction(rng, 7, 10, 10);
+        const double angle = 2 * kPi * std::uniform_real_distribution<double>(0, 1)(rng);
+        const Rational distance = (a + c) * test::random_fraction(rng, 75, 95, 100);
+        const Ellipse p(a, b, test::random_fraction(rng, -9, 9, 10), Rational(0), Rational(0));
+        const Ellipse q(c, d, test::random_fraction(rng, -9, 9, 10), distance * Rational(std::lround(1000 * std::cos(angle)), 1000),
+                        distance * Rational(std::lround(1000 * std::sin(angle)), 1000));
+        if (!NormalRayBisector::meet(p, q)) continue;
+        NormalRayInDoubles fast(p, q);
+        NormalRayBisector arb(p, q);
+        REQUIRE(arb.sites_meet());
+        const double theta = facing_angle(p, q) + spread(rng);
+        ComplexBall ball;
+        arb_set_d(ball.real(), theta);
+        NormalRayBisector::Densities reference;
+        if (!arb.densities(ball, 200, reference)) continue;
+        ++compared;
+        (arb_is_negative(acb_realref(reference.area.get())) ? inside : outside) += 1;
+        const std::optional<MeasureIntervals> dens = fast.densities(Interval(theta));
+        if (!dens) continue;
+        ++certified;
+        const ComplexBall* expected[MeasureIntervals::count] = {&reference.area,      &reference.length,
+                                                                &reference.first[0],  &reference.first[1],
+                                                                &reference.second[0], &reference.second[1],
+                                                                &reference.second[2]};
+        for (int j = 0; j < MeasureIntervals::count; ++j) {
+            INFO("trial " << trial << " measure " << j << " [" << dens->m[j].lo << ", " << dens->m[j].hi << "]");
+            CHECK(overlap(dens->m[j], *expected[j]));
+        }
+    }
+    CHECK(compared >= 40);
+    CHECK(inside >= 5);
+    CHECK(outside >= 5);
+    CHECK(certified >= compared * 9 / 10);
+}
+
 TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold at Arb's points inside", "[cells][quadrature]") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(-1, 1);
