@@ -293,11 +293,13 @@ TEST_CASE("doubles: the 3e5-radius hull circle of 10^6 random ellipses certifies
           "[subdivision][voronoi_circle_in_doubles]") {
     // Before the square, doubling, negation and reciprocal shortcuts of
     // boundary_at, the one-ulp widening of the general products at rho ~ 3e5
-    // kept Krawczyk's box from contracting: no certificate, Arb ran.
+    // kept Krawczyk's box from contracting: no certificate, Arb ran. Then
+    // the tangent-line starts certified it; since the upward rounding mode
+    // (no widening at all) a circle model's start, whose Newton also reaches
+    // it, certifies first.
     const std::vector<Ellipse> s = ellvor::test::huge_hull_triple();
     const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(s[0], s[1], s[2]);
     REQUIRE(d.has_value());
-    CHECK(d->from_tangent_line);
     CHECK(d->radius.lo > 3e5);
     // Arb's enclosure at 80 correct bits lies inside the double box.
     VoronoiCircleSolver arb(s[0], s[1], s[2]);
