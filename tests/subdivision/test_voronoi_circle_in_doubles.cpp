@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cfenv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -231,6 +232,28 @@ TEST_CASE("VoronoiCircle: the double certificate once, the solver only on demand
     CHECK(reversed.in_doubles() == nullptr);
     REQUIRE(!reversed.solver().certify());
     CHECK(reversed.has_solver());
+}
+
+TEST_CASE("doubles: the certificate leaves the caller's rounding mode as it found it",
+          "[subdivision][voronoi_circle_in_doubles][upward-interval]") {
+    // Krawczyk's test runs under FE_UPWARD (util/upward_interval.hpp); the
+    // Newton iteration and the rest run in the caller's mode, whatever it is
+    // (Interval's one-ulp widening holds in every mode). The same triple,
+    // certified from each mode, gives a box that holds Arb's circle.
+    const Ellipse e1(2, 1, Rational(1, 3), 0, 0), e2 = Ellipse::circle(7, 1, 2), e3(3, Rational(1, 2), -1, 2, 6);
+    VoronoiCircleSolver arb(e1, e2, e3);
+    REQUIRE(arb.certify());
+    const Interval radius = enclose(arb.enclosure().radius);
+    for (int mode : {FE_TONEAREST, FE_DOWNWARD, FE_TOWARDZERO, FE_UPWARD}) {
+        INFO("mode " << mode);
+        REQUIRE(std::fesetround(mode) == 0);
+        const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(e1, e2, e3);
+        const int after = std::fegetround();
+        std::fesetround(FE_TONEAREST);
+        CHECK(after == mode);
+        REQUIRE(d.has_value());
+        CHECK(meets(d->radius, radius));
+    }
 }
 
 TEST_CASE("doubles: a huge circle of nearly collinear sites, from the tangent-line starts", "[subdivision][voronoi_circle_in_doubles]") {
