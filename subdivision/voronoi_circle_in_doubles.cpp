@@ -167,14 +167,14 @@ bool signed_distances(const std::array<Shape<Box>, 3>& k, const Box& rho) {
 // counter-clockwise order (on X, which contains K(X)).
 // All of it runs under the upward rounding mode: every double computed here
 // is rounded up, so sums and products of nonnegative upper bounds (the
-// spread, the box's reach) are upper bounds as they stand. noipa: the scope
-// is the first thing done and the last undone, and every input is read
-// through a reference after it (no double computed in round-to-nearest by the
-// caller can be taken for one computed here, nor the reverse).
-__attribute__((noipa)) std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Box>, 3>& k,
-                                                                       const std::array<bool, 3>& flipped,
-                                                                       const Vector6& m, const Matrix6& Y,
-                                                                       double length_scale) {
+// spread, the box's reach) are upper bounds as they stand. The scope is the
+// first thing done and the last undone, and every input is read through a
+// reference after it (with ELLVOR_UPWARD_ROUNDING_FUNCTION: no double
+// computed in round-to-nearest by the caller is taken for one computed here,
+// nor the reverse).
+ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
+    const std::array<Shape<Box>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m, const Matrix6& Y,
+    double length_scale) {
     const UpwardRoundingScope upward;
     std::array<Box, 6> point, F;
     std::array<BoundaryPoint<Box>, 3> at;

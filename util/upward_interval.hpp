@@ -37,6 +37,19 @@
 #error "util/upward_interval.hpp: compile this file with the Makefile's ROUNDING_MATH flags (-frounding-math -ffp-contract=off)"
 #endif
 
+// For a function that opens an UpwardRoundingScope first and computes in
+// it: GCC does not order floating-point operations with fesetround (its
+// -frounding-math only stops folding), so such a function is kept out of
+// inlining, cloning and the rest of interprocedural optimization, and reads
+// its inputs through references after the scope is set. Clang's
+// -frounding-math orders them itself (constrained intrinsics); noinline
+// there.
+#if defined(__clang__)
+#define ELLVOR_UPWARD_ROUNDING_FUNCTION __attribute__((noinline))
+#else
+#define ELLVOR_UPWARD_ROUNDING_FUNCTION __attribute__((noipa))
+#endif
+
 namespace ellvor {
 
 // Sets the rounding mode to FE_UPWARD for its lifetime and restores the mode
