@@ -34,7 +34,7 @@
 #include <cmath>
 
 #ifndef ELLVOR_ROUNDING_MATH
-#error "util/upward_interval.hpp: compile this file with the Makefile's ROUNDING_MATH flags (-frounding-math -ffp-contract=off)"
+#error "util/upward_interval.hpp needs the Makefile's ROUNDING_MATH flags (-frounding-math -ffp-contract=off)"
 #endif
 
 // For a function that opens an UpwardRoundingScope first and computes in
