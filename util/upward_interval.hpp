@@ -53,8 +53,9 @@
 namespace ellvor {
 
 // Sets the rounding mode to FE_UPWARD for its lifetime and restores the mode
-// it found (also when an exception leaves the scope). Not copyable: one
-// scope, one restore.
+// it found (also when an exception leaves the scope). The mode belongs to the
+// calling thread (C11 7.6), so other threads are not affected. Not copyable:
+// one scope, one restore.
 class UpwardRoundingScope {
 public:
     UpwardRoundingScope() : saved_(std::fegetround()) {
