@@ -66,6 +66,15 @@ $(BUILD)/obj/%.o: %.cpp | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
+# The objects that compute under the upward rounding mode (util/upward_interval.hpp,
+# which requires ELLVOR_ROUNDING_MATH): -frounding-math keeps the compiler from folding
+# -((-x) - y) into x + y or constants in round-to-nearest, -ffp-contract=off from fusing a
+# product and a sum (one rounding less; only with FMA, e.g. -march=native). Only these
+# objects: the flags are measured in experiments/results/ellipse_speed.md.
+ROUNDING_MATH     := -frounding-math -ffp-contract=off -DELLVOR_ROUNDING_MATH
+ROUNDING_MATH_OBJ := $(BUILD)/obj/subdivision/voronoi_circle_in_doubles.o $(BUILD)/obj/tests/util/test_upward_interval.o
+$(ROUNDING_MATH_OBJ): CXXFLAGS += $(ROUNDING_MATH)
+
 # The test and CLI objects need the path of the ellvor binary of this build.
 $(TEST_OBJ): CXXFLAGS += -DELLVOR_BINARY='"$(abspath $(ELLVOR))"' -DELLVOR_SOURCE_DIR='"$(abspath .)"'
 

@@ -4,6 +4,7 @@
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/precision.hpp"
+#include "util/upward_interval.hpp"
 
 #include <Eigen/Core>
 
@@ -18,28 +19,24 @@ using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 // The same formulas in doubles (Newton on the midpoint) and in intervals (the
-// certificate): N is double or Interval.
+// certificate, computed under the upward rounding mode: util/upward_interval.hpp,
+// which is why this file is compiled with the Makefile's ROUNDING_MATH flags):
+// N is double or UpwardInterval.
 double constant(double c, double) { return c; }
-Interval constant(double c, const Interval&) { return Interval(c); }
+UpwardInterval constant(double c, const UpwardInterval&) { return UpwardInterval(c); }
 double root(double x) { return std::sqrt(x); }
-Interval root(const Interval& x) { return x.sqrt(); }
+UpwardInterval root(const UpwardInterval& x) { return x.sqrt(); }
 // x^2, 2 x, -x and 1/x: in intervals the square is nonnegative, doubling and
 // negation are exact (below the overflow range), and a positive divisor needs
 // two quotients, not four and their ordering.
 double square(double x) { return x * x; }
-Interval square(const Interval& x) { return x.square(); }
+UpwardInterval square(const UpwardInterval& x) { return x.square(); }
 double twice(double x) { return 2 * x; }
-Interval twice(const Interval& x) {
-    if (std::fabs(x.lo) < 1e300 && std::fabs(x.hi) < 1e300) return {2 * x.lo, 2 * x.hi};
-    return Interval(2.0) * x;
-}
+UpwardInterval twice(const UpwardInterval& x) { return x.twice(); }
 double negated_if(bool negate, double x) { return negate ? -x : x; }
-Interval negated_if(bool negate, const Interval& x) { return negate ? -x : x; }
+UpwardInterval negated_if(bool negate, const UpwardInterval& x) { return negate ? -x : x; }
 double reciprocal(double x) { return 1 / x; }
-Interval reciprocal(const Interval& x) {
-    if (x.lo > 0) return {Interval::down(1 / x.hi), Interval::up(1 / x.lo)};
-    return Interval(1.0) / x;
-}
+UpwardInterval reciprocal(const UpwardInterval& x) { return x.reciprocal(); }
 
 // An ellipse: semi-axes, rotation (cos, sin) and center.
 template <class N>
@@ -47,9 +44,12 @@ struct Shape {
     N a, b, cos, sin, xc, yc;
 };
 
-Shape<Interval> interval_shape(const Ellipse& e) {
+// The enclosures as they are (the cosine and sine computed before, in
+// round-to-nearest: util/interval_trig.hpp).
+Shape<UpwardInterval> interval_shape(const Ellipse& e) {
     const Ellipse::Enclosure& k = e.enclosure();
-    return {k.a, k.b, k.cos, k.sin, k.xc, k.yc};
+    using U = UpwardInterval;
+    return {U(k.a), U(k.b), U(k.cos), U(k.sin), U(k.xc), U(k.yc)};
 }
 
 Shape<double> double_shape(const Ellipse& e) {
@@ -134,17 +134,13 @@ void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 
 }
 
 // Interval::max is std::fmax inlined (the library call was 1% of a build).
-double magnitude(const Interval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
-
-// Rounded up: |a| + |b| and c * d for nonnegative c, d.
-double add_up(double a, double b) { return Interval::up(a + b); }
-double mul_up(double c, double d) { return Interval::up(c * d); }
+double magnitude(const UpwardInterval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
 // The tangency points are counter-clockwise on the circle iff the normals
 // are: P_i = V - rho nu_i, and a translation followed by the scaling by
 // -rho multiplies the orientation of three points by rho^2 > 0.
-bool counterclockwise(const std::array<BoundaryPoint<Interval>, 3>& p) {
-    const Interval orientation =
+bool counterclockwise(const std::array<BoundaryPoint<UpwardInterval>, 3>& p) {
+    const UpwardInterval orientation =
         (p[1].nx - p[0].nx) * (p[2].ny - p[0].ny) - (p[1].ny - p[0].ny) * (p[2].nx - p[0].nx);
     return orientation.positive();
 }
@@ -154,11 +150,11 @@ bool counterclockwise(const std::array<BoundaryPoint<Interval>, 3>& p) {
 // b^2 / a, so that the disk of radius -rho touching E_i at P_i from inside
 // lies in E_i (Blaschke's rolling theorem) and P_i is V's nearest boundary
 // point.
-bool signed_distances(const std::array<Shape<Interval>, 3>& k, const Interval& rho) {
+bool signed_distances(const std::array<Shape<UpwardInterval>, 3>& k, const UpwardInterval& rho) {
     if (rho.positive()) return true;
-    for (const Shape<Interval>& e : k) {
+    for (const Shape<UpwardInterval>& e : k) {
         // min(a, b)^2 / max(a, b) = min(a^2 / b, b^2 / a), bounded below.
-        const Interval curvature_radius(std::fmin((e.a.square() / e.b).lo, (e.b.square() / e.a).lo));
+        const UpwardInterval curvature_radius(Interval::min((e.a.square() / e.b).lo, (e.b.square() / e.a).lo));
         if (!(rho + curvature_radius).positive()) return false;
     }
     return true;
@@ -169,57 +165,67 @@ bool signed_distances(const std::array<Shape<Interval>, 3>& k, const Interval& r
 // Returns K(X), which holds the unique solution in X, once it has also
 // proved that rho is the signed distance to the sites and the
 // counter-clockwise order (on X, which contains K(X)).
-std::optional<std::array<Interval, 6>> krawczyk(const std::array<Shape<Interval>, 3>& k,
-                                                const std::array<bool, 3>& flipped, const Vector6& m,
-                                                const Matrix6& Y, double length_scale) {
-    std::array<Interval, 6> point, F;
-    std::array<BoundaryPoint<Interval>, 3> at;
-    for (int j = 0; j < 6; ++j) point[j] = Interval(m[j]);
-    tritangent_system<Interval>(k, flipped, point, &F, nullptr, at);
-    std::array<Interval, 6> correction;  // Y F(m)
+// All of it runs under the upward rounding mode: every double computed here
+// is rounded up, so sums and products of nonnegative upper bounds (the
+// spread, the box's reach) are upper bounds as they stand. The scope is the
+// first thing done and the last undone, and every input is read through a
+// reference after it (with ELLVOR_UPWARD_ROUNDING_FUNCTION: no double
+// computed in round-to-nearest by the caller is taken for one computed here,
+// nor the reverse).
+ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
+    const std::array<Shape<UpwardInterval>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m,
+    const Matrix6& Y, double length_scale) {
+    const UpwardRoundingScope upward;
+    std::array<UpwardInterval, 6> point, F;
+    std::array<BoundaryPoint<UpwardInterval>, 3> at;
+    for (int j = 0; j < 6; ++j) point[j] = UpwardInterval(m[j]);
+    tritangent_system<UpwardInterval>(k, flipped, point, &F, nullptr, at);
+    std::array<UpwardInterval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
-        Interval sum(0.0);
+        UpwardInterval sum(0.0);
         for (int j = 0; j < 6; ++j) sum = sum + Y(i, j) * F[j];
         if (!sum.finite()) return std::nullopt;
         correction[i] = sum;
         const double unit = i < 3 ? 1.0 : length_scale;
         r[i] = 2 * magnitude(sum) + 1e-15 * (std::fabs(m[i]) + unit);
     }
-    std::array<std::array<Interval, 6>, 6> J;
+    std::array<std::array<UpwardInterval, 6>, 6> J;
     for (int attempt = 0; attempt < 3; ++attempt) {
-        std::array<Interval, 6> X, K;
-        std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding outward widened X beyond m +- r
+        std::array<UpwardInterval, 6> X, K;
+        std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding widened X beyond m +- r
         for (int j = 0; j < 6; ++j) {
-            X[j] = Interval(Interval::down(m[j] - r[j]), Interval::up(m[j] + r[j]));
-            reach_of_box[j] = Interval::up(Interval::max(m[j] - X[j].lo, X[j].hi - m[j]));
+            X[j] = UpwardInterval(-(r[j] - m[j]), m[j] + r[j]);
+            reach_of_box[j] = Interval::max(m[j] - X[j].lo, X[j].hi - m[j]);
         }
-        tritangent_system<Interval>(k, flipped, X, nullptr, &J, at);
+        tritangent_system<UpwardInterval>(k, flipped, X, nullptr, &J, at);
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
             // Row i of I - Y J(X), using where J is zero (column t_c: rows
             // 2c, 2c + 1; V_x and V_y: -1 in the even and odd rows), times
             // X - m, within [-reach_of_box, reach_of_box]: its magnitude times that.
-            std::array<Interval, 6> row;
+            std::array<UpwardInterval, 6> row;
             for (int c = 0; c < 3; ++c) row[c] = Y(i, 2 * c) * J[2 * c][c] + Y(i, 2 * c + 1) * J[2 * c + 1][c];
-            row[3] = Interval(0.0);
+            row[3] = UpwardInterval(0.0);
             for (int j = 0; j < 6; ++j) row[3] = row[3] + Y(i, j) * J[j][3];
-            row[4] = -(Interval(Y(i, 0)) + Interval(Y(i, 2)) + Interval(Y(i, 4)));
-            row[5] = -(Interval(Y(i, 1)) + Interval(Y(i, 3)) + Interval(Y(i, 5)));
+            row[4] = -(UpwardInterval(Y(i, 0)) + UpwardInterval(Y(i, 2)) + UpwardInterval(Y(i, 4)));
+            row[5] = -(UpwardInterval(Y(i, 1)) + UpwardInterval(Y(i, 3)) + UpwardInterval(Y(i, 5)));
             double spread = 0;
             for (int c = 0; c < 6; ++c) {
-                const Interval entry = Interval(i == c ? 1.0 : 0.0) - row[c];
-                spread = add_up(spread, mul_up(magnitude(entry), reach_of_box[c]));
+                const UpwardInterval entry = UpwardInterval(i == c ? 1.0 : 0.0) - row[c];
+                spread = spread + magnitude(entry) * reach_of_box[c];
             }
-            K[i] = Interval(m[i]) - correction[i] + Interval(-spread, spread);
+            K[i] = UpwardInterval(m[i]) - correction[i] + UpwardInterval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
             if (!(K[i].lo > X[i].lo && K[i].hi < X[i].hi)) inside = false;
             reach[i] = Interval::max(std::fabs(K[i].lo - m[i]), std::fabs(K[i].hi - m[i]));
         }
         if (inside) {
             if (!signed_distances(k, K[3]) || !counterclockwise(at)) return std::nullopt;
-            return K;
+            std::array<Interval, 6> box;
+            for (int i = 0; i < 6; ++i) box[i] = K[i].interval();
+            return box;
         }
         for (int i = 0; i < 6; ++i) r[i] = 2 * Interval::max(r[i], reach[i]);
     }
@@ -313,7 +319,7 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
 // by damped_step, and more of them (the retry of a start that did not
 // converge); `diverged` (if given) says whether Newton failed to converge.
 std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<double>, 3>& shape,
-                                                       const std::array<Shape<Interval>, 3>& enclosed,
+                                                       const std::array<Shape<UpwardInterval>, 3>& enclosed,
                                                        std::array<bool, 3> flipped, std::array<double, 6> x,
                                                        double length_scale, bool damped = false,
                                                        bool* diverged = nullptr) {
@@ -369,7 +375,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
                                                                       const Ellipse& e3) {
     const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
     std::array<Shape<double>, 3> shape;
-    std::array<Shape<Interval>, 3> enclosed;
+    std::array<Shape<UpwardInterval>, 3> enclosed;
     double size = 0;
     for (int i = 0; i < 3; ++i) {
         shape[i] = double_shape(*sites[i]);

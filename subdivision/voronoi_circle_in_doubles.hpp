@@ -5,8 +5,9 @@
 // The Krawczyk operator of the tritangent system
 //     F(x) = P_i(t_i) + rho nu_i(t_i) - V = 0,   i = 1, 2, 3,
 //     x = (t_1, t_2, t_3, rho, V_x, V_y)
-// (docs/DESIGN.md §4.1, §4.1a) is evaluated in outward-rounded double intervals
-// (util/interval.hpp) on a small box X around a floating-point solution m:
+// (docs/DESIGN.md §4.1, §4.1a) is evaluated in double intervals computed under
+// the upward rounding mode (util/upward_interval.hpp; returned as Interval) on a
+// small box X around a floating-point solution m:
 //     K(X) = m - Y F(m) + (I - Y J(X)) (X - m),   Y ~ J(m)^-1 in doubles.
 // K(X) inside the interior of X proves exactly one solution in X, and it lies
 // in K(X). With rho > 0 and the tangency points counter-clockwise on the box,
