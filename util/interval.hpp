@@ -1,7 +1,9 @@
 // Closed intervals of doubles with outward rounding, for the fast filters.
-// Each operation is computed in round-to-nearest and then widened by one ulp
+// Each operation is computed in the current rounding mode (round-to-nearest
+// but inside util/upward_interval.hpp's scopes) and then widened by one ulp
 // on each side, which contains the exact result (the rounding error of one
-// IEEE operation is at most half an ulp). A filter built on these intervals
+// IEEE operation is at most half an ulp to nearest, under one ulp in any
+// directed mode). A filter built on these intervals
 // therefore decides only what is provably right, and says "undecided" when an
 // interval straddles zero.
 #pragma once
