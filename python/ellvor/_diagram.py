@@ -220,9 +220,10 @@ class Diagram:
         box tiles the torus); ``boundary_tolerance``: the rings' certified distance to the
         boundaries (default 1e-3 of the median larger semi-axis); ``rings=False`` skips the
         rings (about three quarters of the time; ``rings()`` is then empty). The cells are computed
-        anew from the sites (their vertices are numbered as ``vertices``). Raises InputError
-        with ``ellvor cells``'s message for bad arguments and sites at fault; ValueError
-        after ``remove``."""
+        anew from the sites (their vertices are numbered as ``vertices``). Sites may touch or
+        cross (signed distances), but not so deeply that an edge runs through a site's medial
+        axis. Raises InputError with ``ellvor cells``'s message for bad arguments and sites at
+        fault (such a deep crossing too); ValueError after ``remove``."""
         if len(self.removed):
             raise ValueError("cells: not available after remove(); build the remaining sites")
         return _cells(self.sites, box=box, periodic=periodic, tolerance=tolerance,
