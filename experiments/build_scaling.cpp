@@ -20,8 +20,8 @@
 // excluded); below 0.3 s a build is repeated (median, at most 20 runs).
 // Peak memory, for n >= 1000: one more build of ellipses, of circles and of
 // CGAL's hierarchy, each in a forked child (peak_memory.hpp), before any other
-// work of the program; ellvor's sites are moved into the graph, as `ellvor
-// build` and Python do, and CGAL's copied from its input, as its insert does.
+// work of the program; both graphs copy their sites from the input, so that
+// each counts its own storage of them.
 //
 //   build/experiments/build_scaling                       # default (make bench): n <= 1000, stdout only
 //   build/experiments/build_scaling --full --out experiments/results
@@ -187,8 +187,8 @@ std::map<std::pair<std::string, long>, PeakMemory> measure_peak_memory(const std
             memory[{set == "circles" ? "ellvor-circles" : set, n}] = peak_memory_in_child(
                 [&] { sites = make_sites(set, n); },
                 [&] {
-                    // Moved in, as `ellvor build` and Python do (a copy would be counted as the graph's).
-                    DelaunayGraph g(std::make_unique<EllipseDelaunayTraits>(std::move(sites)));
+                    // A copy: the graph's own storage of its sites counts, as CGAL's copies into its vertices do.
+                    DelaunayGraph g(std::make_unique<EllipseDelaunayTraits>(sites));
                     g.insert_all();
                 });
         }
@@ -501,7 +501,7 @@ int main(int argc, char** argv) {
 
     report.heading("Peak memory");
     report.table(memory_table(rows, ns), std::string(kPeakMemoryMethod) +
-                                             "; ellvor's sites are moved into its graph (as `ellvor build` and Python do) and CGAL's copied into its own, so both count the graph with its sites.");
+                                             "; each graph copies its sites from the input (ellvor's traits, CGAL's vertices), so both count their own storage of the sites.");
 
     report.heading("Graphs and checks");
     report.table(graph_table(rows));
