@@ -125,18 +125,30 @@ Polygon point_voronoi_cell(const std::vector<Point>& centres, std::size_t i, con
 }  // namespace
 
 TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centres", "[cells]") {
-    std::mt19937_64 rng(GENERATE(1));
-    const Rational r(1, 2);
+    // Signed distances |x - c_i| - r: the diagram of equal circles is that of
+    // their centres, apart or crossing (docs/DESIGN.md §9); the edges between
+    // crossing circles pass through both and run where s < 0 (the signed tie).
+    const bool crossing = GENERATE(false, true);
+    std::mt19937_64 rng(crossing ? 7 : 1);
+    const Rational r = crossing ? Rational(3) : Rational(1, 2);
+    const long range = crossing ? 560 : 800;
     std::vector<Ellipse> sites;
     std::vector<Point> centres;
     while (sites.size() < 9) {
-        const Ellipse c = Ellipse::circle(test::random_fraction(rng, -800, 800, 64), test::random_fraction(rng, -800, 800, 64), r);
-        bool apart = true;
-        for (const Ellipse& e : sites) apart = apart && test::bounding_circles_apart(c, e);
-        if (!apart) continue;
+        const Ellipse c = Ellipse::circle(test::random_fraction(rng, -range, range, 64), test::random_fraction(rng, -range, range, 64), r);
+        bool accepted = true;
+        for (const Ellipse& e : sites)
+            accepted = accepted && (crossing ? !(e.xc() == c.xc() && e.yc() == c.yc()) : test::bounding_circles_apart(c, e));
+        if (!accepted) continue;
         sites.push_back(c);
         centres.push_back(c.center());
     }
+    int crossing_pairs = 0;
+    for (std::size_t i = 0; i < sites.size(); ++i)
+        for (std::size_t j = i + 1; j < sites.size(); ++j)
+            crossing_pairs += *relative_position(sites[i], sites[j]) == RelativePosition::intersecting;
+    CHECK((crossing ? crossing_pairs >= 3 : crossing_pairs == 0));
+    // 1e-9: every edge by the double-interval stage; 1e-15: every edge by Arb's integrator.
     const double T = GENERATE(1e-9, 1e-15);
     const std::vector<CellArea> areas = built_areas(sites, T);
     int bounded = 0;
@@ -150,6 +162,7 @@ TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centr
             continue;
         }
         ++bounded;
+        CHECK((T > 1e-12 ? areas[i].edges_by_arb : areas[i].edges_in_doubles) == 0);
         CHECK(contains(areas[i].area, cell.area()));
         CHECK(relative_width(areas[i].area) <= T);
         // The other measures: balls that contain the polygon's, reasonably tight.
@@ -200,6 +213,15 @@ long double adaptive_simpson(const std::function<long double(long double)>& f, l
            adaptive_simpson(f, m, b, fm, frm, fb, right, eps / 2, depth - 1);
 }
 
+// The area of circle i's cell, integral of R(t)^2 / 2 over a turn (Simpson to eps).
+double polar_cell_area(const std::vector<Ellipse>& sites, std::size_t i, long double eps) {
+    auto f = [&](long double t) { const long double R = polar_radius(sites, i, t); return R * R / 2; };
+    const long double a = 0, b = 2 * 3.14159265358979323846264338327950288L;
+    const long double fa = f(a), fm = f((a + b) / 2), fb = f(b);
+    const long double whole = (b - a) / 6 * (fa + 4 * fm + fb);
+    return static_cast<double>(adaptive_simpson(f, a, b, fa, fm, fb, whole, eps, 40));
+}
+
 }  // namespace
 
 TEST_CASE("cell areas: unequal circles against the polar closed form", "[cells]") {
@@ -216,14 +238,10 @@ TEST_CASE("cell areas: unequal circles against the polar closed form", "[cells]"
     int checked = 0;
     for (std::size_t i = 0; i < sites.size(); ++i) {
         if (!areas[i].bounded) continue;
-        auto f = [&](long double t) { const long double R = polar_radius(sites, i, t); return R * R / 2; };
-        const long double a = 0, b = 2 * 3.14159265358979323846264338327950288L;
-        const long double fa = f(a), fm = f((a + b) / 2), fb = f(b);
-        const long double whole = (b - a) / 6 * (fa + 4 * fm + fb);
-        const long double independent = adaptive_simpson(f, a, b, fa, fm, fb, whole, 1e-13L, 40);
-        INFO("site " << i << " certified " << areas[i].area.str(20) << " polar " << static_cast<double>(independent));
+        const double independent = polar_cell_area(sites, i, 1e-13L);
+        INFO("site " << i << " certified " << areas[i].area.str(20) << " polar " << independent);
         // Simpson in long double is not a proof: a margin of 1e-10 relative.
-        CHECK(std::fabs(areas[i].area.mid_double() - static_cast<double>(independent)) <= 1e-10 * std::fabs(static_cast<double>(independent)));
+        CHECK(std::fabs(areas[i].area.mid_double() - independent) <= 1e-10 * std::fabs(independent));
         CHECK(relative_width(areas[i].area) <= 1e-12);
         ++checked;
     }
@@ -285,9 +303,9 @@ TEST_CASE("cell areas: ellipses against a floating-point integration of the norm
             const long double whole = (t1 - t0) / 6 * (fa + 4 * fm + fb);
             independent += adaptive_simpson(f, t0, t1, fa, fm, fb, whole, 1e-11L * std::fabs(whole), 22);
         }
-        INFO("site " << c.site << " certified " << a.area.str(20) << " independent " << static_cast<double>(independent));
+        INFO("site " << c.site << " certified " << a.area.str(20) << " independent " << independent);
         // Doubles and Simpson are not a proof: a margin of 1e-8 relative.
-        CHECK(std::fabs(a.area.mid_double() - static_cast<double>(independent)) <= 1e-8 * static_cast<double>(independent));
+        CHECK(std::fabs(a.area.mid_double() - independent) <= 1e-8 * independent);
         CHECK(relative_width(a.area) <= 1e-9);
         CHECK(a.area.mid_double() > a.site_area.mid_double());
         ++checked;
@@ -326,52 +344,6 @@ TEST_CASE("cell areas: widths at 1e-15 and 1e-30 on small sets", "[cells]") {
     }
 }
 
-TEST_CASE("cell areas: crossing equal circles have the point-Voronoi cells of their centres", "[cells]") {
-    // Signed distances |x - c_i| - r: the diagram of equal circles is that of
-    // their centres, crossing or not (docs/DESIGN.md §9); the edges between
-    // crossing circles pass through both and run where s < 0.
-    std::mt19937_64 rng(7);
-    const Rational r(3);
-    std::vector<Ellipse> sites;
-    std::vector<Point> centres;
-    while (sites.size() < 9) {
-        const Ellipse c = Ellipse::circle(test::random_fraction(rng, -560, 560, 64), test::random_fraction(rng, -560, 560, 64), r);
-        bool distinct = true;
-        for (const Point& q : centres) distinct = distinct && !(q.x == c.xc() && q.y == c.yc());
-        if (!distinct) continue;
-        sites.push_back(c);
-        centres.push_back(c.center());
-    }
-    int crossing_pairs = 0;
-    for (std::size_t i = 0; i < sites.size(); ++i)
-        for (std::size_t j = i + 1; j < sites.size(); ++j)
-            crossing_pairs += *relative_position(sites[i], sites[j]) == RelativePosition::intersecting;
-    REQUIRE(crossing_pairs >= 3);
-    // 1e-9: every edge by the double-interval stage (with the signed tie on
-    // the crossing ones); 1e-15: every edge by Arb's integrator.
-    const double T = GENERATE(1e-9, 1e-15);
-    const std::vector<CellArea> areas = built_areas(sites, T);
-    int bounded = 0;
-    for (std::size_t i = 0; i < sites.size(); ++i) {
-        const Polygon cell = point_voronoi_cell(centres, i, Rational(1000000));
-        INFO("site " << i << " area " << areas[i].area.str(25));
-        REQUIRE(areas[i].visible);
-        REQUIRE(areas[i].bounded == !cell.touches_frame);
-        if (!areas[i].bounded) continue;
-        ++bounded;
-        CHECK((T > 1e-12 ? areas[i].edges_by_arb : areas[i].edges_in_doubles) == 0);
-        CHECK(contains(areas[i].area, cell.area()));
-        CHECK(relative_width(areas[i].area) <= T);
-        CHECK(overlap(areas[i].perimeter, cell.perimeter()));
-        std::array<Rational, 2> centroid;
-        std::array<Rational, 3> central;
-        polygon_shape(cell, centroid, central);
-        for (int k = 0; k < 2; ++k) CHECK(contains(areas[i].centroid[k], centroid[k]));
-        for (int k = 0; k < 3; ++k) CHECK(contains(areas[i].second_moments[k], central[k]));
-    }
-    CHECK(bounded >= 1);
-}
-
 TEST_CASE("cell areas: crossing unequal circles against the polar closed form", "[cells]") {
     // The polar radius of polar_radius() holds for crossing circles too: along
     // a ray from c_i, delta_i grows at rate 1 and delta_j at most so.
@@ -397,13 +369,9 @@ TEST_CASE("cell areas: crossing unequal circles against the polar closed form", 
     int checked = 0;
     for (std::size_t i = 0; i < sites.size(); ++i) {
         if (!areas[i].bounded) continue;
-        auto f = [&](long double t) { const long double R = polar_radius(sites, i, t); return R * R / 2; };
-        const long double a = 0, b = 2 * 3.14159265358979323846264338327950288L;
-        const long double fa = f(a), fm = f((a + b) / 2), fb = f(b);
-        const long double whole = (b - a) / 6 * (fa + 4 * fm + fb);
-        const long double independent = adaptive_simpson(f, a, b, fa, fm, fb, whole, 1e-12L, 40);
-        INFO("site " << i << " certified " << areas[i].area.str(20) << " polar " << static_cast<double>(independent));
-        CHECK(std::fabs(areas[i].area.mid_double() - static_cast<double>(independent)) <= 1e-9 * std::fabs(static_cast<double>(independent)));
+        const double independent = polar_cell_area(sites, i, 1e-12L);
+        INFO("site " << i << " certified " << areas[i].area.str(20) << " polar " << independent);
+        CHECK(std::fabs(areas[i].area.mid_double() - independent) <= 1e-9 * std::fabs(independent));
         ++checked;
     }
     CHECK(checked >= 1);

@@ -26,6 +26,25 @@ bool overlap(const Interval& x, const ComplexBall& z) {
     return x.lo <= r.hi && r.lo <= x.hi;
 }
 
+// The Arb solver's densities at the point theta.
+bool densities_at_200_bits(NormalRayBisector& arb, double theta, NormalRayBisector::Densities& out) {
+    ComplexBall ball;
+    arb_set_d(ball.real(), theta);
+    return arb.densities(ball, 200, out);
+}
+
+// Every measure's interval meets Arb's ball of it.
+void check_overlaps(const MeasureIntervals& d, const NormalRayBisector::Densities& reference) {
+    const ComplexBall* expected[MeasureIntervals::count] = {&reference.area,      &reference.length,
+                                                            &reference.first[0],  &reference.first[1],
+                                                            &reference.second[0], &reference.second[1],
+                                                            &reference.second[2]};
+    for (int j = 0; j < MeasureIntervals::count; ++j) {
+        INFO("measure " << j << " [" << d.m[j].lo << ", " << d.m[j].hi << "]");
+        CHECK(overlap(d.m[j], *expected[j]));
+    }
+}
+
 double relative_width(const Interval& x) { return (x.hi - x.lo) / std::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
 // Two random disjoint ellipses, p near the origin and q at distance 4..12.
@@ -103,22 +122,14 @@ TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bit
         NormalRayInDoubles fast(p, q);
         NormalRayBisector arb(p, q);
         const double theta = facing_angle(p, q) + spread(rng);
-        ComplexBall ball;
-        arb_set_d(ball.real(), theta);
         NormalRayBisector::Densities reference;
-        if (!arb.densities(ball, 200, reference)) continue;
+        if (!densities_at_200_bits(arb, theta, reference)) continue;
         ++compared;
         const std::optional<MeasureIntervals> d = fast.densities(Interval(theta));
         if (!d) continue;
         ++certified;
-        const ComplexBall* expected[MeasureIntervals::count] = {&reference.area,      &reference.length,
-                                                                &reference.first[0],  &reference.first[1],
-                                                                &reference.second[0], &reference.second[1],
-                                                                &reference.second[2]};
-        for (int j = 0; j < MeasureIntervals::count; ++j) {
-            INFO("trial " << trial << " measure " << j << " [" << d->m[j].lo << ", " << d->m[j].hi << "]");
-            CHECK(overlap(d->m[j], *expected[j]));
-        }
+        INFO("trial " << trial);
+        check_overlaps(*d, reference);
         CHECK(relative_width(d->m[MeasureIntervals::area]) < 1e-11);
         CHECK(relative_width(d->m[MeasureIntervals::length]) < 1e-11);
     }
@@ -147,23 +158,15 @@ TEST_CASE("NormalRayInDoubles on crossing sites: the signed tie's densities cont
         NormalRayBisector arb(p, q);
         REQUIRE(arb.sites_meet());
         const double theta = facing_angle(p, q) + spread(rng);
-        ComplexBall ball;
-        arb_set_d(ball.real(), theta);
         NormalRayBisector::Densities reference;
-        if (!arb.densities(ball, 200, reference)) continue;
+        if (!densities_at_200_bits(arb, theta, reference)) continue;
         ++compared;
         (arb_is_negative(acb_realref(reference.area.get())) ? inside : outside) += 1;
         const std::optional<MeasureIntervals> dens = fast.densities(Interval(theta));
         if (!dens) continue;
         ++certified;
-        const ComplexBall* expected[MeasureIntervals::count] = {&reference.area,      &reference.length,
-                                                                &reference.first[0],  &reference.first[1],
-                                                                &reference.second[0], &reference.second[1],
-                                                                &reference.second[2]};
-        for (int j = 0; j < MeasureIntervals::count; ++j) {
-            INFO("trial " << trial << " measure " << j << " [" << dens->m[j].lo << ", " << dens->m[j].hi << "]");
-            CHECK(overlap(dens->m[j], *expected[j]));
-        }
+        INFO("trial " << trial);
+        check_overlaps(*dens, reference);
     }
     CHECK(compared >= 40);
     CHECK(inside >= 5);
