@@ -518,14 +518,26 @@ def test_cells_bad_input_is_refused_on_the_client():
         assert str(tiled.value) == str(single.value), kwargs
 
 
-def test_cells_of_crossing_sites_raise_the_single_error(client):
+def test_cells_of_crossing_circles_in_a_box(client):
+    # Half of the circles cross another (signed distances): the tiles' cells are the single process's.
+    sites = ellvor.generate("circles", 24, seed=6, crossing="1/2")
+    same_cells(sites, client, (2, 2), box=box_around(sites, 40), rings=False)
+
+
+def test_cells_of_a_deep_crossing_raise_the_single_error(client):
+    # A needle whose tip lies deep in a fatter ellipse (their edge runs through the needle's
+    # medial axis), among three circles and far from the other sites: the same InputError.
     sites = ellvor.generate("ellipses", 30, seed=6)
-    crossing = list(sites) + [ellvor.Ellipse.circle(1000, 1000, 1), ellvor.Ellipse.circle(1001, 1000, 1)]
+    deep = [("993/245", "32/75", "9/103", "3609/52", "68"), ("55/41", "349/142", "59/101", "15621/212", "15052/217"),
+            ("1", "1", "0", "60", "60"), ("1", "1", "0", "80", "60"), ("1", "1", "0", "70", "80")]
+    moved = [ellvor.Ellipse(*(Fraction(v) for v in e[:3]), Fraction(e[3]) + 1000, Fraction(e[4]) + 1000) for e in deep]
+    both = list(sites) + moved
     with pytest.raises(ellvor.InputError) as single:
-        ellvor.build(crossing).cells(rings=False)
+        ellvor.build(both).cells(rings=False)
     with pytest.raises(ellvor.InputError) as tiled:
-        ed.cells(crossing, tiles=(2, 2), client=client, rings=False)
-    assert tiled.value.sites == single.value.sites and str(tiled.value) == str(single.value)
+        ed.cells(both, tiles=(2, 2), client=client, rings=False)
+    assert "cross so deeply" in str(single.value)
+    assert tiled.value.sites == single.value.sites == (30, 31) and str(tiled.value) == str(single.value)
 
 
 def test_map_computes_cells_of_each_file(client, tmp_path, write_sites):
