@@ -6,10 +6,12 @@
 #include "experiments/run_environment.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -218,9 +220,15 @@ private:
     std::ostringstream body_;
 };
 
-// Writes DIR/NAME with `text`, and says so on stderr.
+// Writes DIR/NAME with `text` (making DIR if needed), and says so on stderr;
+// throws std::runtime_error when it cannot (a missing directory used to pass
+// silently, the results lost).
 inline void write_result(const std::string& dir, const std::string& name, const std::string& text) {
-    std::ofstream(dir + "/" + name) << text;
+    std::filesystem::create_directories(dir);
+    std::ofstream out(dir + "/" + name);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + dir + "/" + name);
     std::cerr << "[" << name << "] written to " << dir << "/" << name << "\n";
 }
 
