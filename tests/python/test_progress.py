@@ -13,8 +13,9 @@ import ellvor
 
 @pytest.fixture(scope="module")
 def big():
-    # About a second's build: long enough to be interrupted.
-    return ellvor.generate("ellipses", count=10000, seed=3)
+    # About a second's build (50000 ellipses since the double certificate runs under
+    # the upward rounding mode; 10^4 took 0.2 s): long enough to be interrupted.
+    return ellvor.generate("ellipses", count=50000, seed=3)
 
 
 @pytest.fixture
