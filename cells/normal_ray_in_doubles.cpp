@@ -137,7 +137,7 @@ struct System {
     template <class S>
     System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s, bool meet) {
         const Differences<T> d(bp, bq, s);
-        d.residual(bp, bq, s, false, F);
+        d.residual(bp, bq, s, meet, F);
         const T &dx = d.dx, &dy = d.dy, &ex = d.ex, &ey = d.ey, &e_n = d.e_n;
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
         J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
@@ -148,7 +148,6 @@ struct System {
         F_theta[1] = 2.0 * dot(ex, ey, wx, wy);
         if (!meet) return;
         const T np = root_of(bp.n2), nq = root_of(bq.n2), nn = np * nq;
-        F[1] = dot(dx, dy, bq.nx, bq.ny) - s * nn;
         J[1][0] = dot(bp.nx, bp.ny, bq.nx, bq.ny) - nn;
         J[1][1] = dot(dx, dy, bq.dnx, bq.dny) - s * np * dot(bq.nx, bq.ny, bq.dnx, bq.dny) / nq;
         F_theta[1] = dot(wx, wy, bq.nx, bq.ny) - s * nq * dot(bp.nx, bp.ny, bp.dnx, bp.dny) / np;
