@@ -13,9 +13,14 @@ constexpr int kMeasures = MeasureIntervals::count;
 // best on random and packed cells (callgrind, 30 sites each: 2.25 and 2.5
 // within 1.5%, 3 7% worse, 4 20%).
 constexpr double kRho = 2;
-// Halvings of the edge, and pieces in all, before the caller takes over.
+// Halvings of the edge, and pieces tried in all, before the caller takes
+// over. An edge that passes near a site's medial axis (a circle nearly inside
+// the one it crosses: a hairpin about its centre) certifies only on pieces
+// about as wide as that distance: some 9000 tries at 1/200 of the radius
+// (test_cell_area.cpp). Arb's integrator needs pieces as small at ten times
+// the cost a node, so the budget is generous.
 constexpr int kMaxDepth = 40;
-constexpr int kMaxPieces = 4096;
+constexpr int kMaxPieces = 1 << 18;
 
 // Upper bounds of |density j| over the complex box of the Bernstein ellipse
 // of [a, b]; nothing when the certificate fails there.

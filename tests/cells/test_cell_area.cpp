@@ -377,6 +377,37 @@ TEST_CASE("cell areas: crossing unequal circles against the polar closed form", 
     CHECK(checked >= 1);
 }
 
+TEST_CASE("cell areas: a circle nearly inside the circle it crosses, in doubles, against the polar closed form",
+          "[cells]") {
+    // Circle 0 (radius 1/5) crosses circle 1 (radius 3/5) with its centre
+    // inside it, (g / 2) r0 from their edge: the edge is a hairpin around
+    // c0, within g / 2 of circle 0's medial axis (its centre), seen from
+    // either site. The certified pieces shrink with g; at g = 1/100 the double
+    // stage needs about 9000 of them on the hairpin edge (it used to give up
+    // at 4096 and leave the edge to Arb's integrator, minutes a cell). Eight
+    // circles around make both cells bounded.
+    const Rational g(1, 100), r0(1, 5), r1(3, 5);
+    std::vector<Ellipse> sites = {Ellipse::circle(Rational(0), Rational(0), r0),
+                                  Ellipse::circle(r1 - r0 + g * r0, Rational(0), r1)};
+    for (int k = 0; k < 8; ++k) {
+        const double angle = k * 0.785398163397448;
+        sites.push_back(Ellipse::circle(Rational(static_cast<long>(std::lround(4000 * std::cos(angle))), 1000),
+                                        Rational(static_cast<long>(std::lround(4000 * std::sin(angle))), 1000),
+                                        Rational(1, 2)));
+    }
+    REQUIRE(*relative_position(sites[0], sites[1]) == RelativePosition::intersecting);
+    const std::vector<CellArea> areas = built_areas(sites, 1e-9);
+    for (std::size_t i : {0, 1}) {
+        REQUIRE(areas[i].bounded);
+        const double independent = polar_cell_area(sites, i, 1e-12L);
+        INFO("site " << i << " certified " << areas[i].area.str(20) << " polar " << independent);
+        CHECK(std::fabs(areas[i].area.mid_double() - independent) <= 1e-9 * std::fabs(independent));
+        CHECK(relative_width(areas[i].area) <= 1e-9);
+        CHECK(areas[i].edges_by_arb == 0);
+        CHECK(areas[i].quadrature.pieces > 1000);
+    }
+}
+
 TEST_CASE("cell areas: a crossing through a medial axis is refused; bad tolerances are input errors", "[cells]") {
     // A needle (aspect 9.5) whose tip lies deep in a fatter ellipse: their
     // edge runs through the needle's axis, which the normal lines cannot follow.
