@@ -65,7 +65,9 @@ constexpr int kMeasurePairs = 4;
 // each ball are kept for the next pair, found by the ball's midpoint and radii
 // rounded to doubles and the precision, and used only for the very ball they
 // were computed on (acb_equal): a rounded key can cost a recomputation, never
-// a wrong value.
+// a wrong value. At most kMaxEntries balls are kept (an edge Arb struggles on
+// evaluates millions: unbounded, the cache took gigabytes); the others are
+// computed in a scratch slot.
 class DensityCache {
 public:
     using Densities = std::optional<NormalRayBisector::Densities>;
@@ -75,20 +77,30 @@ public:
                                            arf_get_d(arb_midref(acb_imagref(z)), ARF_RND_NEAR),
                                            mag_get_d(arb_radref(acb_realref(z))),
                                            mag_get_d(arb_radref(acb_imagref(z))), static_cast<double>(prec)};
-        auto [it, fresh] = entries_.try_emplace(key);
+        auto it = entries_.find(key);
+        if (it == entries_.end()) {
+            if (entries_.size() >= kMaxEntries) {
+                scratch_.reset();
+                return {&scratch_, true};
+            }
+            it = entries_.try_emplace(key).first;
+        } else if (acb_equal(it->second.ball.get(), z)) {
+            return {&it->second.densities, false};
+        }
         Entry& e = it->second;
-        if (!fresh && acb_equal(e.ball.get(), z)) return {&e.densities, false};
         acb_set(e.ball.get(), z);
         e.densities.reset();
         return {&e.densities, true};
     }
 
 private:
+    static constexpr std::size_t kMaxEntries = 1 << 15;  // some 30 MB at 128 bits
     struct Entry {
         ComplexBall ball;
         Densities densities;
     };
     std::map<std::array<double, 5>, Entry> entries_;
+    Densities scratch_;
 };
 
 // f + i g of the pair from the densities (scaled as above).
