@@ -353,3 +353,77 @@ TEST_CASE("doubles: the 3e5-radius hull circle of 10^6 random ellipses certifies
     CHECK(yes.stage == Stage::filter);
     CHECK(!circle.has_solver());
 }
+
+TEST_CASE("doubles: a circle 10^6 sizes across stalls Newton; the Arb solver starts from that root",
+          "[subdivision][voronoi_circle_in_doubles][packing]") {
+    // Triples of a dense packing (`ellvor generate packing --count 2000
+    // --packing-fraction 0.58 --gap 1e-6 --seed 1`, and --count 10000 --gap
+    // 1e-3) whose circles are 4e5 and 3.6e6 across, sites of size 0.3-1:
+    // Newton in doubles reaches the circle only to the rounding noise and the
+    // double Krawczyk test fails. The stalled root is handed to the Arb
+    // solver (StalledDoubleRoot, VoronoiCircleSolver::certify_near), which
+    // otherwise started from its guesses: 25 ms each, 16% of the 2000-site
+    // packing's build.
+    auto site = [](const char* a, const char* b, const char* w, const char* x, const char* y) {
+        auto q = [](const char* s) {
+            Rational r;
+            REQUIRE(fmpq_set_str(r.get(), s, 10) == 0);
+            return r;
+        };
+        return Ellipse(q(a), q(b), q(w), q(x), q(y));
+    };
+    const std::vector<std::array<Ellipse, 3>> triples = {
+        {site("70523124705/68719476736", "4576155/16777216", "294677/524288", "11838897136595/274877906944",
+              "48342688393311/1099511627776"),
+         site("5173268627/17179869184", "1769849/8388608", "-776747/1048576", "13290563396493/549755813888",
+              "49106507242867/1099511627776"),
+         site("9806144377/34359738368", "2538479/16777216", "993501/1048576", "28833610019487/1099511627776",
+              "49104800787277/1099511627776")},
+        {site("7472763529/8589934592", "3346513/8388608", "-385727/1048576", "54420054025767/549755813888",
+              "3143751011919/549755813888"),
+         site("29268844825/68719476736", "5979335/16777216", "-176531/1048576", "27360451358863/274877906944",
+              "88275168053915/1099511627776"),
+         site("8005599115/8589934592", "1197905/2097152", "271633/1048576", "108916004910591/1099511627776",
+              "76154578344281/1099511627776")}};
+    auto text = [](const Ellipse& e) {
+        return e.a().str() + " " + e.b().str() + " " + e.w().str() + " " + e.xc().str() + " " + e.yc().str() + "\n";
+    };
+    for (const auto& [e1, e2, e3] : triples) {
+        INFO(text(e1) << text(e2) << text(e3));
+        std::optional<StalledDoubleRoot> stalled;
+        REQUIRE(!certify_voronoi_circle_in_doubles(e1, e2, e3, &stalled));
+        REQUIRE(stalled.has_value());
+        // The stalled root is the counter-clockwise circle, to 1e-5 of its
+        // radius (Arb's, certified from its own starts).
+        VoronoiCircleSolver fresh(e1, e2, e3);
+        REQUIRE(fresh.certify());
+        const VoronoiCircleEnclosure& c = fresh.enclosure();
+        const double radius = enclose(c.radius).mid();
+        CHECK(radius > 4e5);
+        CHECK(std::fabs(stalled->x[3] - radius) < 1e-5 * radius);
+        CHECK(std::fabs(stalled->x[4] - enclose(c.center_x).mid()) < 1e-5 * radius);
+        CHECK(std::fabs(stalled->x[5] - enclose(c.center_y).mid()) < 1e-5 * radius);
+        for (int i = 0; i < 3; ++i) CHECK(stalled->flipped[i] == c.flipped[i]);
+        // VoronoiCircle: no double certificate, and its solver is certified
+        // as it is made (from the stalled root; without one it is made bare).
+        VoronoiCircle circle(e1, e2, e3);
+        CHECK(circle.in_doubles() == nullptr);
+        CHECK(circle.solver().certified());
+        const VoronoiCircleEnclosure& near = circle.solver().enclosure();
+        CHECK(arb_overlaps(near.radius.get(), c.radius.get()));
+        CHECK(arb_overlaps(near.center_x.get(), c.center_x.get()));
+        CHECK(arb_overlaps(near.center_y.get(), c.center_y.get()));
+        // Reversed, the second triple has only this circle, clockwise: the
+        // doubles offer no stalled root (the orientation in doubles rejects
+        // it) and the solver proves that there is no counter-clockwise circle.
+        if (&e1 == &triples[1][0]) {
+            std::optional<StalledDoubleRoot> none;
+            CHECK(!certify_voronoi_circle_in_doubles(e1, e3, e2, &none));
+            CHECK(!none.has_value());
+            VoronoiCircle reversed(e1, e3, e2);
+            CHECK(reversed.in_doubles() == nullptr);
+            CHECK(!reversed.solver().certified());
+            CHECK(!reversed.solver().certify());
+        }
+    }
+}
