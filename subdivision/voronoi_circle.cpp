@@ -29,6 +29,10 @@ VoronoiCircleSolver& VoronoiCircle::solver() {
             solver_->certify_near(doubles_.flipped, {doubles_.parameter[0].mid(), doubles_.parameter[1].mid(),
                                                      doubles_.parameter[2].mid(), doubles_.radius.mid(),
                                                      doubles_.center_x.mid(), doubles_.center_y.mid()});
+        // No root at all in doubles: mostly a circle beyond their reach (sites
+        // in a row along a packing's wall), which the tangent lines start in
+        // a millisecond and the guesses, tried first by certify(), in tens.
+        if (doubles_tried_ == Tried::failed) solver_->certify_from_tangent_lines();
     }
     return *solver_;
 }

@@ -30,7 +30,9 @@ public:
     // The Arb solver, made on first use; when the doubles certified the
     // circle, already certified from their box (VoronoiCircleSolver::certify_near),
     // and when they only reached a root stalled at the rounding noise (a huge
-    // circle, StalledDoubleRoot), first tried from it.
+    // circle, StalledDoubleRoot), first tried from it; when they reached no
+    // root, first tried from the tangent lines of a huge circle
+    // (VoronoiCircleSolver::certify_from_tangent_lines).
     VoronoiCircleSolver& solver();
     bool has_solver() const { return solver_ != nullptr; }
     // VoronoiCircleSolver::release_charts, if there is a solver.

@@ -427,3 +427,48 @@ TEST_CASE("doubles: a circle 10^6 sizes across stalls Newton; the Arb solver sta
         }
     }
 }
+
+TEST_CASE("doubles: no root at all for a circle 10^11 sizes across; the Arb solver starts from the tangent lines",
+          "[subdivision][voronoi_circle_in_doubles][packing]") {
+    // Sites in a row along the wall of a dense packing (`ellvor generate
+    // packing --count 100000 --packing-fraction 0.58 --gap 1e-3 --seed 1`):
+    // their circle's radius is 1.3e11 (sizes 0.3-1), beyond doubles even as a
+    // stalled root. VoronoiCircle then tries the tangent-line starts before
+    // the guesses (a fresh solver's certify() spends 44 ms in its guesses;
+    // the tangent lines certify in 1 ms).
+    auto q = [](const char* s) {
+        Rational r;
+        REQUIRE(fmpq_set_str(r.get(), s, 10) == 0);
+        return r;
+    };
+    const Ellipse e1(q("10299703085/17179869184"), q("3944735/8388608"), q("-63669/524288"), q("347893310261643/1099511627776"), q("46545901366373/549755813888")), e2(q("40384073077/68719476736"), q("5449207/16777216"), q("45135/524288"), q("86976407168995/274877906944"), q("157910089549185/549755813888")),
+        e3(q("9062355577/17179869184"), q("2649037/16777216"), q("61385/1048576"), q("21748050055377/68719476736"), q("117504476416055/549755813888"));
+    std::optional<StalledDoubleRoot> stalled;
+    REQUIRE(!certify_voronoi_circle_in_doubles(e1, e2, e3, &stalled));
+    CHECK(!stalled.has_value());
+    VoronoiCircle circle(e1, e2, e3);
+    CHECK(circle.in_doubles() == nullptr);
+    REQUIRE(circle.solver().certified());
+    const VoronoiCircleEnclosure& near = circle.solver().enclosure();
+    CHECK(near.found_by == CircleStart::tangent_line);
+    VoronoiCircleSolver fresh(e1, e2, e3);
+    REQUIRE(fresh.certify());
+    const VoronoiCircleEnclosure& c = fresh.enclosure();
+    CHECK(enclose(c.radius).lo > 1e11);
+    CHECK(arb_overlaps(near.radius.get(), c.radius.get()));
+    CHECK(arb_overlaps(near.center_x.get(), c.center_x.get()));
+    CHECK(arb_overlaps(near.center_y.get(), c.center_y.get()));
+    for (int i = 0; i < 3; ++i) CHECK(arb_overlaps(near.parameter[i].get(), c.parameter[i].get()));
+    // Reversed, (E1, E3, E2) has its own counter-clockwise circle (the
+    // triple has both): what the tangent lines certify is the complete
+    // solver's circle there too.
+    VoronoiCircleSolver reversed(e1, e3, e2), reversed_fresh(e1, e3, e2);
+    const bool by_lines = reversed.certify_from_tangent_lines();
+    CHECK(by_lines == reversed.certified());
+    REQUIRE(reversed_fresh.certify());
+    if (by_lines) {
+        CHECK(arb_overlaps(reversed.enclosure().radius.get(), reversed_fresh.enclosure().radius.get()));
+        CHECK(arb_overlaps(reversed.enclosure().center_x.get(), reversed_fresh.enclosure().center_x.get()));
+        CHECK(!arb_overlaps(reversed.enclosure().radius.get(), c.radius.get()));
+    }
+}
