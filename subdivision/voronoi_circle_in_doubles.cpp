@@ -318,6 +318,19 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
 // parameter in the chart where it is at most 1 in magnitude. `damped`: steps
 // by damped_step, and more of them (the retry of a start that did not
 // converge); `diverged` (if given) says whether Newton failed to converge.
+// A root Newton reached only to the rounding noise becomes the Arb solver's
+// start if it looks like the counter-clockwise circle in doubles: rho > 0
+// and the normals (p: at Newton's last point, a stalled step before x)
+// counter-clockwise; the system's other roots would cost Arb a failed
+// attempt. Out of line: rare, and kept out of Newton's code.
+[[gnu::noinline]] void offer_stalled_root(const std::array<BoundaryPoint<double>, 3>& p,
+                                          const std::array<bool, 3>& flipped, const std::array<double, 6>& x,
+                                          std::optional<StalledDoubleRoot>& stalled) {
+    if (!(x[3] > 0)) return;
+    const double orientation = (p[1].nx - p[0].nx) * (p[2].ny - p[0].ny) - (p[1].ny - p[0].ny) * (p[2].nx - p[0].nx);
+    if (orientation > 0) stalled = StalledDoubleRoot{flipped, x};
+}
+
 std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<double>, 3>& shape,
                                                        const std::array<Shape<UpwardInterval>, 3>& enclosed,
                                                        std::array<bool, 3> flipped, std::array<double, 6> x,
@@ -363,17 +376,8 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     const std::optional<std::array<Interval, 6>> box =
         krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
     if (!box) {
-        // Stalled at the rounding noise: a start for Arb (the first one met
-        // that looks like the counter-clockwise circle in doubles, rho > 0 and
-        // the normals counter-clockwise; the system's other roots would cost
-        // Arb a failed attempt).
-        if (stalled && !*stalled && previous > kConverged && x[3] > 0) {
-            std::array<BoundaryPoint<double>, 3> p;
-            for (int i = 0; i < 3; ++i) p[i] = boundary_at(shape[i], flipped[i], x[i], Parts::point);
-            const double orientation =
-                (p[1].nx - p[0].nx) * (p[2].ny - p[0].ny) - (p[1].ny - p[0].ny) * (p[2].nx - p[0].nx);
-            if (orientation > 0) *stalled = StalledDoubleRoot{flipped, x};
-        }
+        // Stalled at the rounding noise: a start for Arb (the first one met).
+        if (stalled && !*stalled && previous > kConverged) offer_stalled_root(at, flipped, x, *stalled);
         return std::nullopt;
     }
     DoubleVoronoiCircle circle;
