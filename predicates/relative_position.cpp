@@ -1,6 +1,7 @@
 #include "predicates/relative_position.hpp"
 
 #include "exact/real_roots.hpp"
+#include "predicates/distance_filter.hpp"
 #include "sites/ellipse_polynomials.hpp"
 #include "sites/meeting_pair_candidates.hpp"
 #include "sites/separating_slab.hpp"
@@ -128,6 +129,11 @@ bool circle_not_inside_in_doubles(const Ellipse& p, const Ellipse& q) {
     // A lower bound of |dx| (and of |dy|) is one of |C_p - C_q|.
     auto least = [](const Interval& d) { return d.lo > 0 ? d.lo : d.hi < 0 ? -d.hi : 0.0; };
     return std::fmax(least(dx), least(dy)) > room.hi;
+}
+
+bool centers_outside_each_other_in_doubles(const Ellipse& p, const Ellipse& q) {
+    const Ellipse::Enclosure &kp = p.enclosure(), &kq = q.enclosure();
+    return filtered_side(to_local(q, kp.xc, kp.yc)) > 0 && filtered_side(to_local(p, kq.xc, kq.yc)) > 0;
 }
 
 Decision<RelativePosition> relative_position(const Ellipse& e1, const Ellipse& e2) {

@@ -42,6 +42,15 @@ bool bounding_circles_apart_in_doubles(const Ellipse& e1, const Ellipse& e2);
 // smaller site hides a neighbour: this settles it in a few operations.
 bool circle_not_inside_in_doubles(const Ellipse& p, const Ellipse& q);
 
+// Neither site inside the other, nor the same point set: each center lies
+// certainly outside the other site (the sign of its conic at the center, in
+// outward-rounded doubles; a convex site inside another has its center
+// there). False when the doubles cannot tell. It does not tell separated from
+// crossing: none_inside_another (voronoi_circle_count.hpp) needs no more, and
+// decides close sites side by side (dense packings) with it instead of
+// relative_position's separating slab.
+bool centers_outside_each_other_in_doubles(const Ellipse& p, const Ellipse& q);
+
 // How many distinct points the boundaries of two different sites share (0
 // to 4), exactly: the real roots of the intersection quartic, t = infinity
 // included.

@@ -4,14 +4,26 @@
 
 namespace ellvor {
 
-SupportDouble support_double(const Ellipse::Enclosure& k, double c, double s) {
+namespace {
+
+// A support function and its derivative in phi at n = (c, s) = (cos phi, sin
+// phi), in doubles.
+struct SupportDouble {
+    double value, slope;
+};
+
+// About the center, from the mid-points of the site's enclosure: rho(n) =
+// h(n) - n.C, and its derivative (S - C).(-s, c), S the support point.
+SupportDouble radial_support_double(const Ellipse::Enclosure& k, double c, double s) {
     const double cw = k.cos.mid(), sw = k.sin.mid(), a2 = k.a.mid() * k.a.mid(), b2 = k.b.mid() * k.b.mid();
     const double nu = c * cw + s * sw, nv = s * cw - c * sw;
     const double norm = std::sqrt(a2 * nu * nu + b2 * nv * nv);
     const double lu = a2 * nu / norm, lv = b2 * nv / norm;
-    const double x = k.xc.mid() + cw * lu - sw * lv, y = k.yc.mid() + sw * lu + cw * lv;
-    return {c * k.xc.mid() + s * k.yc.mid() + norm, -x * s + y * c};
+    const double x = cw * lu - sw * lv, y = sw * lu + cw * lv;
+    return {norm, -x * s + y * c};
 }
+
+}  // namespace
 
 SupportEnclosure support_enclosure(const Ellipse::Enclosure& k, Interval nx, Interval ny) {
     const Interval nu = nx * k.cos + ny * k.sin, nv = ny * k.cos - nx * k.sin;
@@ -33,8 +45,41 @@ namespace {
 
 bool finite(const Ellipse::Enclosure& k) { return k.a.finite() && k.b.finite() && k.xc.finite() && k.yc.finite(); }
 
+// C1 - C2 enclosed: h1(n) - h2(n) = n.(C1 - C2) + rho1(n) - rho2(n), rho the
+// support function about the center. Differencing the centers first keeps
+// their magnitude (a packing's coordinates reach 100 for sites of size 1)
+// out of the rounding: the value of h1 - h2 near a common tangent, and so
+// the Newton steps and the proven signs, are as accurate as the sites' sizes
+// allow, not their position.
+struct CenterOffset {
+    Interval x, y;
+};
+
+// p - q for coordinates p, q and their enclosures kp, kq. Exact doubles (a
+// packing's centers are, on the grid 2^-40) are read back from their
+// enclosures (x = up(lo): util/interval.hpp's enclose) and only the
+// difference is rounded; else the enclosures' widths, an ulp of the
+// coordinates each, add up (at coordinates near 300 they exceed h1 - h2 over
+// certify's first interval).
+Interval coordinate_difference(const Rational& p, const Interval& kp, const Rational& q, const Interval& kq) {
+    if (p.is_small_dyadic() && q.is_small_dyadic())
+        return Interval(Interval::up(kp.lo)) - Interval(Interval::up(kq.lo));
+    return kp - kq;
+}
+
+Interval radial_support(const Ellipse::Enclosure& k, Interval nx, Interval ny) {
+    const Interval nu = nx * k.cos + ny * k.sin, nv = ny * k.cos - nx * k.sin;
+    return (k.a.square() * nu.square() + k.b.square() * nv.square()).sqrt();
+}
+
+Interval support_difference(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2, const CenterOffset& offset,
+                            Interval nx, Interval ny) {
+    return nx * offset.x + ny * offset.y + (radial_support(k1, nx, ny) - radial_support(k2, nx, ny));
+}
+
 // A proven sign change of h1 - h2 over a tiny interval of directions around phi.
-std::optional<BitangentNormal> certify(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2, double phi) {
+std::optional<BitangentNormal> certify(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2,
+                                       const CenterOffset& offset, double phi) {
     NormalInterval n;
     if (std::cos(phi) < 0) {
         phi = phi > 0 ? phi - M_PI : phi + M_PI;
@@ -45,8 +90,7 @@ std::optional<BitangentNormal> certify(const Ellipse::Enclosure& k1, const Ellip
         if (!(n.tau_lo < n.tau_hi)) continue;
         auto difference = [&](double tau) {
             NormalInterval at{n.sign, tau, tau};
-            const Interval nx = at.nx(), ny = at.ny();
-            return support_value(k1, nx, ny) - support_value(k2, nx, ny);
+            return support_difference(k1, k2, offset, at.nx(), at.ny());
         };
         const Interval lo = difference(n.tau_lo), hi = difference(n.tau_hi);
         if (lo.negative() && hi.positive()) return BitangentNormal{n, true};
@@ -61,37 +105,44 @@ namespace {
 
 // The proven tangents, stopping at the one `wanted` (arrival or not) if given.
 std::vector<BitangentNormal> find_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2,
-                                                    std::optional<bool> wanted) {
+                                                    const CenterOffset& offset, std::optional<bool> wanted) {
     std::vector<BitangentNormal> out;
-    if (!finite(k1) || !finite(k2)) return out;
+    if (!finite(k1) || !finite(k2) || !offset.x.finite() || !offset.y.finite()) return out;
     auto done = [&] { return out.size() == 2 || (wanted && !out.empty() && out.back().arrival == *wanted); };
+    // h1 - h2 and its derivative in phi, about the centers (CenterOffset).
+    const double ox = offset.x.mid(), oy = offset.y.mid();
     auto f = [&](double phi) {
         const double c = std::cos(phi), s = std::sin(phi);
-        const SupportDouble h1 = support_double(k1, c, s), h2 = support_double(k2, c, s);
-        return SupportDouble{h1.value - h2.value, h1.slope - h2.slope};
+        const SupportDouble h1 = radial_support_double(k1, c, s), h2 = radial_support_double(k2, c, s);
+        return SupportDouble{c * ox + s * oy + (h1.value - h2.value), -s * ox + c * oy + (h1.slope - h2.slope)};
     };
     // Newton refinement of a root of h1 - h2 inside [lo, hi] (bisection when a
     // step leaves the bracket; plain Newton when there is none).
     auto refine = [&](double x, double lo, double hi, bool bracketed, bool rising) {
+        // Stops at a step of 1e-15 or, below 1e-13 (certify's first width),
+        // at one no smaller than the last: rounding, no more convergence.
+        double last_step = INFINITY;
         for (int it = 0; it < 40; ++it) {
             const SupportDouble v = f(x);
             if (bracketed) ((v.value < 0) == rising ? lo : hi) = x;
             double next = x - v.value / v.slope;
             if (bracketed && !(next > lo && next < hi)) next = 0.5 * (lo + hi);
             if (!std::isfinite(next)) return x;
-            if (std::fabs(next - x) <= 1e-15 * (1 + std::fabs(x))) return next;
+            const double step = std::fabs(next - x);
+            if (step <= 1e-15 * (1 + std::fabs(x)) || (step < 1e-13 && step >= last_step)) return next;
+            last_step = step;
             x = next;
         }
         return x;
     };
     auto add = [&](double phi) {
-        if (const auto b = certify(k1, k2, phi))
+        if (const auto b = certify(k1, k2, offset, phi))
             if (out.empty() || out[0].arrival != b->arrival) out.push_back(*b);
     };
     // First guesses: the common tangents of the circles with the sites'
     // centers and mean radii, n.(C2 - C1) = r1 - r2, in closed form (side +1:
     // where the hull arrives on E1).
-    const double dx = k2.xc.mid() - k1.xc.mid(), dy = k2.yc.mid() - k1.yc.mid(), length = std::hypot(dx, dy);
+    const double dx = -ox, dy = -oy, length = std::hypot(dx, dy);
     const double r1 = 0.5 * (k1.a.mid() + k1.b.mid()), r2 = 0.5 * (k2.a.mid() + k2.b.mid());
     const double c = (r1 - r2) / length;
     if (length > 0 && std::fabs(c) < 1) {
@@ -154,11 +205,14 @@ bool ArrivalNormalBox::contract() {
 }
 
 std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
-    return find_bitangent_normals(k1, k2, std::nullopt);
+    return find_bitangent_normals(k1, k2, CenterOffset{k1.xc - k2.xc, k1.yc - k2.yc}, std::nullopt);
 }
 
 std::optional<NormalInterval> certified_bitangent_normal(const Ellipse& e1, const Ellipse& e2, bool arrival) {
-    for (const BitangentNormal& b : find_bitangent_normals(e1.enclosure(), e2.enclosure(), arrival))
+    const Ellipse::Enclosure &k1 = e1.enclosure(), &k2 = e2.enclosure();
+    const CenterOffset offset{coordinate_difference(e1.xc(), k1.xc, e2.xc(), k2.xc),
+                              coordinate_difference(e1.yc(), k1.yc, e2.yc(), k2.yc)};
+    for (const BitangentNormal& b : find_bitangent_normals(k1, k2, offset, arrival))
         if (b.arrival == arrival) return b.normal;
     return std::nullopt;
 }

@@ -20,13 +20,6 @@
 
 namespace ellvor {
 
-// h and dh/dphi at n = (c, s) = (cos phi, sin phi), in doubles (mid-points of
-// the site's enclosure): the derivative is S . (-s, c), S the support point.
-struct SupportDouble {
-    double value, slope;
-};
-SupportDouble support_double(const Ellipse::Enclosure& k, double c, double s);
-
 // h(n) and the support point, enclosed, for an enclosed direction n.
 struct SupportEnclosure {
     Interval value, x, y;

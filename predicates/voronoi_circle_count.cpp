@@ -19,6 +19,10 @@ namespace ellvor {
 Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     Decision<bool> separated = Decision<bool>::decided(true, Stage::filter);
     for (auto [p, q] : {std::pair{&e1, &e2}, {&e2, &e3}, {&e3, &e1}}) {
+        // Apart, or each center outside the other site (close sites side by
+        // side, as in dense packings): neither inside the other, without
+        // relative_position's separating slab.
+        if (bounding_circles_apart_in_doubles(*p, *q) || centers_outside_each_other_in_doubles(*p, *q)) continue;
         const Decision<RelativePosition> r = relative_position(*p, *q);
         separated.depends_on(r);
         if (*r != RelativePosition::separated && *r != RelativePosition::externally_tangent &&
@@ -55,13 +59,22 @@ bool has_point_outside_both(const Ellipse& x, const Ellipse& y, const Ellipse& z
 std::vector<std::array<const Ellipse*, 3>> sites_maybe_covered(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     std::vector<std::array<const Ellipse*, 3>> covered;
     if (e1.is_circle() && e2.is_circle() && e3.is_circle()) return covered;
-    auto crossing = [](const Ellipse& a, const Ellipse& b) {
-        return *relative_position(a, b) == RelativePosition::intersecting;
+    // Cheapest first: sites apart (the bounding circles), then a point
+    // outside the other two (clears close sites side by side, dense
+    // packings), then the relative positions, each pair's asked once.
+    std::optional<bool> crossing[3];  // of (e1, e2), (e2, e3), (e3, e1)
+    auto crosses = [&](int pair, const Ellipse& a, const Ellipse& b) {
+        if (!crossing[pair]) crossing[pair] = *relative_position(a, b) == RelativePosition::intersecting;
+        return *crossing[pair];
     };
-    const bool c12 = crossing(e1, e2), c23 = crossing(e2, e3), c31 = crossing(e3, e1);
-    if (c12 && c31 && !has_point_outside_both(e1, e2, e3)) covered.push_back({&e1, &e2, &e3});
-    if (c12 && c23 && !has_point_outside_both(e2, e3, e1)) covered.push_back({&e2, &e3, &e1});
-    if (c23 && c31 && !has_point_outside_both(e3, e1, e2)) covered.push_back({&e3, &e1, &e2});
+    const bool near[3] = {!bounding_circles_apart_in_doubles(e1, e2), !bounding_circles_apart_in_doubles(e2, e3),
+                          !bounding_circles_apart_in_doubles(e3, e1)};
+    auto maybe_covered = [&](const Ellipse& x, const Ellipse& y, const Ellipse& z, int xy, int zx) {
+        return near[xy] && near[zx] && !has_point_outside_both(x, y, z) && crosses(xy, x, y) && crosses(zx, z, x);
+    };
+    if (maybe_covered(e1, e2, e3, 0, 2)) covered.push_back({&e1, &e2, &e3});
+    if (maybe_covered(e2, e3, e1, 1, 0)) covered.push_back({&e2, &e3, &e1});
+    if (maybe_covered(e3, e1, e2, 2, 1)) covered.push_back({&e3, &e1, &e2});
     return covered;
 }
 

@@ -28,7 +28,11 @@ public:
     // solver decides).
     const DoubleVoronoiCircle* in_doubles();
     // The Arb solver, made on first use; when the doubles certified the
-    // circle, already certified from their box (VoronoiCircleSolver::certify_near).
+    // circle, already certified from their box (VoronoiCircleSolver::certify_near),
+    // and when they only reached a root stalled at the rounding noise (a huge
+    // circle, StalledDoubleRoot), first tried from it; when they reached no
+    // root, first tried from the tangent lines of a huge circle
+    // (VoronoiCircleSolver::certify_from_tangent_lines).
     VoronoiCircleSolver& solver();
     bool has_solver() const { return solver_ != nullptr; }
     // VoronoiCircleSolver::release_charts, if there is a solver.
@@ -37,9 +41,9 @@ public:
 
 private:
     std::array<const Ellipse*, 3> sites_;
-    enum class Tried : unsigned char { not_yet, certified, failed };
+    enum class Tried : unsigned char { not_yet, certified, stalled, failed };
     Tried doubles_tried_ = Tried::not_yet;
-    DoubleVoronoiCircle doubles_;
+    DoubleVoronoiCircle doubles_;  // certified: the enclosure; stalled: the root's point intervals
     std::unique_ptr<VoronoiCircleSolver> solver_;
     CommonAxisTangency common_axis_tangency_ = nullptr;
 };

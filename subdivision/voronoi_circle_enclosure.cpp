@@ -573,6 +573,15 @@ bool VoronoiCircleSolver::certify_near(const std::array<bool, 3>& flipped, const
     return certify();
 }
 
+bool VoronoiCircleSolver::certify_from_tangent_lines() {
+    if (certified_) return true;
+    set_frame();
+    for_each_huge_circle_start(*work_sites_[0], *work_sites_[1], *work_sites_[2], precision::kHugeCircleBits,
+                               [&](const VoronoiCircleStart& start) { return certified_ = certify_from(start); });
+    if (certified_) enclosure_.found_by = CircleStart::tangent_line;
+    return certified_;
+}
+
 bool VoronoiCircleSolver::certify_by_search(const VoronoiCircleSearchOptions& options) {
     set_frame();
     const VoronoiCircleSearchResult result = search_voronoi_circle(

@@ -94,6 +94,13 @@ public:
     // and Krawczyk from there first, which spares the guesses and the
     // tangent-line starts (milliseconds for a huge circle). The same contract.
     bool certify_near(const std::array<bool, 3>& flipped, const std::array<double, 6>& x);
+    // The tangent-line starts of huge circles alone (docs/DESIGN.md §4.2, item
+    // 2), which certify() tries after the guesses: for a triple whose double
+    // certificate found no root (VoronoiCircle), mostly sites in a row whose
+    // circle is 10^7-10^11 times their size, where the guesses take 10-40 ms
+    // and these starts about 1. True when they certify the circle; false
+    // proves nothing and leaves the solver as it was.
+    bool certify_from_tangent_lines();
     // The exhaustive search alone (tests and experiments force this path);
     // the same contract as certify().
     bool certify_by_search(const VoronoiCircleSearchOptions& options = {});

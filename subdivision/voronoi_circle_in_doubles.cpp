@@ -318,11 +318,25 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
 // parameter in the chart where it is at most 1 in magnitude. `damped`: steps
 // by damped_step, and more of them (the retry of a start that did not
 // converge); `diverged` (if given) says whether Newton failed to converge.
+// A root Newton reached only to the rounding noise becomes the Arb solver's
+// start if it looks like the counter-clockwise circle in doubles: rho > 0
+// and the normals (p: at Newton's last point, a stalled step before x)
+// counter-clockwise; the system's other roots would cost Arb a failed
+// attempt. Out of line: rare, and kept out of Newton's code.
+[[gnu::noinline]] void offer_stalled_root(const std::array<BoundaryPoint<double>, 3>& p,
+                                          const std::array<bool, 3>& flipped, const std::array<double, 6>& x,
+                                          std::optional<StalledDoubleRoot>& stalled) {
+    if (!(x[3] > 0)) return;
+    const double orientation = (p[1].nx - p[0].nx) * (p[2].ny - p[0].ny) - (p[1].ny - p[0].ny) * (p[2].nx - p[0].nx);
+    if (orientation > 0) stalled = StalledDoubleRoot{flipped, x};
+}
+
 std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<double>, 3>& shape,
                                                        const std::array<Shape<UpwardInterval>, 3>& enclosed,
                                                        std::array<bool, 3> flipped, std::array<double, 6> x,
                                                        double length_scale, bool damped = false,
-                                                       bool* diverged = nullptr) {
+                                                       bool* diverged = nullptr,
+                                                       std::optional<StalledDoubleRoot>* stalled = nullptr) {
     if (diverged) *diverged = true;
     const int kSteps = damped ? 30 : 12;
     constexpr double kConverged = 1e-13;  // relative step size
@@ -361,7 +375,11 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     if (diverged) *diverged = false;
     const std::optional<std::array<Interval, 6>> box =
         krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
-    if (!box) return std::nullopt;
+    if (!box) {
+        // Stalled at the rounding noise: a start for Arb (the first one met).
+        if (stalled && !*stalled && previous > kConverged) offer_stalled_root(at, flipped, x, *stalled);
+        return std::nullopt;
+    }
     DoubleVoronoiCircle circle;
     for (int i = 0; i < 3; ++i) circle.parameter[i] = (*box)[i];
     circle.flipped = flipped;
@@ -372,7 +390,9 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
 }  // namespace
 
 std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
-                                                                      const Ellipse& e3) {
+                                                                      const Ellipse& e3,
+                                                                      std::optional<StalledDoubleRoot>* stalled) {
+    if (stalled) stalled->reset();
     const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
     std::array<Shape<double>, 3> shape;
     std::array<Shape<UpwardInterval>, 3> enclosed;
@@ -410,7 +430,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
             if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) continue;
             bool diverged = false;
             if (auto certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, circle[0]), false,
-                                                     &diverged))
+                                                     &diverged, stalled))
                 return certified;
             if (diverged) retries.push_back({flipped, x, std::max(size, circle[0])});
         }
@@ -419,7 +439,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
     // step overshoots and cycles). Only after every plain start failed, so
     // the inputs those decide cost the same as before.
     for (const Retry& r : retries)
-        if (auto certified = newton_then_certify(shape, enclosed, r.flipped, r.x, r.length_scale, true))
+        if (auto certified = newton_then_certify(shape, enclosed, r.flipped, r.x, r.length_scale, true, nullptr, stalled))
             return certified;
     // Circles far larger than the sites (three sites nearly on a line): the
     // models' circles may lead Newton to the clockwise one, or not exist; the
@@ -429,7 +449,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
     std::optional<DoubleVoronoiCircle> certified;
     const auto try_start = [&](const std::array<bool, 3>& flipped, const std::array<double, 6>& x) {
         if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) return false;
-        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, x[3]));
+        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, x[3]), false, nullptr, stalled);
         if (certified) certified->from_tangent_line = true;
         return certified.has_value();
     };
@@ -450,7 +470,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
             flipped[i] = cos < 0;
             x[i] = flipped[i] ? -sin / (1 - cos) : sin / (1 + cos);
         }
-        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, c.radius));
+        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, c.radius), false, nullptr, stalled);
         return certified.has_value();
     };
     if (for_each_bisector_walk_circle(e1, e2, e3, try_walked)) return certified;

@@ -35,9 +35,23 @@ struct DoubleVoronoiCircle {
     bool from_tangent_line = false;  // certified from a huge circle's tangent-line start
 };
 
+// A root of the tritangent system that Newton in doubles reached only to the
+// rounding noise (its steps stalled above 1e-13; a circle about 2^20 times
+// its sites' size or more, conditioned beyond what the double Krawczyk test
+// proves), in the form of DoubleVoronoiCircle's midpoints: chart flags and
+// (parameters, rho, V_x, V_y). A start for the Arb solver
+// (VoronoiCircleSolver::certify_near), which proves or rejects it; no proof
+// of anything.
+struct StalledDoubleRoot {
+    std::array<bool, 3> flipped{};
+    std::array<double, 6> x{};
+};
+
 // Starts from the Apollonius circles of circle models of the sites
 // (voronoi_circle_guess.hpp), Newton in doubles; nullopt when none certifies.
+// Then, if `stalled` is given, the first stalled root met (nullopt if none).
 std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
-                                                                      const Ellipse& e3);
+                                                                      const Ellipse& e3,
+                                                                      std::optional<StalledDoubleRoot>* stalled = nullptr);
 
 }  // namespace ellvor

@@ -12,6 +12,7 @@
 // only about edges whose ends agree). CGAL's infinite-edge function does
 // not depend on the ends' status in that way, so both values of b are tried.
 #include "predicates/edge_conflict.hpp"
+#include "predicates/relative_position.hpp"
 #include "predicates/bisector_order.hpp"
 #include "sites/packing_generator.hpp"
 #include "subdivision/voronoi_circle.hpp"
@@ -726,28 +727,39 @@ TEST_CASE("degenerate edge in the traits: apart in doubles is the filter's no", 
     CHECK(traits.stats()[Predicate::is_degenerate_edge].calls == 2);
 }
 
-TEST_CASE("kappa4 beside close, not tangent sites: decided by the filter; tangent ones by the exact stage",
+TEST_CASE("kappa4 beside close or tangent sites: decided by the filter",
           "[predicates][kappa4][slab]") {
     // The bisector of two needles 10^-3 apart, side by side and offset (the
     // line of their centers does not separate them), against a Q above: the
-    // Voronoi circle count needs the sites' relative positions, which the
-    // searched slab proves (relative_position.cpp); before it, the intersection
-    // quartic decided them and made the whole kappa4 call exact.
+    // Voronoi circle count needs to know that no site lies inside another,
+    // which each center outside the other site proves
+    // (centers_outside_each_other_in_doubles); before it, the searched slab
+    // (relative_position.cpp), and before that the intersection quartic,
+    // which made the whole kappa4 call exact.
     const Ellipse e1(4, Rational(1, 4), 0, 0, 0), e2(4, Rational(1, 4), 0, 3, Rational(501, 1000));
     const Ellipse q(1, Rational(1, 2), Rational(1, 5), Rational(-2), Rational(3));
+    // Tangent sites (one above the other, touching at (0, 1/4)): their
+    // relative position is exact, but the count does not ask it (a tangent
+    // pair has its circles as a separated one); Q has no two shadow
+    // boundaries on their bisector, so kappa4 answers b.
+    const Ellipse touching(4, Rational(1, 4), 0, 0, Rational(1, 2));
+    CHECK(*relative_position(e1, touching) == RelativePosition::externally_tangent);
+    CHECK(relative_position(e1, touching).stage == Stage::exact);
     for (bool b : {false, true}) {
         const Decision<bool> d = finite_edge_interior_conflict(e1, e2, q, b);
         INFO("b = " << b);
         REQUIRE(d.is_decided());
         CHECK(stage_name(d.stage) == std::string(stage_name(Stage::filter)));
-        // tangent sites (one above the other, touching at (0, 1/4)) need the exact stage
-        const Ellipse touching(4, Rational(1, 4), 0, 0, Rational(1, 2));
         const Decision<bool> t = finite_edge_interior_conflict(e1, touching, q, b);
         REQUIRE(t.is_decided());
-        CHECK(stage_name(t.stage) == std::string(stage_name(Stage::exact)));
+        CHECK(*t == b);
+        CHECK(stage_name(t.stage) == std::string(stage_name(Stage::filter)));
     }
     const Decision<VoronoiCircles> count = voronoi_circle_count(e1, e2, q);
     CHECK(stage_name(count.stage) == std::string(stage_name(Stage::filter)));
+    const Decision<VoronoiCircles> tangent_count = voronoi_circle_count(e1, touching, q);
+    CHECK(*tangent_count == VoronoiCircles::none);
+    CHECK(stage_name(tangent_count.stage) == std::string(stage_name(Stage::filter)));
 }
 
 TEST_CASE("order on a bisector in doubles: never contradicts Arb's order, decides most pairs",

@@ -1,6 +1,9 @@
 // relative_position / is_hidden: every class, the deciding stage, and a
-// random comparison against the exact closed form for circles.
+// random comparison against the exact closed form for circles; the filter
+// centers_outside_each_other_in_doubles against relative_position.
 #include "predicates/relative_position.hpp"
+#include "sites/packing_generator.hpp"
+#include "sites/site_generators.hpp"
 #include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
@@ -307,4 +310,56 @@ TEST_CASE("relative position: tangent and nearly tangent needles still reach the
     expect2(low, Ellipse(4, q(1, 4), 0, 0, q(1, 2) + tiny), RP::separated, Stage::exact);
     // 2^-70 overlapping: crossing, exactly
     expect2(low, Ellipse(4, q(1, 4), 0, 0, q(1, 2) - tiny), RP::intersecting, Stage::exact);
+}
+
+TEST_CASE("centers outside each other: never on nested or identical sites, decides every close pair of a packing",
+          "[predicates][relative_position][packing]") {
+    // Soundness: on sets with nested and crossing sites, a pair it accepts is
+    // never nested or identical (relative_position, exact when it must).
+    for (std::uint64_t seed : {1, 2, 3}) {
+        GeneratorOptions options;
+        options.count = 120;
+        options.seed = seed;
+        options.box = Rational(30);
+        options.nested_fraction = Rational(1, 3);
+        options.crossing_fraction = Rational(1, 4);
+        const std::vector<Ellipse> sites = generate_sites(options);
+        int nested = 0, crossing_accepted = 0;
+        for (std::size_t i = 0; i < sites.size(); ++i) {
+            CHECK_FALSE(centers_outside_each_other_in_doubles(sites[i], sites[i]));
+            for (std::size_t j = i + 1; j < sites.size(); ++j) {
+                if (bounding_circles_apart_in_doubles(sites[i], sites[j])) continue;
+                const RP r = *relative_position(sites[i], sites[j]);
+                const bool inside = r != RP::separated && r != RP::externally_tangent && r != RP::intersecting;
+                const bool accepted = centers_outside_each_other_in_doubles(sites[i], sites[j]);
+                INFO(oracle::ell({&sites[i], &sites[j]}) << relative_position_name(r));
+                CHECK(accepted == centers_outside_each_other_in_doubles(sites[j], sites[i]));
+                if (inside) CHECK_FALSE(accepted);
+                nested += inside;
+                crossing_accepted += accepted && r == RP::intersecting;
+            }
+        }
+        CHECK(nested >= 30);
+        CHECK(crossing_accepted >= 1);  // it does not tell crossing from separated
+    }
+    // Reach: every pair of a dense packing whose bounding circles overlap (for
+    // which relative_position searches a slab) is decided, for both gaps.
+    for (const Rational& gap : {Rational(1, 1000), Rational(1, 1000000)}) {
+        PackingOptions options;
+        options.count = 300;
+        options.fraction = Rational(29, 50);
+        options.gap = gap;
+        options.seed = 5;
+        const std::vector<Ellipse> sites = generate_packing(options).sites;
+        int close = 0, decided = 0;
+        for (std::size_t i = 0; i < sites.size(); ++i)
+            for (std::size_t j = i + 1; j < sites.size(); ++j) {
+                if (bounding_circles_apart_in_doubles(sites[i], sites[j])) continue;
+                ++close;
+                decided += centers_outside_each_other_in_doubles(sites[i], sites[j]);
+            }
+        INFO("gap " << gap.str());
+        CHECK(close > 300);
+        CHECK(decided == close);
+    }
 }

@@ -5,6 +5,7 @@
 #include "predicates/edge_conflict.hpp"
 #include "predicates/relative_position.hpp"
 #include "predicates/support_function.hpp"
+#include "sites/packing_generator.hpp"
 #include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
@@ -172,4 +173,51 @@ TEST_CASE("support function: the arrival normal box holds the arrival tangent's 
     CHECK(narrowed > boxes / 4);
     CHECK(boxes == 500);
     CHECK(refused > 5);  // the generator also makes close pairs: the box is not everywhere
+}
+
+TEST_CASE("support function: close pairs of a dense packing, far from the origin, proven on the first interval",
+          "[predicates][support-function][packing]") {
+    // Neighbours of a packing (gaps 1e-3 and 1e-6) moved by (96, 64) and
+    // (320, 288) (exact: the packing's parameters are doubles on the grid
+    // 2^-40): h1 - h2 is computed about the centers (their difference first),
+    // so neither the Newton search nor the proof sees the coordinates'
+    // magnitude. Both tangents are proven on certify's first interval (2e-13
+    // rad) for nearly all pairs, and hold the long-double tangent. With h1 and
+    // h2 differenced whole and the centers' enclosures (an ulp wide), 22% of
+    // these pairs at (96, 64) and none at (320, 288) were proven on it (the
+    // rest on the second, 2e-10), and a fifth of a 10^4 packing's searches ran
+    // all 40 Newton steps.
+    for (const Rational& gap : {Rational(1, 1000), Rational(1, 1000000)})
+        for (const auto& [sx, sy] : {std::pair{96L, 64L}, {320L, 288L}}) {
+            PackingOptions options;
+            options.count = 200;
+            options.fraction = Rational(29, 50);
+            options.gap = gap;
+            options.seed = 7;
+            std::vector<Ellipse> sites;
+            for (const Ellipse& e : generate_packing(options).sites)
+                sites.emplace_back(e.a(), e.b(), e.w(), e.xc() + Rational(sx), e.yc() + Rational(sy));
+            int pairs = 0, first_interval = 0;
+            for (std::size_t i = 0; i < sites.size(); ++i)
+                for (std::size_t j = 0; j < sites.size(); ++j) {
+                    if (i == j || bounding_circles_apart_in_doubles(sites[i], sites[j])) continue;
+                    const Ellipse &e1 = sites[i], &e2 = sites[j];
+                    INFO(oracle::ell({&e1, &e2}) << " gap " << gap.str() << " moved by (" << sx << ", " << sy << ")");
+                    for (bool arrival : {true, false}) {
+                        const std::optional<NormalInterval> n = certified_bitangent_normal(e1, e2, arrival);
+                        REQUIRE(n);
+                        ++pairs;
+                        // The first interval: 2e-13 rad of phi, tau = tan(phi/2) within 1e-13 of it.
+                        first_interval += n->tau_hi - n->tau_lo < 2e-13;
+                        oracle::LD phi = 0;
+                        REQUIRE((arrival ? oracle::bitangent_normal(oracle::num(e1), oracle::num(e2), phi)
+                                         : oracle::bitangent_normal(oracle::num(e2), oracle::num(e1), phi)));
+                        CHECK(angle_inside(static_cast<double>(phi), angles(*n), 1e-12));
+                    }
+                }
+            INFO("gap " << gap.str() << " moved by (" << sx << ", " << sy << "): " << first_interval << " of " << pairs
+                        << " on the first interval");
+            CHECK(pairs > 1000);
+            CHECK(first_interval >= pairs * 99 / 100);
+        }
 }

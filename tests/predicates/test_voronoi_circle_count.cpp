@@ -5,6 +5,7 @@
 #include "predicates/voronoi_circle_count.hpp"
 #include "predicates/infinite_vertex_conflict.hpp"
 #include "predicates/relative_position.hpp"
+#include "sites/site_generators.hpp"
 #include "tests/support/circle_oracles.hpp"
 
 #include <catch2/catch.hpp>
@@ -135,4 +136,44 @@ TEST_CASE("has_both_voronoi_circles agrees with the count on random ellipse trip
     }
     CHECK(both >= 20);
     CHECK(early >= 100);
+}
+
+TEST_CASE("none_inside_another agrees with the pairs' relative positions, nested and crossing sites included",
+          "[predicates][voronoi_circle_count]") {
+    // Triples with a pair of nearby sites (nested, crossing or close): the
+    // filter (bounding circles apart or centers outside each other) must not
+    // change the answer relative_position gives pair by pair.
+    GeneratorOptions options;
+    options.count = 150;
+    options.seed = 11;
+    options.box = Rational(30);
+    options.nested_fraction = Rational(1, 3);
+    options.crossing_fraction = Rational(1, 4);
+    const std::vector<Ellipse> sites = generate_sites(options);
+    auto not_nested = [](const Ellipse& p, const Ellipse& q) {
+        const RelativePosition r = *relative_position(p, q);
+        return r == RelativePosition::separated || r == RelativePosition::externally_tangent ||
+               r == RelativePosition::intersecting;
+    };
+    int triples = 0, with_nested = 0;
+    for (std::size_t i = 0; i < sites.size(); ++i)
+        for (std::size_t j = i + 1; j < sites.size(); ++j) {
+            if (bounding_circles_apart_in_doubles(sites[i], sites[j])) continue;
+            // A near pair and a third site, in both orders.
+            const std::size_t k = (i + j + 1) % sites.size() == i ? (i + 1) % sites.size() : (i + j + 1) % sites.size();
+            if (k == j) continue;
+            for (int order = 0; order < 2; ++order) {
+                const Ellipse &e1 = sites[i], &e2 = sites[order ? k : j], &e3 = sites[order ? j : k];
+                INFO(oracle::ell({&e1, &e2, &e3}));
+                const bool want = not_nested(e1, e2) && not_nested(e2, e3) && not_nested(e3, e1);
+                const Decision<bool> got = none_inside_another(e1, e2, e3);
+                REQUIRE(got.is_decided());
+                CHECK(*got == want);
+                ++triples;
+                with_nested += !want;
+            }
+        }
+    CHECK(triples >= 100);
+    CHECK(with_nested >= 40);
+    CHECK(triples - with_nested >= 20);
 }

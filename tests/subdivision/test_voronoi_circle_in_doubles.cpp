@@ -353,3 +353,122 @@ TEST_CASE("doubles: the 3e5-radius hull circle of 10^6 random ellipses certifies
     CHECK(yes.stage == Stage::filter);
     CHECK(!circle.has_solver());
 }
+
+TEST_CASE("doubles: a circle 10^6 sizes across stalls Newton; the Arb solver starts from that root",
+          "[subdivision][voronoi_circle_in_doubles][packing]") {
+    // Triples of a dense packing (`ellvor generate packing --count 2000
+    // --packing-fraction 0.58 --gap 1e-6 --seed 1`, and --count 10000 --gap
+    // 1e-3) whose circles are 4e5 and 3.6e6 across, sites of size 0.3-1:
+    // Newton in doubles reaches the circle only to the rounding noise and the
+    // double Krawczyk test fails. The stalled root is handed to the Arb
+    // solver (StalledDoubleRoot, VoronoiCircleSolver::certify_near), which
+    // otherwise started from its guesses: 25 ms each, 16% of the 2000-site
+    // packing's build.
+    auto site = [](const char* a, const char* b, const char* w, const char* x, const char* y) {
+        auto q = [](const char* s) {
+            Rational r;
+            REQUIRE(fmpq_set_str(r.get(), s, 10) == 0);
+            return r;
+        };
+        return Ellipse(q(a), q(b), q(w), q(x), q(y));
+    };
+    const std::vector<std::array<Ellipse, 3>> triples = {
+        {site("70523124705/68719476736", "4576155/16777216", "294677/524288", "11838897136595/274877906944",
+              "48342688393311/1099511627776"),
+         site("5173268627/17179869184", "1769849/8388608", "-776747/1048576", "13290563396493/549755813888",
+              "49106507242867/1099511627776"),
+         site("9806144377/34359738368", "2538479/16777216", "993501/1048576", "28833610019487/1099511627776",
+              "49104800787277/1099511627776")},
+        {site("7472763529/8589934592", "3346513/8388608", "-385727/1048576", "54420054025767/549755813888",
+              "3143751011919/549755813888"),
+         site("29268844825/68719476736", "5979335/16777216", "-176531/1048576", "27360451358863/274877906944",
+              "88275168053915/1099511627776"),
+         site("8005599115/8589934592", "1197905/2097152", "271633/1048576", "108916004910591/1099511627776",
+              "76154578344281/1099511627776")}};
+    auto text = [](const Ellipse& e) {
+        return e.a().str() + " " + e.b().str() + " " + e.w().str() + " " + e.xc().str() + " " + e.yc().str() + "\n";
+    };
+    for (const auto& [e1, e2, e3] : triples) {
+        INFO(text(e1) << text(e2) << text(e3));
+        std::optional<StalledDoubleRoot> stalled;
+        REQUIRE(!certify_voronoi_circle_in_doubles(e1, e2, e3, &stalled));
+        REQUIRE(stalled.has_value());
+        // The stalled root is the counter-clockwise circle, to 1e-5 of its
+        // radius (Arb's, certified from its own starts).
+        VoronoiCircleSolver fresh(e1, e2, e3);
+        REQUIRE(fresh.certify());
+        const VoronoiCircleEnclosure& c = fresh.enclosure();
+        const double radius = enclose(c.radius).mid();
+        CHECK(radius > 4e5);
+        CHECK(std::fabs(stalled->x[3] - radius) < 1e-5 * radius);
+        CHECK(std::fabs(stalled->x[4] - enclose(c.center_x).mid()) < 1e-5 * radius);
+        CHECK(std::fabs(stalled->x[5] - enclose(c.center_y).mid()) < 1e-5 * radius);
+        for (int i = 0; i < 3; ++i) CHECK(stalled->flipped[i] == c.flipped[i]);
+        // VoronoiCircle: no double certificate, and its solver is certified
+        // as it is made (from the stalled root; without one it is made bare).
+        VoronoiCircle circle(e1, e2, e3);
+        CHECK(circle.in_doubles() == nullptr);
+        CHECK(circle.solver().certified());
+        const VoronoiCircleEnclosure& near = circle.solver().enclosure();
+        CHECK(arb_overlaps(near.radius.get(), c.radius.get()));
+        CHECK(arb_overlaps(near.center_x.get(), c.center_x.get()));
+        CHECK(arb_overlaps(near.center_y.get(), c.center_y.get()));
+        // Reversed, the second triple has only this circle, clockwise: the
+        // doubles offer no stalled root (the orientation in doubles rejects
+        // it) and the solver proves that there is no counter-clockwise circle.
+        if (&e1 == &triples[1][0]) {
+            std::optional<StalledDoubleRoot> none;
+            CHECK(!certify_voronoi_circle_in_doubles(e1, e3, e2, &none));
+            CHECK(!none.has_value());
+            VoronoiCircle reversed(e1, e3, e2);
+            CHECK(reversed.in_doubles() == nullptr);
+            CHECK(!reversed.solver().certified());
+            CHECK(!reversed.solver().certify());
+        }
+    }
+}
+
+TEST_CASE("doubles: no root at all for a circle 10^11 sizes across; the Arb solver starts from the tangent lines",
+          "[subdivision][voronoi_circle_in_doubles][packing]") {
+    // Sites in a row along the wall of a dense packing (`ellvor generate
+    // packing --count 100000 --packing-fraction 0.58 --gap 1e-3 --seed 1`):
+    // their circle's radius is 1.3e11 (sizes 0.3-1), beyond doubles even as a
+    // stalled root. VoronoiCircle then tries the tangent-line starts before
+    // the guesses (a fresh solver's certify() spends 44 ms in its guesses;
+    // the tangent lines certify in 1 ms).
+    auto q = [](const char* s) {
+        Rational r;
+        REQUIRE(fmpq_set_str(r.get(), s, 10) == 0);
+        return r;
+    };
+    const Ellipse e1(q("10299703085/17179869184"), q("3944735/8388608"), q("-63669/524288"), q("347893310261643/1099511627776"), q("46545901366373/549755813888")), e2(q("40384073077/68719476736"), q("5449207/16777216"), q("45135/524288"), q("86976407168995/274877906944"), q("157910089549185/549755813888")),
+        e3(q("9062355577/17179869184"), q("2649037/16777216"), q("61385/1048576"), q("21748050055377/68719476736"), q("117504476416055/549755813888"));
+    std::optional<StalledDoubleRoot> stalled;
+    REQUIRE(!certify_voronoi_circle_in_doubles(e1, e2, e3, &stalled));
+    CHECK(!stalled.has_value());
+    VoronoiCircle circle(e1, e2, e3);
+    CHECK(circle.in_doubles() == nullptr);
+    REQUIRE(circle.solver().certified());
+    const VoronoiCircleEnclosure& near = circle.solver().enclosure();
+    CHECK(near.found_by == CircleStart::tangent_line);
+    VoronoiCircleSolver fresh(e1, e2, e3);
+    REQUIRE(fresh.certify());
+    const VoronoiCircleEnclosure& c = fresh.enclosure();
+    CHECK(enclose(c.radius).lo > 1e11);
+    CHECK(arb_overlaps(near.radius.get(), c.radius.get()));
+    CHECK(arb_overlaps(near.center_x.get(), c.center_x.get()));
+    CHECK(arb_overlaps(near.center_y.get(), c.center_y.get()));
+    for (int i = 0; i < 3; ++i) CHECK(arb_overlaps(near.parameter[i].get(), c.parameter[i].get()));
+    // Reversed, (E1, E3, E2) has its own counter-clockwise circle (the
+    // triple has both): what the tangent lines certify is the complete
+    // solver's circle there too.
+    VoronoiCircleSolver reversed(e1, e3, e2), reversed_fresh(e1, e3, e2);
+    const bool by_lines = reversed.certify_from_tangent_lines();
+    CHECK(by_lines == reversed.certified());
+    REQUIRE(reversed_fresh.certify());
+    if (by_lines) {
+        CHECK(arb_overlaps(reversed.enclosure().radius.get(), reversed_fresh.enclosure().radius.get()));
+        CHECK(arb_overlaps(reversed.enclosure().center_x.get(), reversed_fresh.enclosure().center_x.get()));
+        CHECK(!arb_overlaps(reversed.enclosure().radius.get(), c.radius.get()));
+    }
+}
