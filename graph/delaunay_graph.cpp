@@ -618,7 +618,7 @@ bool DelaunayGraph::replace_star_by_small_graph(VertexIndex v) {
     const std::optional<Hole> hole = small.conflict_hole(removed_local);
     const Triangulation& st = small.tds_;
     auto label = [&](VertexIndex x) {
-        return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : local.global(st.vertex(x).site);
+        return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : local.global(st.vertex(x).site());
     };
     auto big_label = [&](VertexIndex x) {
         return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : site_of(x);

@@ -110,7 +110,7 @@ public:
 private:
     using ConflictType = TriangulationPredicates::ConflictType;
 
-    SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site; }
+    SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site(); }
     TriangulationPredicates predicates() { return {tds_, *traits_}; }
     void hide(SiteId hidden, SiteId by);  // moves `hidden`'s own hidden list to `by` too
     std::vector<SiteId> take_hidden(SiteId s);  // s's hidden list, emptied
