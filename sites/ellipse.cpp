@@ -59,10 +59,25 @@ Rational exact_rational(double d) {
     return r;
 }
 
+// cos and sin of the rotation angle of w = tan(omega/2): (1 - w^2)/(1 + w^2), 2w/(1 + w^2).
+Rational cos_of(const Rational& w) {
+    if (w.is_zero()) return Rational(1);
+    const Rational w2 = w * w, one(1);
+    return (one - w2) / (one + w2);
+}
+
+Rational sin_of(const Rational& w) {
+    if (w.is_zero()) return Rational(0);
+    return Rational(2) * w / (Rational(1) + w * w);
+}
+
 }  // namespace
 
 Ellipse::Exact::Exact(Rational a, Rational b, Rational w, Rational xc, Rational yc)
-    : a(std::move(a)), b(std::move(b)), w(std::move(w)), xc(std::move(xc)), yc(std::move(yc)) {}
+    : a(std::move(a)), b(std::move(b)), w(std::move(w)), xc(std::move(xc)), yc(std::move(yc)) {
+    enclosure = {enclose(this->a),         enclose(this->b),  enclose(cos_of(this->w)),
+                 enclose(sin_of(this->w)), enclose(this->xc), enclose(this->yc)};
+}
 
 Ellipse::Exact::~Exact() { delete polynomials.load(std::memory_order_acquire); }
 
@@ -77,14 +92,13 @@ Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc) {
     circle_ = a == b;
     dyadic_circle_ = circle_ && a.is_small_dyadic() && xc.is_small_dyadic() && yc.is_small_dyadic();
     compact_ = is_compact(a, b, w, xc, yc);
-    near_ = {a.to_double(), b.to_double(), 1, 0, xc.to_double(), yc.to_double()};
-    // A compact circle's doubles are exact: its parameters come back from
-    // them (make_exact).
-    if (compact_) return;
+    if (compact_) {
+        // Its doubles are exact: its parameters come back from them (make_exact).
+        near_ = {a.to_double(), xc.to_double(), yc.to_double()};
+        return;
+    }
     exact_.store(new Exact(std::move(a), std::move(b), std::move(w), std::move(xc), std::move(yc)),
                  std::memory_order_relaxed);
-    near_[2] = cos_rotation().to_double();
-    near_[3] = sin_rotation().to_double();
 }
 
 Ellipse& Ellipse::operator=(const Ellipse& o) noexcept {
@@ -111,7 +125,7 @@ Ellipse Ellipse::unshared() const {
 
 const Ellipse::Exact& Ellipse::make_exact() const {
     const Rational r = exact_rational(near_[0]);
-    auto* made = new Exact(r, r, Rational(0), exact_rational(near_[4]), exact_rational(near_[5]));
+    auto* made = new Exact(r, r, Rational(0), exact_rational(near_[1]), exact_rational(near_[2]));
     Exact* expected = nullptr;
     // Another thread may have been first: keep its (equal) values.
     if (!exact_.compare_exchange_strong(expected, made, std::memory_order_acq_rel, std::memory_order_acquire)) {
@@ -121,18 +135,9 @@ const Ellipse::Exact& Ellipse::make_exact() const {
     return *made;
 }
 
-Rational Ellipse::cos_rotation() const {
-    if (compact_ || w().is_zero()) return Rational(1);
-    const Rational& w_ = w();
-    const Rational w2 = w_ * w_, one(1);
-    return (one - w2) / (one + w2);
-}
+Rational Ellipse::cos_rotation() const { return compact_ ? Rational(1) : cos_of(w()); }
 
-Rational Ellipse::sin_rotation() const {
-    if (compact_ || w().is_zero()) return Rational(0);
-    const Rational& w_ = w();
-    return Rational(2) * w_ / (Rational(1) + w_ * w_);
-}
+Rational Ellipse::sin_rotation() const { return compact_ ? Rational(0) : sin_of(w()); }
 
 const Ellipse::Polynomials& Ellipse::polynomials() const {
     const Exact& e = exact();
@@ -212,8 +217,7 @@ bool operator==(const Ellipse& p, const Ellipse& q) {
     // Compactness follows from the values: two compact circles are equal
     // exactly when their (exact) doubles are, and never equal another site.
     if (p.compact_ || q.compact_)
-        return p.compact_ && q.compact_ && p.near_[0] == q.near_[0] && p.near_[4] == q.near_[4] &&
-               p.near_[5] == q.near_[5];
+        return p.compact_ && q.compact_ && p.near_ == q.near_;
     const Ellipse::Exact &e = p.exact(), &f = q.exact();
     return e.a == f.a && e.b == f.b && e.w == f.w && e.xc == f.xc && e.yc == f.yc;
 }
@@ -231,7 +235,7 @@ Ellipse::PointSetKey Ellipse::point_set_key() const {
         // r^2 (x^2 + y^2) / r^4, without making the circle's Exact (a
         // reader keys every site).
         const Rational r = exact_rational(near_[0]), inverse = Rational(1) / (r * r);
-        return {exact_rational(near_[4]), exact_rational(near_[5]), inverse, Rational(0), inverse};
+        return {exact_rational(near_[1]), exact_rational(near_[2]), inverse, Rational(0), inverse};
     }
     const Rational scale = a() * a() * b() * b();
     const auto [A, B, C] = quadratic_form();

@@ -72,15 +72,20 @@ public:
 
     // Double enclosures of a, b, cos, sin of the rotation and the center, for
     // the floating-point filters: enclose(q) of each (util/interval.hpp),
-    // [down(x^), up(x^)] around its nearest double x^. Only the doubles are
-    // kept (48 bytes a site where the intervals cost 96); the widening is a
-    // few integer operations, and a caller's unused fields are not computed.
+    // [down(x^), up(x^)] around its nearest double x^. An ellipse keeps them
+    // with its exact parameters (made once: the filters ask on every call);
+    // a compact circle makes them from its three doubles, inlined always so
+    // that a caller's unused fields are not computed.
     struct Enclosure {
         Interval a, b, cos, sin, xc, yc;
     };
-    Enclosure enclosure() const {
-        return {Interval::around(near_[0]), Interval::around(near_[1]), Interval::around(near_[2]),
-                Interval::around(near_[3]), Interval::around(near_[4]), Interval::around(near_[5])};
+    [[gnu::always_inline]] Enclosure enclosure() const {
+        if (compact_) {
+            const Interval r = Interval::around(near_[0]);
+            return {r, r, Interval::around(1.0), Interval::around(0.0), Interval::around(near_[1]),
+                    Interval::around(near_[2])};
+        }
+        return exact_.load(std::memory_order_relaxed)->enclosure;  // made with the ellipse, never null
     }
 
     // Homogeneous parametrization (X : Y : W), integer polynomials in t.
@@ -131,6 +136,7 @@ private:
     // has none until an exact stage asks: its doubles are its parameters.
     struct Exact {
         Rational a, b, w, xc, yc;
+        Enclosure enclosure;
         // Written once, by whichever thread asks first (compare and swap: a
         // lost race only computes the same values twice).
         mutable std::atomic<const Polynomials*> polynomials{nullptr};
@@ -140,7 +146,7 @@ private:
     };
     // A circle of rotation 0 whose radius and center are small dyadic
     // rationals: its doubles give them back exactly, so a large build of
-    // circles keeps 64 bytes a site (an ellipse adds its Exact, about 110).
+    // circles keeps 40 bytes a site (an ellipse adds its Exact, about 210).
     static bool is_compact(const Rational& a, const Rational& b, const Rational& w, const Rational& xc,
                            const Rational& yc);
     const Exact& exact() const {
@@ -159,8 +165,8 @@ private:
     // The conic's quadratic part {A, B, C}.
     std::array<Rational, 3> quadratic_form() const;
 
-    // The nearest doubles of a, b, cos, sin of the rotation, xc, yc.
-    std::array<double, 6> near_;
+    // A compact circle's radius and center, exact doubles (unused else).
+    std::array<double, 3> near_{};
     mutable std::atomic<Exact*> exact_{nullptr};
     bool circle_ = false, dyadic_circle_ = false, compact_ = false;
 };
