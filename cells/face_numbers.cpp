@@ -13,7 +13,7 @@ std::vector<long> face_numbers(const DelaunayGraph& graph) {
     for (FaceIndex f : tds.faces()) {
         if (tds.is_infinite_face(f)) continue;
         std::array<SiteId, 3> t;
-        for (int i = 0; i < 3; ++i) t[i] = tds.vertex(tds.face(f).v[i]).site;
+        for (int i = 0; i < 3; ++i) t[i] = tds.vertex(tds.face(f).v[i]).site();
         std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
         keyed.push_back({t, f});
     }

@@ -26,7 +26,7 @@ std::vector<VoronoiCell> voronoi_cells(const DelaunayGraph& graph, const std::ve
         return cells;
     }
     for (VertexIndex v : tds.finite_vertices()) {
-        const SiteId p = tds.vertex(v).site;
+        const SiteId p = tds.vertex(v).site();
         // Around v counter-clockwise: between the face f = (v, A, B) and the
         // next face lies the Delaunay edge v -> B, f on its right; its Voronoi
         // edge runs from the next face's vertex to f's with p's tangency angle
@@ -37,7 +37,7 @@ std::vector<VoronoiCell> voronoi_cells(const DelaunayGraph& graph, const std::ve
             const Triangulation::Face& F = tds.face(f);
             const VertexIndex b = F.v[cw(tds.index(f, v))];
             if (b == Triangulation::kInfiniteVertex) continue;
-            cells[p].edges.push_back({tds.vertex(b).site, face_number(numbers, f), face_number(numbers, next)});
+            cells[p].edges.push_back({tds.vertex(b).site(), face_number(numbers, f), face_number(numbers, next)});
         }
     }
     return cells;

@@ -256,9 +256,11 @@ std::map<MemoryKey, PeakMemory> measure_peak_memory(const Plan& plan) {
                                          DelaunayGraph g(std::make_unique<EllipseDelaunayTraits>(sites));
                                          g.insert_all();
                                      });
+            // CGAL's child keeps the generated sites too, as ellvor's does:
+            // both builds start from the same allocator state.
             std::vector<AG::Site_2> input;
             memory[{"cgal", "circles", set, n, 1}] =
-                peak_memory_in_child([&] { input = cgal_sites(make_sites(generator_set(set), n)); },
+                peak_memory_in_child([&] { sites = make_sites(generator_set(set), n), input = cgal_sites(sites); },
                                      [&] {
                                          AGH ag;
                                          ag.insert(input.begin(), input.end());

@@ -1,14 +1,17 @@
 // Peak memory of one piece of work, measured in a forked child: the child's
-// own high-water mark (VmHWM) after the work, against its RSS at the fork
-// (inherited from the parent, which is the baseline).
+// own high-water mark (VmHWM) after the work, against its RSS once its input
+// is prepared (the baseline; the memory the preparation freed returned to
+// the system and the high-water mark restarted there).
 #pragma once
 
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
+#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,8 +20,8 @@ namespace ellvor::experiments {
 // How the benchmarks measure a build's peak memory, for their reports.
 constexpr const char* kPeakMemoryMethod =
     "One more build each, in a child forked before this program builds anything else; the child generates its "
-    "sites, then builds. The growth of the child's resident memory over the build (VmHWM after it minus VmRSS "
-    "before it)";
+    "sites, returns the memory the generation freed to the system (malloc_trim) and restarts its high-water mark, "
+    "then builds. The growth of the child's resident memory over the build (VmHWM after it minus VmRSS before it)";
 
 inline long status_kb(const char* field) {
     std::ifstream in("/proc/self/status");
@@ -54,11 +57,23 @@ PeakMemory peak_memory_in_child(Prepare&& prepare, F&& build) {
     }
     if (pid == 0) {
         close(fd[0]);
+        // glibc raises its mmap threshold to the size of each large block
+        // freed: the allocator's policy for the build would depend on what
+        // `prepare` allocated. Fixed at glibc's default, it does not.
+        mallopt(M_MMAP_THRESHOLD, 128 * 1024);
         long out[2] = {-1, -1};
         int status = 0;
         try {
             prepare();
+            // The memory `prepare` freed goes back to the system: else the
+            // build reuses it unseen, and its growth depends on how much its
+            // input's preparation happened to free.
+            malloc_trim(0);
+            // The high-water mark restarts here (Linux: "5" resets VmHWM to
+            // VmRSS), else the preparation's own peak may stand for the build's.
+            { std::ofstream("/proc/self/clear_refs") << "5"; }
             out[0] = status_kb("VmRSS");
+            if (status_kb("VmHWM") > out[0] + 1024) throw std::runtime_error("cannot reset VmHWM");
             build();
             out[1] = status_kb("VmHWM");
         } catch (...) {

@@ -8,7 +8,9 @@
 namespace ellvor {
 
 void ConflictMarks::start() {
-    // After 2^32 regions the generations wrap: blank everything once.
+    // After 2^16 regions the generations wrap: blank everything once (16
+    // bits: an entry of 8 bytes a face, not 12; 2n faces blanked every 65536
+    // insertions cost nothing).
     if (++generation_ == 0) {
         faces_.assign(faces_.size(), Face{});
         vertices_.assign(vertices_.size(), Vertex{});

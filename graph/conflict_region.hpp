@@ -28,7 +28,7 @@ public:
     // Per face: kappa2/kappa3 against p, membership, and per edge whether the
     // growth tested it and crossed it.
     struct Face {
-        std::uint32_t generation = 0;
+        std::uint16_t generation = 0;
         signed char incircle = kUnknown;  // a Sign, or kUnknown
         bool in_region = false;
         std::array<signed char, 3> crossed = {kUntested, kUntested, kUntested};
@@ -36,7 +36,7 @@ public:
     // Per vertex: whether p hides its site, whether p and others empty its
     // cell, and whether it is on the region's boundary.
     struct Vertex {
-        std::uint32_t generation = 0;
+        std::uint16_t generation = 0;
         signed char hidden = kUnknown;  // 0, 1, or kUnknown
         signed char swallowed = kUnknown;  // 0, 1, or kUnknown (not examined)
         bool on_boundary = false;
@@ -46,6 +46,11 @@ public:
 
     // A new region: every entry blank.
     void start();
+    // Room for entries of this many vertices and faces.
+    void reserve(std::size_t vertices, std::size_t faces) {
+        vertices_.reserve(vertices);
+        faces_.reserve(faces);
+    }
     // The entry of f (v) for the current region, blank if it had none.
     Face& face(FaceIndex f);
     Vertex& vertex(VertexIndex v);
@@ -56,7 +61,7 @@ private:
     template <class Entry>
     Entry& entry(std::vector<Entry>& entries, int index);
 
-    std::uint32_t generation_ = 0;
+    std::uint16_t generation_ = 0;
     std::vector<Face> faces_;
     std::vector<Vertex> vertices_;
 };

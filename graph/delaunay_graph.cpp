@@ -16,11 +16,13 @@ namespace ellvor {
 namespace {
 std::string str(SiteId i) { return std::to_string(i); }
 // host_ of a site that no site hides.
-constexpr SiteId kNoHost = std::numeric_limits<SiteId>::max();
+constexpr std::uint32_t kNoHost = std::numeric_limits<std::uint32_t>::max();
 }  // namespace
 
 DelaunayGraph::DelaunayGraph(std::unique_ptr<DelaunayTraits> traits) : traits_(std::move(traits)) {
     if (!traits_) throw Error("DelaunayGraph: no traits");
+    if (traits_->size() > Triangulation::kMaxSite + 1)
+        throw Error("DelaunayGraph: " + str(traits_->size()) + " sites, more than a graph holds (2^32 - 2)");
     host_.assign(traits_->size(), kNoHost);
     inserted_.assign(traits_->size(), kOut);
     vertex_of_site_.resize(traits_->size());
@@ -28,6 +30,12 @@ DelaunayGraph::DelaunayGraph(std::unique_ptr<DelaunayTraits> traits) : traits_(s
 
 void DelaunayGraph::insert_all(const std::function<void(std::size_t done, std::size_t total)>& progress) {
     const std::vector<SiteId> order = bulk_insertion_order(*traits_);
+    // n sites make at most n + 1 vertices and 2n - 2 faces (bogus vertices
+    // aside, which come and go): room for them at once, so that no doubling
+    // leaves a freed copy behind in the peak memory.
+    const std::size_t n = traits_->size();
+    tds_.reserve(n + 1, 2 * n);
+    conflict_marks_.reserve(n + 1, 2 * n);
     // Each round of the bulk order starts across the plane; the grid keeps the walk short.
     std::vector<LocationHint> hints;
     hints.reserve(order.size());
@@ -618,7 +626,7 @@ bool DelaunayGraph::replace_star_by_small_graph(VertexIndex v) {
     const std::optional<Hole> hole = small.conflict_hole(removed_local);
     const Triangulation& st = small.tds_;
     auto label = [&](VertexIndex x) {
-        return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : local.global(st.vertex(x).site);
+        return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : local.global(st.vertex(x).site());
     };
     auto big_label = [&](VertexIndex x) {
         return x == Triangulation::kInfiniteVertex ? Triangulation::kInfiniteSite : site_of(x);

@@ -26,6 +26,7 @@
 #include "decision/delaunay_traits.hpp"
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -110,7 +111,7 @@ public:
 private:
     using ConflictType = TriangulationPredicates::ConflictType;
 
-    SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site; }
+    SiteId site_of(VertexIndex v) const { return tds_.vertex(v).site(); }
     TriangulationPredicates predicates() { return {tds_, *traits_}; }
     void hide(SiteId hidden, SiteId by);  // moves `hidden`'s own hidden list to `by` too
     std::vector<SiteId> take_hidden(SiteId s);  // s's hidden list, emptied
@@ -172,7 +173,7 @@ private:
     // The sites each visible site hides, for the hosts only: a vector per
     // site cost 24 bytes a site, and most sites hide nothing.
     std::unordered_map<SiteId, std::vector<SiteId>> hidden_in_;
-    std::vector<SiteId> host_;                   // per hidden site: the visible site that hides it
+    std::vector<std::uint32_t> host_;            // per hidden site: the visible site that hides it
     std::vector<SiteId> union_hidden_;           // hidden sites whose host does not contain them
     // A small graph that decides hiding (hiding_among_sites_meeting): a site
     // without a conflict near its nearest site is searched for over the

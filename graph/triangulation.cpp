@@ -7,15 +7,26 @@
 namespace ellvor {
 
 void Triangulation::clear() {
-    vertices_.assign(1, Vertex{kInfiniteSite, FaceIndex(), true});
+    vertices_.assign(1, Vertex{kStoredInfinite, FaceIndex()});
+    vertex_alive_.assign(1, true);
     faces_.clear();
+    face_alive_.clear();
     free_faces_.clear();
     free_vertices_.clear();
     number_of_faces_ = 0;
     number_of_vertices_ = 1;
 }
 
+void Triangulation::reserve(std::size_t vertices, std::size_t faces) {
+    vertices_.reserve(vertices);
+    vertex_alive_.reserve(vertices);
+    faces_.reserve(faces);
+    face_alive_.reserve(faces);
+}
+
 VertexIndex Triangulation::add_vertex(SiteId site) {
+    if (site > kMaxSite && site != kInfiniteSite && site != kBogusSite)
+        throw Error("Triangulation: site id " + std::to_string(site) + " above the largest a vertex holds");
     VertexIndex v;
     if (!free_vertices_.empty()) {
         v = free_vertices_.back();
@@ -23,15 +34,20 @@ VertexIndex Triangulation::add_vertex(SiteId site) {
     } else {
         v = VertexIndex(static_cast<int>(vertices_.size()));
         vertices_.emplace_back();
+        vertex_alive_.push_back(false);
     }
-    vertex_at(v) = Vertex{site, FaceIndex(), true};
+    const std::uint32_t stored = site == kInfiniteSite ? kStoredInfinite
+                                 : site == kBogusSite  ? kStoredBogus
+                                                       : static_cast<std::uint32_t>(site);
+    vertex_at(v) = Vertex{stored, FaceIndex()};
+    vertex_alive_[static_cast<std::size_t>(v.value())] = true;
     ++number_of_vertices_;
     return v;
 }
 
 void Triangulation::delete_vertex(VertexIndex v) {
     if (v == kInfiniteVertex || !is_vertex(v)) throw Error("Triangulation: deleting an invalid vertex");
-    vertex_at(v).alive = false;
+    vertex_alive_[static_cast<std::size_t>(v.value())] = false;
     vertex_at(v).face = FaceIndex();
     free_vertices_.push_back(v);
     --number_of_vertices_;
@@ -45,14 +61,16 @@ FaceIndex Triangulation::new_face(VertexIndex a, VertexIndex b, VertexIndex c) {
     } else {
         f = FaceIndex(static_cast<int>(faces_.size()));
         faces_.emplace_back();
+        face_alive_.push_back(false);
     }
-    face_at(f) = Face{{{a, b, c}}, {}, true};
+    face_at(f) = Face{{{a, b, c}}, {}};
+    face_alive_[static_cast<std::size_t>(f.value())] = true;
     ++number_of_faces_;
     return f;
 }
 
 void Triangulation::kill_face(FaceIndex f) {
-    face_at(f).alive = false;
+    face_alive_[static_cast<std::size_t>(f.value())] = false;
     free_faces_.push_back(f);
     --number_of_faces_;
 }
@@ -61,7 +79,7 @@ std::vector<FaceIndex> Triangulation::faces() const {
     std::vector<FaceIndex> out;
     out.reserve(number_of_faces_);
     for (std::size_t f = 0; f < faces_.size(); ++f)
-        if (faces_[f].alive) out.push_back(FaceIndex(static_cast<int>(f)));
+        if (face_alive_[f]) out.push_back(FaceIndex(static_cast<int>(f)));
     return out;
 }
 
@@ -69,7 +87,7 @@ std::vector<VertexIndex> Triangulation::finite_vertices() const {
     std::vector<VertexIndex> out;
     out.reserve(number_of_vertices_ - 1);
     for (std::size_t v = 1; v < vertices_.size(); ++v)
-        if (vertices_[v].alive) out.push_back(VertexIndex(static_cast<int>(v)));
+        if (vertex_alive_[v]) out.push_back(VertexIndex(static_cast<int>(v)));
     return out;
 }
 
@@ -272,14 +290,11 @@ void Triangulation::circulator_error(const char* what) { throw Error(what); }
 
 std::string Triangulation::check() const {
     if (empty()) return number_of_vertices_ == 1 ? "" : "vertices without faces";
-    auto is_face = [&](FaceIndex f) {
-        return f.value() >= 0 && static_cast<std::size_t>(f.value()) < faces_.size() && face(f).alive;
-    };
     std::size_t faces = 0;
     for (std::size_t fi = 0; fi < faces_.size(); ++fi) {
         const FaceIndex f(static_cast<int>(fi));
         const Face& F = face(f);
-        if (!F.alive) continue;
+        if (!face_alive_[fi]) continue;
         ++faces;
         const std::string name = "face " + std::to_string(fi);
         for (int i = 0; i < 3; ++i) {
@@ -298,7 +313,7 @@ std::string Triangulation::check() const {
     std::size_t vertices = 0, degree_sum = 0;
     for (std::size_t vi = 0; vi < vertices_.size(); ++vi) {
         const VertexIndex v(static_cast<int>(vi));
-        if (!vertex(v).alive) continue;
+        if (!vertex_alive_[vi]) continue;
         ++vertices;
         const FaceIndex f = vertex(v).face;
         if (!is_face(f) || index(f, v) < 0) return "vertex " + std::to_string(vi) + ": bad face pointer";

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -34,20 +35,27 @@ public:
     static constexpr SiteId kBogusSite = kInfiniteSite - 1;
     static constexpr VertexIndex kInfiniteVertex{0};
 
+    // 8 bytes a vertex and 24 a face (a build holds about n and 2n): the
+    // site id in 32 bits, and whether each is alive in a bit vector apart.
     struct Vertex {
-        SiteId site = kInfiniteSite;
+        SiteId site() const {
+            return site_ == kStoredInfinite ? kInfiniteSite : site_ == kStoredBogus ? kBogusSite : site_;
+        }
+        std::uint32_t site_ = kStoredInfinite;
         FaceIndex face;  // one incident face
-        bool alive = false;
     };
     struct Face {
         std::array<VertexIndex, 3> v;
         std::array<FaceIndex, 3> n;
-        bool alive = false;
     };
+    // The largest site id a vertex can carry (above it, the two labels).
+    static constexpr SiteId kMaxSite = std::numeric_limits<std::uint32_t>::max() - 2;
 
     Triangulation() { clear(); }
     // Back to the infinite vertex alone, no faces.
     void clear();
+    // Room for this many vertices and faces in all (insert_all knows them).
+    void reserve(std::size_t vertices, std::size_t faces);
 
     bool empty() const { return number_of_faces_ == 0; }
     // A vertex without faces (the caller links it).
@@ -94,7 +102,8 @@ public:
     const Vertex& vertex(VertexIndex v) const { return vertices_[static_cast<std::size_t>(v.value())]; }
     const Face& face(FaceIndex f) const { return faces_[static_cast<std::size_t>(f.value())]; }
     bool is_vertex(VertexIndex v) const {
-        return v.value() >= 0 && static_cast<std::size_t>(v.value()) < vertices_.size() && vertex(v).alive;
+        return v.value() >= 0 && static_cast<std::size_t>(v.value()) < vertices_.size() &&
+               vertex_alive_[static_cast<std::size_t>(v.value())];
     }
     // Every live face, by increasing index.
     std::vector<FaceIndex> faces() const;
@@ -139,9 +148,17 @@ private:
     }
 
     [[noreturn]] static void circulator_error(const char* what);
+    bool is_face(FaceIndex f) const {
+        return f.value() >= 0 && static_cast<std::size_t>(f.value()) < faces_.size() &&
+               face_alive_[static_cast<std::size_t>(f.value())];
+    }
+
+    static constexpr std::uint32_t kStoredInfinite = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::uint32_t kStoredBogus = kStoredInfinite - 1;
 
     std::vector<Vertex> vertices_;
     std::vector<Face> faces_;
+    std::vector<bool> vertex_alive_, face_alive_;
     std::vector<FaceIndex> free_faces_;
     std::vector<VertexIndex> free_vertices_;
     std::size_t number_of_faces_ = 0, number_of_vertices_ = 0;

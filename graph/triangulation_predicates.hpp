@@ -23,7 +23,7 @@ public:
 
     TriangulationPredicates(const Triangulation& tds, DelaunayTraits& traits) : tds_(tds), traits_(traits) {}
 
-    SiteId site(VertexIndex v) const { return tds_.vertex(v).site; }
+    SiteId site(VertexIndex v) const { return tds_.vertex(v).site(); }
     // Site p hides site q (the traits' is_hidden).
     bool is_hidden(SiteId p, SiteId q) { return traits_.is_hidden(p, q); }
     bool crosses(SiteId p, SiteId q) { return traits_.crosses(p, q); }

@@ -272,7 +272,7 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
         if (tds.is_infinite_face(f)) continue;
         const Triangulation::Face& F = tds.face(f);
         VoronoiVertexPoint v;
-        for (int k = 0; k < 3; ++k) v.face[k] = tds.vertex(F.v[k]).site;
+        for (int k = 0; k < 3; ++k) v.face[k] = tds.vertex(F.v[k]).site();
         VoronoiCircleSolver solver(sites[v.face[0]], sites[v.face[1]], sites[v.face[2]], common_medial_axis_tangency);
         if (solver.refine(53)) {
             const VoronoiCircleEnclosure& c = solver.enclosure();
@@ -291,8 +291,8 @@ TracedDiagram trace_voronoi_diagram(const DelaunayGraph& graph, const std::vecto
             const FaceIndex g = F.n[i];
             if (g < f || tds.is_infinite_edge({f, i})) continue;  // each finite edge once
             VoronoiEdgeArc arc;
-            arc.p = tds.vertex(F.v[ccw(i)]).site;
-            arc.q = tds.vertex(F.v[cw(i)]).site;
+            arc.p = tds.vertex(F.v[ccw(i)]).site();
+            arc.q = tds.vertex(F.v[cw(i)]).site();
             arc.left_face = f;
             arc.right_face = g;
             const EllipseShape& P = shapes[arc.p];

@@ -20,7 +20,7 @@ std::vector<VoronoiRidge> voronoi_ridges(const DelaunayGraph& graph, const std::
             const Edge e{f, i};
             if (tds.is_infinite_edge(e) || tds.mirror_edge(e) < e) continue;  // each edge once, as edges() does
             const Triangulation::Face& F = tds.face(f);
-            ridges.push_back({tds.vertex(F.v[ccw(i)]).site, tds.vertex(F.v[cw(i)]).site, number(f), number(F.n[i])});
+            ridges.push_back({tds.vertex(F.v[ccw(i)]).site(), tds.vertex(F.v[cw(i)]).site(), number(f), number(F.n[i])});
         }
     auto key = [](const VoronoiRidge& r) { return std::make_pair(std::min(r.p, r.q), std::max(r.p, r.q)); };
     std::stable_sort(ridges.begin(), ridges.end(),

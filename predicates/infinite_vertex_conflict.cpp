@@ -138,7 +138,8 @@ constexpr int kNormalBoxContractions = 2;
 int infinite_vertex_conflict_in_normal_box(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
     const Ellipse::Enclosure& kq = q.enclosure();
     if (!(kq.a.finite() && kq.b.finite() && kq.xc.finite() && kq.yc.finite())) return 0;
-    std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(e1.enclosure(), e2.enclosure());
+    const Ellipse::Enclosure k1 = e1.enclosure();  // made once (sites/ellipse.hpp)
+    std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(k1, e2.enclosure());
     if (!box) return 0;
     // Q far from L is decided on the first box; each contraction costs about
     // as much as a test, and two take most of the rest. The support functions
@@ -147,10 +148,10 @@ int infinite_vertex_conflict_in_normal_box(const Ellipse& e1, const Ellipse& e2,
     // operations are inclusion monotone), and on close sites (dense
     // packings) they rarely prove anything before.
     for (int contractions = 0;; ++contractions) {
-        if (int s = sign_beyond_by_disks(kq, e1.enclosure(), box->nx(), box->ny())) return s;
+        if (int s = sign_beyond_by_disks(kq, k1, box->nx(), box->ny())) return s;
         const bool last = contractions == kNormalBoxContractions || !box->contract();
         if (!last) continue;
-        return sign_beyond(kq, e1.enclosure(), box->nx(), box->ny());
+        return sign_beyond(kq, k1, box->nx(), box->ny());
     }
 }
 

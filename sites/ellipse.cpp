@@ -5,6 +5,9 @@
 #include <arb_fmpz_poly.h>
 #include <flint/fmpq_poly.h>
 
+#include <cmath>
+#include <memory>
+
 namespace ellvor {
 
 namespace {
@@ -39,30 +42,109 @@ IntPolynomial homogeneous_tangent(const IntPolynomial& P, const IntPolynomial& W
     return r;
 }
 
-Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc)
-    : a_(std::move(a)), b_(std::move(b)), w_(std::move(w)), xc_(std::move(xc)), yc_(std::move(yc)) {
-    if (a_.sign() <= 0) throw Error("semi-axis a must be positive, got " + a_.str());
-    if (b_.sign() <= 0) throw Error("semi-axis b must be positive, got " + b_.str());
-    enclosure_ = {enclose(a_), enclose(b_), enclose(cos_rotation()), enclose(sin_rotation()), enclose(xc_), enclose(yc_)};
-    circle_ = a_ == b_;
-    dyadic_circle_ = circle_ && a_.is_small_dyadic() && xc_.is_small_dyadic() && yc_.is_small_dyadic();
+namespace {
+
+// The rational a double stands for (finite), exactly: m 2^e with m an integer
+// of 53 bits at most.
+Rational exact_rational(double d) {
+    Rational r;
+    if (d == 0) return r;
+    int e = 0;
+    const double m = std::frexp(d, &e);  // d = m 2^e, 1/2 <= |m| < 1
+    fmpq_set_si(r.get(), static_cast<slong>(std::ldexp(m, 53)), 1);
+    if (e >= 53)
+        fmpq_mul_2exp(r.get(), r.get(), static_cast<ulong>(e - 53));
+    else
+        fmpq_div_2exp(r.get(), r.get(), static_cast<ulong>(53 - e));
+    return r;
 }
 
-Rational Ellipse::cos_rotation() const {
-    if (w_.is_zero()) return Rational(1);
-    const Rational w2 = w_ * w_, one(1);
+// cos and sin of the rotation angle of w = tan(omega/2): (1 - w^2)/(1 + w^2), 2w/(1 + w^2).
+Rational cos_of(const Rational& w) {
+    if (w.is_zero()) return Rational(1);
+    const Rational w2 = w * w, one(1);
     return (one - w2) / (one + w2);
 }
 
-Rational Ellipse::sin_rotation() const {
-    if (w_.is_zero()) return Rational(0);
-    return Rational(2) * w_ / (Rational(1) + w_ * w_);
+Rational sin_of(const Rational& w) {
+    if (w.is_zero()) return Rational(0);
+    return Rational(2) * w / (Rational(1) + w * w);
 }
 
+}  // namespace
+
+Ellipse::Exact::Exact(Rational a, Rational b, Rational w, Rational xc, Rational yc)
+    : a(std::move(a)), b(std::move(b)), w(std::move(w)), xc(std::move(xc)), yc(std::move(yc)) {
+    enclosure = {enclose(this->a),         enclose(this->b),  enclose(cos_of(this->w)),
+                 enclose(sin_of(this->w)), enclose(this->xc), enclose(this->yc)};
+}
+
+Ellipse::Exact::~Exact() { delete polynomials.load(std::memory_order_acquire); }
+
+bool Ellipse::is_compact(const Rational& a, const Rational& b, const Rational& w, const Rational& xc,
+                         const Rational& yc) {
+    return w.is_zero() && a == b && a.is_small_dyadic() && xc.is_small_dyadic() && yc.is_small_dyadic();
+}
+
+Ellipse::Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc) {
+    if (a.sign() <= 0) throw Error("semi-axis a must be positive, got " + a.str());
+    if (b.sign() <= 0) throw Error("semi-axis b must be positive, got " + b.str());
+    circle_ = a == b;
+    dyadic_circle_ = circle_ && a.is_small_dyadic() && xc.is_small_dyadic() && yc.is_small_dyadic();
+    compact_ = is_compact(a, b, w, xc, yc);
+    if (compact_) {
+        // Its doubles are exact: its parameters come back from them (make_exact).
+        near_ = {a.to_double(), xc.to_double(), yc.to_double()};
+        return;
+    }
+    exact_.store(new Exact(std::move(a), std::move(b), std::move(w), std::move(xc), std::move(yc)),
+                 std::memory_order_relaxed);
+}
+
+Ellipse& Ellipse::operator=(const Ellipse& o) noexcept {
+    if (this == &o) return *this;
+    Exact* mine = share(o.exact_.load(std::memory_order_acquire));
+    release(exact_.exchange(mine, std::memory_order_acq_rel));
+    near_ = o.near_;
+    circle_ = o.circle_;
+    dyadic_circle_ = o.dyadic_circle_;
+    compact_ = o.compact_;
+    return *this;
+}
+
+Ellipse Ellipse::unshared() const {
+    Ellipse copy(*this);
+    Exact* own = nullptr;
+    if (!compact_) {
+        const Exact& e = exact();
+        own = new Exact(e.a, e.b, e.w, e.xc, e.yc);
+    }
+    release(copy.exact_.exchange(own, std::memory_order_acq_rel));
+    return copy;
+}
+
+const Ellipse::Exact& Ellipse::make_exact() const {
+    const Rational r = exact_rational(near_[0]);
+    auto* made = new Exact(r, r, Rational(0), exact_rational(near_[1]), exact_rational(near_[2]));
+    Exact* expected = nullptr;
+    // Another thread may have been first: keep its (equal) values.
+    if (!exact_.compare_exchange_strong(expected, made, std::memory_order_acq_rel, std::memory_order_acquire)) {
+        delete made;
+        return *expected;
+    }
+    return *made;
+}
+
+Rational Ellipse::cos_rotation() const { return compact_ ? Rational(1) : cos_of(w()); }
+
+Rational Ellipse::sin_rotation() const { return compact_ ? Rational(0) : sin_of(w()); }
+
 const Ellipse::Polynomials& Ellipse::polynomials() const {
-    if (std::shared_ptr<const Polynomials> ready = std::atomic_load(&polynomials_)) return *ready;
-    auto made = std::make_shared<Polynomials>();
+    const Exact& e = exact();
+    if (const Polynomials* ready = e.polynomials.load(std::memory_order_acquire)) return *ready;
+    auto made = std::make_unique<Polynomials>();
     const Rational one(1), two(2);
+    const Rational &a_ = e.a, &b_ = e.b, &xc_ = e.xc, &yc_ = e.yc;
     // Coefficients (constant, t, t^2):
     //   X = xc (1 + t^2) + a cos (1 - t^2) - 2 b sin t
     //   Y = yc (1 + t^2) + a sin (1 - t^2) + 2 b cos t
@@ -85,11 +167,12 @@ const Ellipse::Polynomials& Ellipse::polynomials() const {
     Rational E = -(B * xc_ + C * yc_);
     Rational F = A * xc_ * xc_ + two * B * xc_ * yc_ + C * yc_ * yc_ - a2 * b2;
     made->conic = {A, B, C, D, E, F};
-    std::shared_ptr<const Polynomials> expected;
-    std::shared_ptr<const Polynomials> mine = std::move(made);
+    const Polynomials* expected = nullptr;
     // Another thread may have been first: keep its (equal) values.
-    if (!std::atomic_compare_exchange_strong(&polynomials_, &expected, mine)) return *expected;
-    return *mine;
+    if (!e.polynomials.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel,
+                                               std::memory_order_acquire))
+        return *expected;
+    return *made.release();
 }
 
 Ellipse Ellipse::circle(const Rational& x, const Rational& y, const Rational& r) {
@@ -104,7 +187,7 @@ Point Ellipse::point_at(const Rational& t) const {
     return {x / w, y / w};
 }
 
-Point Ellipse::i_point() const { return {xc_ - a_ * cos_rotation(), yc_ - a_ * sin_rotation()}; }
+Point Ellipse::i_point() const { return {xc() - a() * cos_rotation(), yc() - a() * sin_rotation()}; }
 
 BallPoint Ellipse::point_at(const Ball& t, long prec) const {
     BallPoint p;
@@ -126,15 +209,21 @@ Rational Ellipse::conic_value(const Rational& x, const Rational& y) const {
 int Ellipse::side_of_point(const Rational& x, const Rational& y) const { return conic_value(x, y).sign(); }
 
 std::string Ellipse::str() const {
-    return a_.str() + " " + b_.str() + " " + w_.str() + " " + xc_.str() + " " + yc_.str();
+    const Exact& e = exact();
+    return e.a.str() + " " + e.b.str() + " " + e.w.str() + " " + e.xc.str() + " " + e.yc.str();
 }
 
 bool operator==(const Ellipse& p, const Ellipse& q) {
-    return p.a_ == q.a_ && p.b_ == q.b_ && p.w_ == q.w_ && p.xc_ == q.xc_ && p.yc_ == q.yc_;
+    // Compactness follows from the values: two compact circles are equal
+    // exactly when their (exact) doubles are, and never equal another site.
+    if (p.compact_ || q.compact_)
+        return p.compact_ && q.compact_ && p.near_ == q.near_;
+    const Ellipse::Exact &e = p.exact(), &f = q.exact();
+    return e.a == f.a && e.b == f.b && e.w == f.w && e.xc == f.xc && e.yc == f.yc;
 }
 
 std::array<Rational, 3> Ellipse::quadratic_form() const {
-    const Rational a2 = a_ * a_, b2 = b_ * b_;
+    const Rational a2 = a() * a(), b2 = b() * b();
     const Rational c = cos_rotation(), s = sin_rotation();
     return {b2 * c * c + a2 * s * s, (b2 - a2) * c * s, b2 * s * s + a2 * c * c};
 }
@@ -142,9 +231,15 @@ std::array<Rational, 3> Ellipse::quadratic_form() const {
 Ellipse::PointSetKey Ellipse::point_set_key() const {
     // From the quadratic form alone: a reader keys every site, and the conic
     // is made only on first use (polynomials()).
-    const Rational scale = a_ * a_ * b_ * b_;
+    if (compact_) {
+        // r^2 (x^2 + y^2) / r^4, without making the circle's Exact (a
+        // reader keys every site).
+        const Rational r = exact_rational(near_[0]), inverse = Rational(1) / (r * r);
+        return {exact_rational(near_[1]), exact_rational(near_[2]), inverse, Rational(0), inverse};
+    }
+    const Rational scale = a() * a() * b() * b();
     const auto [A, B, C] = quadratic_form();
-    return {xc_, yc_, A / scale, B / scale, C / scale};
+    return {xc(), yc(), A / scale, B / scale, C / scale};
 }
 
 }  // namespace ellvor

@@ -14,7 +14,7 @@
 #include "util/interval.hpp"
 
 #include <array>
-#include <memory>
+#include <atomic>
 #include <string>
 
 namespace ellvor {
@@ -37,15 +37,26 @@ public:
     Ellipse(Rational a, Rational b, Rational w, Rational xc, Rational yc);
     // A circle of radius r centered at (x, y).
     static Ellipse circle(const Rational& x, const Rational& y, const Rational& r);
+    // Copies share the exact parameters (immutable, reference counted); a
+    // move is a copy (no moved-from state to guard).
+    Ellipse(const Ellipse& o) noexcept
+        : near_(o.near_), circle_(o.circle_), dyadic_circle_(o.dyadic_circle_), compact_(o.compact_) {
+        exact_.store(share(o.exact_.load(std::memory_order_acquire)), std::memory_order_relaxed);
+    }
+    Ellipse& operator=(const Ellipse& o) noexcept;
+    // A copy that shares nothing with this one (its own exact parameters,
+    // their polynomials not made yet; a compact circle none): what a holder
+    // of sites that counts its own storage keeps.
+    Ellipse unshared() const;
+    ~Ellipse() { release(exact_.load(std::memory_order_acquire)); }
 
-    const Rational& a() const { return a_; }
-    const Rational& b() const { return b_; }
-    const Rational& w() const { return w_; }
-    const Rational& xc() const { return xc_; }
-    const Rational& yc() const { return yc_; }
-    Point center() const { return {xc_, yc_}; }
-    // a == b, decided once: every predicate's cascade asks first (a flag in
-    // the padding after dyadic_circle_: no byte more).
+    const Rational& a() const { return exact().a; }
+    const Rational& b() const { return exact().b; }
+    const Rational& w() const { return exact().w; }
+    const Rational& xc() const { return exact().xc; }
+    const Rational& yc() const { return exact().yc; }
+    Point center() const { return {xc(), yc()}; }
+    // a == b, decided once: every predicate's cascade asks first.
     bool is_circle() const { return circle_; }
     // A circle whose center and radius are small dyadic rationals
     // (Rational::is_small_dyadic): exact doubles, the input of the circles'
@@ -60,11 +71,22 @@ public:
     Rational sin_rotation() const;
 
     // Double enclosures of a, b, cos, sin of the rotation and the center, for
-    // the floating-point filters (computed once; the ellipse is immutable).
+    // the floating-point filters: enclose(q) of each (util/interval.hpp),
+    // [down(x^), up(x^)] around its nearest double x^. An ellipse keeps them
+    // with its exact parameters (made once: the filters ask on every call);
+    // a compact circle makes them from its three doubles, inlined always so
+    // that a caller's unused fields are not computed.
     struct Enclosure {
         Interval a, b, cos, sin, xc, yc;
     };
-    const Enclosure& enclosure() const { return enclosure_; }
+    [[gnu::always_inline]] Enclosure enclosure() const {
+        if (compact_) {
+            const Interval r = Interval::around(near_[0]);
+            return {r, r, Interval::around(1.0), Interval::around(0.0), Interval::around(near_[1]),
+                    Interval::around(near_[2])};
+        }
+        return exact_.load(std::memory_order_relaxed)->enclosure;  // made with the ellipse, never null
+    }
 
     // Homogeneous parametrization (X : Y : W), integer polynomials in t.
     const IntPolynomial& X() const { return polynomials().X; }
@@ -104,23 +126,49 @@ public:
     PointSetKey point_set_key() const;
 
 private:
-    // The parametrization and the conic: about half of a site's memory, and
-    // only the exact and Arb stages read them (a few sites of a large build),
-    // so they are made on first use. Copies share them (immutable).
+    // The parametrization and the conic: only the exact and Arb stages read
+    // them (a few sites of a large build), so they are made on first use.
     struct Polynomials {
         IntPolynomial X, Y, W, Tx, Ty;
         std::array<Rational, 6> conic;
     };
+    // The exact parameters, shared by copies. A compact circle (is_compact)
+    // has none until an exact stage asks: its doubles are its parameters.
+    struct Exact {
+        Rational a, b, w, xc, yc;
+        Enclosure enclosure;
+        // Written once, by whichever thread asks first (compare and swap: a
+        // lost race only computes the same values twice).
+        mutable std::atomic<const Polynomials*> polynomials{nullptr};
+        std::atomic<long> references{1};
+        Exact(Rational a, Rational b, Rational w, Rational xc, Rational yc);
+        ~Exact();
+    };
+    // A circle of rotation 0 whose radius and center are small dyadic
+    // rationals: its doubles give them back exactly, so a large build of
+    // circles keeps 40 bytes a site (an ellipse adds its Exact, about 210).
+    static bool is_compact(const Rational& a, const Rational& b, const Rational& w, const Rational& xc,
+                           const Rational& yc);
+    const Exact& exact() const {
+        if (const Exact* e = exact_.load(std::memory_order_acquire)) return *e;
+        return make_exact();
+    }
+    const Exact& make_exact() const;  // a compact circle's, from its doubles
+    static Exact* share(Exact* e) {
+        if (e) e->references.fetch_add(1, std::memory_order_relaxed);
+        return e;
+    }
+    static void release(Exact* e) {
+        if (e && e->references.fetch_sub(1, std::memory_order_acq_rel) == 1) delete e;
+    }
     const Polynomials& polynomials() const;
     // The conic's quadratic part {A, B, C}.
     std::array<Rational, 3> quadratic_form() const;
 
-    Rational a_, b_, w_, xc_, yc_;
-    Enclosure enclosure_;
-    bool dyadic_circle_ = false, circle_ = false;
-    // Written once, by whichever thread asks first (atomic shared_ptr access:
-    // a lost race only computes the same values twice).
-    mutable std::shared_ptr<const Polynomials> polynomials_;
+    // A compact circle's radius and center, exact doubles (unused else).
+    std::array<double, 3> near_{};
+    mutable std::atomic<Exact*> exact_{nullptr};
+    bool circle_ = false, dyadic_circle_ = false, compact_ = false;
 };
 
 }  // namespace ellvor

@@ -306,6 +306,9 @@ public:
             std::size_t j = rng_.below(i);
             std::swap(placed_[i - 1], placed_[j]);
         }
+        // The separation tests made the exact parameters of the circles they
+        // read; a compact circle does not keep them (sites/ellipse.hpp).
+        for (Ellipse& e : placed_) e = e.unshared();
         return std::move(placed_);
     }
 

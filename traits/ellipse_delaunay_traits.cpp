@@ -44,12 +44,17 @@ std::uint64_t unordered_pair_key(SiteId p, SiteId q) {
 
 }  // namespace
 
-EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {}
+EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites_(std::move(sites)) {
+    // Copies of an ellipse share its exact parameters: the traits keep their
+    // own, so that a graph's memory is all its own (and a compact circle
+    // keeps none, whatever its caller asked of it).
+    for (Ellipse& e : sites_) e = e.unshared();
+}
 
 Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
-    // The areas a b: equal sizes first (circles of one radius: common), then
-    // their double enclosures (the insertion order sorts by them), exactly
-    // only when those overlap.
+    // The areas a b: their double enclosures (the insertion order sorts by
+    // them), then equal sizes (circles of one radius: common), exactly only
+    // when the enclosures overlap.
     const Ellipse &ea = site(a), &eb = site(b);
     // Circles of doubles (a build's sort compares n log n pairs): the radius
     // is its double, up(lo) of its enclosure (circles/semi_static.hpp), and
@@ -58,10 +63,12 @@ Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
         const double ra = Interval::up(ea.enclosure().a.lo), rb = Interval::up(eb.enclosure().a.lo);
         return ra > rb ? Sign::positive : ra < rb ? Sign::negative : Sign::zero;
     }
-    if (ea.a() == eb.a() && ea.b() == eb.b()) return Sign::zero;
+    // The enclosures first: they are in the site, its exact parameters one
+    // pointer away.
     const Interval area_a = ea.enclosure().a * ea.enclosure().b, area_b = eb.enclosure().a * eb.enclosure().b;
     if (area_b.hi < area_a.lo) return Sign::positive;
     if (area_a.hi < area_b.lo) return Sign::negative;
+    if (ea.a() == eb.a() && ea.b() == eb.b()) return Sign::zero;
     const Rational x = ea.a() * ea.b(), y = eb.a() * eb.b();
     return y < x ? Sign::positive : x < y ? Sign::negative : Sign::zero;
 }

@@ -49,7 +49,20 @@ struct Interval {
     Interval(double l, double h) : lo(l), hi(h) {}
     // An enclosure of a real known to within one ulp of x (e.g. a correctly
     // rounded conversion).
-    static Interval around(double x) { return {down(x), up(x)}; }
+    // {down(x), up(x)} from one bit pattern for a finite nonzero x (an
+    // Ellipse makes six of these on each enclosure() call): the pattern,
+    // read as a signed integer, steps by -(s|1) and +(s|1), s its sign mask.
+    static Interval around(double x) {
+        if (!(std::fabs(x) < std::numeric_limits<double>::infinity()) || x == 0) return {down(x), up(x)};
+        std::int64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        const std::int64_t step = (bits >> 63) | 1;
+        const std::int64_t below = bits - step, above = bits + step;
+        Interval r;
+        std::memcpy(&r.lo, &below, sizeof below);
+        std::memcpy(&r.hi, &above, sizeof above);
+        return r;
+    }
 
     friend Interval operator+(Interval a, Interval b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
     friend Interval operator-(Interval a, Interval b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }

@@ -84,7 +84,7 @@ TEST_CASE("Triangulation: an empty structure holds the infinite vertex only", "[
     CHECK(t.number_of_vertices() == 1);
     CHECK(t.number_of_faces() == 0);
     CHECK(t.finite_vertices().empty());
-    CHECK(t.vertex(Triangulation::kInfiniteVertex).site == Triangulation::kInfiniteSite);
+    CHECK(t.vertex(Triangulation::kInfiniteVertex).site() == Triangulation::kInfiniteSite);
     CHECK(t.check() == "");
 }
 
@@ -94,9 +94,9 @@ TEST_CASE("Triangulation: make_tetrahedron", "[graph][triangulation]") {
     check_local_structure(t);
     CHECK(t.number_of_vertices() == 4);
     CHECK(t.number_of_faces() == 4);
-    CHECK(t.vertex(v[0]).site == kA);
-    CHECK(t.vertex(v[1]).site == kB);
-    CHECK(t.vertex(v[2]).site == kC);
+    CHECK(t.vertex(v[0]).site() == kA);
+    CHECK(t.vertex(v[1]).site() == kB);
+    CHECK(t.vertex(v[2]).site() == kC);
     // One finite face, (a, b, c) counter-clockwise; three infinite ones.
     const FaceIndex f = finite_face(t);
     CHECK(same_cycle({t.face(f).v.begin(), t.face(f).v.end()}, {v[0], v[1], v[2]}));
@@ -157,7 +157,7 @@ TEST_CASE("Triangulation: insert_degree_2, remove_degree_2, mirror_index on dege
     const Edge across = t.mirror_edge(ab);
     const VertexIndex d = t.insert_degree_2(ab, kD);
     check_local_structure(t);
-    CHECK(t.vertex(d).site == kD);
+    CHECK(t.vertex(d).site() == kD);
     CHECK(t.number_of_vertices() == 5);
     CHECK(t.number_of_faces() == 6);
     // d sits between f and its former neighbour, in two faces on {a, b, d}.
@@ -217,7 +217,7 @@ TEST_CASE("Triangulation: star_hole", "[graph][triangulation]") {
     check_local_structure(t);
     CHECK(t.number_of_vertices() == 5);
     CHECK(t.number_of_faces() == 6);
-    CHECK(t.vertex(e).site == kE);
+    CHECK(t.vertex(e).site() == kE);
     CHECK_FALSE(t.is_vertex(d));
     CHECK(same_cycle(neighbours(t, e), {v[0], v[1], v[2]}));
     // A boundary that is not a cycle is refused before anything changes.
@@ -266,4 +266,21 @@ TEST_CASE("Triangulation: check() catches corrupted structures", "[graph][triang
         t.delete_vertex(d);
         CHECK(t.check() != "");
     }
+}
+
+TEST_CASE("Triangulation: a vertex keeps its site id in 32 bits, the two labels apart", "[graph][triangulation]") {
+    Triangulation t;
+    const VertexIndex big = t.add_vertex(Triangulation::kMaxSite), zero = t.add_vertex(0);
+    const VertexIndex bogus = t.add_vertex(Triangulation::kBogusSite), inf = t.add_vertex(Triangulation::kInfiniteSite);
+    CHECK(t.vertex(big).site() == Triangulation::kMaxSite);
+    CHECK(t.vertex(zero).site() == 0);
+    CHECK(t.vertex(bogus).site() == Triangulation::kBogusSite);
+    CHECK(t.vertex(inf).site() == Triangulation::kInfiniteSite);
+    CHECK(t.vertex(Triangulation::kInfiniteVertex).site() == Triangulation::kInfiniteSite);
+    CHECK_THROWS_AS(t.add_vertex(Triangulation::kMaxSite + 1), Error);
+    CHECK_THROWS_AS(t.add_vertex(SiteId{1} << 40), Error);
+    for (VertexIndex v : {big, zero, bogus, inf}) CHECK(t.is_vertex(v));
+    t.delete_vertex(zero);
+    CHECK(!t.is_vertex(zero));
+    CHECK(t.is_vertex(big));
 }

@@ -81,3 +81,35 @@ TEST_CASE("Interval products: the NaN-ignoring hull of the four endpoint product
     }
     CHECK(with_nan_product > 1000);  // the 0 * inf path is exercised
 }
+
+TEST_CASE("Interval::around is {down(x), up(x)}, bit for bit", "[interval]") {
+    // around() steps the bit pattern itself (the fast path of an Ellipse's
+    // enclosures); it must give the very doubles down() and up() give, on
+    // random patterns (subnormals, huge, negative) and on the edge cases.
+    auto bits_of = [](double x) {
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        return b;
+    };
+    auto same = [&](double x) {
+        const Interval r = Interval::around(x);
+        return bits_of(r.lo) == bits_of(Interval::down(x)) && bits_of(r.hi) == bits_of(Interval::up(x));
+    };
+    std::mt19937_64 rng(52);
+    for (int k = 0; k < 200000; ++k) {
+        const std::uint64_t b = rng();
+        double x;
+        std::memcpy(&x, &b, sizeof x);
+        if (x != x) continue;  // NaN: checked below
+        INFO("x = " << x);
+        REQUIRE(same(x));
+        REQUIRE(same(x / 0x1p1000));  // toward the subnormals
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    for (double x : {0.0, -0.0, std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::denorm_min(),
+                     std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
+                     -std::numeric_limits<double>::max(), 1.0, -1.0, 0.5, inf, -inf})
+        CHECK(same(x));
+    const Interval n = Interval::around(std::nan(""));
+    CHECK((n.lo != n.lo && n.hi != n.hi));
+}
