@@ -228,7 +228,7 @@ public:
         bool meets = false;  // a neighbour crosses or touches the site
         for (const CellEdge& e : cell.edges) {
             bisectors.push_back(std::make_unique<NormalRayBisector>(site, sites_[e.neighbor]));
-            meets = meets || bisectors.back()->sites_meet();
+            meets = meets || (bisectors.back()->signed_tie() && NormalRayBisector::meet(site, sites_[e.neighbor]));
         }
 
         // The scale of the tolerances and the length unit: the cell is at
@@ -249,7 +249,7 @@ public:
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector& bisector = *bisectors[k];
-            NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor], bisector.sites_meet());
+            NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor], bisector.signed_tie());
             Ball ends[2] = {lifted[k], lifted[k + 1]};
             bool integrated = false;
             if (in_doubles) {
@@ -323,7 +323,7 @@ private:
         const GaussLegendreRule& rule = rules_.rule(8);
         double area = site_area(site, 64).mid_double();
         for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor], bisectors[k]->sites_meet());
+            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor], bisectors[k]->signed_tie());
             const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
@@ -344,7 +344,7 @@ private:
         acb_calc_integrate_opt_init(options);
         // 20 bits beyond the goal, in whole limbs.
         const long point_precision = 64 * ((goal + 20 + 63) / 64);
-        NormalRayBisector point_bisector(bisector.first(), bisector.second(), bisector.sites_meet());
+        NormalRayBisector point_bisector(bisector.first(), bisector.second(), bisector.signed_tie());
         DensityCache cache;
         ComplexBall a, b;
         arb_get_mid_arb(a.real(), ends[0].get());

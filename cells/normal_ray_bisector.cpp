@@ -157,10 +157,10 @@ void normal_lengths(const Boundary& bp, const Boundary& bq, long prec, ComplexBa
     acb_sqrt_analytic(nq.get(), bq.n2.get(), 1, prec);
 }
 
-// The signed tie of sites that meet (see the header), g = (V - Q) . n~q -
+// The signed tie (see the header), g = (V - Q) . n~q -
 // s N Nq, and dg/ds = n~ . n~q - N Nq (its derivative in the foot point,
 // Nq' (t Nq - s N), vanishes on the bisector).
-void signed_tie(const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec, ComplexBall& g,
+void signed_tie_value(const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec, ComplexBall& g,
                 ComplexBall& dg_ds) {
     ComplexBall vx, vy, np, nq, nn, t;
     ray_point(bp, s, prec, vx, vy);
@@ -209,7 +209,7 @@ struct Matrix2 {
 //     J = [ n~ . Q'         -|Q'|^2 - (V - Q) . (Q - Cq) ]
 //         [ 2 (P - Q) . n~  -2 F0                        ]
 //     F_theta = ( (P' + s n~') . Q',  2 (P - Q) . (P' + s n~') ).
-// For sites that meet, the signed tie F1 = (V - Q) . n~q - s N Nq (the
+// With the signed tie, F1 = (V - Q) . n~q - s N Nq (the
 // header) has the row (with Q' . n~q = 0 and N' = n~ . n~' / N)
 //     [ n~ . n~q - N Nq,   (V - Q) . n~q' - s N (n~q . n~q') / Nq ],
 //     F_theta = (P' + s n~') . n~q - s (n~ . n~' / N) Nq.
@@ -218,7 +218,7 @@ struct BisectorSystem {
     ComplexBall F[2], F_theta[2];
     Matrix2 J;
 
-    void evaluate(const SiteBalls& q, const Boundary& bp, const Boundary& bq, const ComplexBall& s, bool meet,
+    void evaluate(const SiteBalls& q, const Boundary& bp, const Boundary& bq, const ComplexBall& s, bool is_signed,
                   long prec) {
         ComplexBall vx, vy, dx, dy, ex, ey, wx, wy, cx, cy, t;
         ray_point(bp, s, prec, vx, vy);
@@ -253,7 +253,7 @@ struct BisectorSystem {
         dot(wx, wy, bq.dx, bq.dy, prec, F_theta[0]);
         dot(ex, ey, wx, wy, prec, F_theta[1]);
         acb_mul_2exp_si(F_theta[1].get(), F_theta[1].get(), 1);
-        if (meet) signed_row(bp, bq, s, dx, dy, wx, wy, prec);
+        if (is_signed) signed_row(bp, bq, s, dx, dy, wx, wy, prec);
     }
 
     // Row 1 of the signed tie (above), V - Q = (dx, dy), P' + s n~' = (wx, wy).
@@ -311,10 +311,11 @@ SiteBalls::SiteBalls(const Ellipse& e, long prec)
     : a(e.a(), prec), b(e.b(), prec), cos(e.cos_rotation(), prec), sin(e.sin_rotation(), prec), xc(e.xc(), prec),
       yc(e.yc(), prec) {}
 
-NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q) : NormalRayBisector(p, q, meet(p, q)) {}
+NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q)
+    : NormalRayBisector(p, q, uses_signed_tie(p, q)) {}
 
-NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q, bool sites_meet)
-    : p_(&p), q_(&q), p_shape_(EllipseShape::of(p)), q_shape_(EllipseShape::of(q)), meet_(sites_meet) {
+NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q, bool signed_tie)
+    : p_(&p), q_(&q), p_shape_(EllipseShape::of(p)), q_shape_(EllipseShape::of(q)), signed_(signed_tie) {
     size_ = std::max({p_shape_.a, p_shape_.b, q_shape_.a, q_shape_.b,
                       std::hypot(p_shape_.xc - q_shape_.xc, p_shape_.yc - q_shape_.yc)});
 }
@@ -323,6 +324,15 @@ bool NormalRayBisector::meet(const Ellipse& p, const Ellipse& q) {
     if (bounding_circles_apart_in_doubles(p, q)) return false;
     const RelativePosition position = *relative_position(p, q);
     return position == RelativePosition::intersecting || position == RelativePosition::externally_tangent;
+}
+
+bool NormalRayBisector::uses_signed_tie(const Ellipse& p, const Ellipse& q) {
+    // Every pair that meets (its bounding circles overlap, certified), and, a
+    // choice either way, pairs whose centers are within 5/4 of the sum of
+    // their larger semi-axes: close pairs.
+    if (!bounding_circles_apart_in_doubles(p, q)) return true;
+    const EllipseShape ps = EllipseShape::of(p), qs = EllipseShape::of(q);
+    return std::hypot(ps.xc - qs.xc, ps.yc - qs.yc) < 1.25 * (std::max(ps.a, ps.b) + std::max(qs.a, qs.b));
 }
 
 void NormalRayBisector::set_precision(long prec) {
@@ -354,7 +364,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     const double theta0 = arf_get_d(arb_midref(theta.real()), ARF_RND_NEAR);
     if (!std::isfinite(theta0)) return false;
     const std::optional<double> rho = equal_distance_on_normal(p_shape_, q_shape_, theta0, 1e12 * size_);
-    if (!rho || !(meet_ || *rho > 0)) return false;
+    if (!rho || !(signed_ || *rho > 0)) return false;
     double px, py, nx, ny;
     p_shape_.point(theta0, px, py);
     p_shape_.normal(theta0, nx, ny);
@@ -380,8 +390,8 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         ray_point(bp, s0, prec, vx, vy);
         foot_newton(qb_, vx, vy, 1, prec, phi0);
         boundary_at(qb_, phi0, prec, bq);
-        if (meet_)
-            signed_tie(bp, bq, s0, prec, g, dg);
+        if (signed_)
+            signed_tie_value(bp, bq, s0, prec, g, dg);
         else
             tie(bp, bq, s0, prec, &g, &dg, nullptr);
         acb_div(step.get(), g.get(), dg.get(), prec);
@@ -397,7 +407,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
 
     // The system in x = (s, phi) with theta as a parameter, at the middle.
     BisectorSystem at_mid;
-    at_mid.evaluate(qb_, bp, bq, s0, meet_, prec);
+    at_mid.evaluate(qb_, bp, bq, s0, signed_, prec);
     Matrix2 C;  // the midpoint inverse of the Jacobian
     if (!at_mid.inverse_of_mid_jacobian(prec, C)) return false;
     // The root moves with theta at about x' = -J^-1 F_theta: the unknown is
@@ -424,7 +434,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     boundary_at(pb_, theta, prec, bpT);
     boundary_at(qb_, x_lin[1], prec, bq);
     BisectorSystem on_line;
-    on_line.evaluate(qb_, bpT, bq, x_lin[0], meet_, prec);
+    on_line.evaluate(qb_, bpT, bq, x_lin[0], signed_, prec);
     ComplexBall H[2];
     for (int i = 0; i < 2; ++i) {
         ComplexBall& h = H[i];
@@ -445,8 +455,8 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return false;
         ComplexBall Y[2] = {square(zero, r[0]), square(zero, r[1])}, X[2];
         for (int i = 0; i < 2; ++i) acb_add(X[i].get(), x_lin[i].get(), Y[i].get(), prec);
-        // Re s > 0, or Re s > -r_p for sites that meet (see the header).
-        if (meet_) {
+        // Re s > 0, or Re s > -r_p with the signed tie (see the header).
+        if (signed_) {
             Ball depth;
             arb_add(depth.get(), X[0].real(), medial_p_.get(), prec);
             if (!arb_is_positive(depth.get())) return false;
@@ -455,7 +465,7 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         }
         boundary_at(qb_, X[1], prec, bq);
         BisectorSystem on_box;
-        on_box.evaluate(qb_, bpT, bq, X[0], meet_, prec);
+        on_box.evaluate(qb_, bpT, bq, X[0], signed_, prec);
         // K = -C H + (I - C J(X)) Y inside the interior of Y?
         Matrix2 CJ;
         C.times(on_box.J, prec, CJ);
@@ -473,15 +483,15 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         }
         if (inside) {
             // One root in X, holomorphic in theta; Q is q's nearest point to V
-            // when V - Q points out of q (Re (V - Q) . n~q > 0), or for sites
-            // that meet when V is above q's medial axis (Re ((V - Q) . n~q +
+            // when V - Q points out of q (Re (V - Q) . n~q > 0), or with the
+            // signed tie when V is above q's medial axis (Re ((V - Q) . n~q +
             // r_q Nq^2) > 0; see the header).
             ComplexBall side;
             ray_point(bpT, X[0], prec, vx, vy);
             acb_sub(vx.get(), vx.get(), bq.x.get(), prec);
             acb_sub(vy.get(), vy.get(), bq.y.get(), prec);
             dot(vx, vy, bq.nx, bq.ny, prec, side);
-            if (meet_) {
+            if (signed_) {
                 ComplexBall depth;
                 acb_mul_arb(depth.get(), bq.n2.get(), medial_q_.get(), prec);
                 acb_add(side.get(), side.get(), depth.get(), prec);

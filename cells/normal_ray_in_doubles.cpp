@@ -117,27 +117,27 @@ struct Differences {
     Differences(const Frame<T>& bp, const Frame<T>& bq, const T& s)
         : dx(bp.x + s * bp.nx - bq.x), dy(bp.y + s * bp.ny - bq.y), ex(bp.x - bq.x), ey(bp.y - bq.y),
           e_n(dot(ex, ey, bp.nx, bp.ny)) {}
-    // For sites that meet F1 is the signed tie (V - Q) . n~q - s N Nq
+    // With the signed tie F1 is (V - Q) . n~q - s N Nq
     // (normal_ray_bisector.hpp): the frames must then hold N^2 (Parts all).
-    void residual(const Frame<T>& bp, const Frame<T>& bq, const T& s, bool meet, T (&F)[2]) const {
+    void residual(const Frame<T>& bp, const Frame<T>& bq, const T& s, bool is_signed, T (&F)[2]) const {
         F[0] = dot(dx, dy, bq.dx, bq.dy);
-        F[1] = meet ? dot(dx, dy, bq.nx, bq.ny) - s * (root_of(bp.n2) * root_of(bq.n2))
+        F[1] = is_signed ? dot(dx, dy, bq.nx, bq.ny) - s * (root_of(bp.n2) * root_of(bq.n2))
                     : dot(ex, ey, ex, ey) + 2.0 * (s * e_n);
     }
 };
 
 // The bisector system of normal_ray_bisector.cpp (BisectorSystem) at s, p's
 // boundary bp and q's boundary bq: F, its Jacobian in (s, phi), and the
-// theta-derivative of its second row; the signed tie's row when the sites
-// meet (both frames whole).
+// theta-derivative of its second row; the signed tie's row when it is the
+// signed one (both frames whole).
 template <class T>
 struct System {
     T F[2], J[2][2], F_theta[2];
 
     template <class S>
-    System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s, bool meet) {
+    System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s, bool is_signed) {
         const Differences<T> d(bp, bq, s);
-        d.residual(bp, bq, s, meet, F);
+        d.residual(bp, bq, s, is_signed, F);
         const T &dx = d.dx, &dy = d.dy, &ex = d.ex, &ey = d.ey, &e_n = d.e_n;
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
         J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
@@ -146,7 +146,7 @@ struct System {
         const T wx = bp.dx + s * bp.dnx, wy = bp.dy + s * bp.dny;  // W = P' + s n~'
         F_theta[0] = dot(wx, wy, bq.dx, bq.dy);
         F_theta[1] = 2.0 * dot(ex, ey, wx, wy);
-        if (!meet) return;
+        if (!is_signed) return;
         const T np = root_of(bp.n2), nq = root_of(bq.n2), nn = np * nq;
         J[1][0] = dot(bp.nx, bp.ny, bq.nx, bq.ny) - nn;
         J[1][1] = dot(dx, dy, bq.dnx, bq.dny) - s * np * dot(bq.nx, bq.ny, bq.dnx, bq.dny) / nq;
@@ -210,17 +210,17 @@ Interval medial_depth(const Site& e) {
 
 // The frame's parts that q's frames need: the signed tie also asks N^2 and n~'.
 template <class T>
-int q_parts(bool meet) {
-    return meet ? Frame<T>::all : Frame<T>::tangent;
+int q_parts(bool is_signed) {
+    return is_signed ? Frame<T>::all : Frame<T>::tangent;
 }
 
 }  // namespace
 
 NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q)
-    : NormalRayInDoubles(p, q, NormalRayBisector::meet(p, q)) {}
+    : NormalRayInDoubles(p, q, NormalRayBisector::uses_signed_tie(p, q)) {}
 
-NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool sites_meet)
-    : p_(site_of(p)), q_(site_of(q)), meet_(sites_meet), medial_p_(medial_depth(p_)), medial_q_(medial_depth(q_)) {
+NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool signed_tie)
+    : p_(site_of(p)), q_(site_of(q)), signed_(signed_tie), medial_p_(medial_depth(p_)), medial_q_(medial_depth(q_)) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
     const double a = magnitude(q_.a), b = magnitude(q_.b), c = magnitude(q_.c), s = magnitude(q_.s);
@@ -236,15 +236,15 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
     // (rounding noise).
     double previous = INFINITY;
     for (int step = 0; step < 8; ++step) {
-        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), q_parts<double>(meet_)),
-                                x[0], meet_);
+        const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), q_parts<double>(signed_)),
+                                x[0], signed_);
         if (!inverse(at.J, C)) return false;
         const double f0 = at.F[0], f1 = at.F[1];
         const double d0 = C[0][0] * f0 + C[0][1] * f1, d1 = C[1][0] * f0 + C[1][1] * f1;
         x[0] -= d0, x[1] -= d1;
         if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
         const double size = std::max(std::fabs(d0) / (1 + std::fabs(x[0])), std::fabs(d1) / (1 + std::fabs(x[1])));
-        if (size <= 1e-15 || (size > 0.25 * previous && size < 1e-8)) return x[0] > (meet_ ? -medial_p_.hi : 0.0);
+        if (size <= 1e-15 || (size > 0.25 * previous && size < 1e-8)) return x[0] > (signed_ ? -medial_p_.hi : 0.0);
         previous = size;
     }
     return false;
@@ -316,7 +316,7 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval&
 bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     const std::optional<double> rho = equal_distance_on_normal(ps, qs, theta0, 1e12 * size_);
-    if (!rho || !(meet_ || *rho > 0)) return false;
+    if (!rho || !(signed_ || *rho > 0)) return false;
     double px, py, nx, ny;
     ps.point(theta0, px, py);
     ps.normal(theta0, nx, ny);
@@ -334,10 +334,10 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     const Frame<Interval> bp(p_, sin, cos);
     Interval sin_phi, cos_phi;
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
-    const Frame<Interval> bq0(q_, sin_phi, cos_phi, q_parts<Interval>(meet_));
+    const Frame<Interval> bq0(q_, sin_phi, cos_phi, q_parts<Interval>(signed_));
     const Interval s0(x0[0]);
     Interval F[2];
-    Differences<Interval>(bp, bq0, s0).residual(bp, bq0, s0, meet_, F);
+    Differences<Interval>(bp, bq0, s0).residual(bp, bq0, s0, signed_, F);
     // K = -C F(x0) + (I - C J(X)) (X - x0) inside the interior of X - x0?
     Interval CF[2];
     for (int i = 0; i < 2; ++i) CF[i] = C[i][0] * F[0] + C[i][1] * F[1];
@@ -346,13 +346,13 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
     for (int attempt = 0; attempt < 3; ++attempt) {
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
         const Interval s = Interval(x0[0]) + sym(r[0]);
-        // s > 0, or s > -r_p for sites that meet (normal_ray_bisector.hpp).
-        if (!(meet_ ? s + medial_p_ : s).positive()) return std::nullopt;
+        // s > 0, or s > -r_p with the signed tie (normal_ray_bisector.hpp).
+        if (!(signed_ ? s + medial_p_ : s).positive()) return std::nullopt;
         // On phi0 +- r: sine and cosine move by at most r (their derivatives
         // are at most 1), and q's frame, linear in them, by r times q_slack_
         // (the whole frame of the signed tie from the interval's sine and cosine).
         Frame<Interval> bq = bq0;
-        if (meet_) {
+        if (signed_) {
             sin_cos(Interval(x0[1]) + sym(r[1]), sin_phi, cos_phi);
             bq = Frame<Interval>(q_, sin_phi, cos_phi);
         } else {
@@ -360,7 +360,7 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
             bq.x = bq.x + move[0], bq.dx = bq.dx + move[0], bq.ny = bq.ny + move[0];
             bq.y = bq.y + move[1], bq.dy = bq.dy + move[1], bq.nx = bq.nx + move[1];
         }
-        const System<Interval> on_box(q_, bp, bq, s, meet_);
+        const System<Interval> on_box(q_, bp, bq, s, signed_);
         const Interval Y[2] = {sym(r[0]), sym(r[1])};
         Interval K[2];
         const bool inside = krawczyk_inside(C, CF, on_box.J, Y, r, K);
@@ -368,8 +368,8 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
             for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));
             continue;
         }
-        // V outside q along its normal, or above q's medial axis for sites that meet.
-        if (!(meet_ ? side(bp, bq, s) + medial_q_ * bq.n2 : side(bp, bq, s)).positive()) return std::nullopt;
+        // V outside q along its normal, or above q's medial axis with the signed tie.
+        if (!(signed_ ? side(bp, bq, s) + medial_q_ * bq.n2 : side(bp, bq, s)).positive()) return std::nullopt;
         last_[0] = x0[0], last_[1] = x0[1];
         // The root: s in x0 + K; the tie derivatives over X contain their values there.
         const Interval& g_s = on_box.J[1][0];
@@ -385,14 +385,14 @@ namespace {
 // = (s_c, phi_c) + slope t.
 template <class K>
 void residual_jet(const Site& p, const Site& q, const K& theta_c, const K& s_c, const K& phi_c,
-                  const double (&slope)[2], bool meet, Jet<K> (&F)[2]) {
+                  const double (&slope)[2], bool is_signed, Jet<K> (&F)[2]) {
     Jet<K> sin, cos;
     sin_cos(theta_c, K(Interval(1.0)), sin, cos);
-    const Frame<Jet<K>> bp(p, sin, cos, meet ? Frame<Jet<K>>::all : Frame<Jet<K>>::point_normal);
+    const Frame<Jet<K>> bp(p, sin, cos, is_signed ? Frame<Jet<K>>::all : Frame<Jet<K>>::point_normal);
     sin_cos(phi_c, K(Interval(slope[1])), sin, cos);
-    const Frame<Jet<K>> bq(q, sin, cos, q_parts<Jet<K>>(meet));
+    const Frame<Jet<K>> bq(q, sin, cos, q_parts<Jet<K>>(is_signed));
     const Jet<K> s{{s_c, K(Interval(slope[0])), K(Interval(0.0))}};
-    Differences<Jet<K>>(bp, bq, s).residual(bp, bq, s, meet, F);
+    Differences<Jet<K>>(bp, bq, s).residual(bp, bq, s, is_signed, F);
 }
 
 }  // namespace
@@ -416,7 +416,7 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     if (!newton(mid, last_, x0, C) && !(ray_start(mid, start) && newton(mid, start, x0, C))) return std::nullopt;
     const Frame<double> bp_mid(p_.shape, std::sin(mid), std::cos(mid));
     const System<double> at(q_.shape, bp_mid,
-                            Frame<double>(q_.shape, std::sin(x0[1]), std::cos(x0[1]), q_parts<double>(meet_)), x0[0], meet_);
+                            Frame<double>(q_.shape, std::sin(x0[1]), std::cos(x0[1]), q_parts<double>(signed_)), x0[0], signed_);
     if (!inverse(at.J, C)) return std::nullopt;
     double slope[2];
     for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
@@ -436,9 +436,9 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     // interval evaluation over the box loses (a first-order mean-value form
     // here overestimated H several times over and kept the boxes small).
     Jet<Interval> at_middle[2];
-    residual_jet(p_, q_, Interval(mid), Interval(x0[0]), Interval(x0[1]), slope, meet_, at_middle);
+    residual_jet(p_, q_, Interval(mid), Interval(x0[0]), Interval(x0[1]), slope, signed_, at_middle);
     Jet<CI> over_box[2];
-    residual_jet(p_, q_, theta, x_lin[0], x_lin[1], slope, meet_, over_box);
+    residual_jet(p_, q_, theta, x_lin[0], x_lin[1], slope, signed_, over_box);
     const CI dtheta2 = dtheta * dtheta;
     CI CH[2], H[2];
     for (int i = 0; i < 2; ++i) H[i] = CI(at_middle[i].c[0]) + at_middle[i].c[1] * dtheta + over_box[i].c[2] * dtheta2;
@@ -452,18 +452,18 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
             Y[i] = CI(sym(r[i]), sym(r[i]));
             X[i] = x_lin[i] + Y[i];
         }
-        // Re s > 0, or Re s > -r_p for sites that meet (normal_ray_bisector.hpp).
-        if (!(meet_ ? X[0].re + medial_p_ : X[0].re).positive()) return std::nullopt;
+        // Re s > 0, or Re s > -r_p with the signed tie (normal_ray_bisector.hpp).
+        if (!(signed_ ? X[0].re + medial_p_ : X[0].re).positive()) return std::nullopt;
         sin_cos(X[1], sin_q, cos_q);
-        const Frame<CI> bq(q_, sin_q, cos_q, q_parts<CI>(meet_));
-        const System<CI> on_box(q_, bp, bq, X[0], meet_);
+        const Frame<CI> bq(q_, sin_q, cos_q, q_parts<CI>(signed_));
+        const System<CI> on_box(q_, bp, bq, X[0], signed_);
         // dF1/dphi = -2 F0 (not for the signed tie), and on X(theta) F0 is
         // its value on the line plus the first row of J(X) times y (the
         // integral form of the mean value theorem; the rectangle J(X) is
         // convex): far tighter than F0 over the box, which does not see that
         // x follows theta.
         CI J[2][2] = {{on_box.J[0][0], on_box.J[0][1]}, {on_box.J[1][0], on_box.J[1][1]}};
-        if (!meet_) J[1][1] = intersect(J[1][1], -2.0 * (H[0] + on_box.J[0][0] * Y[0] + on_box.J[0][1] * Y[1]));
+        if (!signed_) J[1][1] = intersect(J[1][1], -2.0 * (H[0] + on_box.J[0][0] * Y[0] + on_box.J[0][1] * Y[1]));
         CI K[2];
         const bool inside = krawczyk_inside(C, CH, J, Y, r, K);
         if (!inside) {
@@ -472,9 +472,9 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         }
         // One root in X, holomorphic in theta; q's nearest point when V - Q
         // points out of q (normal_ray_bisector.hpp).
-        // (or above q's medial axis for sites that meet).
+        // (or above q's medial axis with the signed tie).
         const CI side = dot(bp.x + X[0] * bp.nx - bq.x, bp.y + X[0] * bp.ny - bq.y, bq.nx, bq.ny);
-        if (!(meet_ ? side + medial_q_ * bq.n2 : side).re.positive()) return std::nullopt;
+        if (!(signed_ ? side + medial_q_ * bq.n2 : side).re.positive()) return std::nullopt;
         const CI& g_s = on_box.J[1][0];
         if (!g_s.zero_free()) return std::nullopt;
         return BoxRoot{bp, x_lin[0] + K[0], -(on_box.F_theta[1] / g_s), x0[0], slope[0], K[0]};  // s' = -g_theta / g_s

@@ -7,8 +7,8 @@
 // Same system and certificate as NormalRayBisector (docs/DESIGN.md §10), with
 // real unknowns: the 2 x 2 Krawczyk test in x = (s, phi), p's boundary taken
 // over the whole interval of theta, proves one real root in the box X for
-// every theta in it; Re s > 0 and (V - Q) . n~q > 0 on X (for sites that
-// meet: the signed tie, s > -r_p and t > -r_q) make that root the bisector
+// every theta in it; Re s > 0 and (V - Q) . n~q > 0 on X (with the signed
+// tie of close sites: s > -r_p and t > -r_q) make that root the bisector
 // point of p's normal line, as the header of normal_ray_bisector.hpp argues. Sines and cosines come from util/interval_trig.hpp. Anything it
 // cannot prove is "not certified", and the caller asks the Arb solver
 // instead.
@@ -43,10 +43,10 @@ struct MeasureIntervals {
 
 class NormalRayInDoubles {
 public:
-    // As NormalRayBisector: the first form finds out whether the sites meet
-    // (then the system is the signed one).
+    // As NormalRayBisector: the first form asks
+    // NormalRayBisector::uses_signed_tie.
     NormalRayInDoubles(const Ellipse& p, const Ellipse& q);
-    NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool sites_meet);
+    NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool signed_tie);
 
     // The densities at every angle in `theta` (a real interval); nothing when
     // the certificate fails there.
@@ -88,7 +88,7 @@ private:
     std::optional<Root> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2]);
 
     Site p_, q_;
-    bool meet_;
+    bool signed_;
     Interval medial_p_, medial_q_;  // r_p, r_q of normal_ray_bisector.hpp
     double size_;  // scale of the pair, for the double start
     // How far q's frame moves (x, dx, ny; y, dy, nx) per unit change of its

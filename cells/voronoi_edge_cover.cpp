@@ -179,7 +179,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                                              const EdgeCoverOptions& options) {
     const long prec = options.prec;
     const SiteBalls p(bisector.first(), prec);
-    NormalRayInDoubles points(bisector.first(), bisector.second(), bisector.sites_meet());
+    NormalRayInDoubles points(bisector.first(), bisector.second(), bisector.signed_tie());
     Arf lo_arf, hi_arf, from_hi, to_lo;
     arb_get_lbound_arf(lo_arf.get(), from.get(), prec);
     arb_get_ubound_arf(hi_arf.get(), to.get(), prec);
