@@ -157,11 +157,11 @@ void normal_lengths(const Boundary& bp, const Boundary& bq, long prec, ComplexBa
     acb_sqrt_analytic(nq.get(), bq.n2.get(), 1, prec);
 }
 
-// The signed tie (see the header), g = (V - Q) . n~q -
-// s N Nq, and dg/ds = n~ . n~q - N Nq (its derivative in the foot point,
-// Nq' (t Nq - s N), vanishes on the bisector).
+// The signed tie (see the header), g = (V - Q) . n~q - s N Nq, and dg/ds =
+// n~ . n~q - N Nq (its derivative in the foot point, Nq' (t Nq - s N),
+// vanishes on the bisector).
 void signed_tie_value(const Boundary& bp, const Boundary& bq, const ComplexBall& s, long prec, ComplexBall& g,
-                ComplexBall& dg_ds) {
+                      ComplexBall& dg_ds) {
     ComplexBall vx, vy, np, nq, nn, t;
     ray_point(bp, s, prec, vx, vy);
     acb_sub(vx.get(), vx.get(), bq.x.get(), prec);
