@@ -114,13 +114,15 @@ Ellipse& Ellipse::operator=(const Ellipse& o) noexcept {
 
 Ellipse Ellipse::unshared() const {
     Ellipse copy(*this);
-    Exact* own = nullptr;
-    if (!compact_) {
-        const Exact& e = exact();
-        own = new Exact(e.a, e.b, e.w, e.xc, e.yc);
-    }
-    release(copy.exact_.exchange(own, std::memory_order_acq_rel));
+    copy.make_own();
     return copy;
+}
+
+void Ellipse::make_own() {
+    Exact* e = exact_.load(std::memory_order_acquire);
+    if (!compact_ && e->references.load(std::memory_order_acquire) == 1) return;
+    Exact* own = compact_ ? nullptr : new Exact(e->a, e->b, e->w, e->xc, e->yc);
+    release(exact_.exchange(own, std::memory_order_acq_rel));
 }
 
 const Ellipse::Exact& Ellipse::make_exact() const {

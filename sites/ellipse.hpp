@@ -48,6 +48,9 @@ public:
     // their polynomials not made yet; a compact circle none): what a holder
     // of sites that counts its own storage keeps.
     Ellipse unshared() const;
+    // The same in place, and nothing to do when no other copy shares them
+    // (a vector of sites moved to its holder: most of them).
+    void make_own();
     ~Ellipse() { release(exact_.load(std::memory_order_acquire)); }
 
     const Rational& a() const { return exact().a; }

@@ -308,7 +308,7 @@ public:
         }
         // The separation tests made the exact parameters of the circles they
         // read; a compact circle does not keep them (sites/ellipse.hpp).
-        for (Ellipse& e : placed_) e = e.unshared();
+        for (Ellipse& e : placed_) e.make_own();
         return std::move(placed_);
     }
 

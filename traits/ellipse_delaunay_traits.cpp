@@ -48,7 +48,7 @@ EllipseDelaunayTraits::EllipseDelaunayTraits(std::vector<Ellipse> sites) : sites
     // Copies of an ellipse share its exact parameters: the traits keep their
     // own, so that a graph's memory is all its own (and a compact circle
     // keeps none, whatever its caller asked of it).
-    for (Ellipse& e : sites_) e = e.unshared();
+    for (Ellipse& e : sites_) e.make_own();
 }
 
 Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {

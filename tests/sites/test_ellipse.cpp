@@ -168,6 +168,14 @@ TEST_CASE("circles that keep their rationals: not dyadic, or rotated", "[sites][
     CHECK(own == e);
     CHECK(&own.a() != &e.a());
     CHECK(own.conic() == e.conic());
+    // make_own: a copy gets its own parameters; a sole holder keeps them.
+    Ellipse shared = e, sole(Rational(3), Rational(2), Rational(1, 5), Rational(1, 7), Rational(2));
+    const Rational* before = &sole.a();
+    shared.make_own();
+    sole.make_own();
+    CHECK(&shared.a() != &e.a());
+    CHECK(shared == e);
+    CHECK(&sole.a() == before);
 }
 
 TEST_CASE("threads asking a circle's parameters at once agree", "[sites][ellipse]") {
