@@ -155,8 +155,7 @@ constexpr long kDoubleGoalBits = 44;
 // pair_value does): its tolerance is the area's times L^kLengthPower[j].
 constexpr int kLengthPower[MeasureIntervals::count] = {0, -1, 1, 1, 2, 2, 2};
 
-void add_to_pairs(const MeasureIntervals& I, long unit, long prec, MeasureSums& sums) {
-    const NormalRayBisector::Densities d = as_balls(I);
+void add_to_pairs(const NormalRayBisector::Densities& d, long unit, long prec, MeasureSums& sums) {
     for (int pair = 0; pair < kMeasurePairs; ++pair) {
         ComplexBall v;
         pair_value(d, pair, unit, prec, v.get());
@@ -212,8 +211,9 @@ void require_normal_lines_reach(const std::vector<Ellipse>& sites, const Voronoi
 
 class CellAreaSolver {
 public:
-    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance)
-        : sites_(sites), tolerance_(tolerance), angles_(graph, sites) {}
+    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance,
+                   bool arb_integrator_only)
+        : sites_(sites), tolerance_(tolerance), arb_integrator_only_(arb_integrator_only), angles_(graph, sites) {}
 
     // The measures of a bounded cell at precision prec, or nothing when the
     // pass could not certify its area within the tolerance. Pass k asks Arb
@@ -244,26 +244,38 @@ public:
         // Per edge and pair an eighth of the tolerance's share: with the ends'
         // terms the area's width stays well below T * area.
         mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
-        // Below 45 bits the edges go to the double-interval quadrature first.
-        const bool in_doubles = goal <= kDoubleGoalBits;
+        // Below 45 bits the edges go to the double-interval quadrature first,
+        // beyond to its pieces with the nodes in Arb; Arb's integrator takes
+        // what they cannot certify.
+        const bool in_doubles = !arb_integrator_only_ && goal <= kDoubleGoalBits;
+        const bool nodes_in_arb = !arb_integrator_only_ && !in_doubles;
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector& bisector = *bisectors[k];
             NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor], bisector.signed_tie());
             Ball ends[2] = {lifted[k], lifted[k + 1]};
+            double tolerances[MeasureIntervals::count];
+            for (int j = 0; j < MeasureIntervals::count; ++j)
+                tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
             bool integrated = false;
             if (in_doubles) {
                 const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
-                double tolerances[MeasureIntervals::count];
-                for (int j = 0; j < MeasureIntervals::count; ++j)
-                    tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
                 if (const std::optional<MeasureIntervals> I =
                         integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature)) {
-                    add_to_pairs(*I, unit, prec, sums);
+                    add_to_pairs(as_balls(*I), unit, prec, sums);
                     integrated = true;
                     ++r.edges_in_doubles;
                 } else {
                     ends[0] = lifted[k], ends[1] = lifted[k + 1];
+                }
+            } else if (nodes_in_arb) {
+                Ball middles[2];
+                for (int i = 0; i < 2; ++i) arb_get_mid_arb(middles[i].get(), ends[i].get());
+                if (const std::optional<NormalRayBisector::Densities> I = integrate_edge_in_arb(
+                        bisector_in_doubles, bisector, rules_, middles, tolerances, prec, &r.quadrature)) {
+                    add_to_pairs(*I, unit, prec, sums);
+                    integrated = true;
+                    ++r.edges_by_nodes_in_arb;
                 }
             }
             if (!integrated) {
@@ -408,6 +420,7 @@ private:
 
     const std::vector<Ellipse>& sites_;
     double tolerance_;
+    bool arb_integrator_only_;
     CellVertexAngles angles_;
     GaussLegendreRules rules_;
 };
@@ -442,7 +455,7 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
     const double T = options.tolerance;
     if (!(T > 0 && T <= 1)) throw InputError("cell_areas: the tolerance must be in (0, 1]");
     const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
-    CellAreaSolver solver(graph, sites, T);
+    CellAreaSolver solver(graph, sites, T, options.arb_integrator_only);
     std::vector<CellArea> out(cells.size());
     const long start = cell_area_precision(T);
     std::vector<SiteId> which = options.only;

@@ -33,6 +33,8 @@ struct CellAreaOptions {
     std::vector<SiteId> input_ids;
     // Called after each measured cell (done, total); may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
+    // Every edge by Arb's integrator, the last stage (tests reach it so).
+    bool arb_integrator_only = false;
 };
 
 struct CellArea {
@@ -48,10 +50,11 @@ struct CellArea {
     std::array<Ball, 2> centroid;
     std::array<Ball, 3> second_moments;
     long precision = 0;      // Arb precision of the pass that met the tolerance (0: none was needed)
-    // The stages that integrated the edges in that pass: Gauss-Legendre in
-    // double intervals (cells/edge_quadrature.hpp) or Arb's integrator (every
-    // edge with a neighbour that crosses or touches the site).
-    std::size_t edges_in_doubles = 0, edges_by_arb = 0;
+    // The stages that integrated the edges in that pass
+    // (cells/edge_quadrature.hpp): Gauss-Legendre in double intervals (goals
+    // up to 44 bits), its pieces with the nodes in Arb (beyond), or Arb's
+    // integrator (edges neither certifies).
+    std::size_t edges_in_doubles = 0, edges_by_nodes_in_arb = 0, edges_by_arb = 0;
     // What the double-interval stage did on those edges (every attempt of that pass).
     QuadratureCounts quadrature;
 };

@@ -246,6 +246,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
         c.site_area = areas[s].site_area;
         c.precision = areas[s].precision;
         c.edges_in_doubles = areas[s].edges_in_doubles;
+        c.edges_by_nodes_in_arb = areas[s].edges_by_nodes_in_arb;
         c.edges_by_arb = areas[s].edges_by_arb;
         c.quadrature = areas[s].quadrature;
         c.perimeter = areas[s].perimeter;

@@ -86,7 +86,7 @@ struct Cell {
     std::vector<CellSide> sides;              // counter-clockwise around the site
     std::vector<std::array<double, 2>> ring;  // closed (first point not repeated); empty if unbounded or hidden
     long precision = 0;                       // Arb precision that met the tolerance
-    std::size_t edges_in_doubles = 0, edges_by_arb = 0;  // the stages of its integrals (CellArea)
+    std::size_t edges_in_doubles = 0, edges_by_nodes_in_arb = 0, edges_by_arb = 0;  // its integrals' stages (CellArea)
     QuadratureCounts quadrature;                         // CellArea's
     // With CellOptions::reach or rings, an upper bound (rounded up) of |x - c|
     // over the points x of the cell's boundary, c the site's center; +inf

@@ -49,24 +49,24 @@ std::array<double, GaussLegendreRules::kMaxPoints + 1> error_factors() {
 // The n-point rule's error bound on a piece of half-length h: h M factor[n].
 double gauss_error(const Interval& half, double M, double factor) { return (half * Interval(M) * Interval(factor)).hi; }
 
-}  // namespace
-
-std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
-                                               double b, const double (&tolerance)[kMeasures],
-                                               QuadratureCounts* counts) {
-    QuadratureCounts local;
-    QuadratureCounts& count = counts ? *counts : local;
-    MeasureIntervals total;
-    for (Interval& x : total.m) x = Interval(0.0);
+// The certified pieces of the edge [a, b] (enclosures of its ends; the pieces
+// split it at doubles between them): on each, the least rule size n that
+// meets the piece's share of every tolerance by the bound of the complex box
+// (in doubles), then integrate_piece(A, B, n, error), which sums the rule on
+// [A, B] and returns false when a node cannot be certified. A piece whose box
+// or nodes fail is halved. False when that goes too deep or too long.
+template <class IntegratePiece>
+bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Interval& b,
+                      const double (&tolerance)[kMeasures], QuadratureCounts& count, IntegratePiece&& integrate_piece) {
     struct Piece {
         double a, b;
         int depth;
     };
-    // An edge between two equal vertices (four cocircular sites) adds nothing.
-    if (!(a < b)) return a == b ? std::optional<MeasureIntervals>(total) : std::nullopt;
-    std::vector<Piece> pieces{{a, b, 0}};
-    const double length = b - a;
-    const std::array<double, GaussLegendreRules::kMaxPoints + 1> factor = error_factors();
+    const double first = a.mid(), last = b.mid();
+    const auto end = [&](double x) { return x == first ? a : x == last ? b : Interval(x); };
+    std::vector<Piece> pieces{{first, last, 0}};
+    const double length = last - first;
+    static const std::array<double, GaussLegendreRules::kMaxPoints + 1> factor = error_factors();
     // The certificate holds on pieces of about the same width along an edge:
     // a piece over twice as wide as the last certified one is halved untried.
     double certified_width = INFINITY;
@@ -81,14 +81,14 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
             pieces.push_back({piece.a, m, piece.depth + 1});
             return true;
         };
-        if (++done > kMaxPieces) return std::nullopt;
+        if (++done > kMaxPieces) return false;
         if (piece.b - piece.a > 2 * certified_width && halve()) continue;
-        const Interval A(piece.a), B(piece.b);
+        const Interval A = end(piece.a), B = end(piece.b);
         const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
         const std::optional<std::array<double, kMeasures>> M = bounds_on_ellipse(bisector, mid, half);
         if (!M) {
             ++count.failed_boxes;
-            if (!halve()) return std::nullopt;
+            if (!halve()) return false;
             continue;
         }
         certified_width = piece.b - piece.a;
@@ -100,29 +100,106 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
                    !(gauss_error(half, (*M)[j], factor[n]) <= tolerance[j] * share))
                 ++n;
         if (n > GaussLegendreRules::kMaxPoints) {
-            if (!halve()) return std::nullopt;
+            if (!halve()) return false;
             continue;
         }
-        const GaussLegendreRule& rule = rules.rule(n);
-        MeasureIntervals sum;
-        for (Interval& x : sum.m) x = Interval(0.0);
-        bool certified = true;
+        std::array<double, kMeasures> error;
+        for (int j = 0; j < kMeasures; ++j) error[j] = gauss_error(half, (*M)[j], factor[n]);
         count.nodes += n;
-        for (int k = 0; k < n && certified; ++k) {
-            const std::optional<MeasureIntervals> f = bisector.densities(mid + half * rule.nodes[k]);
-            certified = f.has_value();
-            for (int j = 0; j < kMeasures && certified; ++j) sum.m[j] = sum.m[j] + rule.weights[k] * f->m[j];
-        }
-        if (!certified) {
-            if (!halve()) return std::nullopt;
+        if (!integrate_piece(A, B, n, error)) {
+            if (!halve()) return false;
             continue;
         }
         ++count.pieces;
-        for (int j = 0; j < kMeasures; ++j) {
-            const double error = gauss_error(half, (*M)[j], factor[n]);
-            total.m[j] = total.m[j] + half * sum.m[j] + Interval(-error, error);
-        }
     }
+    return true;
+}
+
+// Measure j of the densities.
+ComplexBall& measure(NormalRayBisector::Densities& d, int j) {
+    switch (j) {
+        case MeasureIntervals::area: return d.area;
+        case MeasureIntervals::length: return d.length;
+        case MeasureIntervals::first_x: case MeasureIntervals::first_y: return d.first[j - MeasureIntervals::first_x];
+        default: return d.second[j - MeasureIntervals::second_xx];
+    }
+}
+
+}  // namespace
+
+std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
+                                               double b, const double (&tolerance)[kMeasures],
+                                               QuadratureCounts* counts) {
+    QuadratureCounts local;
+    MeasureIntervals total;
+    for (Interval& x : total.m) x = Interval(0.0);
+    // An edge between two equal vertices (four cocircular sites) adds nothing.
+    if (!(a < b)) return a == b ? std::optional<MeasureIntervals>(total) : std::nullopt;
+    const auto integrate_piece = [&](const Interval& A, const Interval& B, int n,
+                                     const std::array<double, kMeasures>& error) {
+        const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
+        const GaussLegendreRule& rule = rules.rule(n);
+        MeasureIntervals sum;
+        for (Interval& x : sum.m) x = Interval(0.0);
+        for (int k = 0; k < n; ++k) {
+            const std::optional<MeasureIntervals> f = bisector.densities(mid + half * rule.nodes[k]);
+            if (!f) return false;
+            for (int j = 0; j < kMeasures; ++j) sum.m[j] = sum.m[j] + rule.weights[k] * f->m[j];
+        }
+        for (int j = 0; j < kMeasures; ++j) total.m[j] = total.m[j] + half * sum.m[j] + Interval(-error[j], error[j]);
+        return true;
+    };
+    if (!integrate_pieces(bisector, Interval(a), Interval(b), tolerance, counts ? *counts : local, integrate_piece))
+        return std::nullopt;
+    return total;
+}
+
+std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDoubles& bounds,
+                                                                  NormalRayBisector& bisector,
+                                                                  GaussLegendreRules& rules, const Ball (&ends)[2],
+                                                                  const double (&tolerance)[kMeasures], long prec,
+                                                                  QuadratureCounts* counts) {
+    QuadratureCounts local;
+    NormalRayBisector::Densities total;
+    // An edge between two equal vertices (four cocircular sites) adds nothing.
+    if (arb_equal(ends[0].get(), ends[1].get())) return total;
+    const Interval a = enclose(ends[0]), b = enclose(ends[1]);
+    if (!(a.hi < b.lo)) return std::nullopt;
+    // The pieces' ends: the edge's own at its two ends, doubles between.
+    const auto end = [&](const Interval& x) {
+        if (x.lo == a.lo && x.hi == a.hi) return ends[0];
+        if (x.lo == b.lo && x.hi == b.hi) return ends[1];
+        Ball point;
+        arb_set_d(point.get(), x.lo);
+        return point;
+    };
+    const auto integrate_piece = [&](const Interval& A, const Interval& B, int n,
+                                     const std::array<double, kMeasures>& error) {
+        const Ball lo = end(A), hi = end(B);
+        Ball half, mid;
+        arb_sub(half.get(), hi.get(), lo.get(), prec);
+        arb_mul_2exp_si(half.get(), half.get(), -1);
+        arb_add(mid.get(), lo.get(), hi.get(), prec);
+        arb_mul_2exp_si(mid.get(), mid.get(), -1);
+        const GaussLegendreBallRule& rule = rules.rule_in_arb(n, prec);
+        NormalRayBisector::Densities sum, f;
+        for (int k = 0; k < n; ++k) {
+            ComplexBall theta;
+            arb_mul(theta.real(), half.get(), rule.nodes[k].get(), prec);
+            arb_add(theta.real(), theta.real(), mid.get(), prec);
+            if (!bisector.densities(theta, prec, f)) return false;
+            for (int j = 0; j < kMeasures; ++j)
+                acb_addmul_arb(measure(sum, j).get(), measure(f, j).get(), rule.weights[k].get(), prec);
+        }
+        for (int j = 0; j < kMeasures; ++j) {
+            acb_addmul_arb(measure(total, j).get(), measure(sum, j).get(), half.get(), prec);
+            Mag bound;
+            mag_set_d(bound.get(), error[j]);
+            arb_add_error_mag(acb_realref(measure(total, j).get()), bound.get());
+        }
+        return true;
+    };
+    if (!integrate_pieces(bounds, a, b, tolerance, counts ? *counts : local, integrate_piece)) return std::nullopt;
     return total;
 }
 

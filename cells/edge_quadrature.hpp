@@ -17,6 +17,7 @@
 #pragma once
 
 #include "cells/gauss_legendre_rule.hpp"
+#include "cells/normal_ray_bisector.hpp"
 #include "cells/normal_ray_in_doubles.hpp"
 #include "cells/quadrature_counts.hpp"
 
@@ -29,5 +30,14 @@ namespace ellvor {
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
                                                double b, const double (&tolerance)[MeasureIntervals::count],
                                                QuadratureCounts* counts = nullptr);
+
+// The same measures at precision prec, between the exact angles `ends`
+// (balls of radius zero): the certificate of `bounds`, the nodes by
+// `bisector` (the same pair of sites).
+std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDoubles& bounds,
+                                                                  NormalRayBisector& bisector,
+                                                                  GaussLegendreRules& rules, const Ball (&ends)[2],
+                                                                  const double (&tolerance)[MeasureIntervals::count],
+                                                                  long prec, QuadratureCounts* counts = nullptr);
 
 }  // namespace ellvor

@@ -6,8 +6,17 @@
 
 namespace ellvor {
 
+namespace {
+
+void require_size(int n) {
+    if (n < 1 || n > GaussLegendreRules::kMaxPoints)
+        throw Error("GaussLegendreRules: no rule of " + std::to_string(n) + " points");
+}
+
+}  // namespace
+
 const GaussLegendreRule& GaussLegendreRules::rule(int n) {
-    if (n < 1 || n > kMaxPoints) throw Error("GaussLegendreRules: no rule of " + std::to_string(n) + " points");
+    require_size(n);
     GaussLegendreRule& r = rules_[n];
     if (r.nodes.empty()) {
         Ball node, weight;
@@ -16,6 +25,18 @@ const GaussLegendreRule& GaussLegendreRules::rule(int n) {
             r.nodes.push_back(enclose(node));
             r.weights.push_back(enclose(weight));
         }
+    }
+    return r;
+}
+
+const GaussLegendreBallRule& GaussLegendreRules::rule_in_arb(int n, long prec) {
+    require_size(n);
+    GaussLegendreBallRule& r = ball_rules_[{n, prec}];
+    if (r.nodes.empty()) {
+        r.nodes.resize(n);
+        r.weights.resize(n);
+        for (int k = 0; k < n; ++k)
+            arb_hypgeom_legendre_p_ui_root(r.nodes[k].get(), r.weights[k].get(), n, k, prec);
     }
     return r;
 }

@@ -9,10 +9,10 @@
 //   crossing circles  generate_sites (circles, seed 1, half of them crossing another)
 //   build/experiments/cells_timing [--full | --large] [--out DIR]
 // Without rings but for one row (they cost more than the areas). Default: 20
-// random sites (plane and box, T = 1e-9 and 1e-15), a packing of 30 and 20
-// crossing circles (about a minute); --full adds 100 and 1000 of each (an
-// hour); --large has only 10^4 and 10^5 of each, at 1e-9 (about an hour and a
-// half), in cells_timing_large.md.
+// random sites (plane and box, T = 1e-9, 1e-15 and 1e-30), a packing of 30
+// and 20 crossing circles (about a minute); --full adds 100 and 1000 of each,
+// also at 1e-15 (half an hour); --large has only 10^4 and 10^5 of each at
+// 1e-9 and 10^4 of each at 1e-15 (about three hours), in cells_timing_large.md.
 #include "cells/cell_tessellation.hpp"
 #include "experiments/peak_memory.hpp"
 #include "experiments/report.hpp"
@@ -79,15 +79,20 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
     const CellTessellation cells = cell_tessellation(set.sites, domain, options);
     const double time = now_cpu() - c0;
     long bounded = 0;
-    std::size_t in_doubles = 0, by_arb = 0;
+    std::size_t in_doubles = 0, nodes_in_arb = 0, by_arb = 0;
     QuadratureCounts quadrature;
     for (const ellvor::Cell& c : cells.cells) {
         bounded += c.bounded;
         in_doubles += c.edges_in_doubles;
+        nodes_in_arb += c.edges_by_nodes_in_arb;
         by_arb += c.edges_by_arb;
         quadrature += c.quadrature;
     }
-    const double edges = static_cast<double>(std::max<std::size_t>(1, in_doubles));
+    const std::size_t certified = in_doubles + nodes_in_arb;  // edges with the double certificate's pieces
+    const double edges = static_cast<double>(std::max<std::size_t>(1, certified));
+    const auto share = [&](std::size_t k) {
+        return fmt("%.1f", 100.0 * static_cast<double>(k) / static_cast<double>(std::max<std::size_t>(1, certified + by_arb)));
+    };
     const PeakMemory peak = peak_memory_in_child([] {}, [&] { cell_tessellation(set.sites, domain, options); });
     std::cerr << "[cells_timing] " << set.name << " " << set.sites.size() << (box ? " box" : " plane") << " T "
               << tolerance << ": cells " << time << " s\n";
@@ -100,17 +105,18 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
             fmt("%.2f", time),
             fmt("%.0f", time / build),
             fmt("%.1f", 1e3 * time / static_cast<double>(std::max(1L, bounded))),
-            fmt("%.1f", 100.0 * static_cast<double>(in_doubles) / static_cast<double>(std::max<std::size_t>(1, in_doubles + by_arb))),
-            in_doubles ? fmt("%.1f", static_cast<double>(quadrature.pieces) / edges) : "-",
-            in_doubles ? fmt("%.1f", static_cast<double>(quadrature.failed_boxes) / edges) : "-",
-            in_doubles ? fmt("%.0f", static_cast<double>(quadrature.nodes) / edges) : "-",
+            share(in_doubles),
+            share(nodes_in_arb),
+            certified ? fmt("%.1f", static_cast<double>(quadrature.pieces) / edges) : "-",
+            certified ? fmt("%.1f", static_cast<double>(quadrature.failed_boxes) / edges) : "-",
+            certified ? fmt("%.0f", static_cast<double>(quadrature.nodes) / edges) : "-",
             peak.error.empty() ? fmt("%.1f", (peak.peak_kb - peak.start_kb) / 1024.0) : peak.error};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    // --large: only the rows of 10^4 and 10^5 sites (about an hour and a half), in cells_timing_large.md.
+    // --large: only the rows of 10^4 and 10^5 sites (about three hours), in cells_timing_large.md.
     bool large = false;
     std::vector<char*> common;
     for (int i = 0; i < argc; ++i)
@@ -125,33 +131,38 @@ int main(int argc, char** argv) {
     if (large) args.command += " --large";
     Report report("Certified cells against the build", "cells_timing", args.command);
     Table table("cells", {"set", "sites", "domain", "T", "bounded cells", "build s", "cells s", "cells / build",
-                          "ms per bounded cell", "edges in doubles %", "pieces per edge", "failed boxes per edge",
+                          "ms per bounded cell", "edges in doubles %", "edges with nodes in Arb %",
+                          "pieces per edge", "failed boxes per edge",
                           "nodes per edge", "cells peak MB"});
     if (large) {
-        for (long n : {10000L, 100000L}) {
-            table.add(measure(random_set(n), true, 1e-9));
-            table.add(measure(packing_set(n), true, 1e-9));
-        }
+        for (long n : {10000L, 100000L})
+            for (double T : {1e-9, 1e-15}) {
+                if (n > 10000 && T < 1e-9) continue;  // some eight hours
+                table.add(measure(random_set(n), true, T));
+                table.add(measure(packing_set(n), true, T));
+            }
     } else {
         const CellSet random20 = random_set(20);
         table.add(measure(random20, false, 1e-9));
-        for (double T : {1e-9, 1e-15}) table.add(measure(random20, true, T));
+        for (double T : {1e-9, 1e-15, 1e-30}) table.add(measure(random20, true, T));
         table.add(measure(random20, true, 1e-9, true));
         table.add(measure(packing_set(30), true, 1e-9));
         table.add(measure(random_set(20, SiteKind::circles, Rational(1, 2)), true, 1e-9));
     }
     if (args.full && !large)
-        for (long n : {100L, 1000L}) {
-            table.add(measure(random_set(n), true, 1e-9));
-            table.add(measure(packing_set(n), true, 1e-9));
-        }
+        for (long n : {100L, 1000L})
+            for (double T : {1e-9, 1e-15}) {
+                table.add(measure(random_set(n), true, T));
+                table.add(measure(packing_set(n), true, T));
+            }
     report.intro("CPU seconds, one run each. `build s`: the graph of the sites alone; `cells s`: "
                  "cell_tessellation (with a box: the graph of the sites and their mirror images, then every "
                  "original cell's area, perimeter, centroid and second moments certified to T; `+ rings`: "
                  "the rings too, at the default boundary tolerance, 10^-3 of the median semi-axis). `edges in "
                  "doubles`: the share of the cells' edges integrated by the double-interval stage "
-                 "(cells/edge_quadrature.hpp), the rest by Arb's integrator; `pieces`, `failed boxes` and `nodes per "
-                 "edge`: that stage's work on each such edge (seen from one of its two sites), the pieces it "
+                 "(cells/edge_quadrature.hpp, goals up to 44 bits), `with nodes in Arb` by its pieces with the nodes "
+                 "evaluated in Arb (beyond 44 bits), the rest by Arb's integrator; `pieces`, `failed boxes` and "
+                 "`nodes per edge`: the work of those two stages on each such edge (seen from one of its two sites), the pieces it "
                  "integrated, the pieces whose complex box it could not certify (then halved) and the density "
                  "nodes. Peak memory: " +
                  std::string(kPeakMemoryMethod) + ", here of one cell_tessellation.");

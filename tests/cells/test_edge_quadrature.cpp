@@ -1,8 +1,8 @@
-// The double-interval stage of the cell integrals (cells/edge_quadrature.hpp):
-// its Gauss-Legendre rules against the moments of x^k, its nodes
-// and boxes (NormalRayInDoubles) against the Arb solver, and its edge integrals
-// against Arb's own integrator of the same density, two independent proofs
-// that must overlap.
+// The certified quadrature stages of the cell integrals
+// (cells/edge_quadrature.hpp): its Gauss-Legendre rules against the moments
+// of x^k, its nodes and boxes (NormalRayInDoubles) against the Arb solver,
+// and its edge integrals (nodes in doubles or in Arb) against Arb's own
+// integrator of the same density, two independent proofs that must overlap.
 #include "cells/edge_quadrature.hpp"
 #include "predicates/relative_position.hpp"
 #include "tests/support/random_sites.hpp"
@@ -301,6 +301,50 @@ TEST_CASE("integrate_edge: the area over an edge piece overlaps Arb's integral",
     CHECK(integrated == 12);
 }
 
+TEST_CASE("integrate_edge_in_arb: 10^-25 over an edge piece, inside Arb's integral at 10^-30", "[cells][quadrature]") {
+    std::mt19937_64 rng(11);
+    GaussLegendreRules rules;
+    const long prec = 128;
+    for (int trial = 0; trial < 8; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayBisector nodes(p, q), reference(p, q);
+        NormalRayInDoubles bounds(p, q);
+        // Ends that are not doubles (a + 2^-70, b - 2^-70): the outer pieces
+        // keep them exactly.
+        const double a = facing_angle(p, q) - 0.4, b = a + 0.8;
+        Ball ends[2];
+        arb_set_d(ends[0].get(), a);
+        arb_set_d(ends[1].get(), b);
+        Ball tiny;
+        arb_one(tiny.get());
+        arb_mul_2exp_si(tiny.get(), tiny.get(), -70);
+        arb_add(ends[0].get(), ends[0].get(), tiny.get(), prec);
+        arb_sub(ends[1].get(), ends[1].get(), tiny.get(), prec);
+        const double tolerance[MeasureIntervals::count] = {1e-25, 1e-25, 1e-25, 1e-25, 1e-25, 1e-25, 1e-25};
+        QuadratureCounts counts;
+        const std::optional<NormalRayBisector::Densities> I =
+            integrate_edge_in_arb(bounds, nodes, rules, ends, tolerance, prec, &counts);
+        REQUIRE(I);
+        CHECK(counts.pieces >= 1);
+        CHECK(mag_cmp_2exp_si(arb_radref(acb_realref(I->area.get())), -80) <= 0);  // 2^-80 ~ 8e-25
+        AreaIntegrand param{&reference};
+        ComplexBall A, B, exact;
+        arb_set(A.real(), ends[0].get());
+        arb_set(B.real(), ends[1].get());
+        Mag tol;
+        mag_set_d(tol.get(), 1e-30);
+        acb_calc_integrate_opt_t options;
+        acb_calc_integrate_opt_init(options);
+        acb_calc_integrate(exact.get(), area_integrand, &param, A.get(), B.get(), 110, tol.get(), options, 160);
+        REQUIRE(acb_is_finite(exact.get()));
+        Ball ours, arbs;
+        arb_set(ours.get(), acb_realref(I->area.get()));
+        arb_set(arbs.get(), acb_realref(exact.get()));
+        INFO("trial " << trial << " nodes in Arb " << ours.str(30) << " Arb's " << arbs.str(30));
+        CHECK(acb_overlaps(I->area.get(), exact.get()));
+    }
+}
+
 TEST_CASE("integrate_edge: a range the bisector does not reach is not certified", "[cells][quadrature]") {
     // Two unit circles 10 apart: p's normal rays facing away from q never
     // meet the bisector; the stage must say so, not return a number.
@@ -311,4 +355,9 @@ TEST_CASE("integrate_edge: a range the bisector does not reach is not certified"
     const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
     CHECK(!integrate_edge(nodes, rules, kPi - 0.2, kPi + 0.2, tolerance));
     CHECK(!nodes.densities(Interval(kPi)));
+    NormalRayBisector arb_nodes(p, q);
+    Ball ends[2];
+    arb_set_d(ends[0].get(), kPi - 0.2);
+    arb_set_d(ends[1].get(), kPi + 0.2);
+    CHECK(!integrate_edge_in_arb(nodes, arb_nodes, rules, ends, tolerance, 128));
 }
