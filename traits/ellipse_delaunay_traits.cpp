@@ -74,6 +74,12 @@ Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
     return y < x ? Sign::positive : x < y ? Sign::negative : Sign::zero;
 }
 
+std::optional<DelaunayTraits::WeightBounds> EllipseDelaunayTraits::weight_bounds(SiteId i) const {
+    const Ellipse::Enclosure e = site(i).enclosure();
+    const Interval area = e.a * e.b;
+    return WeightBounds{area.lo, area.hi};
+}
+
 LocationHint EllipseDelaunayTraits::location_hint(SiteId i) const {
     const Ellipse::Enclosure& e = site(i).enclosure();
     return {e.xc.mid(), e.yc.mid()};
