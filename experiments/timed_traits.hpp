@@ -37,6 +37,7 @@ public:
 
     std::size_t size() const override { return inner_.size(); }
     Sign compare_weight(SiteId a, SiteId b) const override { return inner_.compare_weight(a, b); }
+    std::optional<WeightBounds> weight_bounds(SiteId i) const override { return inner_.weight_bounds(i); }
     LocationHint location_hint(SiteId i) const override { return inner_.location_hint(i); }
     void check_sites() override { inner_.check_sites(); }
     bool is_hidden(SiteId p, SiteId q) override {

@@ -51,11 +51,42 @@ std::uint32_t hilbert_index(double x, double y, double x0, double y0, double sid
     return index;
 }
 
+namespace {
+
+void sort_by_decreasing_weight(const DelaunayTraits& traits, std::vector<SiteId>& sites) {
+    // The weights' bounds, read once a site: a comparison of two whose
+    // bounds are apart reads two entries of this vector, where the traits
+    // read two sites' data scattered in memory (at 10^6 ellipses, n log n
+    // such reads were a few % of the build). The same answers: the bounds
+    // are certified, and the traits decide every other pair.
+    std::vector<DelaunayTraits::WeightBounds> bounds(traits.size());
+    bool bounded = true;
+    for (SiteId i : sites) {
+        const std::optional<DelaunayTraits::WeightBounds> b = traits.weight_bounds(i);
+        if (!b) {
+            bounded = false;
+            break;
+        }
+        bounds[i] = *b;
+    }
+    if (!bounded) {
+        std::stable_sort(sites.begin(), sites.end(),
+                         [&](SiteId x, SiteId y) { return traits.compare_weight(x, y) == Sign::positive; });
+        return;
+    }
+    std::stable_sort(sites.begin(), sites.end(), [&](SiteId x, SiteId y) {
+        if (bounds[y].hi < bounds[x].lo) return true;
+        if (bounds[x].hi < bounds[y].lo) return false;
+        return traits.compare_weight(x, y) == Sign::positive;
+    });
+}
+
+}  // namespace
+
 std::vector<SiteId> bulk_insertion_order(const DelaunayTraits& traits) {
     std::vector<SiteId> order(traits.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](SiteId x, SiteId y) { return traits.compare_weight(x, y) == Sign::positive; });
+    sort_by_decreasing_weight(traits, order);
     if (order.size() <= kFirstRound) return order;
     std::vector<LocationHint> hints(traits.size());
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;

@@ -21,6 +21,7 @@ public:
 
     std::size_t size() const override { return ids_.size(); }
     Sign compare_weight(SiteId a, SiteId b) const override { return parent_.compare_weight(g(a), g(b)); }
+    std::optional<WeightBounds> weight_bounds(SiteId i) const override { return parent_.weight_bounds(g(i)); }
     LocationHint location_hint(SiteId i) const override { return parent_.location_hint(g(i)); }
     // The parent's sites are this one's: their check is the parent's (done once).
     void check_sites() override { parent_.check_sites(); }

@@ -7,6 +7,7 @@
 #include "predicates/relative_position.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "sites/meeting_pair_candidates.hpp"
+#include "traits/triple_key.hpp"
 #include "util/error.hpp"
 
 #include <algorithm>
@@ -71,6 +72,12 @@ Sign EllipseDelaunayTraits::compare_weight(SiteId a, SiteId b) const {
     if (ea.a() == eb.a() && ea.b() == eb.b()) return Sign::zero;
     const Rational x = ea.a() * ea.b(), y = eb.a() * eb.b();
     return y < x ? Sign::positive : x < y ? Sign::negative : Sign::zero;
+}
+
+std::optional<DelaunayTraits::WeightBounds> EllipseDelaunayTraits::weight_bounds(SiteId i) const {
+    const Ellipse::Enclosure e = site(i).enclosure();
+    const Interval area = e.a * e.b;
+    return WeightBounds{area.lo, area.hi};
 }
 
 LocationHint EllipseDelaunayTraits::location_hint(SiteId i) const {
@@ -149,9 +156,10 @@ Decision<InCircle> EllipseDelaunayTraits::incircle_of_face(SiteId i, SiteId j, S
     }
     if (ei.is_circle() && ej.is_circle() && ek.is_circle() && eq.is_circle()) return ellvor::incircle(ei, ej, ek, eq);
     VoronoiCircleCache::Entry& entry = cache_.at(i, site(i), j, site(j), k, site(k));
-    // The cached circle is that of the rotated triple entry.ids: ask in that order.
-    const Decision<InCircle> d = ellvor::incircle(site(entry.ids[0]), site(entry.ids[1]), site(entry.ids[2]), site(q), {},
-                                          &entry.circle);
+    // The cached circle is that of the rotated triple: ask in that order.
+    const TripleKey ids = triple_key(i, j, k);
+    const Decision<InCircle> d =
+        ellvor::incircle(site(ids[0]), site(ids[1]), site(ids[2]), site(q), {}, &entry.circle);
     // Later calls on this face read the enclosures; the charts can go.
     entry.circle.release_charts();
     return d;

@@ -25,6 +25,8 @@ public:
     std::size_t size() const override { return sites_.size(); }
     // The weight is the area (up to the factor pi): a b.
     Sign compare_weight(SiteId a, SiteId b) const override;
+    // An enclosure of the area a b from the double enclosures.
+    std::optional<WeightBounds> weight_bounds(SiteId i) const override;
     // The center.
     LocationHint location_hint(SiteId i) const override;
 

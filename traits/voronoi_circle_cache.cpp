@@ -5,14 +5,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <new>
+#include <optional>
 
 namespace ellvor {
-
-int VoronoiCircleCache::Entry::index_of(SiteId id) const {
-    for (int n = 0; n < 3; ++n)
-        if (ids[n] == id) return n;
-    throw Error("VoronoiCircleCache: site " + std::to_string(id) + " is not in this triple");
-}
 
 namespace {
 
@@ -73,32 +69,32 @@ VoronoiCircleCache::Entry& VoronoiCircleCache::at(SiteId i, const Ellipse& ei, S
     std::size_t n = find_slot(*key);
     if (slots_[n].entry != kEmpty) {
         ++hits_;
-        return *pool_[slots_[n].entry];
+        return *place(slots_[n].entry);
     }
     ++misses_;
     if (4 * (size_ + 1) > 3 * slots_.size()) {
         grow();
         n = find_slot(*key);
     }
-    std::uint32_t place;
+    std::uint32_t at;
     if (!free_.empty()) {
-        place = free_.back();
+        at = free_.back();
         free_.pop_back();
     } else {
-        place = static_cast<std::uint32_t>(pool_.size());
-        pool_.emplace_back();
+        if (places_ % kChunk == 0) chunks_.push_back(std::make_unique<Chunk>());
+        at = places_++;
     }
-    pool_[place].emplace(Entry{ids, VoronoiCircle(*sites[0], *sites[1], *sites[2], common_medial_axis_tangency)});
-    slots_[n] = Slot{*key, place};
+    Entry* entry = new (place(at)) Entry{VoronoiCircle(*sites[0], *sites[1], *sites[2], common_medial_axis_tangency)};
+    slots_[n] = Slot{*key, at};
     ++size_;
-    return *pool_[place];
+    return *entry;
 }
 
 VoronoiCircleCache::Entry* VoronoiCircleCache::find(SiteId i, SiteId j, SiteId k) {
     const std::optional<Key> key = narrow(triple_key(i, j, k));
     if (!key || slots_.empty()) return nullptr;
     const std::size_t n = find_slot(*key);
-    return slots_[n].entry == kEmpty ? nullptr : &*pool_[slots_[n].entry];
+    return slots_[n].entry == kEmpty ? nullptr : place(slots_[n].entry);
 }
 
 void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) {
@@ -106,7 +102,7 @@ void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) {
     if (!key || slots_.empty()) return;
     std::size_t hole = find_slot(*key);
     if (slots_[hole].entry == kEmpty) return;
-    pool_[slots_[hole].entry].reset();
+    place(slots_[hole].entry)->~Entry();
     free_.push_back(slots_[hole].entry);
     --size_;
     // Backward shift: every later slot of the run whose probe start is not
@@ -122,8 +118,11 @@ void VoronoiCircleCache::erase(SiteId i, SiteId j, SiteId k) {
 }
 
 void VoronoiCircleCache::clear() {
+    for (const Slot& s : slots_)
+        if (s.entry != kEmpty) place(s.entry)->~Entry();
     slots_.clear();
-    pool_.clear();
+    chunks_.clear();
+    places_ = 0;
     free_.clear();
     size_ = 0;
 }

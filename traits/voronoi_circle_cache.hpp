@@ -12,20 +12,25 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
-#include <optional>
+#include <memory>
+#include <new>
 #include <vector>
 
 namespace ellvor {
 
 class VoronoiCircleCache {
 public:
+    // The circle is that of the triple rotated so that the smallest id comes
+    // first (triple_key): its sites are in that order. The ids are the
+    // slot's key, not repeated here (a build keeps about one entry a site).
     struct Entry {
-        std::array<SiteId, 3> ids;  // rotated so that the smallest id comes first
-        VoronoiCircle circle;  // of the sites in the order of ids
-        // Index in the circle's triple of the site with this id.
-        int index_of(SiteId id) const;
+        VoronoiCircle circle;
     };
+
+    VoronoiCircleCache() = default;
+    VoronoiCircleCache(const VoronoiCircleCache&) = delete;
+    VoronoiCircleCache& operator=(const VoronoiCircleCache&) = delete;
+    ~VoronoiCircleCache() { clear(); }
 
     // The entry of the Voronoi circle of the ordered triple (i, j, k) of
     // sites, created (not yet certified) on first use.
@@ -50,7 +55,11 @@ private:
     // erased places are reused). A build asks about every face: a lookup
     // reads one slot and then the entry, where a node-based map read a
     // bucket, the node before and the node, scattered in memory (8.6% of a
-    // 10^5-site build's profile in its bucket walk).
+    // 10^5-site build's profile in its bucket walk). The pool is chunks of
+    // raw places, each entry constructed in its place: the slots say which
+    // places hold one, so a place costs its entry's size alone (a deque of
+    // optionals added an engaged flag and, two entries a block, a block's
+    // allocation overhead: 192 bytes a place against 152).
     using Key = std::array<std::uint32_t, 3>;  // ids below 2^32 - 1 (the 10^7-site input limit)
     static constexpr std::uint32_t kEmpty = 0xffffffffu;
     struct Slot {
@@ -61,10 +70,18 @@ private:
     // The slot holding `key`, or the empty slot where the probe for it ends.
     std::size_t find_slot(const Key& key) const;
     void grow();
+    static constexpr std::uint32_t kChunk = 512;  // places a chunk
+    struct Chunk {
+        alignas(Entry) unsigned char bytes[kChunk * sizeof(Entry)];
+    };
+    Entry* place(std::uint32_t n) const {
+        return std::launder(reinterpret_cast<Entry*>(chunks_[n / kChunk]->bytes) + n % kChunk);
+    }
 
     std::vector<Slot> slots_;  // a power of two, or empty
-    std::deque<std::optional<Entry>> pool_;
-    std::vector<std::uint32_t> free_;  // pool places of erased entries
+    std::vector<std::unique_ptr<Chunk>> chunks_;
+    std::uint32_t places_ = 0;         // places handed out (constructed at least once)
+    std::vector<std::uint32_t> free_;  // places of erased entries
     std::size_t size_ = 0, hits_ = 0, misses_ = 0;
 };
 

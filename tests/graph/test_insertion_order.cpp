@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -227,6 +228,18 @@ TEST_CASE("insertion order: compare_weight on circles of doubles (their radii's 
         }
     CHECK(dyadic_pairs > 10000);
     CHECK(ties > 100);
+    // The bulk order sorts through weight_bounds (up to 1024 sites it is the
+    // weight order): the same order as compare_weight alone, ties and all.
+    std::vector<SiteId> by_weight(sites.size());
+    std::iota(by_weight.begin(), by_weight.end(), 0);
+    std::stable_sort(by_weight.begin(), by_weight.end(),
+                     [&](SiteId x, SiteId y) { return traits.compare_weight(x, y) == Sign::positive; });
+    for (SiteId x = 0; x < sites.size(); ++x) {
+        const std::optional<DelaunayTraits::WeightBounds> b = traits.weight_bounds(x);
+        REQUIRE(b);
+        CHECK(b->lo <= b->hi);
+    }
+    CHECK(bulk_insertion_order(traits) == by_weight);
 }
 
 TEST_CASE("insertion order: the bulk order is largest first by rounds, local within them, and gives the weight order's graph",
