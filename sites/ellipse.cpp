@@ -118,10 +118,21 @@ Ellipse Ellipse::unshared() const {
     return copy;
 }
 
+std::vector<Ellipse> Ellipse::unshared_copies(const std::vector<Ellipse>& sites) {
+    constexpr std::size_t kAhead = 8;
+    std::vector<Ellipse> out;
+    out.reserve(sites.size());
+    for (std::size_t k = 0; k < sites.size(); ++k) {
+        if (k + kAhead < sites.size()) sites[k + kAhead].prefetch();
+        out.push_back(sites[k].unshared());
+    }
+    return out;
+}
+
 void Ellipse::make_own() {
     Exact* e = exact_.load(std::memory_order_acquire);
     if (!compact_ && e->references.load(std::memory_order_acquire) == 1) return;
-    Exact* own = compact_ ? nullptr : new Exact(e->a, e->b, e->w, e->xc, e->yc);
+    Exact* own = compact_ ? nullptr : new Exact(*e);
     release(exact_.exchange(own, std::memory_order_acq_rel));
 }
 

@@ -14,6 +14,7 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -78,6 +79,23 @@ private:
     std::optional<py::error_already_set> error_;
 };
 
+// graph.faces(), sorted, put in place by the numbers face_numbers gave them
+// (it sorted the same triples): 2n faces not sorted twice.
+std::vector<std::array<SiteId, 3>> faces_by_number(const DelaunayGraph& graph, const std::vector<long>& numbers) {
+    const Triangulation& tds = graph.triangulation();
+    std::vector<std::array<SiteId, 3>> out(static_cast<std::size_t>(std::count_if(
+        numbers.begin(), numbers.end(), [](long k) { return k >= 0; })));
+    for (FaceIndex f : tds.faces()) {
+        const long k = face_number(numbers, f);
+        if (k < 0) continue;
+        std::array<SiteId, 3> t;
+        for (int i = 0; i < 3; ++i) t[i] = tds.vertex(tds.face(f).v[i]).site();
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        out[static_cast<std::size_t>(k)] = t;
+    }
+    return out;
+}
+
 // A built graph and what Python reads of it. Every method that reads the
 // graph releases the GIL and takes `mutex` (see locked()), so two Python
 // threads may share one diagram: its predicate caches change when it is
@@ -105,8 +123,8 @@ public:
             s["removal_seconds"] = removal_seconds;
         }
         stats = s.dump();
-        faces = graph->faces();
         numbers = face_numbers(*graph);
+        faces = faces_by_number(*graph, numbers);
         vertices_.reset();
     }
 
@@ -127,12 +145,23 @@ private:
     std::optional<std::vector<VoronoiVertexValue>> vertices_;
 };
 
-std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& format, py::object progress,
-                               double interval) {
-    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
-        throw py::type_error("progress: expected None or a callable(done, total)");
-    if (!(interval >= 0)) throw py::value_error("progress_interval: expected a number of seconds >= 0");
-    Sites input = sites_argument(sites_or_path, format);
+// The sites a graph's traits will own: a Sites object's copied with exact
+// parameters of their own in one pass (a plain copy would share them, and
+// the traits would copy each again: two passes over blocks scattered in
+// memory).
+Sites own_sites(py::handle sites_or_path, const std::string& format) {
+    if (!py::isinstance<Sites>(sites_or_path)) return sites_argument(sites_or_path, format);
+    const Sites& given = py::cast<const Sites&>(sites_or_path);
+    Sites s;
+    s.file.name = given.file.name;
+    s.file.lines = given.file.lines;
+    s.from_file = given.from_file;
+    s.file.sites = Ellipse::unshared_copies(given.file.sites);
+    return s;
+}
+
+// The graph of `input` (its sites moved to the graph's traits).
+std::unique_ptr<Diagram> build_graph(Sites input, py::object progress, double interval) {
     auto d = std::make_unique<Diagram>();
     d->names.name = input.file.name;
     d->names.lines = input.file.lines;
@@ -162,6 +191,14 @@ std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& form
     }
     hook.rethrow();
     return d;
+}
+
+std::unique_ptr<Diagram> build(py::handle sites_or_path, const std::string& format, py::object progress,
+                               double interval) {
+    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+        throw py::type_error("progress: expected None or a callable(done, total)");
+    if (!(interval >= 0)) throw py::value_error("progress_interval: expected a number of seconds >= 0");
+    return build_graph(own_sites(sites_or_path, format), std::move(progress), interval);
 }
 
 // f(d) with the GIL released and the diagram's mutex held. Every thread
@@ -447,6 +484,11 @@ void bind_diagram(py::module_& m) {
 
     m.def("_face_vertices", &face_vertices, py::arg("sites"), py::arg("faces"));
     m.def("_build", &build, py::arg("sites"), py::arg("fmt"), py::arg("progress"), py::arg("progress_interval"));
+    // A tiled build's tile: its sites as numerator/denominator pairs (_sites_from_fractions), made and moved
+    // to the graph's traits without a Sites object (that the traits would copy).
+    m.def("_build_fractions", [](py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> fractions) {
+        return build_graph(sites_from_fractions(fractions), py::none(), 0);
+    }, py::arg("fractions"));
 }
 
 }  // namespace ellvor::python

@@ -256,12 +256,23 @@ def test_sites_travel_as_fractions_or_as_lines():
     rng = random.Random(5)
     sites = ellvor.generate("nested", 300, seed=4)
     ids = np.array(rng.sample(range(len(sites)), 120), dtype=np.int64)
-    payload = ed._payload(sites, ids)
+    params, fractions = ed._site_arrays(sites)
+    assert np.array_equal(params, sites.to_array())
+    payload = ed._payload(sites, fractions, ids)
     assert isinstance(payload, np.ndarray) and payload.shape == (120, 10)
     assert list(ed._local_sites(payload)) == [sites[int(k)] for k in ids]
+    # Numbers beyond 2^53 (not exact doubles): their fractions travel, their doubles are to_array's.
+    wide = ellvor.Sites([ellvor.Ellipse(Fraction(2 ** 60 + 1, 3), Fraction(2 ** 60 - 1, 7), Fraction(-1, 2 ** 55 + 3),
+                                        Fraction(2 ** 62 + 5, 2 ** 61 - 1), Fraction(-5, 3)),
+                         ellvor.Ellipse(1, 1, 0, 10, 10)])
+    params, fractions = ed._site_arrays(wide)
+    assert fractions is not None and np.array_equal(params, wide.to_array())
+    assert list(ed._local_sites(ed._payload(wide, fractions, np.array([1, 0])))) == [wide[1], wide[0]]
     # A numerator beyond 64 bits: the lines carry it.
     big = ellvor.Sites([ellvor.Ellipse(2, 1, 0, 0, 0), ellvor.Ellipse(1, 1, 0, Fraction(3 ** 50, 7), 5)])
-    payload = ed._payload(big, np.array([1, 0]))
+    params, fractions = ed._site_arrays(big)
+    assert fractions is None and np.array_equal(params, big.to_array())
+    payload = ed._payload(big, fractions, np.array([1, 0]))
     assert isinstance(payload, str)
     assert list(ed._local_sites(payload)) == [big[1], big[0]]
     # Received fractions are checked as Ellipses are.

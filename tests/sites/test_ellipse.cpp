@@ -176,6 +176,19 @@ TEST_CASE("circles that keep their rationals: not dyadic, or rotated", "[sites][
     CHECK(&shared.a() != &e.a());
     CHECK(shared == e);
     CHECK(&sole.a() == before);
+    // The copy keeps the enclosures (copied, not remade): the same bits.
+    const auto same_bits = [](const Interval& x, const Interval& y) { return x.lo == y.lo && x.hi == y.hi; };
+    const Ellipse::Enclosure k = e.enclosure(), m = shared.enclosure();
+    CHECK((same_bits(k.a, m.a) && same_bits(k.b, m.b) && same_bits(k.cos, m.cos) && same_bits(k.sin, m.sin) &&
+           same_bits(k.xc, m.xc) && same_bits(k.yc, m.yc)));
+    // unshared_copies: each equal, none sharing; a compact circle stays compact (its doubles).
+    const std::vector<Ellipse> sites = {e, third, unturned, turned, e};
+    const std::vector<Ellipse> copies = Ellipse::unshared_copies(sites);
+    REQUIRE(copies.size() == sites.size());
+    for (std::size_t k = 0; k < sites.size(); ++k) {
+        CHECK(copies[k] == sites[k]);
+        CHECK(&copies[k].a() != &sites[k].a());
+    }
 }
 
 TEST_CASE("threads asking a circle's parameters at once agree", "[sites][ellipse]") {
