@@ -88,6 +88,18 @@ int area_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong 
     return 0;
 }
 
+// The area over [a, b] by Arb's integrator to the absolute tolerance, at prec bits.
+ComplexBall area_by_arb(NormalRayBisector& bisector, const Ball& a, const Ball& b, double tolerance, long prec) {
+    AreaIntegrand param{&bisector};
+    ComplexBall A(a), B(b), integral;
+    Mag tol;
+    mag_set_d(tol.get(), tolerance);
+    acb_calc_integrate_opt_t options;
+    acb_calc_integrate_opt_init(options);
+    acb_calc_integrate(integral.get(), area_integrand, &param, A.get(), B.get(), prec - 40, tol.get(), options, prec);
+    return integral;
+}
+
 }  // namespace
 
 TEST_CASE("Gauss-Legendre rules integrate x^k exactly up to k = 2n - 1", "[cells][quadrature]") {
@@ -284,15 +296,10 @@ TEST_CASE("integrate_edge: the area over an edge piece overlaps Arb's integral",
         REQUIRE(I);
         ++integrated;
         for (int j = 0; j < MeasureIntervals::count; ++j) CHECK(I->m[j].hi - I->m[j].lo <= 2 * tolerance[j]);
-        AreaIntegrand param{&reference};
-        ComplexBall A, B, exact;
-        arb_set_d(A.real(), a);
-        arb_set_d(B.real(), b);
-        Mag tol;
-        mag_set_d(tol.get(), 1e-25);
-        acb_calc_integrate_opt_t options;
-        acb_calc_integrate_opt_init(options);
-        acb_calc_integrate(exact.get(), area_integrand, &param, A.get(), B.get(), 90, tol.get(), options, 128);
+        Ball A, B;
+        arb_set_d(A.get(), a);
+        arb_set_d(B.get(), b);
+        const ComplexBall exact = area_by_arb(reference, A, B, 1e-25, 128);
         REQUIRE(acb_is_finite(exact.get()));
         INFO("trial " << trial << " doubles [" << I->m[MeasureIntervals::area].lo << ", "
                       << I->m[MeasureIntervals::area].hi << "]");
@@ -327,15 +334,7 @@ TEST_CASE("integrate_edge_in_arb: 10^-25 over an edge piece, inside Arb's integr
         REQUIRE(I);
         CHECK(counts.pieces >= 1);
         CHECK(mag_cmp_2exp_si(arb_radref(acb_realref(I->area.get())), -80) <= 0);  // 2^-80 ~ 8e-25
-        AreaIntegrand param{&reference};
-        ComplexBall A, B, exact;
-        arb_set(A.real(), ends[0].get());
-        arb_set(B.real(), ends[1].get());
-        Mag tol;
-        mag_set_d(tol.get(), 1e-30);
-        acb_calc_integrate_opt_t options;
-        acb_calc_integrate_opt_init(options);
-        acb_calc_integrate(exact.get(), area_integrand, &param, A.get(), B.get(), 110, tol.get(), options, 160);
+        const ComplexBall exact = area_by_arb(reference, ends[0], ends[1], 1e-30, 160);
         REQUIRE(acb_is_finite(exact.get()));
         Ball ours, arbs;
         arb_set(ours.get(), acb_realref(I->area.get()));
