@@ -211,10 +211,10 @@ def main():
              f"Machine: {machine()}; Python {platform.python_version()}; source {source_state()}; "
              f"load average (1 min) {load_before[0]:.2f} before, {load_after[0]:.2f} after "
              "(other jobs share the cores: wall times and speed-ups are upper and lower bounds).", "",
-             "Random ellipses, `ellvor.generate(\"ellipses\", N, seed=1)`, and a dense packing, "
-             "`ellvor.generate(\"packing\", N, seed=1, packing_fraction=0.6)` (" +
-             "; ".join(f"{n} sites made in {s['generated']:.0f} s" for (kind, n), s in singles.items()
-                       if kind == "packing") + "). Single: `ellvor.build` in a child "
+             "Random ellipses, `ellvor.generate(\"ellipses\", N, seed=1)`" +
+             ("".join(f", and a dense packing, `ellvor.generate(\"packing\", N, seed=1, packing_fraction=0.6)` "
+                      f"({n} sites made in {s['generated']:.0f} s)" for (kind, n), s in singles.items()
+                      if kind == "packing")) + ". Single: `ellvor.build` in a child "
              "process (wall and CPU time of the call; resident memory with the graph built). Tiled: "
              f"`ellvor.distributed.build(sites, tiles, client)` on a fresh LocalCluster of {args.workers} worker "
              "processes, one thread each (wall time of the call, shipping and client work included; the tiles' "
