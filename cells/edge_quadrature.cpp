@@ -16,7 +16,7 @@ constexpr double kRho = 2;
 // Halvings of the edge, and pieces tried in all, before the caller takes
 // over. An edge that passes near a site's medial axis (a circle nearly inside
 // the one it crosses: a hairpin about its centre) certifies only on pieces
-// about as wide as that distance: some 9000 tries at 1/200 of the radius
+// about as wide as that distance: some 1000 tries at 1/200 of the radius
 // (test_cell_area.cpp). Arb's integrator needs pieces as small at ten times
 // the cost a node, so the budget is generous.
 constexpr int kMaxDepth = 40;

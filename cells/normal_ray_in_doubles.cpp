@@ -1,9 +1,11 @@
 #include "cells/normal_ray_in_doubles.hpp"
 
 #include "util/complex_interval.hpp"
+#include "util/complex_taylor_model.hpp"
 #include "util/interval_trig.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ellvor {
@@ -23,43 +25,7 @@ T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
 }
 
-// A function of one variable t near 0 to second order: c[0] + c[1] t + c[2]
-// t^2, each coefficient an interval (K = Interval) or a rectangle (K =
-// ComplexInterval). Evaluated with the expansion point ranging over a box,
-// every coefficient encloses the Taylor coefficient of the composed function
-// at every point of the box (the rules below are those of truncated power
-// series, each operation an enclosure).
-template <class K>
-struct Jet {
-    K c[3];
-    friend Jet operator+(const Jet& a, const Jet& b) { return {{a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]}}; }
-    friend Jet operator-(const Jet& a, const Jet& b) { return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]}}; }
-    Jet operator-() const { return {{-c[0], -c[1], -c[2]}}; }
-    friend Jet operator*(const Jet& a, const Jet& b) {
-        return {{a.c[0] * b.c[0], a.c[0] * b.c[1] + a.c[1] * b.c[0], a.c[0] * b.c[2] + a.c[1] * b.c[1] + a.c[2] * b.c[0]}};
-    }
-    friend Jet operator*(const Interval& a, const Jet& b) { return {{a * b.c[0], a * b.c[1], a * b.c[2]}}; }
-    friend Jet operator*(const Jet& a, const Interval& b) { return b * a; }
-    friend Jet operator*(double a, const Jet& b) { return {{a * b.c[0], a * b.c[1], a * b.c[2]}}; }
-    friend Jet operator+(const Jet& a, const Interval& b) { return {{a.c[0] + b, a.c[1], a.c[2]}}; }
-    friend Jet operator-(const Jet& a, const Interval& b) { return {{a.c[0] - b, a.c[1], a.c[2]}}; }
-};
-
-// sin and cos of u0 + u1 t (the angles here are linear in t).
-template <class K>
-void sin_cos(const K& u0, const K& u1, Jet<K>& sin, Jet<K>& cos) {
-    K s, c;
-    sin_cos(u0, s, c);
-    const K half_u1_squared = 0.5 * (u1 * u1);
-    sin = {{s, c * u1, -(s * half_u1_squared)}};
-    cos = {{c, -(s * u1), -(c * half_u1_squared)}};
-}
-
 Interval square(const Interval& x) { return x.square(); }
-template <class K>
-Jet<K> square(const Jet<K>& x) {
-    return x * x;
-}
 ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
 
@@ -68,16 +34,9 @@ double square(double x) { return x * x; }
 // every later check.
 double root_of(double x) { return std::sqrt(x); }
 Interval root_of(const Interval& x) { return x.lo > 0 ? x.sqrt() : Interval(-INFINITY, INFINITY); }
-ComplexInterval root_of(const ComplexInterval& z) {
-    if (!(z.re.lo > 0)) return {Interval(-INFINITY, INFINITY), Interval(-INFINITY, INFINITY)};
-    // u = sqrt((|z| + Re z) / 2) > 0, v = Im z / (2 u).
-    const Interval u = (((z.re.square() + z.im.square()).sqrt() + z.re) * Interval(0.5)).sqrt();
-    return {u, z.im / (Interval(2.0) * u)};
-}
-template <class K>
-Jet<K> root_of(const Jet<K>& a) {
-    const K c0 = root_of(a.c[0]), twice = 2.0 * c0, c1 = a.c[1] / twice;
-    return {{c0, c1, (a.c[2] - c1 * c1) / twice}};
+template <int N>
+ComplexTaylorModel<N> root_of(const ComplexTaylorModel<N>& a) {
+    return principal_root(a);
 }
 
 // A site's boundary at an angle with the given sine and cosine: the point,
@@ -159,14 +118,7 @@ Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interv
     return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
 }
 
-// The intersection of two enclosures of the same set (not empty).
-ComplexInterval intersect(const ComplexInterval& a, const ComplexInterval& b) {
-    return {Interval(Interval::max(a.re.lo, b.re.lo), Interval::min(a.re.hi, b.re.hi)),
-            Interval(Interval::max(a.im.lo, b.im.lo), Interval::min(a.im.hi, b.im.hi))};
-}
-
 bool strictly_inside(const Interval& x, double r) { return x.lo > -r && x.hi < r; }
-bool strictly_inside(const ComplexInterval& z, double r) { return strictly_inside(z.re, r) && strictly_inside(z.im, r); }
 
 // The Krawczyk image about the point, K = -C F + (I - C J(X)) Y, and whether
 // it lies in the interior of Y (each component within +- r_i; T: Interval or
@@ -381,18 +333,16 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Inte
 
 namespace {
 
-// F(x_lin(theta), theta) as a jet in t = theta - theta_c, x_lin(theta_c + t)
-// = (s_c, phi_c) + slope t.
-template <class K>
-void residual_jet(const Site& p, const Site& q, const K& theta_c, const K& s_c, const K& phi_c,
-                  const double (&slope)[2], bool is_signed, Jet<K> (&F)[2]) {
-    Jet<K> sin, cos;
-    sin_cos(theta_c, K(Interval(1.0)), sin, cos);
-    const Frame<Jet<K>> bp(p, sin, cos, is_signed ? Frame<Jet<K>>::all : Frame<Jet<K>>::point_normal);
-    sin_cos(phi_c, K(Interval(slope[1])), sin, cos);
-    const Frame<Jet<K>> bq(q, sin, cos, q_parts<Jet<K>>(is_signed));
-    const Jet<K> s{{s_c, K(Interval(slope[0])), K(Interval(0.0))}};
-    Differences<Jet<K>>(bp, bq, s).residual(bp, bq, s, is_signed, F);
+// The Taylor models of the box certificate: degree 2 (the root's model
+// below is its Taylor polynomial of that degree).
+constexpr int kModelDegree = 2;
+using Model = ComplexTaylorModel<kModelDegree>;
+
+// sum x_k d^k, exact coefficients, on the disk of radius R.
+Model polynomial(const std::array<double, kModelDegree + 1>& x, double R) {
+    Model m(ComplexInterval(Interval(x[0])), R);
+    for (int k = 1; k <= kModelDegree; ++k) m.c[k] = {x[k], 0};
+    return m;
 }
 
 }  // namespace
@@ -408,76 +358,126 @@ struct NormalRayInDoubles::BoxRoot {
 
 std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
     using CI = ComplexInterval;
+    constexpr int N = kModelDegree;
     // Newton's root x0 at the real middle (the certificate below covers it:
     // a wrong root fails its checks), the inverse C of J there and the
-    // root's slope x' = -C F_theta, all in doubles (any C and slope are
-    // correct; these keep Y small).
+    // root's Taylor polynomial x(mid + d) = sum x_k d^k: x_1 = -C F_theta,
+    // then each x_k = -C H_k, H_k the coefficient of d^k of F along the
+    // polynomial so far (models on a disk of radius 0: Taylor coefficients);
+    // all in doubles (any C and polynomial are sound; these keep Y small).
     double x0[2], start[2], C[2][2];
     if (!newton(mid, last_, x0, C) && !(ray_start(mid, start) && newton(mid, start, x0, C))) return std::nullopt;
     const Frame<double> bp_mid(p_.shape, std::sin(mid), std::cos(mid));
     const System<double> at(q_.shape, bp_mid,
                             Frame<double>(q_.shape, std::sin(x0[1]), std::cos(x0[1]), q_parts<double>(signed_)), x0[0], signed_);
     if (!inverse(at.J, C)) return std::nullopt;
-    double slope[2];
-    for (int i = 0; i < 2; ++i) slope[i] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
+    std::array<double, N + 1> x[2];
+    for (int i = 0; i < 2; ++i) {
+        x[i].fill(0.0);
+        x[i][0] = x0[i];
+        x[i][1] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
+    }
+    Model sin, cos;
+    const auto residual = [&](const Frame<Model>& bp, const Model& s, const Model& phi, Model (&F)[2]) {
+        sin_cos(phi, sin, cos);
+        const Frame<Model> bq(q_, sin, cos, q_parts<Model>(signed_));
+        Differences<Model>(bp, bq, s).residual(bp, bq, s, signed_, F);
+    };
+    Model H[2];
+    sin_cos(Model::variable(CI(Interval(mid)), 0), sin, cos);
+    const Frame<Model> bp_at_mid(p_, sin, cos);
+    for (int k = 2; k <= N; ++k) {
+        residual(bp_at_mid, polynomial(x[0], 0), polynomial(x[1], 0), H);
+        for (int i = 0; i < 2; ++i) {
+            x[i][k] = -(C[i][0] * H[0].c[k].re + C[i][1] * H[1].c[k].re);
+            if (!std::isfinite(x[i][k])) return std::nullopt;
+        }
+    }
 
-    // x = x_lin(theta) + y, x_lin = x0 + x' (theta - mid), over the box.
+    // On the box mid + d, d in the rectangle +- along + i (+- across), inside
+    // the disk |d| <= R: x = x_model(theta) + y. H(theta) = F(x_model(theta),
+    // theta) as a model: the polynomial leaves it of the order N + 1 in R.
+    // (Interval evaluations over the box lose how every quantity follows d:
+    // a first-order mean-value form, then second-order jets, overestimated H
+    // and I - C J(X) ten to thirty times over and kept the boxes small.)
     const CI dtheta(sym(along), sym(across));
-    const CI theta = dtheta + Interval(mid);
-    CI x_lin[2];
-    for (int i = 0; i < 2; ++i) x_lin[i] = slope[i] * dtheta + Interval(x0[i]);
-    CI sin_t, cos_t, sin_q, cos_q;
-    sin_cos(theta, sin_t, cos_t);
+    const double R = (Interval(along).square() + Interval(across).square()).sqrt().hi;
+    const Model variable = Model::variable(CI(), R);  // d
+    sin_cos(Model::variable(CI(Interval(mid)), R), sin, cos);
+    const Frame<Model> bp_model(p_, sin, cos);
+    const Model s_model = polynomial(x[0], R), phi_model = polynomial(x[1], R);
+    residual(bp_model, s_model, phi_model, H);
+    // Bounds of C(theta) H(theta) on the disk for the preconditioner
+    // C(theta) = C + C1 d.
+    const auto preconditioned = [&](const double (&C1)[2][2], double (&bound)[2]) {
+        for (int i = 0; i < 2; ++i)
+            bound[i] = (C[i][0] * H[0] + C[i][1] * H[1] + variable * (C1[i][0] * H[0] + C1[i][1] * H[1])).bound();
+    };
+    const double constant_C[2][2] = {{0, 0}, {0, 0}};
+    double CH[2], r[2];
+    preconditioned(constant_C, CH);
+    for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i] + std::ldexp(1 + std::fabs(x0[i]), -44);
+    CI sin_t, cos_t;
+    sin_cos(dtheta + Interval(mid), sin_t, cos_t);
     const Frame<CI> bp(p_, sin_t, cos_t);
-    // H(theta) = F(x_lin(theta), theta) to second order about mid, with
-    // Taylor's remainder in integral form: H(mid + d) lies in H(mid) +
-    // H'(mid) d + (H''/2)(Theta) d^2 (the rectangle is convex). The jets in
-    // t = theta - theta_c carry the dependence of x_lin on theta, which an
-    // interval evaluation over the box loses (a first-order mean-value form
-    // here overestimated H several times over and kept the boxes small).
-    Jet<Interval> at_middle[2];
-    residual_jet(p_, q_, Interval(mid), Interval(x0[0]), Interval(x0[1]), slope, signed_, at_middle);
-    Jet<CI> over_box[2];
-    residual_jet(p_, q_, theta, x_lin[0], x_lin[1], slope, signed_, over_box);
-    const CI dtheta2 = dtheta * dtheta;
-    CI CH[2], H[2];
-    for (int i = 0; i < 2; ++i) H[i] = CI(at_middle[i].c[0]) + at_middle[i].c[1] * dtheta + over_box[i].c[2] * dtheta2;
-    for (int i = 0; i < 2; ++i) CH[i] = C[i][0] * H[0] + C[i][1] * H[1];
-    double r[2];
-    for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i].magnitude() + std::ldexp(1 + std::fabs(x0[i]), -44);
     for (int attempt = 0; attempt < 3; ++attempt) {
         if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
-        CI Y[2], X[2];
+        // Y_i = +- r_i + i (+- r_i) lies in the disk of radius sqrt(2) r_i
+        // (1.4142135623730951 > sqrt(2)).
+        double reach[2];
+        Model X[2] = {s_model, phi_model};
         for (int i = 0; i < 2; ++i) {
-            Y[i] = CI(sym(r[i]), sym(r[i]));
-            X[i] = x_lin[i] + Y[i];
+            reach[i] = Interval::up(r[i] * 1.4142135623730951);
+            X[i].remainder = Interval::up(X[i].remainder + reach[i]);
         }
         // Re s > 0, or Re s > -r_p with the signed tie (normal_ray_bisector.hpp).
-        if (!(signed_ ? X[0].re + medial_p_ : X[0].re).positive()) return std::nullopt;
-        sin_cos(X[1], sin_q, cos_q);
-        const Frame<CI> bq(q_, sin_q, cos_q, q_parts<CI>(signed_));
-        const System<CI> on_box(q_, bp, bq, X[0], signed_);
-        // dF1/dphi = -2 F0 (not for the signed tie), and on X(theta) F0 is
-        // its value on the line plus the first row of J(X) times y (the
-        // integral form of the mean value theorem; the rectangle J(X) is
-        // convex): far tighter than F0 over the box, which does not see that
-        // x follows theta.
-        CI J[2][2] = {{on_box.J[0][0], on_box.J[0][1]}, {on_box.J[1][0], on_box.J[1][1]}};
-        if (!signed_) J[1][1] = intersect(J[1][1], -2.0 * (H[0] + on_box.J[0][0] * Y[0] + on_box.J[0][1] * Y[1]));
-        CI K[2];
-        const bool inside = krawczyk_inside(C, CH, J, Y, r, K);
+        const CI s_box = X[0].enclose(dtheta);
+        if (!(signed_ ? s_box.re + medial_p_ : s_box.re).positive()) return std::nullopt;
+        sin_cos(X[1], sin, cos);
+        const Frame<Model> bq(q_, sin, cos, q_parts<Model>(signed_));
+        const System<Model> on_box(q_, bp_model, bq, X[0], signed_);
+        // The Krawczyk test at each theta with its own preconditioner
+        // C(theta) = C + C1 d, C1 = -C J' C the derivative of J^-1 along the
+        // model at mid (any matrix is sound at each theta; this one cancels
+        // the first order of I - C(theta) J): |I - C(theta) J(X(theta))| and
+        // |C(theta) H(theta)| bounded by their models, pointwise in theta.
+        double C1[2][2];
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+                C1[i][j] = 0;
+                for (int k = 0; k < 2; ++k)
+                    for (int l = 0; l < 2; ++l) C1[i][j] -= C[i][k] * on_box.J[k][l].c[1].re * C[l][j];
+                if (!std::isfinite(C1[i][j])) return std::nullopt;
+            }
+        preconditioned(C1, CH);
+        bool inside = true;
+        double k_bound[2];
+        for (int i = 0; i < 2; ++i) {
+            k_bound[i] = CH[i];
+            for (int j = 0; j < 2; ++j) {
+                Model m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j] +
+                            variable * (C1[i][0] * on_box.J[0][j] + C1[i][1] * on_box.J[1][j]));
+                if (i == j) m = m + Interval(1.0);
+                k_bound[i] = Interval::up(k_bound[i] + Interval::up(m.bound() * reach[j]));
+            }
+            inside = inside && k_bound[i] < r[i];
+        }
         if (!inside) {
-            for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * K[i].magnitude());
+            for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * k_bound[i]);
             continue;
         }
         // One root in X, holomorphic in theta; q's nearest point when V - Q
         // points out of q (normal_ray_bisector.hpp).
         // (or above q's medial axis with the signed tie).
-        const CI side = dot(bp.x + X[0] * bp.nx - bq.x, bp.y + X[0] * bp.ny - bq.y, bq.nx, bq.ny);
-        if (!(signed_ ? side + medial_q_ * bq.n2 : side).re.positive()) return std::nullopt;
-        const CI& g_s = on_box.J[1][0];
+        const Model side = dot(bp_model.x + X[0] * bp_model.nx - bq.x, bp_model.y + X[0] * bp_model.ny - bq.y, bq.nx, bq.ny);
+        if (!(signed_ ? side + medial_q_ * bq.n2 : side).enclose(dtheta).re.positive()) return std::nullopt;
+        const CI g_s = on_box.J[1][0].enclose(dtheta);
         if (!g_s.zero_free()) return std::nullopt;
-        return BoxRoot{bp, x_lin[0] + K[0], -(on_box.F_theta[1] / g_s), x0[0], slope[0], K[0]};  // s' = -g_theta / g_s
+        const CI K(sym(k_bound[0]), sym(k_bound[0]));  // x_model(theta) + K holds s(theta)
+        Model higher = s_model;  // s - (x_0 + x_1 d) - K
+        higher.c[0] = higher.c[1] = {0, 0};
+        return BoxRoot{bp,     s_model.enclose(dtheta) + K, -(on_box.F_theta[1].enclose(dtheta) / g_s),  // s' = -g_theta / g_s
+                       x0[0], x[0][1],   higher.enclose(dtheta) + K};
     }
     return std::nullopt;
 }

@@ -39,10 +39,12 @@ struct ComplexInterval {
     }
     bool zero_free() const { return (re.square() + im.square()).positive(); }
     bool finite() const { return re.finite() && im.finite(); }
-    // An upper bound of |z| over the rectangle.
+    // An upper bound of |z| over the rectangle: sqrt(x^2 + y^2) for the
+    // largest |Re z| and |Im z|, each operation rounded up (the square root
+    // is correctly rounded).
     double magnitude() const {
         const double x = std::max(std::fabs(re.lo), std::fabs(re.hi)), y = std::max(std::fabs(im.lo), std::fabs(im.hi));
-        return (Interval(x).square() + Interval(y).square()).sqrt().hi;
+        return Interval::up(std::sqrt(Interval::up(Interval::up(x * x) + Interval::up(y * y))));
     }
 };
 

@@ -1,0 +1,310 @@
+// Taylor models of holomorphic functions of one complex variable d on a disk
+// |d| <= R: a polynomial of degree N with floating-point complex
+// coefficients and a remainder radius e, meaning
+//     f(d) in sum_k c_k d^k + D(0, e)   for every |d| <= R
+// (Berz and Makino's Taylor models, here in one complex variable, with the
+// coefficients' rounding errors moved into e as Rump does for midpoint-radius
+// arithmetic). Products keep the terms up to d^N and move the higher ones,
+// bounded on the disk, into the remainder; sine, cosine, square root and
+// reciprocal add their series' tails. Unlike an interval evaluation over the
+// disk, the dependence of every intermediate quantity on d is carried to
+// order N, so a long expression overestimates only by remainders of order
+// N + 1 in R (and the rounding). With R = 0 a model is a value.
+//
+// Rounding: round-to-nearest, unit u = 2^-53. A floating-point sum of n
+// real products errs by at most gamma_n = n u / (1 - n u) times the sum of
+// their magnitudes (Higham, Accuracy and Stability, Lemma 3.1 and eq. 3.5;
+// a fused multiply-add only removes roundings); a complex coefficient is two
+// such sums, so its error is at most gamma_n times the sum of the products
+// of the factors' 1-norms |re| + |im|. Bounds are sums and products of
+// nonnegative doubles rounded to nearest: a chain of n such operations
+// errs by a factor of at most (1 - u)^-n, so every stored bound is the
+// computed one times 1 + 2^-40 (`inflated`), enough for chains of thousands
+// of operations. A NaN or infinite bound fails every later comparison.
+#pragma once
+
+#include "util/complex_interval.hpp"
+#include "util/interval_trig.hpp"
+
+#include <cmath>
+
+namespace ellvor {
+
+namespace taylor_model_detail {
+
+struct Complex {
+    double re = 0, im = 0;
+};
+
+inline double norm1(const Complex& z) { return std::fabs(z.re) + std::fabs(z.im); }
+inline double inflated(double bound) { return bound * (1 + 0x1p-40); }
+
+// gamma_n <= (n + 1) u for n u < 2^-20.
+constexpr double gamma(int n) { return (n + 1) * 0x1p-53; }
+
+// A rectangle as a point and a radius holding it: midpoints, and the
+// half-widths' 1-norm.
+inline void split(const ComplexInterval& z, Complex& center, double& radius) {
+    center = {z.re.mid(), z.im.mid()};
+    const double r = std::fmax(z.re.hi - center.re, center.re - z.re.lo);
+    const double i = std::fmax(z.im.hi - center.im, center.im - z.im.lo);
+    radius = inflated(r + i);
+    if (!std::isfinite(center.re) || !std::isfinite(center.im)) radius = INFINITY;
+}
+
+}  // namespace taylor_model_detail
+
+template <int N>
+struct ComplexTaylorModel {
+    static_assert(N >= 1, "a model of degree 0 is a disk");
+    using Complex = taylor_model_detail::Complex;
+    Complex c[N + 1];
+    double remainder = 0;
+    double radius = 0;  // R
+
+    ComplexTaylorModel() = default;
+    // The rectangle k, as a constant on the disk of radius R.
+    ComplexTaylorModel(const ComplexInterval& k, double R) : radius(R) { taylor_model_detail::split(k, c[0], remainder); }
+    // center + d.
+    static ComplexTaylorModel variable(const ComplexInterval& center, double R) {
+        ComplexTaylorModel x(center, R);
+        x.c[1] = {1, 0};
+        return x;
+    }
+    // Any function on the disk: what an operation gives outside its domain.
+    static ComplexTaylorModel unbounded(double R) {
+        ComplexTaylorModel x;
+        x.radius = R;
+        x.remainder = INFINITY;
+        return x;
+    }
+
+    // R^k for k = 0 .. 2N (computed: the callers' inflation covers them).
+    void radius_powers(double (&power)[2 * N + 1]) const {
+        power[0] = 1;
+        for (int k = 1; k <= 2 * N; ++k) power[k] = power[k - 1] * radius;
+    }
+    // The polynomial part's modulus on the disk, bounded by 1-norms
+    // (computed: the callers' inflation covers it).
+    double polynomial_bound() const {
+        double b = taylor_model_detail::norm1(c[N]);
+        for (int k = N - 1; k >= 0; --k) b = b * radius + taylor_model_detail::norm1(c[k]);
+        return b;
+    }
+    // An upper bound of |f| on the disk (moduli of the coefficients).
+    double bound() const {
+        double b = 0;
+        for (int k = N; k >= 0; --k) b = b * radius + std::sqrt(c[k].re * c[k].re + c[k].im * c[k].im);
+        return taylor_model_detail::inflated(b + remainder);
+    }
+    // A rectangle holding f(d) for every d in the rectangle `d` (which must
+    // lie in the disk): the polynomial by Horner's rule in intervals, plus
+    // the remainder.
+    ComplexInterval enclose(const ComplexInterval& d) const {
+        ComplexInterval p = point(c[N]);
+        for (int k = N - 1; k >= 0; --k) p = p * d + point(c[k]);
+        const Interval e(-remainder, remainder);
+        return {p.re + e, p.im + e};
+    }
+
+    // Sums: each coefficient's rounding, at most u |result| per part.
+    friend ComplexTaylorModel operator+(const ComplexTaylorModel& a, const ComplexTaylorModel& b) {
+        return sum(a, b, 1);
+    }
+    friend ComplexTaylorModel operator-(const ComplexTaylorModel& a, const ComplexTaylorModel& b) {
+        return sum(a, b, -1);
+    }
+    ComplexTaylorModel operator-() const {
+        ComplexTaylorModel a = *this;
+        for (Complex& x : a.c) x = {-x.re, -x.im};
+        return a;
+    }
+    friend ComplexTaylorModel operator+(const ComplexTaylorModel& a, const Interval& k) {
+        return a + ComplexTaylorModel(ComplexInterval(k), a.radius);
+    }
+    friend ComplexTaylorModel operator-(const ComplexTaylorModel& a, const Interval& k) {
+        return a - ComplexTaylorModel(ComplexInterval(k), a.radius);
+    }
+
+    // k a for a rectangle k = m + D(0, rho): m a's coefficients (rounding:
+    // gamma_2 |m|_1 |c_j|_1), and rho |a| + |m| e.
+    friend ComplexTaylorModel operator*(const ComplexInterval& k, const ComplexTaylorModel& a) {
+        using namespace taylor_model_detail;
+        Complex m;
+        double rho;
+        split(k, m, rho);
+        ComplexTaylorModel p;
+        p.radius = a.radius;
+        double power[2 * N + 1], rounding = 0;
+        a.radius_powers(power);
+        const double m1 = norm1(m);
+        for (int j = 0; j <= N; ++j) {
+            p.c[j] = {m.re * a.c[j].re - m.im * a.c[j].im, m.re * a.c[j].im + m.im * a.c[j].re};
+            rounding += m1 * norm1(a.c[j]) * power[j];
+        }
+        p.remainder = inflated(gamma(2) * rounding + rho * (a.polynomial_bound() + a.remainder) + m1 * a.remainder);
+        return p;
+    }
+    friend ComplexTaylorModel operator*(const Interval& k, const ComplexTaylorModel& a) { return ComplexInterval(k) * a; }
+    friend ComplexTaylorModel operator*(const ComplexTaylorModel& a, const Interval& k) { return ComplexInterval(k) * a; }
+    friend ComplexTaylorModel operator*(double k, const ComplexTaylorModel& a) {
+        return ComplexInterval(Interval(k)) * a;
+    }
+
+    // (p_a + e_a)(p_b + e_b): the product's terms up to d^N (rounding: at
+    // most gamma_(2N+2) times the sum of |a_i|_1 |b_j|_1 R^k); its terms d^k,
+    // k > N, bounded by the 1-norms of their products times R^k; and |p_a|
+    // e_b + |p_b| e_a + e_a e_b.
+    friend ComplexTaylorModel operator*(const ComplexTaylorModel& a, const ComplexTaylorModel& b) {
+        using namespace taylor_model_detail;
+        ComplexTaylorModel p;
+        p.radius = std::fmax(a.radius, b.radius);
+        double power[2 * N + 1], na[N + 1], nb[N + 1];
+        p.radius_powers(power);
+        for (int k = 0; k <= N; ++k) na[k] = norm1(a.c[k]), nb[k] = norm1(b.c[k]);
+        double rounding = 0, high = 0;
+        for (int k = 0; k <= 2 * N; ++k) {
+            Complex sum;
+            double magnitudes = 0;
+            for (int i = k > N ? k - N : 0; i <= k && i <= N; ++i) {
+                if (k <= N) {
+                    const Complex &x = a.c[i], &y = b.c[k - i];
+                    sum.re += x.re * y.re - x.im * y.im;
+                    sum.im += x.re * y.im + x.im * y.re;
+                }
+                magnitudes += na[i] * nb[k - i];
+            }
+            if (k <= N) {
+                p.c[k] = sum;
+                rounding += magnitudes * power[k];
+            } else {
+                high += magnitudes * power[k];  // |sum of products| <= sum of |products|
+            }
+        }
+        const double cross = a.polynomial_bound() * b.remainder + b.polynomial_bound() * a.remainder;
+        p.remainder = inflated(gamma(2 * N + 2) * rounding + high + cross + a.remainder * b.remainder);
+        return p;
+    }
+
+    // The model without its constant term.
+    ComplexTaylorModel variation() const {
+        ComplexTaylorModel v = *this;
+        v.c[0] = {0, 0};
+        return v;
+    }
+
+private:
+    static ComplexInterval point(const Complex& z) { return {Interval(z.re), Interval(z.im)}; }
+    static ComplexTaylorModel sum(const ComplexTaylorModel& a, const ComplexTaylorModel& b, double sign) {
+        using namespace taylor_model_detail;
+        ComplexTaylorModel s;
+        s.radius = std::fmax(a.radius, b.radius);
+        double power[2 * N + 1], rounding = 0;
+        s.radius_powers(power);
+        for (int k = 0; k <= N; ++k) {
+            s.c[k] = {a.c[k].re + sign * b.c[k].re, a.c[k].im + sign * b.c[k].im};
+            rounding += norm1(s.c[k]) * power[k];
+        }
+        // |x + y - fl(x + y)| <= u |x + y| <= 2u |fl(x + y)|, per part.
+        s.remainder = inflated(a.remainder + b.remainder + 0x1p-52 * rounding);
+        return s;
+    }
+};
+
+template <int N>
+ComplexTaylorModel<N> square(const ComplexTaylorModel<N>& x) {
+    return x * x;
+}
+
+// The sum of coefficient[m] w^m, m = 0..N, of a model w with no constant
+// term, plus `tail` added to the remainder.
+template <int N>
+ComplexTaylorModel<N> power_series(const ComplexTaylorModel<N>& w, const Interval (&coefficient)[N + 1], double tail) {
+    ComplexTaylorModel<N> sum(ComplexInterval(coefficient[0]), w.radius), power = w;
+    for (int m = 1; m <= N; ++m) {
+        if (m > 1) power = power * w;
+        sum = sum + coefficient[m] * power;
+    }
+    sum.remainder = Interval::up(sum.remainder + tail);
+    return sum;
+}
+
+// W^(N+1) / (1 - W) rounded up, for 0 <= W < 1 (infinite otherwise): the
+// tail of a series whose coefficients are at most 1 in magnitude.
+template <int N>
+double geometric_tail(double W) {
+    if (!(W < 1)) return INFINITY;
+    Interval p(1.0);
+    for (int m = 0; m <= N; ++m) p = p * Interval(W);
+    return (p / (Interval(1.0) - Interval(W))).hi;
+}
+
+// sin and cos of u = u0 + w: sin u0 cos w + cos u0 sin w and cos u0 cos w -
+// sin u0 sin w, the series of cos w and sin w to w^N, their tails at most
+// sum over m > N of W^m / m! <= W^(N+1) e^W / (N + 1)! for |w| <= W.
+template <int N>
+void sin_cos(const ComplexTaylorModel<N>& u, ComplexTaylorModel<N>& sin, ComplexTaylorModel<N>& cos) {
+    ComplexInterval s, c;
+    sin_cos(ComplexInterval(Interval(u.c[0].re), Interval(u.c[0].im)), s, c);
+    const ComplexTaylorModel<N> w = u.variation();
+    const double W = w.bound();
+    Interval sin_coefficient[N + 1], cos_coefficient[N + 1], inverse_factorial(1.0);
+    for (int m = 0; m <= N; ++m) {
+        if (m > 0) inverse_factorial = inverse_factorial / Interval(static_cast<double>(m));
+        const Interval signed_term = (m / 2) % 2 ? -inverse_factorial : inverse_factorial;
+        sin_coefficient[m] = m % 2 ? signed_term : Interval(0.0);
+        cos_coefficient[m] = m % 2 ? Interval(0.0) : signed_term;
+    }
+    Interval tail = Interval(W);
+    for (int m = 1; m <= N; ++m) tail = tail * Interval(W) / Interval(static_cast<double>(m + 1));
+    // e^W rounded up: the library's exp is within an ulp, a few ulps cover it.
+    const double tail_bound = Interval::up((tail * Interval(std::exp(W) * (1 + 0x1p-48))).hi);
+    const ComplexTaylorModel<N> cos_w = power_series(w, cos_coefficient, tail_bound),
+                                sin_w = power_series(w, sin_coefficient, tail_bound);
+    // u's own remainder is in w (u0 is a point).
+    sin = s * cos_w + c * sin_w;
+    cos = c * cos_w - s * sin_w;
+}
+
+// 1/a = (1/a0) sum (-z)^m with z = (a - a0)/a0, |z| <= Z < 1; the tail is
+// at most Z^(N+1)/(1 - Z). a0 must be nonzero, else the remainder is
+// infinite.
+template <int N>
+ComplexTaylorModel<N> reciprocal(const ComplexTaylorModel<N>& a) {
+    const ComplexInterval a0(Interval(a.c[0].re), Interval(a.c[0].im));
+    if (!a0.zero_free()) return ComplexTaylorModel<N>::unbounded(a.radius);
+    const ComplexInterval inverse = ComplexInterval(Interval(1.0)) / a0;
+    const ComplexTaylorModel<N> z = inverse * a.variation();
+    Interval coefficient[N + 1];
+    for (int m = 0; m <= N; ++m) coefficient[m] = Interval(m % 2 ? -1.0 : 1.0);
+    return inverse * power_series(z, coefficient, geometric_tail<N>(z.bound()));
+}
+
+template <int N>
+ComplexTaylorModel<N> operator/(const ComplexTaylorModel<N>& a, const ComplexTaylorModel<N>& b) {
+    return a * reciprocal(b);
+}
+
+// The principal square root where Re a0 > 0: sqrt(a0) sqrt(1 + z), z = (a -
+// a0)/a0, |z| <= Z < 1 (then sqrt(1 + z) is the principal branch, and the
+// product, of real part > 0 and square a, is the principal root of a). The
+// binomial coefficients (1/2 choose m) are dyadic up to m = 6 and at most
+// 1/8 in magnitude from m = 2 on: tail <= Z^(N+1)/(8 (1 - Z)). Elsewhere an
+// infinite remainder.
+template <int N>
+ComplexTaylorModel<N> principal_root(const ComplexTaylorModel<N>& a) {
+    static_assert(N <= 6, "the binomial coefficients below");
+    const ComplexInterval a0(Interval(a.c[0].re), Interval(a.c[0].im));
+    if (!(a0.re.lo > 0)) return ComplexTaylorModel<N>::unbounded(a.radius);
+    // u = sqrt((|a0| + Re a0)/2) > 0, v = Im a0 / (2u).
+    const Interval u = (((a0.re.square() + a0.im.square()).sqrt() + a0.re) * Interval(0.5)).sqrt();
+    const ComplexInterval root0(u, a0.im / (Interval(2.0) * u));
+    const ComplexTaylorModel<N> z = (ComplexInterval(Interval(1.0)) / a0) * a.variation();
+    static constexpr double binomial[7] = {1, 0.5, -0.125, 0.0625, -0.0390625, 0.02734375, -0.0205078125};
+    Interval coefficient[N + 1];
+    for (int m = 0; m <= N; ++m) coefficient[m] = Interval(binomial[m]);
+    const double tail = Interval::up(geometric_tail<N>(z.bound()) * 0.125);
+    return root0 * power_series(z, coefficient, tail);
+}
+
+}  // namespace ellvor
