@@ -223,7 +223,26 @@ public:
         CellArea r;
         r.site_area = site_area(site, prec);
         const std::size_t m = cell.edges.size();
-        const std::vector<Ball> lifted = angles_.lifted(cell, prec);
+        const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
+        // Below 45 bits the edges go to the double-interval quadrature first,
+        // beyond to its pieces with the nodes in Arb; Arb's integrator takes
+        // what they cannot certify.
+        const bool in_doubles = !arb_integrator_only_ && goal <= kDoubleGoalBits;
+        const bool nodes_in_arb = !arb_integrator_only_ && !in_doubles;
+        // The double quadrature reads the ends as doubles and adds their
+        // radii times the density: goal + 8 bits of angle leave those terms
+        // far below the tolerance (the circles certified in doubles give
+        // them); the other stages take the angles at the working precision.
+        std::vector<Ball> lifted = angles_.lifted(cell, in_doubles ? goal + 8 + 24 : prec);
+        // A zero-length edge (four cocircular sites, as at a wall's mirror
+        // images) needs its two equal ends to round to the same double,
+        // which takes the working precision.
+        const auto nearest_double = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_NEAR); };
+        for (std::size_t k = 0; in_doubles && k + 1 < lifted.size(); ++k)
+            if (!(nearest_double(lifted[k]) < nearest_double(lifted[k + 1]))) {
+                lifted = angles_.lifted(cell, prec);
+                break;
+            }
         std::vector<std::unique_ptr<NormalRayBisector>> bisectors;
         bool meets = false;  // a neighbour crosses or touches the site
         for (const CellEdge& e : cell.edges) {
@@ -239,16 +258,10 @@ public:
         if (pass == 0 || meets) area_floor = std::max(area_floor, 0.5 * estimated_area(cell, lifted, bisectors));
         if (!(area_floor > 0)) area_floor = r.site_area.mid_double();
         const long unit = std::lround(0.5 * std::log2(area_floor));  // L = 2^unit, about sqrt(area)
-        const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
         Mag tol;
         // Per edge and pair an eighth of the tolerance's share: with the ends'
         // terms the area's width stays well below T * area.
         mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
-        // Below 45 bits the edges go to the double-interval quadrature first,
-        // beyond to its pieces with the nodes in Arb; Arb's integrator takes
-        // what they cannot certify.
-        const bool in_doubles = !arb_integrator_only_ && goal <= kDoubleGoalBits;
-        const bool nodes_in_arb = !arb_integrator_only_ && !in_doubles;
         MeasureSums sums;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector& bisector = *bisectors[k];

@@ -11,10 +11,48 @@ namespace ellvor {
 
 namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
+// Angles of up to this many bits are first asked of the circle certified in
+// doubles (its boxes are some 2^-48 wide; Arb's solver costs tens of times
+// more).
+constexpr long kBitsInDoubles = 44;
+
+// theta = 2 atan(t), plus pi in the flipped chart, for t in the ball.
+Ball angle_of_parameter(const Ball& t, bool flipped, long prec) {
+    Ball theta;
+    arb_atan(theta.get(), t.get(), prec);
+    arb_mul_2exp_si(theta.get(), theta.get(), 1);
+    if (flipped) {
+        Ball pi;
+        arb_const_pi(pi.get(), prec);
+        arb_add(theta.get(), theta.get(), pi.get(), prec);
+    }
+    return theta;
 }
+}  // namespace
 
 CellVertexAngles::CellVertexAngles(const DelaunayGraph& graph, const std::vector<Ellipse>& sites)
-    : sites_(sites), faces_(graph.faces()), solvers_(faces_.size()) {}
+    : sites_(sites),
+      faces_(graph.faces()),
+      solvers_(faces_.size()),
+      circles_in_doubles_(faces_.size()),
+      tried_in_doubles_(faces_.size(), 0) {}
+
+const DoubleVoronoiCircle* CellVertexAngles::circle_in_doubles(long face) {
+    const auto f = static_cast<std::size_t>(face);
+    if (!tried_in_doubles_[f]) {
+        tried_in_doubles_[f] = 1;
+        circles_in_doubles_[f] =
+            certify_voronoi_circle_in_doubles(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]]);
+    }
+    return circles_in_doubles_[f] ? &*circles_in_doubles_[f] : nullptr;
+}
+
+int CellVertexAngles::position(long face, SiteId site) const {
+    const auto& triple = faces_.at(static_cast<std::size_t>(face));
+    const int i = static_cast<int>(std::find(triple.begin(), triple.end(), site) - triple.begin());
+    if (i == 3) throw Error("CellVertexAngles: a cell's vertex misses its site");
+    return i;
+}
 
 VoronoiCircleSolver& CellVertexAngles::solver(long face, long prec) {
     const auto f = static_cast<std::size_t>(face);
@@ -27,19 +65,20 @@ VoronoiCircleSolver& CellVertexAngles::solver(long face, long prec) {
 }
 
 Ball CellVertexAngles::angle(long face, SiteId site, long prec) {
+    const int i = position(face, site);
+    if (prec - 24 <= kBitsInDoubles)
+        if (const DoubleVoronoiCircle* d = circle_in_doubles(face)) {
+            Ball t;
+            Arf lo, hi;
+            arf_set_d(lo.get(), d->parameter[i].lo);
+            arf_set_d(hi.get(), d->parameter[i].hi);
+            arb_set_interval_arf(t.get(), lo.get(), hi.get(), prec);
+            Ball theta = angle_of_parameter(t, d->flipped[i], prec);
+            if (mag_cmp_2exp_si(arb_radref(theta.get()), 24 - prec) <= 0) return theta;
+        }
     VoronoiCircleSolver& s = solver(face, prec);
-    const auto& triple = faces_[static_cast<std::size_t>(face)];
-    const int i = static_cast<int>(std::find(triple.begin(), triple.end(), site) - triple.begin());
-    if (i == 3) throw Error("CellVertexAngles: a cell's vertex misses its site");
     const VoronoiCircleEnclosure& c = s.enclosure();
-    Ball theta;
-    arb_atan(theta.get(), c.parameter[i].get(), prec);
-    arb_mul_2exp_si(theta.get(), theta.get(), 1);
-    if (c.flipped[i]) {
-        Ball pi;
-        arb_const_pi(pi.get(), prec);
-        arb_add(theta.get(), theta.get(), pi.get(), prec);
-    }
+    Ball theta = angle_of_parameter(c.parameter[i], c.flipped[i], prec);
     s.release_charts();
     return theta;
 }

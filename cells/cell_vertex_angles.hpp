@@ -2,16 +2,19 @@
 // its tangency angle theta on a site of its triple, and a bounded cell's
 // vertex angles lifted to increase counter-clockwise through one turn
 // (docs/DESIGN.md §10). The circles are certified once per face and refined
-// on demand.
+// on demand: in doubles first (subdivision/voronoi_circle_in_doubles.hpp),
+// which give the angles to about 48 bits, then by Arb's solver for more.
 #pragma once
 
 #include "cells/voronoi_cells.hpp"
 #include "graph/delaunay_graph.hpp"
 #include "sites/ellipse.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "subdivision/voronoi_circle_in_doubles.hpp"
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ellvor {
@@ -23,7 +26,7 @@ public:
 
     // The tangency angle on `site` of the Voronoi circle of face number
     // `face`, theta = 2 atan(t) (or pi + 2 atan(u) in the flipped chart), its
-    // radius about 2^(24 - prec).
+    // radius about 2^(24 - prec) (at most that when it comes from the doubles).
     Ball angle(long face, SiteId site, long prec);
     // The center of the Voronoi circle of face number `face`, refined to prec - 24 bits.
     BallPoint vertex(long face, long prec);
@@ -34,10 +37,16 @@ public:
 
 private:
     VoronoiCircleSolver& solver(long face, long prec);
+    // The face's circle certified in doubles, or null when that fails.
+    const DoubleVoronoiCircle* circle_in_doubles(long face);
+    // The position of `site` in the face's triple.
+    int position(long face, SiteId site) const;
 
     const std::vector<Ellipse>& sites_;
     std::vector<std::array<SiteId, 3>> faces_;
     std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers_;
+    std::vector<std::optional<DoubleVoronoiCircle>> circles_in_doubles_;
+    std::vector<char> tried_in_doubles_;
 };
 
 }  // namespace ellvor

@@ -1,0 +1,45 @@
+// Vertex angles (cells/cell_vertex_angles.hpp): at low precision from the
+// circles certified in doubles, beyond from Arb's solver. On random and
+// nested ellipses, every face and each of its sites: the two balls overlap,
+// each is as accurate as promised (radius at most 2^(24 - prec) for the
+// first), and lifting a cell's angles works at both precisions.
+#include "cells/cell_vertex_angles.hpp"
+#include "cells/face_numbers.hpp"
+#include "cells/voronoi_cells.hpp"
+#include "sites/site_generators.hpp"
+#include "tests/support/ellipse_graph.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace ellvor;
+
+TEST_CASE("vertex angles: the doubles' and Arb's balls overlap, each as accurate as asked", "[cells]") {
+    GeneratorOptions o;
+    o.count = 40;
+    o.seed = GENERATE(1, 2, 3);
+    o.nested_fraction = Rational(1, 5);
+    const std::vector<Ellipse> sites = generate_sites(o);
+    DelaunayGraph graph = test::ellipse_graph(sites);
+    graph.insert_all();
+    const std::vector<std::array<SiteId, 3>> faces = graph.faces();
+    CellVertexAngles coarse(graph, sites), fine(graph, sites);
+    constexpr long kCoarse = 24 + 42, kFine = 24 + 100;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        for (SiteId s : faces[f]) {
+            const Ball a = coarse.angle(static_cast<long>(f), s, kCoarse), b = fine.angle(static_cast<long>(f), s, kFine);
+            INFO("face " << f << " site " << s << ": " << a.str(20) << " and " << b.str(40));
+            CHECK(arb_overlaps(a.get(), b.get()));
+            CHECK(mag_cmp_2exp_si(arb_radref(a.get()), -42) <= 0);
+            CHECK(mag_cmp_2exp_si(arb_radref(b.get()), -90) <= 0);
+        }
+    const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
+    int lifted = 0;
+    for (const VoronoiCell& c : cells)
+        if (c.visible && c.bounded()) {
+            const std::vector<Ball> x = coarse.lifted(c, kCoarse), y = fine.lifted(c, kFine);
+            REQUIRE(x.size() == y.size());
+            for (std::size_t k = 0; k < x.size(); ++k) CHECK(arb_overlaps(x[k].get(), y[k].get()));
+            ++lifted;
+        }
+    CHECK(lifted > 5);
+}
