@@ -38,30 +38,35 @@ UpwardInterval negated_if(bool negate, const UpwardInterval& x) { return negate 
 double reciprocal(double x) { return 1 / x; }
 UpwardInterval reciprocal(const UpwardInterval& x) { return x.reciprocal(); }
 
-// An ellipse: semi-axes, rotation (cos, sin) and center.
+// An ellipse: semi-axes, rotation (cos, sin), center, and the product a b.
 template <class N>
 struct Shape {
-    N a, b, cos, sin, xc, yc;
+    N a, b, cos, sin, xc, yc, ab;
 };
 
 // The enclosures as they are (the cosine and sine computed before, in
-// round-to-nearest: util/interval_trig.hpp).
+// round-to-nearest: util/interval_trig.hpp); a b by Interval's product, whose
+// outward steps make it an enclosure in round-to-nearest, the mode in which
+// this is called.
 Shape<UpwardInterval> interval_shape(const Ellipse& e) {
     const Ellipse::Enclosure& k = e.enclosure();
     using U = UpwardInterval;
-    return {U(k.a), U(k.b), U(k.cos), U(k.sin), U(k.xc), U(k.yc)};
+    return {U(k.a), U(k.b), U(k.cos), U(k.sin), U(k.xc), U(k.yc), U(k.a * k.b)};
 }
 
 Shape<double> double_shape(const Ellipse& e) {
     const Ellipse::Enclosure& k = e.enclosure();
-    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), k.xc.mid(), k.yc.mid()};
+    const double a = k.a.mid(), b = k.b.mid();
+    return {a, b, k.cos.mid(), k.sin.mid(), k.xc.mid(), k.yc.mid(), a * b};
 }
 
 // Boundary point P and outward unit normal nu at chart parameter t, and
-// their derivatives in t when asked for.
+// their derivatives in t when asked for. Both derivatives lie along the
+// counter-clockwise tangent nu^perp = (-nu_y, nu_x): dP/dt = speed nu^perp
+// and dnu/dt = turning nu^perp (boundary_at says why).
 template <class N>
 struct BoundaryPoint {
-    N px, py, nx, ny, dpx, dpy, dnx, dny;
+    N px, py, nx, ny, speed, turning;
 };
 
 // In the ellipse's frame the boundary is (a cos, b sin) with
@@ -69,8 +74,16 @@ struct BoundaryPoint {
 // flipped chart u = -1/t gives the opposite point, (cos, sin) -> -(cos, sin)
 // at the same formula in u. The outward normal is along g = (b cos, a sin),
 // of length at least min(a, b). Derivatives: d/dt = w d/dtheta with
-// w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos); the unit normal
-// g/|g| has derivative (g' - nu (nu . g'))/|g|.
+// w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos). In the ellipse's
+// frame, with m = g/|g| and m^perp = (-a sin, b cos)/|g|:
+//   dP/dtheta = (-a sin, b cos) = |g| m^perp,
+//   dm/dtheta = (g' - m (m . g'))/|g| with g' = (-b sin, a cos), and
+//     g' = m (m . g') + m^perp (m^perp . g'), m^perp . g' = a b/|g|, so
+//   dm/dtheta = (a b/|g|^2) m^perp;
+// the rotation to the plane maps m^perp to nu^perp. Hence speed = w |g|
+// and turning = w a b/|g|^2: identities of the exact functions, so their
+// interval evaluation encloses the derivatives as the componentwise formulas
+// did (with fewer operations, and no cancellation in g' - m (m . g')).
 // What a caller needs: Newton the point, the normal and their derivatives;
 // F(m) the point and the normal; Krawczyk's box the normal and the
 // derivatives only (J(X); F over the box is never read).
@@ -82,7 +95,7 @@ BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts 
     const N inverse_den = reciprocal(one + t2);
     const N c = negated_if(flipped, (one - t2) * inverse_den), s = negated_if(flipped, twice(t) * inverse_den);
     const N gx = k.b * c, gy = k.a * s;
-    const N inverse_norm = reciprocal(root(square(gx) + square(gy)));
+    const N norm = root(square(gx) + square(gy)), inverse_norm = reciprocal(norm);
     const N mx = gx * inverse_norm, my = gy * inverse_norm;  // the unit normal in the ellipse's frame
     BoundaryPoint<N> p;
     if (parts != Parts::derivatives) {
@@ -94,43 +107,37 @@ BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts 
     p.ny = k.sin * mx + k.cos * my;
     if (parts == Parts::point) return p;
     const N w = twice(inverse_den);
-    const N dlx = -(k.a * s) * w, dly = (k.b * c) * w, dgx = -(k.b * s) * w, dgy = (k.a * c) * w;
-    const N projection = mx * dgx + my * dgy;
-    const N dmx = (dgx - mx * projection) * inverse_norm, dmy = (dgy - my * projection) * inverse_norm;
-    p.dpx = k.cos * dlx - k.sin * dly;
-    p.dpy = k.sin * dlx + k.cos * dly;
-    p.dnx = k.cos * dmx - k.sin * dmy;
-    p.dny = k.sin * dmx + k.cos * dmy;
+    p.speed = w * norm;
+    p.turning = (k.ab * w) * square(inverse_norm);
     return p;
 }
 
-// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y) when `F`
-// is given, and J when `J` is; `at` receives the three boundary points (their
-// normals, and the points with F).
+// The tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y): `at`
+// receives the three boundary points (the parts asked for), and F when `F`
+// is given (then the points are computed; without F, only the normals and
+// derivatives).
+//
+// Its Jacobian J is used by its structure, not as a matrix: rows 2i, 2i + 1
+// hold dP_i/dt + rho dnu_i/dt = scale_i nu_i^perp in column t_i (scale_i =
+// speed_i + rho turning_i, t_column_scale), nu_i in column rho, -I in the
+// columns V, and zeros elsewhere.
 template <class N>
 void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 3>& flipped,
-                       const std::array<N, 6>& x, std::array<N, 6>* F, std::array<std::array<N, 6>, 6>* J,
+                       const std::array<N, 6>& x, std::array<N, 6>* F, bool derivatives,
                        std::array<BoundaryPoint<N>, 3>& at) {
     const N& rho = x[3];
-    const Parts parts = !J ? Parts::point : F ? Parts::all : Parts::derivatives;
+    const Parts parts = !derivatives ? Parts::point : F ? Parts::all : Parts::derivatives;
     for (int i = 0; i < 3; ++i) {
         const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], parts);
         if (!F) continue;
         (*F)[2 * i] = p.px + rho * p.nx - x[4];
         (*F)[2 * i + 1] = p.py + rho * p.ny - x[5];
     }
-    if (!J) return;
-    const N zero = constant(0, x[0]), minus_one = constant(-1, x[0]);
-    for (auto& row : *J) row.fill(zero);
-    for (int i = 0; i < 3; ++i) {
-        const BoundaryPoint<N>& p = at[i];
-        (*J)[2 * i][i] = p.dpx + rho * p.dnx;
-        (*J)[2 * i + 1][i] = p.dpy + rho * p.dny;
-        (*J)[2 * i][3] = p.nx;
-        (*J)[2 * i + 1][3] = p.ny;
-        (*J)[2 * i][4] = minus_one;
-        (*J)[2 * i + 1][5] = minus_one;
-    }
+}
+
+template <class N>
+N t_column_scale(const BoundaryPoint<N>& p, const N& rho) {
+    return p.speed + rho * p.turning;
 }
 
 // Interval::max is std::fmax inlined (the library call was 1% of a build).
@@ -179,7 +186,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     std::array<UpwardInterval, 6> point, F;
     std::array<BoundaryPoint<UpwardInterval>, 3> at;
     for (int j = 0; j < 6; ++j) point[j] = UpwardInterval(m[j]);
-    tritangent_system<UpwardInterval>(k, flipped, point, &F, nullptr, at);
+    tritangent_system<UpwardInterval>(k, flipped, point, &F, false, at);
     std::array<UpwardInterval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
@@ -190,7 +197,6 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
         const double unit = i < 3 ? 1.0 : length_scale;
         r[i] = 2 * magnitude(sum) + 1e-15 * (std::fabs(m[i]) + unit);
     }
-    std::array<std::array<UpwardInterval, 6>, 6> J;
     for (int attempt = 0; attempt < 3; ++attempt) {
         std::array<UpwardInterval, 6> X, K;
         std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding widened X beyond m +- r
@@ -198,17 +204,23 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
             X[j] = UpwardInterval(-(r[j] - m[j]), m[j] + r[j]);
             reach_of_box[j] = Interval::max(m[j] - X[j].lo, X[j].hi - m[j]);
         }
-        tritangent_system<UpwardInterval>(k, flipped, X, nullptr, &J, at);
+        tritangent_system<UpwardInterval>(k, flipped, X, nullptr, true, at);
+        // J(X)'s column t_c in rows 2c, 2c + 1: scale_c nu_c^perp.
+        std::array<UpwardInterval, 3> t_column_x, t_column_y;
+        for (int c = 0; c < 3; ++c) {
+            const UpwardInterval scale = t_column_scale(at[c], X[3]);
+            t_column_x[c] = -(scale * at[c].ny), t_column_y[c] = scale * at[c].nx;
+        }
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
-            // Row i of I - Y J(X), using where J is zero (column t_c: rows
-            // 2c, 2c + 1; V_x and V_y: -1 in the even and odd rows), times
-            // X - m, within [-reach_of_box, reach_of_box]: its magnitude times that.
+            // Row i of I - Y J(X), by J's structure (tritangent_system),
+            // times X - m, within [-reach_of_box, reach_of_box]: its
+            // magnitude times that.
             std::array<UpwardInterval, 6> row;
-            for (int c = 0; c < 3; ++c) row[c] = Y(i, 2 * c) * J[2 * c][c] + Y(i, 2 * c + 1) * J[2 * c + 1][c];
+            for (int c = 0; c < 3; ++c) row[c] = Y(i, 2 * c) * t_column_x[c] + Y(i, 2 * c + 1) * t_column_y[c];
             row[3] = UpwardInterval(0.0);
-            for (int j = 0; j < 6; ++j) row[3] = row[3] + Y(i, j) * J[j][3];
+            for (int c = 0; c < 3; ++c) row[3] = row[3] + Y(i, 2 * c) * at[c].nx + Y(i, 2 * c + 1) * at[c].ny;
             row[4] = -(UpwardInterval(Y(i, 0)) + UpwardInterval(Y(i, 2)) + UpwardInterval(Y(i, 4)));
             row[5] = -(UpwardInterval(Y(i, 1)) + UpwardInterval(Y(i, 3)) + UpwardInterval(Y(i, 5)));
             double spread = 0;
@@ -232,22 +244,20 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     return std::nullopt;
 }
 
-// J d = f for the Jacobian of the tritangent system, by its shape: rows 2i,
-// 2i + 1 read a_i d_ti + n_i d_rho - d_V = f_i (a_i the column of t_i, n_i
-// the normal). Projecting them on q_i = a_i turned by 90 degrees removes d_ti:
-//     (q_i . n_i) d_rho - q_i . d_V = q_i . f_i,   i = 1, 2, 3,
+// J d = f for the Jacobian of the tritangent system, by its structure
+// (tritangent_system): rows 2i, 2i + 1 read
+//     scale_i nu_i^perp d_ti + nu_i d_rho - d_V = f_i.
+// Their dot products with nu_i (nu_i . nu_i^perp = 0, |nu_i| = 1) leave
+//     d_rho - nu_i . d_V = nu_i . f_i,   i = 1, 2, 3,
 // three equations in (d_rho, d_V), solved with the inverse of their matrix M;
-// then d_ti = a_i . (f_i - n_i d_rho + d_V) / |a_i|^2. About 60 operations
-// a solve, against a general 6 x 6 factorization.
+// those with nu_i^perp give d_ti = nu_i^perp . (f_i + d_V) / scale_i.
 class TritangentNewtonSolver {
 public:
-    explicit TritangentNewtonSolver(const std::array<std::array<double, 6>, 6>& J) {
+    TritangentNewtonSolver(const std::array<BoundaryPoint<double>, 3>& at, double rho) {
         double m[3][3];
         for (int i = 0; i < 3; ++i) {
-            ax_[i] = J[2 * i][i], ay_[i] = J[2 * i + 1][i], nx_[i] = J[2 * i][3], ny_[i] = J[2 * i + 1][3];
-            a2_[i] = ax_[i] * ax_[i] + ay_[i] * ay_[i];
-            // q_i = (-a_y, a_x)
-            m[i][0] = -ay_[i] * nx_[i] + ax_[i] * ny_[i], m[i][1] = ay_[i], m[i][2] = -ax_[i];
+            nx_[i] = at[i].nx, ny_[i] = at[i].ny, scale_[i] = t_column_scale(at[i], rho);
+            m[i][0] = 1, m[i][1] = -nx_[i], m[i][2] = -ny_[i];
         }
         const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
                            m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
@@ -258,17 +268,16 @@ public:
                 const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
                 inverse_[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
             }
-        usable_ = det != 0 && a2_[0] > 0 && a2_[1] > 0 && a2_[2] > 0;
+        usable_ = det != 0 && scale_[0] != 0 && scale_[1] != 0 && scale_[2] != 0;
     }
     // False when J is singular (then nothing is certified from it).
     bool usable() const { return usable_; }
 
     Vector6 solve(const std::array<double, 6>& f) const {
         double rhs[3], d[6];
-        for (int i = 0; i < 3; ++i) rhs[i] = -ay_[i] * f[2 * i] + ax_[i] * f[2 * i + 1];
+        for (int i = 0; i < 3; ++i) rhs[i] = nx_[i] * f[2 * i] + ny_[i] * f[2 * i + 1];
         for (int r = 0; r < 3; ++r) d[3 + r] = inverse_[r][0] * rhs[0] + inverse_[r][1] * rhs[1] + inverse_[r][2] * rhs[2];
-        for (int i = 0; i < 3; ++i)
-            d[i] = (ax_[i] * (f[2 * i] - nx_[i] * d[3] + d[4]) + ay_[i] * (f[2 * i + 1] - ny_[i] * d[3] + d[5])) / a2_[i];
+        for (int i = 0; i < 3; ++i) d[i] = (nx_[i] * (f[2 * i + 1] + d[5]) - ny_[i] * (f[2 * i] + d[4])) / scale_[i];
         return Eigen::Map<const Vector6>(d);
     }
     // J^-1, column by column.
@@ -283,7 +292,7 @@ public:
     }
 
 private:
-    std::array<double, 3> ax_, ay_, nx_, ny_, a2_;
+    std::array<double, 3> nx_, ny_, scale_;
     double inverse_[3][3];
     bool usable_ = false;
 };
@@ -305,7 +314,7 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
         for (int i = 0; i < 3; ++i)
             if (std::fabs(trial[i]) > 1) trial[i] = -1 / trial[i], trial_flipped[i] = !trial_flipped[i];
         std::array<BoundaryPoint<double>, 3> at;
-        tritangent_system<double>(shape, trial_flipped, trial, &trial_F, nullptr, at);
+        tritangent_system<double>(shape, trial_flipped, trial, &trial_F, false, at);
         double trial_residual = 0;
         for (double f : trial_F) trial_residual += f * f;
         if (trial_residual < residual) break;
@@ -345,7 +354,6 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     // no longer shrinks, below kStalled, is offered to Krawczyk (which decides).
     constexpr double kStalled = 1e-6;
     std::array<double, 6> F;
-    std::array<std::array<double, 6>, 6> J;
     std::array<BoundaryPoint<double>, 3> at;
     Matrix6 Y;
     bool converged = false;
@@ -353,8 +361,8 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     for (int step = 0; step < kSteps && !converged; ++step) {
         for (int i = 0; i < 3; ++i)
             if (std::fabs(x[i]) > 1) x[i] = -1 / x[i], flipped[i] = !flipped[i];
-        tritangent_system<double>(shape, flipped, x, &F, &J, at);
-        const TritangentNewtonSolver newton(J);
+        tritangent_system<double>(shape, flipped, x, &F, true, at);
+        const TritangentNewtonSolver newton(at, x[3]);
         if (!newton.usable()) return std::nullopt;
         const Vector6 correction = newton.solve(F);
         if (!correction.allFinite()) return std::nullopt;
