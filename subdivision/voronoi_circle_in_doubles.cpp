@@ -143,6 +143,30 @@ N t_column_scale(const BoundaryPoint<N>& p, const N& rho) {
 // Interval::max is std::fmax inlined (the library call was 1% of a build).
 double magnitude(const UpwardInterval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
+// The larger of a and b, NaN if either is (so that a NaN reaches K and fails
+// its finiteness test; Interval::max would drop it).
+double max_keeping_nan(double a, double b) { return (a < b || b != b) ? b : a; }
+
+// Krawczyk's products of Y (doubles, exact) with intervals, without the sign
+// cases of an interval product (Y's signs are a coin toss for the branch
+// predictor), under the upward rounding mode. An interval [lo, hi] is the
+// pair (-lo, hi) in one SSE register: one vector addition, rounded up, gives
+// (-lo_a - lo_b, hi_a + hi_b) rounded up, upper bounds of -(lo_a + lo_b) and
+// of hi_a + hi_b. With y = y+ - y- (y+ = max(y, 0), y- = max(-y, 0), one of
+// them 0), y [lo, hi] is [y lo, y hi] or [y hi, y lo] by y's sign, i.e.
+//   y+ (-lo, hi) + y- (hi, -lo),
+// each product rounded up and the exact 0 of the other term added exactly.
+// An infinite bound times the 0 gives NaN, which fails K's finiteness test.
+using NegatedLowHigh = double __attribute__((vector_size(16)));
+NegatedLowHigh negated_low_high(const UpwardInterval& v) { return NegatedLowHigh{-v.lo, v.hi}; }
+// y+ and y- of an entry of Y, each in both lanes.
+struct SplitEntry {
+    NegatedLowHigh plus, minus;
+};
+NegatedLowHigh times(const SplitEntry& y, NegatedLowHigh v) {
+    return y.plus * v + y.minus * NegatedLowHigh{v[1], v[0]};
+}
+
 // The tangency points are counter-clockwise on the circle iff the normals
 // are: P_i = V - rho nu_i, and a translation followed by the scaling by
 // -rho multiplies the orientation of three points by rho^2 > 0.
@@ -187,11 +211,33 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     std::array<BoundaryPoint<UpwardInterval>, 3> at;
     for (int j = 0; j < 6; ++j) point[j] = UpwardInterval(m[j]);
     tritangent_system<UpwardInterval>(k, flipped, point, &F, false, at);
+    // Y = Y+ - Y- for times() (Y is finite: newton_then_certify checks).
+    SplitEntry split[6][6];
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const double y = Y(i, j), plus = y > 0 ? y : 0, minus = y < 0 ? -y : 0;
+            split[i][j] = {NegatedLowHigh{plus, plus}, NegatedLowHigh{minus, minus}};
+        }
+    // Y's products with J(X)'s columns V_x and V_y (-1 in the even, in the
+    // odd rows), independent of X: -(Y_i0 + Y_i2 + Y_i4) and -(Y_i1 + Y_i3 +
+    // Y_i5), as (-lo, hi) pairs: each exact y is [y, y], i.e. the pair (-y, y),
+    // and its negation (y, -y).
+    std::array<NegatedLowHigh, 6> times_V_x, times_V_y;
+    for (int i = 0; i < 6; ++i) {
+        times_V_x[i] = times_V_y[i] = NegatedLowHigh{0, 0};
+        for (int c = 0; c < 3; ++c) {
+            times_V_x[i] += NegatedLowHigh{Y(i, 2 * c), -Y(i, 2 * c)};
+            times_V_y[i] += NegatedLowHigh{Y(i, 2 * c + 1), -Y(i, 2 * c + 1)};
+        }
+    }
+    std::array<NegatedLowHigh, 6> F_pair;
+    for (int j = 0; j < 6; ++j) F_pair[j] = negated_low_high(F[j]);
     std::array<UpwardInterval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
-        UpwardInterval sum(0.0);
-        for (int j = 0; j < 6; ++j) sum = sum + Y(i, j) * F[j];
+        NegatedLowHigh product{0, 0};
+        for (int j = 0; j < 6; ++j) product += times(split[i][j], F_pair[j]);
+        const UpwardInterval sum(-product[0], product[1]);
         if (!sum.finite()) return std::nullopt;
         correction[i] = sum;
         const double unit = i < 3 ? 1.0 : length_scale;
@@ -205,28 +251,34 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
             reach_of_box[j] = Interval::max(m[j] - X[j].lo, X[j].hi - m[j]);
         }
         tritangent_system<UpwardInterval>(k, flipped, X, nullptr, true, at);
-        // J(X)'s column t_c in rows 2c, 2c + 1: scale_c nu_c^perp.
-        std::array<UpwardInterval, 3> t_column_x, t_column_y;
+        // J(X)'s nonzero entries (tritangent_system) but V's: in rows 2c,
+        // 2c + 1, column t_c holds scale_c nu_c^perp and column rho nu_c.
+        std::array<NegatedLowHigh, 3> t_column_x, t_column_y, normal_x, normal_y;
         for (int c = 0; c < 3; ++c) {
             const UpwardInterval scale = t_column_scale(at[c], X[3]);
-            t_column_x[c] = -(scale * at[c].ny), t_column_y[c] = scale * at[c].nx;
+            t_column_x[c] = negated_low_high(-(scale * at[c].ny)), t_column_y[c] = negated_low_high(scale * at[c].nx);
+            normal_x[c] = negated_low_high(at[c].nx), normal_y[c] = negated_low_high(at[c].ny);
         }
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
-            // Row i of I - Y J(X), by J's structure (tritangent_system),
-            // times X - m, within [-reach_of_box, reach_of_box]: its
-            // magnitude times that.
-            std::array<UpwardInterval, 6> row;
-            for (int c = 0; c < 3; ++c) row[c] = Y(i, 2 * c) * t_column_x[c] + Y(i, 2 * c + 1) * t_column_y[c];
-            row[3] = UpwardInterval(0.0);
-            for (int c = 0; c < 3; ++c) row[3] = row[3] + Y(i, 2 * c) * at[c].nx + Y(i, 2 * c + 1) * at[c].ny;
-            row[4] = -(UpwardInterval(Y(i, 0)) + UpwardInterval(Y(i, 2)) + UpwardInterval(Y(i, 4)));
-            row[5] = -(UpwardInterval(Y(i, 1)) + UpwardInterval(Y(i, 3)) + UpwardInterval(Y(i, 5)));
+            // Row i of Y J(X), as (-lo, hi) pairs.
+            std::array<NegatedLowHigh, 6> row;
+            const SplitEntry* y = split[i];
+            row[3] = NegatedLowHigh{0, 0};
+            for (int c = 0; c < 3; ++c) {
+                row[c] = times(y[2 * c], t_column_x[c]) + times(y[2 * c + 1], t_column_y[c]);
+                row[3] += times(y[2 * c], normal_x[c]) + times(y[2 * c + 1], normal_y[c]);
+            }
+            row[4] = times_V_x[i], row[5] = times_V_y[i];
+            // Row i of I - Y J(X) times X - m, within [-reach_of_box,
+            // reach_of_box]: the entries' magnitudes times that, where
+            // |delta - [lo, hi]| <= max(hi - delta, delta + (-lo)).
             double spread = 0;
             for (int c = 0; c < 6; ++c) {
-                const UpwardInterval entry = UpwardInterval(i == c ? 1.0 : 0.0) - row[c];
-                spread = spread + magnitude(entry) * reach_of_box[c];
+                const double identity = i == c ? 1.0 : 0.0;
+                const double entry = max_keeping_nan(row[c][1] - identity, identity + row[c][0]);
+                spread = spread + entry * reach_of_box[c];
             }
             K[i] = UpwardInterval(m[i]) - correction[i] + UpwardInterval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
