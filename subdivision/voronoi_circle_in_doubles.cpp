@@ -306,20 +306,22 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
 class TritangentNewtonSolver {
 public:
     TritangentNewtonSolver(const std::array<BoundaryPoint<double>, 3>& at, double rho) {
-        double m[3][3];
-        for (int i = 0; i < 3; ++i) {
-            nx_[i] = at[i].nx, ny_[i] = at[i].ny, scale_[i] = t_column_scale(at[i], rho);
-            m[i][0] = 1, m[i][1] = -nx_[i], m[i][2] = -ny_[i];
+        for (int i = 0; i < 3; ++i) nx_[i] = at[i].nx, ny_[i] = at[i].ny, scale_[i] = t_column_scale(at[i], rho);
+        // M's rows are m_i = (1, -nu_i), and M^-1's column c is
+        // m_u x m_v / det, (u, v) = (c + 1, c + 2) mod 3:
+        //   (nu_u x nu_v, ny_v - ny_u, nx_u - nx_v),
+        // det = m_0 . (m_1 x m_2), the sum of the three nu_u x nu_v.
+        constexpr int kNext[3] = {1, 2, 0}, kAfterNext[3] = {2, 0, 1};
+        double det = 0;
+        for (int c = 0; c < 3; ++c) {
+            const int u = kNext[c], v = kAfterNext[c];
+            inverse_[0][c] = nx_[u] * ny_[v] - ny_[u] * nx_[v];
+            inverse_[1][c] = ny_[v] - ny_[u];
+            inverse_[2][c] = nx_[u] - nx_[v];
+            det += inverse_[0][c];
         }
-        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) {
-                // Cofactor of m[c][r] over det: the inverse's (r, c) entry.
-                const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-                inverse_[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
-            }
+        for (auto& row : inverse_)
+            for (double& entry : row) entry /= det;
         usable_ = det != 0 && scale_[0] != 0 && scale_[1] != 0 && scale_[2] != 0;
     }
     // False when J is singular (then nothing is certified from it).
@@ -329,21 +331,30 @@ public:
         double rhs[3], d[6];
         for (int i = 0; i < 3; ++i) rhs[i] = nx_[i] * f[2 * i] + ny_[i] * f[2 * i + 1];
         for (int r = 0; r < 3; ++r) d[3 + r] = inverse_[r][0] * rhs[0] + inverse_[r][1] * rhs[1] + inverse_[r][2] * rhs[2];
-        for (int i = 0; i < 3; ++i) d[i] = (nx_[i] * (f[2 * i + 1] + d[5]) - ny_[i] * (f[2 * i] + d[4])) / scale_[i];
+        for (int i = 0; i < 3; ++i) d[i] = t_step(i, f[2 * i], f[2 * i + 1], d);
         return Eigen::Map<const Vector6>(d);
     }
-    // J^-1, column by column.
+    // J^-1, column by column: solve() of the unit vector of row 2k + axis,
+    // whose only nonzero nu_i . f_i is nu_k's component on the axis.
     Matrix6 inverse() const {
         Matrix6 Y;
-        for (int k = 0; k < 6; ++k) {
-            std::array<double, 6> unit{};
-            unit[k] = 1;
-            Y.col(k) = solve(unit);
-        }
+        for (int k = 0; k < 3; ++k)
+            for (int axis = 0; axis < 2; ++axis) {
+                const double component = axis == 0 ? nx_[k] : ny_[k];
+                double d[6];
+                for (int r = 0; r < 3; ++r) d[3 + r] = inverse_[r][k] * component;
+                for (int i = 0; i < 3; ++i) d[i] = t_step(i, i == k && axis == 0, i == k && axis == 1, d);
+                Y.col(2 * k + axis) = Eigen::Map<const Vector6>(d);
+            }
         return Y;
     }
 
 private:
+    // d_ti from f_i = (fx, fy) and d_V = (d[4], d[5]).
+    double t_step(int i, double fx, double fy, const double* d) const {
+        return (nx_[i] * (fy + d[5]) - ny_[i] * (fx + d[4])) / scale_[i];
+    }
+
     std::array<double, 3> nx_, ny_, scale_;
     double inverse_[3][3];
     bool usable_ = false;
@@ -417,7 +428,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         const TritangentNewtonSolver newton(at, x[3]);
         if (!newton.usable()) return std::nullopt;
         const Vector6 correction = newton.solve(F);
-        if (!correction.allFinite()) return std::nullopt;
+        if (!std::isfinite(correction.sum())) return std::nullopt;  // a sum is finite only if each term is
         double relative = 0;
         const double fraction = damped ? damped_step(shape, flipped, x, F, correction) : 1.0;
         for (int i = 0; i < 6; ++i) {
