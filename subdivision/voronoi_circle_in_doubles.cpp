@@ -18,6 +18,10 @@ namespace {
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
+// Newton has converged when its step is below this, relative to |x| + unit
+// (1 for the chart parameters, the length scale for rho and V).
+constexpr double kConvergedStep = 1e-13;
+
 // The same formulas in doubles (Newton on the midpoint) and in intervals (the
 // certificate, computed under the upward rounding mode: util/upward_interval.hpp,
 // which is why this file is compiled with the Makefile's ROUNDING_MATH flags):
@@ -196,6 +200,11 @@ bool signed_distances(const std::array<Shape<UpwardInterval>, 3>& k, const Upwar
 // Returns K(X), which holds the unique solution in X, once it has also
 // proved that rho is the signed distance to the sites and the
 // counter-clockwise order (on X, which contains K(X)).
+// With `converged_step_only` (m one Newton step before convergence, Y F(m)
+// being that step), the test runs only if Y F(m) is a converged step, below
+// kConvergedStep (|m| + unit); else it returns nullopt. (K(X) encloses the
+// solution for any m and Y; this only keeps X as small as Newton's next
+// step would.)
 // All of it runs under the upward rounding mode: every double computed here
 // is rounded up, so sums and products of nonnegative upper bounds (the
 // spread, the box's reach) are upper bounds as they stand. The scope is the
@@ -205,7 +214,7 @@ bool signed_distances(const std::array<Shape<UpwardInterval>, 3>& k, const Upwar
 // nor the reverse).
 ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     const std::array<Shape<UpwardInterval>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m,
-    const Matrix6& Y, double length_scale) {
+    const Matrix6& Y, double length_scale, bool converged_step_only = false) {
     const UpwardRoundingScope upward;
     std::array<UpwardInterval, 6> point, F;
     std::array<BoundaryPoint<UpwardInterval>, 3> at;
@@ -241,6 +250,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
         if (!sum.finite()) return std::nullopt;
         correction[i] = sum;
         const double unit = i < 3 ? 1.0 : length_scale;
+        if (converged_step_only && !(magnitude(sum) <= kConvergedStep * (std::fabs(m[i]) + unit))) return std::nullopt;
         r[i] = 2 * magnitude(sum) + 1e-15 * (std::fabs(m[i]) + unit);
     }
     for (int attempt = 0; attempt < 3; ++attempt) {
@@ -411,11 +421,26 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
                                                        std::optional<StalledDoubleRoot>* stalled = nullptr) {
     if (diverged) *diverged = true;
     const int kSteps = damped ? 30 : 12;
-    constexpr double kConverged = 1e-13;  // relative step size
     // An ill-conditioned root (a circle 10^4 times the sites' size or more)
-    // stops Newton at the rounding noise, far above kConverged: a step that
+    // stops Newton at the rounding noise, far above kConvergedStep: a step that
     // no longer shrinks, below kStalled, is offered to Krawczyk (which decides).
     constexpr double kStalled = 1e-6;
+    // Newton converges quadratically: after a step below kNearlyConverged the
+    // next one is expected below kConvergedStep. Krawczyk's F(m) is that step's
+    // evaluation, so the test is tried at once (the first time only),
+    // provided that Y F(m) is that small (`converged_step_only`); when not,
+    // or when it fails, Newton goes on as if it had not been tried. (Y from
+    // the step before: any nonsingular Y is sound.)
+    constexpr double kNearlyConverged = 1e-7;
+    bool tried_early = false;
+    const auto certified = [&](const std::array<Interval, 6>& box) {
+        if (diverged) *diverged = false;
+        DoubleVoronoiCircle circle;
+        for (int i = 0; i < 3; ++i) circle.parameter[i] = box[i];
+        circle.flipped = flipped;
+        circle.radius = box[3], circle.center_x = box[4], circle.center_y = box[5];
+        return circle;
+    };
     std::array<double, 6> F;
     std::array<BoundaryPoint<double>, 3> at;
     Matrix6 Y;
@@ -436,11 +461,18 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
             const double unit = i < 3 ? 1.0 : length_scale;
             relative = Interval::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
-        converged = relative <= kConverged || (relative <= kStalled && relative > previous / 4);
+        converged = relative <= kConvergedStep || (relative <= kStalled && relative > previous / 4);
         previous = relative;
         // Y: the inverse Jacobian one tiny step before the midpoint (any
         // nonsingular Y is sound; a close one contracts).
         if (converged) Y = newton.inverse();
+        if (!converged && relative <= kNearlyConverged && !tried_early) {
+            tried_early = true;
+            Y = newton.inverse();
+            if (!Y.allFinite()) continue;
+            if (const auto box = krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale, true))
+                return certified(*box);
+        }
     }
     if (!converged || !Y.allFinite()) return std::nullopt;
     if (diverged) *diverged = false;
@@ -448,14 +480,10 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
     if (!box) {
         // Stalled at the rounding noise: a start for Arb (the first one met).
-        if (stalled && !*stalled && previous > kConverged) offer_stalled_root(at, flipped, x, *stalled);
+        if (stalled && !*stalled && previous > kConvergedStep) offer_stalled_root(at, flipped, x, *stalled);
         return std::nullopt;
     }
-    DoubleVoronoiCircle circle;
-    for (int i = 0; i < 3; ++i) circle.parameter[i] = (*box)[i];
-    circle.flipped = flipped;
-    circle.radius = (*box)[3], circle.center_x = (*box)[4], circle.center_y = (*box)[5];
-    return circle;
+    return certified(*box);
 }
 
 }  // namespace
