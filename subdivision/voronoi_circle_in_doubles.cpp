@@ -317,22 +317,20 @@ class TritangentNewtonSolver {
 public:
     TritangentNewtonSolver(const std::array<BoundaryPoint<double>, 3>& at, double rho) {
         for (int i = 0; i < 3; ++i) nx_[i] = at[i].nx, ny_[i] = at[i].ny, scale_[i] = t_column_scale(at[i], rho);
-        // M's rows are m_i = (1, -nu_i), and M^-1's column c is
-        // m_u x m_v / det, (u, v) = (c + 1, c + 2) mod 3:
+        // M's rows are m_i = (1, -nu_i), and M^-1 = adj(M) / det, where
+        // adj(M)'s column c is m_u x m_v, (u, v) = (c + 1, c + 2) mod 3:
         //   (nu_u x nu_v, ny_v - ny_u, nx_u - nx_v),
-        // det = m_0 . (m_1 x m_2), the sum of the three nu_u x nu_v.
+        // and det = m_0 . (m_1 x m_2), the sum of the three nu_u x nu_v.
         constexpr int kNext[3] = {1, 2, 0}, kAfterNext[3] = {2, 0, 1};
-        double det = 0;
+        det_ = 0;
         for (int c = 0; c < 3; ++c) {
             const int u = kNext[c], v = kAfterNext[c];
-            inverse_[0][c] = nx_[u] * ny_[v] - ny_[u] * nx_[v];
-            inverse_[1][c] = ny_[v] - ny_[u];
-            inverse_[2][c] = nx_[u] - nx_[v];
-            det += inverse_[0][c];
+            adjugate_[0][c] = nx_[u] * ny_[v] - ny_[u] * nx_[v];
+            adjugate_[1][c] = ny_[v] - ny_[u];
+            adjugate_[2][c] = nx_[u] - nx_[v];
+            det_ += adjugate_[0][c];
         }
-        for (auto& row : inverse_)
-            for (double& entry : row) entry /= det;
-        usable_ = det != 0 && scale_[0] != 0 && scale_[1] != 0 && scale_[2] != 0;
+        usable_ = det_ != 0 && scale_[0] != 0 && scale_[1] != 0 && scale_[2] != 0;
     }
     // False when J is singular (then nothing is certified from it).
     bool usable() const { return usable_; }
@@ -340,7 +338,8 @@ public:
     Vector6 solve(const std::array<double, 6>& f) const {
         double rhs[3], d[6];
         for (int i = 0; i < 3; ++i) rhs[i] = nx_[i] * f[2 * i] + ny_[i] * f[2 * i + 1];
-        for (int r = 0; r < 3; ++r) d[3 + r] = inverse_[r][0] * rhs[0] + inverse_[r][1] * rhs[1] + inverse_[r][2] * rhs[2];
+        for (int r = 0; r < 3; ++r)
+            d[3 + r] = (adjugate_[r][0] * rhs[0] + adjugate_[r][1] * rhs[1] + adjugate_[r][2] * rhs[2]) / det_;
         for (int i = 0; i < 3; ++i) d[i] = t_step(i, f[2 * i], f[2 * i + 1], d);
         return Eigen::Map<const Vector6>(d);
     }
@@ -352,7 +351,7 @@ public:
             for (int axis = 0; axis < 2; ++axis) {
                 const double component = axis == 0 ? nx_[k] : ny_[k];
                 double d[6];
-                for (int r = 0; r < 3; ++r) d[3 + r] = inverse_[r][k] * component;
+                for (int r = 0; r < 3; ++r) d[3 + r] = adjugate_[r][k] * component / det_;
                 for (int i = 0; i < 3; ++i) d[i] = t_step(i, i == k && axis == 0, i == k && axis == 1, d);
                 Y.col(2 * k + axis) = Eigen::Map<const Vector6>(d);
             }
@@ -366,7 +365,7 @@ private:
     }
 
     std::array<double, 3> nx_, ny_, scale_;
-    double inverse_[3][3];
+    double adjugate_[3][3], det_;
     bool usable_ = false;
 };
 
@@ -459,7 +458,8 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         for (int i = 0; i < 6; ++i) {
             x[i] -= fraction * correction[i];
             const double unit = i < 3 ? 1.0 : length_scale;
-            relative = Interval::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
+            // Never NaN: the correction is finite and the divisor positive.
+            relative = std::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
         converged = relative <= kConvergedStep || (relative <= kStalled && relative > previous / 4);
         previous = relative;
@@ -469,12 +469,12 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         if (!converged && relative <= kNearlyConverged && !tried_early) {
             tried_early = true;
             Y = newton.inverse();
-            if (!Y.allFinite()) continue;
+            if (!std::isfinite(Y.sum())) continue;  // a sum is finite only if each term is
             if (const auto box = krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale, true))
                 return certified(*box);
         }
     }
-    if (!converged || !Y.allFinite()) return std::nullopt;
+    if (!converged || !std::isfinite(Y.sum())) return std::nullopt;
     if (diverged) *diverged = false;
     const std::optional<std::array<Interval, 6>> box =
         krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
