@@ -147,10 +147,6 @@ N t_column_scale(const BoundaryPoint<N>& p, const N& rho) {
 // Interval::max is std::fmax inlined (the library call was 1% of a build).
 double magnitude(const UpwardInterval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
-// The larger of a and b, NaN if either is (so that a NaN reaches K and fails
-// its finiteness test; Interval::max would drop it).
-double max_keeping_nan(double a, double b) { return (a < b || b != b) ? b : a; }
-
 // Krawczyk's products of Y (doubles, exact) with intervals, without the sign
 // cases of an interval product (Y's signs are a coin toss for the branch
 // predictor), under the upward rounding mode. An interval [lo, hi] is the
@@ -282,14 +278,23 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
             }
             row[4] = times_V_x[i], row[5] = times_V_y[i];
             // Row i of I - Y J(X) times X - m, within [-reach_of_box,
-            // reach_of_box]: the entries' magnitudes times that, where
-            // |delta - [lo, hi]| <= max(hi - delta, delta + (-lo)).
-            double spread = 0;
-            for (int c = 0; c < 6; ++c) {
-                const double identity = i == c ? 1.0 : 0.0;
-                const double entry = max_keeping_nan(row[c][1] - identity, identity + row[c][0]);
-                spread = spread + entry * reach_of_box[c];
+            // reach_of_box]: the entries' magnitudes times that. With
+            // delta - [lo, hi] as the pair row[c] + (delta, -delta) =
+            // (delta - lo, hi - delta) rounded up, the magnitude is at most
+            // the larger lane; two entries at a time (their first lanes and
+            // their second lanes side by side).
+            row[i] += NegatedLowHigh{1, -1};
+            NegatedLowHigh spread_pair{0, 0}, lanes_sum{0, 0};
+            for (int c = 0; c < 6; c += 2) {
+                const NegatedLowHigh first{row[c][0], row[c + 1][0]}, second{row[c][1], row[c + 1][1]};
+                spread_pair += (first > second ? first : second) * NegatedLowHigh{reach_of_box[c], reach_of_box[c + 1]};
+                lanes_sum += first + second;
             }
+            // The selection may drop a NaN lane (0 * inf in times()); the
+            // plain sum of all lanes keeps it (and an infinite bound): then
+            // nothing is proved.
+            if (!std::isfinite(lanes_sum[0] + lanes_sum[1])) return std::nullopt;
+            const double spread = spread_pair[0] + spread_pair[1];
             K[i] = UpwardInterval(m[i]) - correction[i] + UpwardInterval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
             if (!(K[i].lo > X[i].lo && K[i].hi < X[i].hi)) inside = false;
