@@ -194,7 +194,8 @@ std::vector<std::array<double, 3>> collinear_apollonius_circles(const std::array
 // The Apollonius circles of a circle model, the collinear case included.
 std::vector<std::array<double, 3>> model_circles(const std::array<Shape, 3>& circles) {
     auto found = apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a});
-    return found.empty() ? collinear_apollonius_circles(circles) : found;
+    if (!found.empty()) return found;  // moved (the conditional operator copied it)
+    return collinear_apollonius_circles(circles);
 }
 
 // Start point for circle (x, y, rho): each tangency at the nearest point of E_i.
