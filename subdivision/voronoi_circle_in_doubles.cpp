@@ -345,28 +345,34 @@ public:
         for (int i = 0; i < 3; ++i) rhs[i] = nx_[i] * f[2 * i] + ny_[i] * f[2 * i + 1];
         for (int r = 0; r < 3; ++r)
             d[3 + r] = (adjugate_[r][0] * rhs[0] + adjugate_[r][1] * rhs[1] + adjugate_[r][2] * rhs[2]) / det_;
-        for (int i = 0; i < 3; ++i) d[i] = t_step(i, f[2 * i], f[2 * i + 1], d);
+        for (int i = 0; i < 3; ++i) d[i] = tangential(i, f[2 * i], f[2 * i + 1], d) / scale_[i];
         return Eigen::Map<const Vector6>(d);
     }
-    // J^-1, column by column: solve() of the unit vector of row 2k + axis,
-    // whose only nonzero nu_i . f_i is nu_k's component on the axis.
+    // J^-1 (to rounding: Krawczyk's Y need not be exact), column by column:
+    // solve() of the unit vector of row 2k + axis, whose only nonzero
+    // nu_i . f_i is nu_k's component on the axis; divisions as products with
+    // reciprocals made once.
     Matrix6 inverse() const {
+        const double inverse_det = 1 / det_;
+        const double inverse_scale[3] = {1 / scale_[0], 1 / scale_[1], 1 / scale_[2]};
         Matrix6 Y;
         for (int k = 0; k < 3; ++k)
             for (int axis = 0; axis < 2; ++axis) {
-                const double component = axis == 0 ? nx_[k] : ny_[k];
+                const double component = (axis == 0 ? nx_[k] : ny_[k]) * inverse_det;
                 double d[6];
-                for (int r = 0; r < 3; ++r) d[3 + r] = adjugate_[r][k] * component / det_;
-                for (int i = 0; i < 3; ++i) d[i] = t_step(i, i == k && axis == 0, i == k && axis == 1, d);
+                for (int r = 0; r < 3; ++r) d[3 + r] = adjugate_[r][k] * component;
+                for (int i = 0; i < 3; ++i) d[i] = tangential(i, 0, 0, d) * inverse_scale[i];
+                d[k] += (axis == 0 ? -ny_[k] : nx_[k]) * inverse_scale[k];  // f_k's own term
                 Y.col(2 * k + axis) = Eigen::Map<const Vector6>(d);
             }
         return Y;
     }
 
 private:
-    // d_ti from f_i = (fx, fy) and d_V = (d[4], d[5]).
-    double t_step(int i, double fx, double fy, const double* d) const {
-        return (nx_[i] * (fy + d[5]) - ny_[i] * (fx + d[4])) / scale_[i];
+    // nu_i^perp . (f_i + d_V) for f_i = (fx, fy), d_V = (d[4], d[5]): d_ti
+    // times scale_i.
+    double tangential(int i, double fx, double fy, const double* d) const {
+        return nx_[i] * (fy + d[5]) - ny_[i] * (fx + d[4]);
     }
 
     std::array<double, 3> nx_, ny_, scale_;
