@@ -217,11 +217,16 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     for (int j = 0; j < 6; ++j) point[j] = UpwardInterval(m[j]);
     tritangent_system<UpwardInterval>(k, flipped, point, &F, false, at);
     // Y = Y+ - Y- for times() (Y is finite: newton_then_certify checks).
+    // Two rows at a time: y = (Y_ij, Y_i+1,j), and the lane masks of y > 0
+    // and y < 0 (all ones or zeros) select y+ and y- (or +0) in each lane.
+    using Mask = long long __attribute__((vector_size(16)));
     SplitEntry split[6][6];
-    for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j) {
-            const double y = Y(i, j), plus = y > 0 ? y : 0, minus = y < 0 ? -y : 0;
-            split[i][j] = {NegatedLowHigh{plus, plus}, NegatedLowHigh{minus, minus}};
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; i += 2) {
+            const NegatedLowHigh y{Y(i, j), Y(i + 1, j)}, zero{0, 0};
+            const NegatedLowHigh plus = NegatedLowHigh(Mask(y) & (y > zero)), minus = NegatedLowHigh(Mask(-y) & (y < zero));
+            split[i][j] = {NegatedLowHigh{plus[0], plus[0]}, NegatedLowHigh{minus[0], minus[0]}};
+            split[i + 1][j] = {NegatedLowHigh{plus[1], plus[1]}, NegatedLowHigh{minus[1], minus[1]}};
         }
     // Y's products with J(X)'s columns V_x and V_y (-1 in the even, in the
     // odd rows), independent of X: -(Y_i0 + Y_i2 + Y_i4) and -(Y_i1 + Y_i3 +
