@@ -229,17 +229,22 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
             split[i + 1][j] = {NegatedLowHigh{plus[1], plus[1]}, NegatedLowHigh{minus[1], minus[1]}};
         }
     // Y's products with J(X)'s columns V_x and V_y (-1 in the even, in the
-    // odd rows), independent of X: -(Y_i0 + Y_i2 + Y_i4) and -(Y_i1 + Y_i3 +
-    // Y_i5), as (-lo, hi) pairs: each exact y is [y, y], i.e. the pair (-y, y),
-    // and its negation (y, -y).
+    // odd rows), independent of X: P = -(Y_i0 + Y_i2 + Y_i4) and -(Y_i1 +
+    // Y_i3 + Y_i5), as (-lo, hi) pairs, i.e. (RU(-P), RU(P)), the sums of the
+    // y's and of the -y's rounded up; two rows at a time (rows i, i + 1 in
+    // the lanes).
     std::array<NegatedLowHigh, 6> times_V_x, times_V_y;
-    for (int i = 0; i < 6; ++i) {
-        times_V_x[i] = times_V_y[i] = NegatedLowHigh{0, 0};
-        for (int c = 0; c < 3; ++c) {
-            times_V_x[i] += NegatedLowHigh{Y(i, 2 * c), -Y(i, 2 * c)};
-            times_V_y[i] += NegatedLowHigh{Y(i, 2 * c + 1), -Y(i, 2 * c + 1)};
+    for (int i = 0; i < 6; i += 2)
+        for (int axis = 0; axis < 2; ++axis) {
+            NegatedLowHigh sum{0, 0}, negated_sum{0, 0};
+            for (int c = 0; c < 3; ++c) {
+                const NegatedLowHigh y{Y(i, 2 * c + axis), Y(i + 1, 2 * c + axis)};
+                sum += y, negated_sum += -y;
+            }
+            std::array<NegatedLowHigh, 6>& products = axis == 0 ? times_V_x : times_V_y;
+            products[i] = NegatedLowHigh{sum[0], negated_sum[0]};
+            products[i + 1] = NegatedLowHigh{sum[1], negated_sum[1]};
         }
-    }
     std::array<NegatedLowHigh, 6> F_pair;
     for (int j = 0; j < 6; ++j) F_pair[j] = negated_low_high(F[j]);
     std::array<UpwardInterval, 6> correction;  // Y F(m)
