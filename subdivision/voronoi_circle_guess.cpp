@@ -139,21 +139,23 @@ std::vector<std::array<double, 3>> apollonius_circles(const std::array<Shape, 3>
     const Eigen::Vector2d v0 = inverse * b, v1 = inverse * c;
     const Eigen::Vector2d d = v0 - Eigen::Vector2d(e[0].x, e[0].y);
     const double qa = v1.squaredNorm() - 1, qb = 2 * (d.dot(v1) - r[0]), qc = d.squaredNorm() - r[0] * r[0];
-    std::vector<double> rhos;
+    double rhos[2];  // no heap for two numbers (this runs before every certificate in doubles)
+    int count = 0;
     if (std::fabs(qa) < 1e-14) {
-        if (qb != 0) rhos.push_back(-qc / qb);
+        if (qb != 0) rhos[count++] = -qc / qb;
     } else {
         const double disc = qb * qb - 4 * qa * qc;
         if (disc >= 0) {
-            rhos.push_back((-qb + std::sqrt(disc)) / (2 * qa));
-            rhos.push_back((-qb - std::sqrt(disc)) / (2 * qa));
+            rhos[count++] = (-qb + std::sqrt(disc)) / (2 * qa);
+            rhos[count++] = (-qb - std::sqrt(disc)) / (2 * qa);
         }
     }
     // Signed radii: |V - C_i| = rho + r_i needs rho + r_i > 0 for each circle
     // (rho < 0 is an internal circle of overlapping sites).
     const double smallest = std::min({r[0], r[1], r[2]});
-    for (double rho : rhos)
-        if (rho + smallest > 0) {
+    out.reserve(count);
+    for (int k = 0; k < count; ++k)
+        if (const double rho = rhos[k]; rho + smallest > 0) {
             const Eigen::Vector2d v = v0 + rho * v1;
             out.push_back({rho, v[0], v[1]});
         }
@@ -192,7 +194,8 @@ std::vector<std::array<double, 3>> collinear_apollonius_circles(const std::array
 // The Apollonius circles of a circle model, the collinear case included.
 std::vector<std::array<double, 3>> model_circles(const std::array<Shape, 3>& circles) {
     auto found = apollonius_circles(circles, {circles[0].a, circles[1].a, circles[2].a});
-    return found.empty() ? collinear_apollonius_circles(circles) : found;
+    if (!found.empty()) return found;  // moved (the conditional operator copied it)
+    return collinear_apollonius_circles(circles);
 }
 
 // Start point for circle (x, y, rho): each tangency at the nearest point of E_i.

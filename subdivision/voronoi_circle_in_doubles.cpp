@@ -18,6 +18,10 @@ namespace {
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
+// Newton has converged when its step is below this, relative to |x| + unit
+// (1 for the chart parameters, the length scale for rho and V).
+constexpr double kConvergedStep = 1e-13;
+
 // The same formulas in doubles (Newton on the midpoint) and in intervals (the
 // certificate, computed under the upward rounding mode: util/upward_interval.hpp,
 // which is why this file is compiled with the Makefile's ROUNDING_MATH flags):
@@ -38,30 +42,35 @@ UpwardInterval negated_if(bool negate, const UpwardInterval& x) { return negate 
 double reciprocal(double x) { return 1 / x; }
 UpwardInterval reciprocal(const UpwardInterval& x) { return x.reciprocal(); }
 
-// An ellipse: semi-axes, rotation (cos, sin) and center.
+// An ellipse: semi-axes, rotation (cos, sin), center, and the product a b.
 template <class N>
 struct Shape {
-    N a, b, cos, sin, xc, yc;
+    N a, b, cos, sin, xc, yc, ab;
 };
 
 // The enclosures as they are (the cosine and sine computed before, in
-// round-to-nearest: util/interval_trig.hpp).
+// round-to-nearest: util/interval_trig.hpp); a b by Interval's product, whose
+// outward steps make it an enclosure in round-to-nearest, the mode in which
+// this is called.
 Shape<UpwardInterval> interval_shape(const Ellipse& e) {
     const Ellipse::Enclosure& k = e.enclosure();
     using U = UpwardInterval;
-    return {U(k.a), U(k.b), U(k.cos), U(k.sin), U(k.xc), U(k.yc)};
+    return {U(k.a), U(k.b), U(k.cos), U(k.sin), U(k.xc), U(k.yc), U(k.a * k.b)};
 }
 
 Shape<double> double_shape(const Ellipse& e) {
     const Ellipse::Enclosure& k = e.enclosure();
-    return {k.a.mid(), k.b.mid(), k.cos.mid(), k.sin.mid(), k.xc.mid(), k.yc.mid()};
+    const double a = k.a.mid(), b = k.b.mid();
+    return {a, b, k.cos.mid(), k.sin.mid(), k.xc.mid(), k.yc.mid(), a * b};
 }
 
 // Boundary point P and outward unit normal nu at chart parameter t, and
-// their derivatives in t when asked for.
+// their derivatives in t when asked for. Both derivatives lie along the
+// counter-clockwise tangent nu^perp = (-nu_y, nu_x): dP/dt = speed nu^perp
+// and dnu/dt = turning nu^perp (boundary_at says why).
 template <class N>
 struct BoundaryPoint {
-    N px, py, nx, ny, dpx, dpy, dnx, dny;
+    N px, py, nx, ny, speed, turning;
 };
 
 // In the ellipse's frame the boundary is (a cos, b sin) with
@@ -69,22 +78,31 @@ struct BoundaryPoint {
 // flipped chart u = -1/t gives the opposite point, (cos, sin) -> -(cos, sin)
 // at the same formula in u. The outward normal is along g = (b cos, a sin),
 // of length at least min(a, b). Derivatives: d/dt = w d/dtheta with
-// w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos); the unit normal
-// g/|g| has derivative (g' - nu (nu . g'))/|g|.
+// w = 2/(1 + t^2), and d(cos, sin)/dtheta = (-sin, cos). In the ellipse's
+// frame, with m = g/|g| and m^perp = (-a sin, b cos)/|g|:
+//   dP/dtheta = (-a sin, b cos) = |g| m^perp,
+//   dm/dtheta = (g' - m (m . g'))/|g| with g' = (-b sin, a cos), and
+//     g' = m (m . g') + m^perp (m^perp . g'), m^perp . g' = a b/|g|, so
+//   dm/dtheta = (a b/|g|^2) m^perp;
+// the rotation to the plane maps m^perp to nu^perp. Hence speed = w |g|
+// and turning = w a b/|g|^2: identities of the exact functions, so their
+// interval evaluation encloses the derivatives as the componentwise formulas
+// did (with fewer operations, and no cancellation in g' - m (m . g')).
 // What a caller needs: Newton the point, the normal and their derivatives;
 // F(m) the point and the normal; Krawczyk's box the normal and the
 // derivatives only (J(X); F over the box is never read).
 enum class Parts { point, derivatives, all };
 
+// Into `p` (written in place: it is 6 intervals, and a returned copy was
+// 1 % of a build's instructions).
 template <class N>
-BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts parts) {
+void boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts parts, BoundaryPoint<N>& p) {
     const N one = constant(1, t), t2 = square(t);
     const N inverse_den = reciprocal(one + t2);
     const N c = negated_if(flipped, (one - t2) * inverse_den), s = negated_if(flipped, twice(t) * inverse_den);
     const N gx = k.b * c, gy = k.a * s;
-    const N inverse_norm = reciprocal(root(square(gx) + square(gy)));
+    const N norm = root(square(gx) + square(gy)), inverse_norm = reciprocal(norm);
     const N mx = gx * inverse_norm, my = gy * inverse_norm;  // the unit normal in the ellipse's frame
-    BoundaryPoint<N> p;
     if (parts != Parts::derivatives) {
         const N lx = k.a * c, ly = k.b * s;
         p.px = k.xc + (k.cos * lx - k.sin * ly);
@@ -92,49 +110,63 @@ BoundaryPoint<N> boundary_at(const Shape<N>& k, bool flipped, const N& t, Parts 
     }
     p.nx = k.cos * mx - k.sin * my;
     p.ny = k.sin * mx + k.cos * my;
-    if (parts == Parts::point) return p;
+    if (parts == Parts::point) return;
     const N w = twice(inverse_den);
-    const N dlx = -(k.a * s) * w, dly = (k.b * c) * w, dgx = -(k.b * s) * w, dgy = (k.a * c) * w;
-    const N projection = mx * dgx + my * dgy;
-    const N dmx = (dgx - mx * projection) * inverse_norm, dmy = (dgy - my * projection) * inverse_norm;
-    p.dpx = k.cos * dlx - k.sin * dly;
-    p.dpy = k.sin * dlx + k.cos * dly;
-    p.dnx = k.cos * dmx - k.sin * dmy;
-    p.dny = k.sin * dmx + k.cos * dmy;
-    return p;
+    p.speed = w * norm;
+    p.turning = (k.ab * w) * square(inverse_norm);
 }
 
-// F of the tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y) when `F`
-// is given, and J when `J` is; `at` receives the three boundary points (their
-// normals, and the points with F).
+// The tritangent system at x = (t_1, t_2, t_3, rho, V_x, V_y): `at`
+// receives the three boundary points (the parts asked for), and F when `F`
+// is given (then the points are computed; without F, only the normals and
+// derivatives).
+//
+// Its Jacobian J is used by its structure, not as a matrix: rows 2i, 2i + 1
+// hold dP_i/dt + rho dnu_i/dt = scale_i nu_i^perp in column t_i (scale_i =
+// speed_i + rho turning_i, t_column_scale), nu_i in column rho, -I in the
+// columns V, and zeros elsewhere.
 template <class N>
 void tritangent_system(const std::array<Shape<N>, 3>& k, const std::array<bool, 3>& flipped,
-                       const std::array<N, 6>& x, std::array<N, 6>* F, std::array<std::array<N, 6>, 6>* J,
+                       const std::array<N, 6>& x, std::array<N, 6>* F, bool derivatives,
                        std::array<BoundaryPoint<N>, 3>& at) {
     const N& rho = x[3];
-    const Parts parts = !J ? Parts::point : F ? Parts::all : Parts::derivatives;
+    const Parts parts = !derivatives ? Parts::point : F ? Parts::all : Parts::derivatives;
     for (int i = 0; i < 3; ++i) {
-        const BoundaryPoint<N>& p = at[i] = boundary_at(k[i], flipped[i], x[i], parts);
+        BoundaryPoint<N>& p = at[i];
+        boundary_at(k[i], flipped[i], x[i], parts, p);
         if (!F) continue;
         (*F)[2 * i] = p.px + rho * p.nx - x[4];
         (*F)[2 * i + 1] = p.py + rho * p.ny - x[5];
     }
-    if (!J) return;
-    const N zero = constant(0, x[0]), minus_one = constant(-1, x[0]);
-    for (auto& row : *J) row.fill(zero);
-    for (int i = 0; i < 3; ++i) {
-        const BoundaryPoint<N>& p = at[i];
-        (*J)[2 * i][i] = p.dpx + rho * p.dnx;
-        (*J)[2 * i + 1][i] = p.dpy + rho * p.dny;
-        (*J)[2 * i][3] = p.nx;
-        (*J)[2 * i + 1][3] = p.ny;
-        (*J)[2 * i][4] = minus_one;
-        (*J)[2 * i + 1][5] = minus_one;
-    }
+}
+
+template <class N>
+N t_column_scale(const BoundaryPoint<N>& p, const N& rho) {
+    return p.speed + rho * p.turning;
 }
 
 // Interval::max is std::fmax inlined (the library call was 1% of a build).
 double magnitude(const UpwardInterval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); }
+
+// Krawczyk's products of Y (doubles, exact) with intervals, without the sign
+// cases of an interval product (Y's signs are a coin toss for the branch
+// predictor), under the upward rounding mode. An interval [lo, hi] is the
+// pair (-lo, hi) in one SSE register: one vector addition, rounded up, gives
+// (-lo_a - lo_b, hi_a + hi_b) rounded up, upper bounds of -(lo_a + lo_b) and
+// of hi_a + hi_b. With y = y+ - y- (y+ = max(y, 0), y- = max(-y, 0), one of
+// them 0), y [lo, hi] is [y lo, y hi] or [y hi, y lo] by y's sign, i.e.
+//   y+ (-lo, hi) + y- (hi, -lo),
+// each product rounded up and the exact 0 of the other term added exactly.
+// An infinite bound times the 0 gives NaN, which fails K's finiteness test.
+using NegatedLowHigh = double __attribute__((vector_size(16)));
+NegatedLowHigh negated_low_high(const UpwardInterval& v) { return NegatedLowHigh{-v.lo, v.hi}; }
+// y+ and y- of an entry of Y, each in both lanes.
+struct SplitEntry {
+    NegatedLowHigh plus, minus;
+};
+NegatedLowHigh times(const SplitEntry& y, NegatedLowHigh v) {
+    return y.plus * v + y.minus * NegatedLowHigh{v[1], v[0]};
+}
 
 // The tangency points are counter-clockwise on the circle iff the normals
 // are: P_i = V - rho nu_i, and a translation followed by the scaling by
@@ -165,6 +197,11 @@ bool signed_distances(const std::array<Shape<UpwardInterval>, 3>& k, const Upwar
 // Returns K(X), which holds the unique solution in X, once it has also
 // proved that rho is the signed distance to the sites and the
 // counter-clockwise order (on X, which contains K(X)).
+// With `converged_step_only` (m one Newton step before convergence, Y F(m)
+// being that step), the test runs only if Y F(m) is a converged step, below
+// kConvergedStep (|m| + unit); else it returns nullopt. (K(X) encloses the
+// solution for any m and Y; this only keeps X as small as Newton's next
+// step would.)
 // All of it runs under the upward rounding mode: every double computed here
 // is rounded up, so sums and products of nonnegative upper bounds (the
 // spread, the box's reach) are upper bounds as they stand. The scope is the
@@ -174,23 +211,55 @@ bool signed_distances(const std::array<Shape<UpwardInterval>, 3>& k, const Upwar
 // nor the reverse).
 ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     const std::array<Shape<UpwardInterval>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m,
-    const Matrix6& Y, double length_scale) {
+    const Matrix6& Y, double length_scale, bool converged_step_only = false) {
     const UpwardRoundingScope upward;
     std::array<UpwardInterval, 6> point, F;
     std::array<BoundaryPoint<UpwardInterval>, 3> at;
     for (int j = 0; j < 6; ++j) point[j] = UpwardInterval(m[j]);
-    tritangent_system<UpwardInterval>(k, flipped, point, &F, nullptr, at);
+    tritangent_system<UpwardInterval>(k, flipped, point, &F, false, at);
+    // Y = Y+ - Y- for times() (Y is finite: newton_then_certify checks).
+    // Two rows at a time: y = (Y_ij, Y_i+1,j), and the lane masks of y > 0
+    // and y < 0 (all ones or zeros) select y+ and y- (or +0) in each lane.
+    using Mask = long long __attribute__((vector_size(16)));
+    SplitEntry split[6][6];
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; i += 2) {
+            const NegatedLowHigh y{Y(i, j), Y(i + 1, j)}, zero{0, 0};
+            const NegatedLowHigh plus = NegatedLowHigh(Mask(y) & (y > zero)), minus = NegatedLowHigh(Mask(-y) & (y < zero));
+            split[i][j] = {NegatedLowHigh{plus[0], plus[0]}, NegatedLowHigh{minus[0], minus[0]}};
+            split[i + 1][j] = {NegatedLowHigh{plus[1], plus[1]}, NegatedLowHigh{minus[1], minus[1]}};
+        }
+    // Y's products with J(X)'s columns V_x and V_y (-1 in the even, in the
+    // odd rows), independent of X: P = -(Y_i0 + Y_i2 + Y_i4) and -(Y_i1 +
+    // Y_i3 + Y_i5), as (-lo, hi) pairs, i.e. (RU(-P), RU(P)), the sums of the
+    // y's and of the -y's rounded up; two rows at a time (rows i, i + 1 in
+    // the lanes).
+    std::array<NegatedLowHigh, 6> times_V_x, times_V_y;
+    for (int i = 0; i < 6; i += 2)
+        for (int axis = 0; axis < 2; ++axis) {
+            NegatedLowHigh sum{0, 0}, negated_sum{0, 0};
+            for (int c = 0; c < 3; ++c) {
+                const NegatedLowHigh y{Y(i, 2 * c + axis), Y(i + 1, 2 * c + axis)};
+                sum += y, negated_sum += -y;
+            }
+            std::array<NegatedLowHigh, 6>& products = axis == 0 ? times_V_x : times_V_y;
+            products[i] = NegatedLowHigh{sum[0], negated_sum[0]};
+            products[i + 1] = NegatedLowHigh{sum[1], negated_sum[1]};
+        }
+    std::array<NegatedLowHigh, 6> F_pair;
+    for (int j = 0; j < 6; ++j) F_pair[j] = negated_low_high(F[j]);
     std::array<UpwardInterval, 6> correction;  // Y F(m)
     std::array<double, 6> r;
     for (int i = 0; i < 6; ++i) {
-        UpwardInterval sum(0.0);
-        for (int j = 0; j < 6; ++j) sum = sum + Y(i, j) * F[j];
+        NegatedLowHigh product{0, 0};
+        for (int j = 0; j < 6; ++j) product += times(split[i][j], F_pair[j]);
+        const UpwardInterval sum(-product[0], product[1]);
         if (!sum.finite()) return std::nullopt;
         correction[i] = sum;
         const double unit = i < 3 ? 1.0 : length_scale;
+        if (converged_step_only && !(magnitude(sum) <= kConvergedStep * (std::fabs(m[i]) + unit))) return std::nullopt;
         r[i] = 2 * magnitude(sum) + 1e-15 * (std::fabs(m[i]) + unit);
     }
-    std::array<std::array<UpwardInterval, 6>, 6> J;
     for (int attempt = 0; attempt < 3; ++attempt) {
         std::array<UpwardInterval, 6> X, K;
         std::array<double, 6> reach_of_box;  // |X - m| bound: the rounding widened X beyond m +- r
@@ -198,24 +267,45 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
             X[j] = UpwardInterval(-(r[j] - m[j]), m[j] + r[j]);
             reach_of_box[j] = Interval::max(m[j] - X[j].lo, X[j].hi - m[j]);
         }
-        tritangent_system<UpwardInterval>(k, flipped, X, nullptr, &J, at);
+        tritangent_system<UpwardInterval>(k, flipped, X, nullptr, true, at);
+        // J(X)'s nonzero entries (tritangent_system) but V's: in rows 2c,
+        // 2c + 1, column t_c holds scale_c nu_c^perp and column rho nu_c.
+        std::array<NegatedLowHigh, 3> t_column_x, t_column_y, normal_x, normal_y;
+        for (int c = 0; c < 3; ++c) {
+            const UpwardInterval scale = t_column_scale(at[c], X[3]);
+            t_column_x[c] = negated_low_high(-(scale * at[c].ny)), t_column_y[c] = negated_low_high(scale * at[c].nx);
+            normal_x[c] = negated_low_high(at[c].nx), normal_y[c] = negated_low_high(at[c].ny);
+        }
         bool inside = true;
         std::array<double, 6> reach{};
         for (int i = 0; i < 6; ++i) {
-            // Row i of I - Y J(X), using where J is zero (column t_c: rows
-            // 2c, 2c + 1; V_x and V_y: -1 in the even and odd rows), times
-            // X - m, within [-reach_of_box, reach_of_box]: its magnitude times that.
-            std::array<UpwardInterval, 6> row;
-            for (int c = 0; c < 3; ++c) row[c] = Y(i, 2 * c) * J[2 * c][c] + Y(i, 2 * c + 1) * J[2 * c + 1][c];
-            row[3] = UpwardInterval(0.0);
-            for (int j = 0; j < 6; ++j) row[3] = row[3] + Y(i, j) * J[j][3];
-            row[4] = -(UpwardInterval(Y(i, 0)) + UpwardInterval(Y(i, 2)) + UpwardInterval(Y(i, 4)));
-            row[5] = -(UpwardInterval(Y(i, 1)) + UpwardInterval(Y(i, 3)) + UpwardInterval(Y(i, 5)));
-            double spread = 0;
-            for (int c = 0; c < 6; ++c) {
-                const UpwardInterval entry = UpwardInterval(i == c ? 1.0 : 0.0) - row[c];
-                spread = spread + magnitude(entry) * reach_of_box[c];
+            // Row i of Y J(X), as (-lo, hi) pairs.
+            std::array<NegatedLowHigh, 6> row;
+            const SplitEntry* y = split[i];
+            row[3] = NegatedLowHigh{0, 0};
+            for (int c = 0; c < 3; ++c) {
+                row[c] = times(y[2 * c], t_column_x[c]) + times(y[2 * c + 1], t_column_y[c]);
+                row[3] += times(y[2 * c], normal_x[c]) + times(y[2 * c + 1], normal_y[c]);
             }
+            row[4] = times_V_x[i], row[5] = times_V_y[i];
+            // Row i of I - Y J(X) times X - m, within [-reach_of_box,
+            // reach_of_box]: the entries' magnitudes times that. With
+            // delta - [lo, hi] as the pair row[c] + (delta, -delta) =
+            // (delta - lo, hi - delta) rounded up, the magnitude is at most
+            // the larger lane; two entries at a time (their first lanes and
+            // their second lanes side by side).
+            row[i] += NegatedLowHigh{1, -1};
+            NegatedLowHigh spread_pair{0, 0}, lanes_sum{0, 0};
+            for (int c = 0; c < 6; c += 2) {
+                const NegatedLowHigh first{row[c][0], row[c + 1][0]}, second{row[c][1], row[c + 1][1]};
+                spread_pair += (first > second ? first : second) * NegatedLowHigh{reach_of_box[c], reach_of_box[c + 1]};
+                lanes_sum += first + second;
+            }
+            // The selection may drop a NaN lane (0 * inf in times()); the
+            // plain sum of all lanes keeps it (and an infinite bound): then
+            // nothing is proved.
+            if (!std::isfinite(lanes_sum[0] + lanes_sum[1])) return std::nullopt;
+            const double spread = spread_pair[0] + spread_pair[1];
             K[i] = UpwardInterval(m[i]) - correction[i] + UpwardInterval(-spread, spread);
             if (!K[i].finite()) return std::nullopt;
             if (!(K[i].lo > X[i].lo && K[i].hi < X[i].hi)) inside = false;
@@ -232,59 +322,72 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     return std::nullopt;
 }
 
-// J d = f for the Jacobian of the tritangent system, by its shape: rows 2i,
-// 2i + 1 read a_i d_ti + n_i d_rho - d_V = f_i (a_i the column of t_i, n_i
-// the normal). Projecting them on q_i = a_i turned by 90 degrees removes d_ti:
-//     (q_i . n_i) d_rho - q_i . d_V = q_i . f_i,   i = 1, 2, 3,
+// J d = f for the Jacobian of the tritangent system, by its structure
+// (tritangent_system): rows 2i, 2i + 1 read
+//     scale_i nu_i^perp d_ti + nu_i d_rho - d_V = f_i.
+// Their dot products with nu_i (nu_i . nu_i^perp = 0, |nu_i| = 1) leave
+//     d_rho - nu_i . d_V = nu_i . f_i,   i = 1, 2, 3,
 // three equations in (d_rho, d_V), solved with the inverse of their matrix M;
-// then d_ti = a_i . (f_i - n_i d_rho + d_V) / |a_i|^2. About 60 operations
-// a solve, against a general 6 x 6 factorization.
+// those with nu_i^perp give d_ti = nu_i^perp . (f_i + d_V) / scale_i.
 class TritangentNewtonSolver {
 public:
-    explicit TritangentNewtonSolver(const std::array<std::array<double, 6>, 6>& J) {
-        double m[3][3];
-        for (int i = 0; i < 3; ++i) {
-            ax_[i] = J[2 * i][i], ay_[i] = J[2 * i + 1][i], nx_[i] = J[2 * i][3], ny_[i] = J[2 * i + 1][3];
-            a2_[i] = ax_[i] * ax_[i] + ay_[i] * ay_[i];
-            // q_i = (-a_y, a_x)
-            m[i][0] = -ay_[i] * nx_[i] + ax_[i] * ny_[i], m[i][1] = ay_[i], m[i][2] = -ax_[i];
+    TritangentNewtonSolver(const std::array<BoundaryPoint<double>, 3>& at, double rho) {
+        for (int i = 0; i < 3; ++i) nx_[i] = at[i].nx, ny_[i] = at[i].ny, scale_[i] = t_column_scale(at[i], rho);
+        // M's rows are m_i = (1, -nu_i), and M^-1 = adj(M) / det, where
+        // adj(M)'s column c is m_u x m_v, (u, v) = (c + 1, c + 2) mod 3:
+        //   (nu_u x nu_v, ny_v - ny_u, nx_u - nx_v),
+        // and det = m_0 . (m_1 x m_2), the sum of the three nu_u x nu_v.
+        constexpr int kNext[3] = {1, 2, 0}, kAfterNext[3] = {2, 0, 1};
+        det_ = 0;
+        for (int c = 0; c < 3; ++c) {
+            const int u = kNext[c], v = kAfterNext[c];
+            adjugate_[0][c] = nx_[u] * ny_[v] - ny_[u] * nx_[v];
+            adjugate_[1][c] = ny_[v] - ny_[u];
+            adjugate_[2][c] = nx_[u] - nx_[v];
+            det_ += adjugate_[0][c];
         }
-        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) {
-                // Cofactor of m[c][r] over det: the inverse's (r, c) entry.
-                const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-                inverse_[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
-            }
-        usable_ = det != 0 && a2_[0] > 0 && a2_[1] > 0 && a2_[2] > 0;
+        usable_ = det_ != 0 && scale_[0] != 0 && scale_[1] != 0 && scale_[2] != 0;
     }
     // False when J is singular (then nothing is certified from it).
     bool usable() const { return usable_; }
 
     Vector6 solve(const std::array<double, 6>& f) const {
         double rhs[3], d[6];
-        for (int i = 0; i < 3; ++i) rhs[i] = -ay_[i] * f[2 * i] + ax_[i] * f[2 * i + 1];
-        for (int r = 0; r < 3; ++r) d[3 + r] = inverse_[r][0] * rhs[0] + inverse_[r][1] * rhs[1] + inverse_[r][2] * rhs[2];
-        for (int i = 0; i < 3; ++i)
-            d[i] = (ax_[i] * (f[2 * i] - nx_[i] * d[3] + d[4]) + ay_[i] * (f[2 * i + 1] - ny_[i] * d[3] + d[5])) / a2_[i];
+        for (int i = 0; i < 3; ++i) rhs[i] = nx_[i] * f[2 * i] + ny_[i] * f[2 * i + 1];
+        for (int r = 0; r < 3; ++r)
+            d[3 + r] = (adjugate_[r][0] * rhs[0] + adjugate_[r][1] * rhs[1] + adjugate_[r][2] * rhs[2]) / det_;
+        for (int i = 0; i < 3; ++i) d[i] = tangential(i, f[2 * i], f[2 * i + 1], d) / scale_[i];
         return Eigen::Map<const Vector6>(d);
     }
-    // J^-1, column by column.
+    // J^-1 (to rounding: Krawczyk's Y need not be exact), column by column:
+    // solve() of the unit vector of row 2k + axis, whose only nonzero
+    // nu_i . f_i is nu_k's component on the axis; divisions as products with
+    // reciprocals made once.
     Matrix6 inverse() const {
+        const double inverse_det = 1 / det_;
+        const double inverse_scale[3] = {1 / scale_[0], 1 / scale_[1], 1 / scale_[2]};
         Matrix6 Y;
-        for (int k = 0; k < 6; ++k) {
-            std::array<double, 6> unit{};
-            unit[k] = 1;
-            Y.col(k) = solve(unit);
-        }
+        for (int k = 0; k < 3; ++k)
+            for (int axis = 0; axis < 2; ++axis) {
+                const double component = (axis == 0 ? nx_[k] : ny_[k]) * inverse_det;
+                double d[6];
+                for (int r = 0; r < 3; ++r) d[3 + r] = adjugate_[r][k] * component;
+                for (int i = 0; i < 3; ++i) d[i] = tangential(i, 0, 0, d) * inverse_scale[i];
+                d[k] += (axis == 0 ? -ny_[k] : nx_[k]) * inverse_scale[k];  // f_k's own term
+                Y.col(2 * k + axis) = Eigen::Map<const Vector6>(d);
+            }
         return Y;
     }
 
 private:
-    std::array<double, 3> ax_, ay_, nx_, ny_, a2_;
-    double inverse_[3][3];
+    // nu_i^perp . (f_i + d_V) for f_i = (fx, fy), d_V = (d[4], d[5]): d_ti
+    // times scale_i.
+    double tangential(int i, double fx, double fy, const double* d) const {
+        return nx_[i] * (fy + d[5]) - ny_[i] * (fx + d[4]);
+    }
+
+    std::array<double, 3> nx_, ny_, scale_;
+    double adjugate_[3][3], det_;
     bool usable_ = false;
 };
 
@@ -305,7 +408,7 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
         for (int i = 0; i < 3; ++i)
             if (std::fabs(trial[i]) > 1) trial[i] = -1 / trial[i], trial_flipped[i] = !trial_flipped[i];
         std::array<BoundaryPoint<double>, 3> at;
-        tritangent_system<double>(shape, trial_flipped, trial, &trial_F, nullptr, at);
+        tritangent_system<double>(shape, trial_flipped, trial, &trial_F, false, at);
         double trial_residual = 0;
         for (double f : trial_F) trial_residual += f * f;
         if (trial_residual < residual) break;
@@ -339,13 +442,27 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
                                                        std::optional<StalledDoubleRoot>* stalled = nullptr) {
     if (diverged) *diverged = true;
     const int kSteps = damped ? 30 : 12;
-    constexpr double kConverged = 1e-13;  // relative step size
     // An ill-conditioned root (a circle 10^4 times the sites' size or more)
-    // stops Newton at the rounding noise, far above kConverged: a step that
+    // stops Newton at the rounding noise, far above kConvergedStep: a step that
     // no longer shrinks, below kStalled, is offered to Krawczyk (which decides).
     constexpr double kStalled = 1e-6;
+    // Newton converges quadratically: after a step below kNearlyConverged the
+    // next one is expected below kConvergedStep. Krawczyk's F(m) is that step's
+    // evaluation, so the test is tried at once (the first time only),
+    // provided that Y F(m) is that small (`converged_step_only`); when not,
+    // or when it fails, Newton goes on as if it had not been tried. (Y from
+    // the step before: any nonsingular Y is sound.)
+    constexpr double kNearlyConverged = 1e-7;
+    bool tried_early = false;
+    const auto certified = [&](const std::array<Interval, 6>& box) {
+        if (diverged) *diverged = false;
+        DoubleVoronoiCircle circle;
+        for (int i = 0; i < 3; ++i) circle.parameter[i] = box[i];
+        circle.flipped = flipped;
+        circle.radius = box[3], circle.center_x = box[4], circle.center_y = box[5];
+        return circle;
+    };
     std::array<double, 6> F;
-    std::array<std::array<double, 6>, 6> J;
     std::array<BoundaryPoint<double>, 3> at;
     Matrix6 Y;
     bool converged = false;
@@ -353,38 +470,42 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     for (int step = 0; step < kSteps && !converged; ++step) {
         for (int i = 0; i < 3; ++i)
             if (std::fabs(x[i]) > 1) x[i] = -1 / x[i], flipped[i] = !flipped[i];
-        tritangent_system<double>(shape, flipped, x, &F, &J, at);
-        const TritangentNewtonSolver newton(J);
+        tritangent_system<double>(shape, flipped, x, &F, true, at);
+        const TritangentNewtonSolver newton(at, x[3]);
         if (!newton.usable()) return std::nullopt;
         const Vector6 correction = newton.solve(F);
-        if (!correction.allFinite()) return std::nullopt;
+        if (!std::isfinite(correction.sum())) return std::nullopt;  // a sum is finite only if each term is
         double relative = 0;
         const double fraction = damped ? damped_step(shape, flipped, x, F, correction) : 1.0;
         for (int i = 0; i < 6; ++i) {
             x[i] -= fraction * correction[i];
             const double unit = i < 3 ? 1.0 : length_scale;
-            relative = Interval::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
+            // Never NaN: the correction is finite and the divisor positive.
+            relative = std::max(relative, std::fabs(correction[i]) / (std::fabs(x[i]) + unit));
         }
-        converged = relative <= kConverged || (relative <= kStalled && relative > previous / 4);
+        converged = relative <= kConvergedStep || (relative <= kStalled && relative > previous / 4);
         previous = relative;
         // Y: the inverse Jacobian one tiny step before the midpoint (any
         // nonsingular Y is sound; a close one contracts).
         if (converged) Y = newton.inverse();
+        if (!converged && relative <= kNearlyConverged && !tried_early) {
+            tried_early = true;
+            Y = newton.inverse();
+            if (!std::isfinite(Y.sum())) continue;  // a sum is finite only if each term is
+            if (const auto box = krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale, true))
+                return certified(*box);
+        }
     }
-    if (!converged || !Y.allFinite()) return std::nullopt;
+    if (!converged || !std::isfinite(Y.sum())) return std::nullopt;
     if (diverged) *diverged = false;
     const std::optional<std::array<Interval, 6>> box =
         krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
     if (!box) {
         // Stalled at the rounding noise: a start for Arb (the first one met).
-        if (stalled && !*stalled && previous > kConverged) offer_stalled_root(at, flipped, x, *stalled);
+        if (stalled && !*stalled && previous > kConvergedStep) offer_stalled_root(at, flipped, x, *stalled);
         return std::nullopt;
     }
-    DoubleVoronoiCircle circle;
-    for (int i = 0; i < 3; ++i) circle.parameter[i] = (*box)[i];
-    circle.flipped = flipped;
-    circle.radius = (*box)[3], circle.center_x = (*box)[4], circle.center_y = (*box)[5];
-    return circle;
+    return certified(*box);
 }
 
 }  // namespace
