@@ -121,16 +121,14 @@ Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interv
 bool strictly_inside(const Interval& x, double r) { return x.lo > -r && x.hi < r; }
 
 // The Krawczyk image about the point, K = -C F + (I - C J(X)) Y, and whether
-// it lies in the interior of Y (each component within +- r_i; T: Interval or
-// ComplexInterval).
-template <class T>
-bool krawczyk_inside(const double (&C)[2][2], const T (&CF)[2], const T (&J)[2][2], const T (&Y)[2],
-                     const double (&r)[2], T (&K)[2]) {
+// it lies in the interior of Y (each component within +- r_i).
+bool krawczyk_inside(const double (&C)[2][2], const Interval (&CF)[2], const Interval (&J)[2][2],
+                     const Interval (&Y)[2], const double (&r)[2], Interval (&K)[2]) {
     bool inside = true;
     for (int i = 0; i < 2; ++i) {
         K[i] = -CF[i];
         for (int j = 0; j < 2; ++j) {
-            T m = -(C[i][0] * J[0][j] + C[i][1] * J[1][j]);
+            Interval m = -(C[i][0] * J[0][j] + C[i][1] * J[1][j]);
             if (i == j) m = m + Interval(1.0);
             K[i] = K[i] + m * Y[j];
         }
