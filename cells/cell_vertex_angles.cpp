@@ -74,7 +74,10 @@ Ball CellVertexAngles::angle(long face, SiteId site, long prec) {
             arf_set_d(hi.get(), d->parameter[i].hi);
             arb_set_interval_arf(t.get(), lo.get(), hi.get(), prec);
             Ball theta = angle_of_parameter(t, d->flipped[i], prec);
-            if (mag_cmp_2exp_si(arb_radref(theta.get()), 24 - prec) <= 0) return theta;
+            if (mag_cmp_2exp_si(arb_radref(theta.get()), 24 - prec) <= 0) {
+                ++angles_from_doubles_;
+                return theta;
+            }
         }
     VoronoiCircleSolver& s = solver(face, prec);
     const VoronoiCircleEnclosure& c = s.enclosure();

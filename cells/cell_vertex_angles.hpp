@@ -34,6 +34,8 @@ public:
     // end), lifted so that consecutive differences lie in [0, 2 pi) (within
     // the balls) and the last is the first plus 2 pi; Error otherwise.
     std::vector<Ball> lifted(const VoronoiCell& cell, long prec);
+    // How many angles so far came from the circles certified in doubles.
+    long angles_from_doubles() const { return angles_from_doubles_; }
 
 private:
     VoronoiCircleSolver& solver(long face, long prec);
@@ -47,6 +49,7 @@ private:
     std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers_;
     std::vector<std::optional<DoubleVoronoiCircle>> circles_in_doubles_;
     std::vector<char> tried_in_doubles_;
+    long angles_from_doubles_ = 0;
 };
 
 }  // namespace ellvor
