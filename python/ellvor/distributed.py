@@ -34,9 +34,6 @@ from ._cells import Cells, _number as _cell_number
 from ._diagram import _frozen
 from ._errors import Error, InputError
 
-# The sites' bounding boxes are computed in doubles from the rounded parameters and then widened by this
-# fraction of their magnitude (and one ulp): at most a few dozen roundings of 2^-53 each precede it.
-_BOX_MARGIN = 2.0 ** -40
 # Coordinates or semi-axes beyond these (in magnitude; nonzero) leave the doubles' comfortable range:
 # such a set is built as one tile.
 _TINY, _HUGE = 1e-280, 1e280
@@ -49,19 +46,6 @@ def _sites_of(sites, fmt):
     if isinstance(sites, (str, bytes, os.PathLike)):
         return _ellvor.read_sites(sites, fmt)
     return _ellvor.Sites(sites)
-
-
-def _bounding_boxes(params):
-    """Per site (xlo, xhi, ylo, yhi), containing the exact ellipse (outward, see _BOX_MARGIN)."""
-    a, b, w, xc, yc = params.T
-    c = (1 - w * w) / (1 + w * w)   # cos and sin of the a-axis' angle, w = tan(angle / 2)
-    s = 2 * w / (1 + w * w)
-    hx = np.sqrt((a * c) ** 2 + (b * s) ** 2)
-    hy = np.sqrt((a * s) ** 2 + (b * c) ** 2)
-    mx = _BOX_MARGIN * (np.abs(xc) + a + b) + 5e-324
-    my = _BOX_MARGIN * (np.abs(yc) + a + b) + 5e-324
-    return np.stack([np.nextafter(xc - hx - mx, -np.inf), np.nextafter(xc + hx + mx, np.inf),
-                     np.nextafter(yc - hy - my, -np.inf), np.nextafter(yc + hy + my, np.inf)], axis=1)
 
 
 def _in_double_range(params):
@@ -116,20 +100,16 @@ def _rss_mb():
         return 0.0
 
 
-# Integers below this in magnitude are exact doubles.
-_EXACT_INTEGER = 2 ** 53
-
-
 def _site_arrays(sites):
-    """(params, fractions): the sites' nearest doubles (n, 5) as ``Sites.to_array`` gives them, and their
-    numerators and denominators (n, 10) int64, what _payload sends of them (None when one needs more than
-    64 bits), in one pass over the sites. Where every numerator and denominator is an exact double, one
-    correctly rounded division of the two is the nearest double (to_array's Arb division costs ~1 µs a site)."""
-    n = len(sites)
-    fractions = sites._fractions(np.arange(n, dtype=np.int64))
-    if fractions is None or not np.all((fractions > -_EXACT_INTEGER) & (fractions < _EXACT_INTEGER)):
-        return sites.to_array(), fractions
-    return (fractions[:, 0::2] / fractions[:, 1::2]).reshape(n, 5), fractions
+    """(params, fractions, boxes) in one pass over the sites (C++): their nearest doubles (n, 5) as
+    ``Sites.to_array`` gives them; their numerators and denominators (n, 10), what _payload sends of
+    them (None when one needs more than 64 bits); per site (xlo, xhi, ylo, yhi), a box containing the exact
+    ellipse (outward by 2^-40 of its magnitude). The fractions are int32 where they all fit: half the bytes
+    to send (a worker's copies of large messages cost time)."""
+    params, fractions, boxes = sites._tiling_arrays()
+    if fractions is not None and len(fractions) and -2 ** 31 < fractions.min() and fractions.max() < 2 ** 31:
+        fractions = fractions.astype(np.int32)
+    return params, fractions, boxes
 
 
 def _payload(sites, fractions, ids):
@@ -279,16 +259,37 @@ def _hull_candidates(params, boxes, depth):
     polygon, corner_sites = _outer_polygon(params)
     if len(polygon) < 3:
         return np.arange(n), polygon
-    inside = np.ones(n, dtype=bool)
+    # Most boxes lie in a rectangle R whose corners are more than ``depth`` inside every edge: then all of
+    # R is (those points form a convex set), and so are they; only the others are tested edge by edge.
+    inside = _inside(boxes, _inner_rectangle(polygon, depth))
+    rest = np.nonzero(~inside)[0]
+    rest_inside = np.ones(len(rest), dtype=bool)
     for a, b in zip(polygon, polygon[1:] + polygon[:1]):
         # The box's corner least inside this edge (cross(e, x - a) smallest; the signs of the rounded
         # differences are the exact ones): the box is inside when that corner is.
         ex, ey = b[0] - a[0], b[1] - a[1]
-        cx = boxes[:, 1] if ey > 0 else boxes[:, 0]
-        cy = boxes[:, 2] if ex > 0 else boxes[:, 3]
-        inside &= _beyond_edge(a, b, cx, cy, depth, 0.0)
+        cx = boxes[rest, 1] if ey > 0 else boxes[rest, 0]
+        cy = boxes[rest, 2] if ex > 0 else boxes[rest, 3]
+        rest_inside &= _beyond_edge(a, b, cx, cy, depth, 0.0)
+    inside[rest] = rest_inside
     inside[corner_sites] = False
     return np.nonzero(~inside)[0], polygon
+
+
+def _inner_rectangle(polygon, depth):
+    """A rectangle (x0, x1, y0, y1) whose four corners are more than ``depth`` inside every edge of the
+    convex polygon (by _beyond_edges), as large as one of a few shrinkings of the polygon's bounding box
+    about its middle gives; an empty one when none is."""
+    corners = np.array(polygon, dtype=float)
+    lo, hi = corners.min(axis=0), corners.max(axis=0)
+    middle, half = (lo + hi) / 2, (hi - lo) / 2
+    for shrink in (0.99, 0.95, 0.85, 0.7, 0.5, 0.25):
+        x0, y0 = middle - shrink * half
+        x1, y1 = middle + shrink * half
+        px, py = np.array([x0, x1, x0, x1]), np.array([y0, y0, y1, y1])
+        if all(edge.all() for edge in _beyond_edges(polygon, px, py, depth)):
+            return float(x0), float(x1), float(y0), float(y1)
+    return math.inf, -math.inf, math.inf, -math.inf
 
 
 def _disk_outside_polygon(circles, polygon, depth):
@@ -577,18 +578,17 @@ def build(sites, tiles="auto", client=None, *, fmt="ell", halo=None):
     sites = _sites_of(sites, fmt)
     start = time.perf_counter()
     n = len(sites)
-    params, fractions = _site_arrays(sites)
+    params, fractions, boxes = _site_arrays(sites)
     c, close = _client_for(client)
     try:
         nx, ny = _tiles_argument(tiles, n, c)
-        return _tiled_build(c, sites, params, fractions, nx, ny, halo, start)
+        return _tiled_build(c, sites, params, fractions, boxes, nx, ny, halo, start)
     finally:
         close()
 
 
-def _tiled_build(client, sites, params, fractions, nx, ny, halo, start):
+def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     n = len(sites)
-    boxes = _bounding_boxes(params) if n else np.zeros((0, 4))
     all_ids = np.arange(n, dtype=np.int64)
 
     everything = (float(boxes[:, 0].min()), float(boxes[:, 1].max()), float(boxes[:, 2].min()),
@@ -934,8 +934,7 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
             wrapped.append(e if kx == 0 and ky == 0 else
                            type(e)(e.a, e.b, e.w, e.xc - kx * period[0], e.yc - ky * period[1]))
         sites = _ellvor.Sites(wrapped)
-    params, fractions = _site_arrays(sites)
-    boxes = _bounding_boxes(params) if n else np.zeros((0, 4))
+    params, fractions, boxes = _site_arrays(sites)
     semi_axes = np.nextafter(np.maximum(params[:, 0], params[:, 1]), np.inf) if n else np.zeros(0)
     all_ids = np.arange(n, dtype=np.int64)
     domain = (box, periodic)

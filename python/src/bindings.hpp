@@ -48,7 +48,7 @@ struct Sites {
 // ("ell" or "cin"), or any iterable of Ellipse (checked as a set:
 // duplicates, dynamic range).
 Sites sites_argument(py::handle value, const std::string& format);
-// Sites from (k, 10) int64 numerator/denominator pairs (Sites._fractions),
+// Sites from (k, 10) int64 numerator/denominator pairs (Sites._tiling_arrays),
 // checked as a list of Ellipses is.
 Sites sites_from_fractions(py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> fractions);
 

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <sstream>
 
@@ -82,41 +83,67 @@ Sites sites_from_text(const std::string& text, const std::string& format, py::ob
     return s;
 }
 
-// The sites `ids` as numerator/denominator pairs, (k, 10) int64: a_num a_den
-// b_num ... yc_den, or None when one does not fit in 64 bits. What a tiled
-// build sends a tile (python/ellvor/distributed.py): no text to format or parse.
-py::object site_fractions(const Sites& s, py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> ids) {
-    const auto v = ids.unchecked<1>();
-    const auto n = static_cast<std::int64_t>(s.file.sites.size());
-    for (py::ssize_t k = 0; k < v.shape(0); ++k)
-        if (v(k) < 0 || v(k) >= n) throw py::index_error("_fractions: site id out of range");
-    auto out = new_array<std::int64_t>({v.shape(0), static_cast<py::ssize_t>(10)});
-    std::int64_t* w = out.mutable_data();
+// What a tiled build (python/ellvor/distributed.py) needs of every site, in
+// one pass over the sites (a pass costs their cache misses): a tuple
+//   params (n, 5): the nearest doubles of a b w xc yc (as Sites.to_array);
+//   fractions (n, 10) int64: a_num a_den b_num ... yc_den, what the tiles are
+//       sent (no text to format or parse), or None when one needs more than
+//       64 bits;
+//   boxes (n, 4): xlo xhi ylo yhi, a box that contains the exact ellipse.
+// A box is the rotated ellipse's extent about the rounded center, widened by
+// 2^-40 of |center| + a + b: the rounding of the parameters (half an ulp
+// each) and of the dozen operations below are far below that.
+py::tuple tiling_arrays(const Sites& s) {
+    const auto n = static_cast<py::ssize_t>(s.file.sites.size());
+    auto params = new_array<double>({n, static_cast<py::ssize_t>(5)});
+    auto fractions = new_array<std::int64_t>({n, static_cast<py::ssize_t>(10)});
+    auto boxes = new_array<double>({n, static_cast<py::ssize_t>(4)});
+    double* p = params.mutable_data();
+    std::int64_t* f = fractions.mutable_data();
+    double* b = boxes.mutable_data();
     bool fits = true;
     {
         py::gil_scoped_release release;
         // Each site's parameters sit in a block of their own: fetching those a
         // few sites ahead overlaps the cache misses that dominate this loop.
         constexpr py::ssize_t kAhead = 8;
-        for (py::ssize_t k = 0; k < v.shape(0) && fits; ++k) {
-            if (k + kAhead < v.shape(0)) s.file.sites[static_cast<std::size_t>(v(k + kAhead))].prefetch();
-            const Ellipse& e = s.file.sites[static_cast<std::size_t>(v(k))];
-            for (const Rational* r : {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()}) {
-                const fmpz* parts[2] = {fmpq_numref(r->get()), fmpq_denref(r->get())};
-                for (const fmpz* part : parts) {
-                    if (!fmpz_fits_si(part)) fits = false;
-                    *w++ = fits ? fmpz_get_si(part) : 0;
-                }
+        constexpr std::int64_t kExactInteger = std::int64_t{1} << 53;
+        constexpr double kMargin = 0x1p-40;
+        for (py::ssize_t k = 0; k < n; ++k) {
+            if (k + kAhead < n) s.file.sites[static_cast<std::size_t>(k + kAhead)].prefetch();
+            const Ellipse& e = s.file.sites[static_cast<std::size_t>(k)];
+            const Rational* values[] = {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()};
+            for (int j = 0; j < 5; ++j) {
+                const fmpz *num = fmpq_numref(values[j]->get()), *den = fmpq_denref(values[j]->get());
+                const bool small = fmpz_fits_si(num) && fmpz_fits_si(den);
+                const std::int64_t nv = small ? fmpz_get_si(num) : 0, dv = small ? fmpz_get_si(den) : 1;
+                fits = fits && small;
+                *f++ = nv;
+                *f++ = dv;
+                // Integers below 2^53 are exact doubles: one correctly rounded
+                // division is then the nearest double (to_double costs ~1 µs).
+                const bool exact = small && nv > -kExactInteger && nv < kExactInteger && dv < kExactInteger;
+                p[j] = exact ? static_cast<double>(nv) / static_cast<double>(dv) : values[j]->to_double();
             }
+            const double a = p[0], bb = p[1], w = p[2], xc = p[3], yc = p[4];
+            const double c = (1 - w * w) / (1 + w * w), sn = 2 * w / (1 + w * w);  // w = tan(angle / 2)
+            const double hx = std::sqrt((a * c) * (a * c) + (bb * sn) * (bb * sn));
+            const double hy = std::sqrt((a * sn) * (a * sn) + (bb * c) * (bb * c));
+            const double mx = kMargin * (std::fabs(xc) + a + bb) + 5e-324, my = kMargin * (std::fabs(yc) + a + bb) + 5e-324;
+            b[0] = std::nextafter(xc - hx - mx, -HUGE_VAL);
+            b[1] = std::nextafter(xc + hx + mx, HUGE_VAL);
+            b[2] = std::nextafter(yc - hy - my, -HUGE_VAL);
+            b[3] = std::nextafter(yc + hy + my, HUGE_VAL);
+            p += 5;
+            b += 4;
         }
     }
-    if (!fits) return py::none();
-    return std::move(out);
+    return py::make_tuple(params, fits ? py::object(std::move(fractions)) : py::none(), boxes);
 }
 
 }  // namespace
 
-// Sites from site_fractions' array, checked as a list of Ellipses is.
+// Sites from tiling_arrays' fractions, checked as a list of Ellipses is.
 Sites sites_from_fractions(py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> fractions) {
     if (fractions.ndim() != 2 || fractions.shape(1) != 10)
         throw py::value_error("_sites_from_fractions: expected a (k, 10) array");
@@ -334,7 +361,7 @@ void bind_sites(py::module_& m) {
                  return out;
              },
              py::arg("ids"))
-        .def("_fractions", &site_fractions, py::arg("ids"))
+        .def("_tiling_arrays", &tiling_arrays)
         .def("write", &write_sites, py::arg("path"), py::arg("fmt") = "ell")
         .def("__repr__", [](const Sites& s) {
             return "<ellvor.Sites: " + std::to_string(s.file.sites.size()) + " sites" +

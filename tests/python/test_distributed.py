@@ -256,7 +256,7 @@ def test_sites_travel_as_fractions_or_as_lines():
     rng = random.Random(5)
     sites = ellvor.generate("nested", 300, seed=4)
     ids = np.array(rng.sample(range(len(sites)), 120), dtype=np.int64)
-    params, fractions = ed._site_arrays(sites)
+    params, fractions, _ = ed._site_arrays(sites)
     assert np.array_equal(params, sites.to_array())
     payload = ed._payload(sites, fractions, ids)
     assert isinstance(payload, np.ndarray) and payload.shape == (120, 10)
@@ -265,12 +265,12 @@ def test_sites_travel_as_fractions_or_as_lines():
     wide = ellvor.Sites([ellvor.Ellipse(Fraction(2 ** 60 + 1, 3), Fraction(2 ** 60 - 1, 7), Fraction(-1, 2 ** 55 + 3),
                                         Fraction(2 ** 62 + 5, 2 ** 61 - 1), Fraction(-5, 3)),
                          ellvor.Ellipse(1, 1, 0, 10, 10)])
-    params, fractions = ed._site_arrays(wide)
+    params, fractions, _ = ed._site_arrays(wide)
     assert fractions is not None and np.array_equal(params, wide.to_array())
     assert list(ed._local_sites(ed._payload(wide, fractions, np.array([1, 0])))) == [wide[1], wide[0]]
     # A numerator beyond 64 bits: the lines carry it.
     big = ellvor.Sites([ellvor.Ellipse(2, 1, 0, 0, 0), ellvor.Ellipse(1, 1, 0, Fraction(3 ** 50, 7), 5)])
-    params, fractions = ed._site_arrays(big)
+    params, fractions, _ = ed._site_arrays(big)
     assert fractions is None and np.array_equal(params, big.to_array())
     payload = ed._payload(big, fractions, np.array([1, 0]))
     assert isinstance(payload, str)
@@ -332,8 +332,13 @@ def test_map_raises_the_builds_error_for_sites_meeting_in_four_points(client, wr
 
 
 def test_bounding_boxes_hold_the_ellipses_tightly():
-    sites = ellvor.generate("ellipses", 200, seed=17)
-    boxes = ed._bounding_boxes(sites.to_array())
+    # Sites near the origin and far from it (the margin scales with the center), and one whose numbers
+    # exceed 2^53 (its doubles rounded, not divided exactly).
+    sites = ellvor.Sites(list(ellvor.generate("ellipses", 200, seed=17)) +
+                         [ellvor.Ellipse(Fraction(3, 7), Fraction(1, 9), Fraction(5, 11), 10 ** 6 + Fraction(1, 3), -10 ** 5),
+                          ellvor.Ellipse(Fraction(2 ** 60 + 1, 3), Fraction(2 ** 60 - 1, 7), Fraction(-1, 2 ** 55 + 3),
+                                         Fraction(2 ** 62 + 5, 2 ** 61 - 1), Fraction(-5, 3))])
+    _, _, boxes = ed._site_arrays(sites)
     for e, (x0, x1, y0, y1) in zip(sites, boxes):
         a, b, w, xc, yc = (Fraction(v) for v in (e.a, e.b, e.w, e.xc, e.yc))
         c, s = (1 - w * w) / (1 + w * w), 2 * w / (1 + w * w)
@@ -348,8 +353,8 @@ def test_bounding_boxes_hold_the_ellipses_tightly():
 def test_hull_candidates_are_the_sites_near_the_hull():
     """A 30 x 30 lattice of small circles: the candidates are those within the depth of the border."""
     sites = circles([(x, y, Fraction(1, 10)) for x in range(30) for y in range(30)])
-    params = sites.to_array()
-    candidates, polygon = ed._hull_candidates(params, ed._bounding_boxes(params), 2.5)
+    params, _, boxes = ed._site_arrays(sites)
+    candidates, polygon = ed._hull_candidates(params, boxes, 2.5)
     border = {k for k, (x, y) in enumerate(params[:, 3:5]) if min(x, y, 29 - x, 29 - y) <= 2}
     assert border <= set(candidates.tolist())
     assert len(candidates) < 900 // 2 and all(min(x, y, 29 - x, 29 - y) <= 4 for x, y in params[candidates, 3:5])
