@@ -40,8 +40,8 @@ int sign_beyond(const Ellipse::Enclosure& kq, const Ellipse::Enclosure& k1, cons
 // bound decides in a third of the operations. 0 when it does not.
 int sign_beyond_by_disks(const Ellipse::Enclosure& kq, const Ellipse::Enclosure& k1, const Interval& nx,
                          const Interval& ny) {
-    const Interval radius_q(std::fmin(kq.a.lo, kq.b.lo), std::fmax(kq.a.hi, kq.b.hi));
-    const Interval radius_1(std::fmin(k1.a.lo, k1.b.lo), std::fmax(k1.a.hi, k1.b.hi));
+    const Interval radius_q(Interval::min(kq.a.lo, kq.b.lo), Interval::max(kq.a.hi, kq.b.hi));
+    const Interval radius_1(Interval::min(k1.a.lo, k1.b.lo), Interval::max(k1.a.hi, k1.b.hi));
     const Interval beyond = nx * (kq.xc - k1.xc) + ny * (kq.yc - k1.yc) + (radius_q - radius_1);
     return beyond.positive() ? -1 : beyond.negative() ? 1 : 0;
 }

@@ -1,5 +1,7 @@
 #include "predicates/support_function.hpp"
 
+#include "util/positive_divisor.hpp"
+
 #include <cmath>
 
 namespace ellvor {
@@ -169,16 +171,17 @@ std::vector<BitangentNormal> find_bitangent_normals(const Ellipse::Enclosure& k1
 std::optional<ArrivalNormalBox> ArrivalNormalBox::of(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) {
     if (!finite(k1) || !finite(k2)) return std::nullopt;
     // Outer radii rounded up, inner ones down: R >= max(a, b), r <= min(a, b).
-    const double R1 = std::fmax(k1.a.hi, k1.b.hi), r1 = std::fmin(k1.a.lo, k1.b.lo);
-    const double R2 = std::fmax(k2.a.hi, k2.b.hi), r2 = std::fmin(k2.a.lo, k2.b.lo);
+    const double R1 = Interval::max(k1.a.hi, k1.b.hi), r1 = Interval::min(k1.a.lo, k1.b.lo);
+    const double R2 = Interval::max(k2.a.hi, k2.b.hi), r2 = Interval::min(k2.a.lo, k2.b.lo);
     if (!(r1 > 0 && r2 > 0)) return std::nullopt;
     ArrivalNormalBox box(k1, k2);
     const Interval dx = k2.xc - k1.xc, dy = k2.yc - k1.yc;
     box.d_ = (dx.square() + dy.square()).sqrt();
     if (!(box.d_.lo > (Interval(R1) + Interval(R2)).hi)) return std::nullopt;
-    box.ex_ = dx / box.d_, box.ey_ = dy / box.d_;
+    box.ex_ = divide_by_positive(dx, box.d_), box.ey_ = divide_by_positive(dy, box.d_);
     // s = n.e between (r1 - R2)/d and (R1 - r2)/d, for every d in its enclosure.
-    box.s_ = Interval(((Interval(r1) - Interval(R2)) / box.d_).lo, ((Interval(R1) - Interval(r2)) / box.d_).hi);
+    box.s_ = Interval(divide_by_positive(Interval(r1) - Interval(R2), box.d_).lo,
+                      divide_by_positive(Interval(R1) - Interval(r2), box.d_).hi);
     if (!(box.s_.lo > -1 && box.s_.hi < 1)) return std::nullopt;
     box.set_box();
     return box;
@@ -196,7 +199,7 @@ bool ArrivalNormalBox::contract() {
         const Interval nu = nx_ * k.cos + ny_ * k.sin, nv = ny_ * k.cos - nx_ * k.sin;
         return (k.a.square() * nu.square() + k.b.square() * nv.square()).sqrt();
     };
-    const Interval again = (rho(k1_) - rho(k2_)) / d_;
+    const Interval again = divide_by_positive(rho(k1_) - rho(k2_), d_);
     const Interval narrower(std::fmax(s_.lo, again.lo), std::fmin(s_.hi, again.hi));
     if (!(narrower.lo <= narrower.hi)) return false;
     s_ = narrower;

@@ -3,6 +3,7 @@
 // bit patterns of every exponent and sign; the outward rounding of every
 // interval operation rests on them.
 #include "util/interval.hpp"
+#include "util/positive_divisor.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -80,6 +81,35 @@ TEST_CASE("Interval products: the NaN-ignoring hull of the four endpoint product
         CHECK(c.hi == (hi == inf ? inf : std::nextafter(hi, inf)));
     }
     CHECK(with_nan_product > 1000);  // the 0 * inf path is exercised
+}
+
+TEST_CASE("divide_by_positive is operator/ by a positive divisor, bit for bit", "[interval]") {
+    // Two quotients instead of operator/'s four (ArrivalNormalBox's hot
+    // path): the very doubles, on special and random endpoints, infinite and
+    // signed-zero ones included (inf / inf goes to operator/).
+    using limits = std::numeric_limits<double>;
+    const double inf = limits::infinity();
+    const double endpoints[] = {0.0, -0.0, 1.0, -1.0, 3.5, -2.25, inf, -inf, limits::denorm_min(), -limits::max(), 1e300};
+    const double positive[] = {limits::denorm_min(), 1.0, 3.5, 1e300, limits::max(), inf};
+    auto bits_of = [](double x) {
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        return b;
+    };
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> uniform(-10, 10), above_zero(1e-3, 10);
+    std::uniform_int_distribution<int> choice(0, 14), positive_choice(0, 8);
+    auto pick = [&](int n) { return n < 11 ? endpoints[n] : uniform(rng); };
+    auto pick_positive = [&](int n) { return n < 6 ? positive[n] : above_zero(rng); };
+    for (int n = 0; n < 200000; ++n) {
+        const double a0 = pick(choice(rng)), a1 = pick(choice(rng)), b0 = pick_positive(positive_choice(rng)),
+                     b1 = pick_positive(positive_choice(rng));
+        const Interval a(std::fmin(a0, a1), std::fmax(a0, a1)), b(std::fmin(b0, b1), std::fmax(b0, b1));
+        const Interval fast = divide_by_positive(a, b), general = a / b;
+        INFO(a.lo << " " << a.hi << " over " << b.lo << " " << b.hi);
+        CHECK(bits_of(fast.lo) == bits_of(general.lo));
+        CHECK(bits_of(fast.hi) == bits_of(general.hi));
+    }
 }
 
 TEST_CASE("Interval::around is {down(x), up(x)}, bit for bit", "[interval]") {
