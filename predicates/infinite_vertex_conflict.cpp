@@ -138,8 +138,8 @@ constexpr int kNormalBoxContractions = 2;
 int infinite_vertex_conflict_in_normal_box(const Ellipse& e1, const Ellipse& e2, const Ellipse& q) {
     const Ellipse::Enclosure& kq = q.enclosure();
     if (!(kq.a.finite() && kq.b.finite() && kq.xc.finite() && kq.yc.finite())) return 0;
-    const Ellipse::Enclosure k1 = e1.enclosure();  // made once (sites/ellipse.hpp)
-    std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(k1, e2.enclosure());
+    const Ellipse::Enclosure k1 = e1.enclosure(), k2 = e2.enclosure();  // made once (sites/ellipse.hpp)
+    std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(k1, k2);
     if (!box) return 0;
     // Q far from L is decided on the first box; each contraction costs about
     // as much as a test, and two take most of the rest. The support functions

@@ -199,7 +199,7 @@ bool ArrivalNormalBox::contract() {
         const Interval nu = nx_ * k.cos + ny_ * k.sin, nv = ny_ * k.cos - nx_ * k.sin;
         return (k.a.square() * nu.square() + k.b.square() * nv.square()).sqrt();
     };
-    const Interval again = divide_by_positive(rho(k1_) - rho(k2_), d_);
+    const Interval again = divide_by_positive(rho(*k1_) - rho(*k2_), d_);
     const Interval narrower(std::fmax(s_.lo, again.lo), std::fmin(s_.hi, again.hi));
     if (!(narrower.lo <= narrower.hi)) return false;
     s_ = narrower;

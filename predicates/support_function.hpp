@@ -69,8 +69,8 @@ std::vector<BitangentNormal> certified_bitangent_normals(const Ellipse::Enclosur
 // checks.
 class ArrivalNormalBox {
 public:
-    // nullopt when the disks are not proven apart. The box keeps copies of
-    // k1 and k2 (an Ellipse makes its enclosure on each call).
+    // nullopt when the disks are not proven apart. The box refers to k1 and
+    // k2 (copying them was a tenth of its cost): they must outlive it.
     static std::optional<ArrivalNormalBox> of(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2);
     // An enclosure of the unit normal (its vectors need not be unit).
     Interval nx() const { return nx_; }
@@ -80,9 +80,9 @@ public:
     bool contract();
 
 private:
-    ArrivalNormalBox(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) : k1_(k1), k2_(k2) {}
+    ArrivalNormalBox(const Ellipse::Enclosure& k1, const Ellipse::Enclosure& k2) : k1_(&k1), k2_(&k2) {}
     void set_box();
-    Ellipse::Enclosure k1_, k2_;
+    const Ellipse::Enclosure *k1_, *k2_;
     Interval d_, ex_, ey_, s_, nx_, ny_;
 };
 

@@ -127,7 +127,8 @@ TEST_CASE("support function: the arrival normal box holds the arrival tangent's 
         const Ellipse e1 = random_ellipse(rng), e2 = random_ellipse(rng);
         if (!separated({&e1, &e2})) continue;
         INFO(oracle::ell({&e1, &e2}));
-        std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(e1.enclosure(), e2.enclosure());
+        const Ellipse::Enclosure k1 = e1.enclosure(), k2 = e2.enclosure();  // the box refers to them
+        std::optional<ArrivalNormalBox> box = ArrivalNormalBox::of(k1, k2);
         const double d = std::hypot(e2.enclosure().xc.mid() - e1.enclosure().xc.mid(),
                                     e2.enclosure().yc.mid() - e1.enclosure().yc.mid());
         const double R1 = std::fmax(e1.enclosure().a.mid(), e1.enclosure().b.mid());
