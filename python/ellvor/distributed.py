@@ -237,8 +237,17 @@ def _outer_polygon(params):
     its site (within half an ulp a coordinate of the center; the site holds the disk of radius min(a, b)).
     Returns (Q's corners, the sites giving them)."""
     a, b, _, xc, yc = params.T
-    directions = [(math.cos(2 * math.pi * k / 32), math.sin(2 * math.pi * k / 32)) for k in range(32)]
-    chosen = sorted({int(np.argmax(dx * xc + dy * yc)) for dx, dy in directions})
+    angles = 2 * np.pi * np.arange(32) / 32
+    directions = np.stack([np.cos(angles), np.sin(angles)])
+    # The extreme site in each direction, a block of sites at a time (one product, no pass a direction);
+    # any choice of them would do (the test below makes Q's corners safe), so rounding does not matter.
+    best, best_value = np.zeros(32, dtype=np.int64), np.full(32, -np.inf)
+    for start in range(0, len(params), 4096):   # blocks of 1 MB of products: malloc reuses them
+        values = params[start:start + 4096, 3:5] @ directions
+        k = np.argmax(values, axis=0)
+        better = values[k, np.arange(32)] > best_value
+        best[better], best_value[better] = start + k[better], values[k, np.arange(32)][better]
+    chosen = sorted(set(best.tolist()))
     ok = [k for k in chosen if np.spacing(abs(xc[k])) + np.spacing(abs(yc[k])) < 0.5 * min(a[k], b[k])]
     return _convex_hull([(float(xc[k]), float(yc[k])) for k in ok]), ok
 
@@ -594,8 +603,13 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     everything = (float(boxes[:, 0].min()), float(boxes[:, 1].max()), float(boxes[:, 2].min()),
                   float(boxes[:, 3].max())) if n else (0.0, 0.0, 0.0, 0.0)
 
+    # Tiles are sent their sites' global ids, and send back faces by them, as int32 where n allows: half
+    # the bytes (every large message costs copies at both ends).
+    id_type = np.int32 if n < 2 ** 31 else np.int64
+
     def submit_tile(ids, region, rect, whole):
-        return _submit(client, _tile_task, _payload(sites, fractions, ids), ids, boxes[ids], region, rect, everything, whole)
+        return _submit(client, _tile_task, _payload(sites, fractions, ids), ids.astype(id_type), boxes[ids], region, rect,
+                       everything, whole)
 
     def one_build(reason):
         result = submit_tile(all_ids, (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
@@ -607,7 +621,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
                 "faces_kept": result["certified"], "retries": 0, "seconds": result["seconds"],
                 "cpu_seconds": result["cpu_seconds"], "build_cpu_seconds": result["build_cpu_seconds"],
                 "rss_mb": result["rss_mb"]}
-        return TiledDiagram(sites, _sorted_rows(result["hidden"], 2), result["edges"],
+        return TiledDiagram(sites, _sorted_rows(result["hidden"], 2), result["edges"].astype(np.int64),
                             _sorted_rows(result["faces"], 3), _sorted_rows(result["hull"], 2), [tile],
                             {"rounds": 1, "fallback": reason, "hull_candidates": n,
                              "seconds": time.perf_counter() - start})
@@ -648,7 +662,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
 
     def submit_hull():
         candidates, polygon = _hull_candidates(params, boxes, halos.max())
-        return candidates, _submit(client, _hull_task, _payload(sites, fractions, candidates), candidates, polygon,
+        return candidates, _submit(client, _hull_task, _payload(sites, fractions, candidates), candidates.astype(id_type), polygon,
                                    halos.max())
 
     # Round 1: the tiles.
@@ -717,7 +731,8 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
                 return one_build(f"the patch around site {p} holds the whole set")
             patch_halo[p] *= 2
             batches.setdefault(int(owner[p]), []).append(
-                (_payload(sites, fractions, held), held, boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything, False))
+                (_payload(sites, fractions, held), held.astype(id_type), boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything,
+                 False))
             tiles[int(owner[p])]["retries"] += 1
         futures = {t: _submit(client, _patches_task, jobs) for t, jobs in batches.items()}
         for t, f in futures.items():
