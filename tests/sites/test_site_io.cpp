@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
+#include <random>
 #include <sstream>
 #include <unistd.h>
 
@@ -299,6 +301,38 @@ TEST_CASE("InputError keeps its location, reason and site pair as fields", "[sit
     const InputError e = crossing_sites_error(file, 1, 0, "why");
     CHECK(std::string(e.what()) == "c.ell:4:1: site 1 crosses site 0 (line 2): why");
     CHECK(*e.sites() == InputError::SitePair{0, 1});
+}
+
+TEST_CASE("check_site_set: the first duplicate in order, as comparing every pair finds it (randomized)", "[sites][io]") {
+    // Few centers (a 3 x 3 grid), few shapes and rotations: centers meet often (the index's collisions and
+    // growth), point sets repeat (a circle at any rotation, swapped axes a quarter turn apart).
+    std::mt19937_64 random(11);
+    auto pick = [&](int n) { return static_cast<long>(random() % static_cast<unsigned>(n)); };
+    const Rational rotations[] = {q(0), q(1), q(-1), q(1, 3)};
+    int duplicates = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        SiteFile file;
+        const long count = 2 + pick(40);
+        for (long k = 0; k < count; ++k) {
+            const long a = 1 + pick(3), b = 1 + pick(3);
+            file.sites.push_back(Ellipse(q(a), q(b), rotations[pick(4)], q(10 * pick(3)), q(10 * pick(3))));
+        }
+        std::optional<InputError::SitePair> expected;
+        for (std::size_t j = 0; j < file.sites.size() && !expected; ++j)
+            for (std::size_t i = 0; i < j && !expected; ++i)
+                if (file.sites[i].point_set_key() == file.sites[j].point_set_key()) expected = InputError::SitePair{i, j};
+        INFO("trial " << trial);
+        try {
+            check_site_set(file);
+            CHECK(!expected);
+        } catch (const InputError& e) {
+            REQUIRE(expected);
+            CHECK(*e.sites() == *expected);
+            ++duplicates;
+        }
+    }
+    CHECK(duplicates > 100);
+    CHECK(duplicates < 300);
 }
 
 TEST_CASE("check_site_set: the reader's set checks for sites without a file", "[sites][io]") {
