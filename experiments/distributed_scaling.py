@@ -10,7 +10,7 @@ N random ellipses (`ellvor.generate("ellipses", N, seed=1)`, default N = 10^5; -
 packing_fraction=0.6)`, default P = 10^5; 0: none):
   - the single build, `ellvor.build(sites)`, in a child process: its wall time (insertions only, and the
     whole call) and the child's peak resident memory;
-  - per tile count, `ellvor.distributed.build(sites, tiles, client)` on a fresh LocalCluster of W worker
+  - per tile count, `ellvor.distributed.build(sites, tiles, client)` on a fresh `ellvor.distributed.local_cluster(W)` of W worker
     processes (default 2, one thread each): wall time of the call (client work, shipping, tiles, hull),
     speed-up against the single build's whole call, peak resident memory of each worker process,
     halo overhead (halo sites / owned sites over all tiles), hull candidates, retry rounds and patches.
@@ -73,7 +73,7 @@ def same_cells(a, b):
 
 
 def cells_rows(count, workers, tilings):
-    from distributed import Client, LocalCluster
+    from distributed import Client
     sites = ellvor.generate("ellipses", count, seed=1)
     box = (-110, -110, 110, 110)   # the generator's centers and sites lie in [-100, 100]^2
     start, cpu = time.perf_counter(), time.process_time()
@@ -82,8 +82,7 @@ def cells_rows(count, workers, tilings):
     print(f"[distributed] cells n={count} single: {single_wall:.2f} s", file=sys.stderr)
     rows = []
     for tiles in tilings:
-        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-                Client(cluster) as client:
+        with ed.local_cluster(workers) as cluster, Client(cluster) as client:
             client.run(lambda: __import__("ellvor.distributed"))
             start, cpu = time.perf_counter(), time.process_time()
             c = ed.cells(sites, box=box, rings=False, tiles=tiles, client=client)
@@ -104,9 +103,8 @@ def worker_rss_mb():
 
 
 def tiled_build(sites, tiles, workers, single):
-    from distributed import Client, LocalCluster
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-            Client(cluster) as client:
+    from distributed import Client
+    with ed.local_cluster(workers) as cluster, Client(cluster) as client:
         client.run(lambda: __import__("ellvor.distributed"))   # imports outside the timed call
         baseline = client.run(worker_rss_mb)
         start, cpu = time.perf_counter(), time.process_time()
@@ -219,7 +217,7 @@ def main():
                       f"({n} sites made in {s['generated']:.0f} s)" for (kind, n), s in singles.items()
                       if kind == "packing")) + ". Single: `ellvor.build` in a child "
              "process (wall and CPU time of the call; resident memory with the graph built). Tiled: "
-             f"`ellvor.distributed.build(sites, tiles, client)` on a fresh LocalCluster of {args.workers} worker "
+             f"`ellvor.distributed.build(sites, tiles, client)` on a fresh `ellvor.distributed.local_cluster({args.workers})` (Dask's profiler off) of {args.workers} worker "
              "processes, one thread each (wall time of the call, shipping and client work included; the tiles' "
              "CPU time, of which their graphs' builds, and the client's; the largest resident memory of a worker with a tile's graph built, "
              "against the single build's (ratio), and an idle worker's for scale). Halo overhead: halo "
@@ -263,7 +261,7 @@ def main():
                   f"{args.cells} random ellipses (`ellvor.generate(\"ellipses\", {args.cells}, seed=1)`) in the box "
                   "(-110, -110, 110, 110), T = 1e-9, no rings. Single: `ellvor.build(sites).cells(box=..., "
                   "rings=False)` in this process. Tiled: `ellvor.distributed.cells(sites, box=..., rings=False, tiles=..., "
-                  f"client=...)` on a fresh LocalCluster of {args.workers} worker processes (wall time of the call; the "
+                  f"client=...)` on a fresh `ellvor.distributed.local_cluster({args.workers})` (Dask's profiler off) of {args.workers} worker processes (wall time of the call; the "
                   "tiles' CPU time, patches and the whole-set task included; cells proven in tiles or patches, "
                   "and computed in one task of the whole set). Checked equal: visibility, neighbours, overlapping "
                   "area intervals.", "",

@@ -8,6 +8,8 @@
     for path, d in ellvor.distributed.map(snapshots):                  # one whole diagram per file, as they finish
         ...
     c = ellvor.distributed.cells(sites, box=(0, 0, 100, 100))         # the Cells of ellvor.build(sites).cells(...)
+    with ellvor.distributed.local_cluster(2) as cluster, Client(cluster) as client:   # Client of distributed
+        d = ellvor.distributed.build(sites, client=client)             # one cluster for many calls
 
 Each tile builds the diagram of the sites near it (its own and a halo) and keeps
 only the faces it can prove are faces of the whole diagram; the seam argument,
@@ -537,12 +539,24 @@ class TiledDiagram:
                 f"{len(self.edges)} Delaunay edges, {len(self.faces)} faces, {how}, {self.stats['rounds']} rounds>")
 
 
+def local_cluster(workers=None):
+    """A dask.distributed LocalCluster as ``build`` and ``cells`` start one when not given a client: ``workers``
+    worker processes (default: one per core), one thread each, no dashboard, and Dask's statistical profiler off
+    in the workers (it samples each worker's stack every 10 ms: ~7% of a tile build's CPU on the project's
+    machine, experiments/results/distributed.md). Use it as a context manager, or close() it."""
+    import dask
+    from distributed import LocalCluster
+    # The workers take the configuration in force when the cluster starts them.
+    with dask.config.set({"distributed.worker.profile.enabled": False}):
+        return LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                            dashboard_address=None)
+
+
 def _client_for(client):
     """(client, close): a Client for the argument; close() ends what was started here."""
-    from distributed import Client, LocalCluster
+    from distributed import Client
     if client is None:
-        cluster = LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+        cluster = local_cluster()
         c = Client(cluster)
 
         def close():
