@@ -8,8 +8,8 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <sstream>
 
 namespace ellvor::python {
