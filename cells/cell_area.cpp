@@ -263,6 +263,11 @@ public:
         // terms the area's width stays well below T * area.
         mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
         MeasureSums sums;
+        // The edges' pieces bound their distance from the center between the
+        // midpoints of the end balls; beyond, up to the true end angles, V
+        // moves at most the ball's radius times |V'| (the length density).
+        double reach = 0;
+        bool reach_known = true;
         for (std::size_t k = 0; k < m; ++k) {
             NormalRayBisector& bisector = *bisectors[k];
             NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor], bisector.signed_tie());
@@ -271,10 +276,11 @@ public:
             for (int j = 0; j < MeasureIntervals::count; ++j)
                 tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
             bool integrated = false;
+            double edge_reach = 0;
             if (in_doubles) {
                 const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
                 if (const std::optional<MeasureIntervals> I =
-                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature)) {
+                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature, &edge_reach)) {
                     add_to_pairs(as_balls(*I), unit, prec, sums);
                     integrated = true;
                     ++r.edges_in_doubles;
@@ -285,7 +291,7 @@ public:
                 Ball middles[2];
                 for (int i = 0; i < 2; ++i) arb_get_mid_arb(middles[i].get(), ends[i].get());
                 if (const std::optional<NormalRayBisector::Densities> I = integrate_edge_in_arb(
-                        bisector_in_doubles, bisector, rules_, middles, tolerances, prec, &r.quadrature)) {
+                        bisector_in_doubles, bisector, rules_, middles, tolerances, prec, &r.quadrature, &edge_reach)) {
                     add_to_pairs(*I, unit, prec, sums);
                     integrated = true;
                     ++r.edges_by_nodes_in_arb;
@@ -294,6 +300,7 @@ public:
             if (!integrated) {
                 if (!integrate_with_arb(bisector, ends, goal, tol, unit, prec, sums)) return std::nullopt;
                 ++r.edges_by_arb;
+                reach_known = false;
             }
             // The pieces between the certified end angles and their midpoints:
             // at most the radius times a bound of the density on the ball
@@ -319,6 +326,10 @@ public:
                     mag_mul(bound.get(), bound.get(), radius.get());
                     acb_add_error_mag(sums.pairs[pair].get(), bound.get());
                 }
+                Mag moved;
+                acb_get_mag(moved.get(), d.length.get());
+                mag_mul(moved.get(), moved.get(), radius.get());
+                reach = std::max(reach, std::nextafter(edge_reach + mag_get_d(moved.get()), INFINITY));
             }
         }
         arb_add(r.area.get(), r.site_area.get(), acb_realref(sums.pairs[0].get()), prec);
@@ -328,6 +339,7 @@ public:
         const double w = 2 * arf_get_d(width.get(), ARF_RND_UP), l = arf_get_d(lo.get(), ARF_RND_DOWN);
         if (!(l > 0) || !(w <= tolerance_ * l)) return std::nullopt;
         finish_moments(site, sums, unit, prec, r);
+        r.reach = reach_known ? reach : INFINITY;
         return r;
     }
 

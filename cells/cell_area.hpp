@@ -12,6 +12,7 @@
 #include "sites/ellipse.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -49,6 +50,11 @@ struct CellArea {
     Ball perimeter;
     std::array<Ball, 2> centroid;
     std::array<Ball, 3> second_moments;
+    // Bounded cells: an upper bound (rounded up) of |x - the site's center|
+    // over the cell's boundary, from the certificates of the quadrature's
+    // pieces (cells/edge_quadrature.hpp); +inf when an edge went to Arb's
+    // integrator, which gives none.
+    double reach = INFINITY;
     long precision = 0;      // Arb precision of the pass that met the tolerance (0: none was needed)
     // The stages that integrated the edges in that pass
     // (cells/edge_quadrature.hpp): Gauss-Legendre in double intervals (goals

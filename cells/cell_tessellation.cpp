@@ -109,10 +109,10 @@ PlaneSites neighbourhood_of_originals(const PlaneSites& all, const std::vector<c
 // for the torus the certificate; areas come after (cell_areas).
 class OriginalCells {
 public:
-    // Edges are covered to boundary_tolerance (for the rings and the torus's
-    // certificate) when `covers`, and the rings kept when `rings`.
-    OriginalCells(const PlaneSites& sites, double boundary_tolerance, bool covers, bool rings)
-        : covers_(covers), rings_(rings), sites_(sites), graph_(built_graph(sites.sites)),
+    // Edges are covered to boundary_tolerance: for the rings when `rings`,
+    // else for the reach of the cells whose areas gave none.
+    OriginalCells(const PlaneSites& sites, double boundary_tolerance, bool rings)
+        : rings_(rings), sites_(sites), graph_(built_graph(sites.sites)),
           cells_(voronoi_cells(*graph_, face_numbers(*graph_))), angles_(*graph_, sites_.sites) {
         double size = 0;
         for (const Ellipse& e : sites.sites) size = std::max(size, std::max(e.a().to_double(), e.b().to_double()));
@@ -123,9 +123,9 @@ public:
     const DelaunayGraph& graph() const { return *graph_; }
     const VoronoiCell& cell(SiteId s) const { return cells_[s]; }
 
-    // Sides (neighbours as input ids, walls merged), ring and, returned, the
-    // largest distance from the site's center to its cell (+inf unless bounded).
-    double describe(SiteId s, Cell& out, std::map<long, long>& vertex_ids) {
+    // Sides (neighbours as input ids, walls merged) and, with rings, the ring
+    // and the cell's reach (+inf without, or unless bounded).
+    void describe(SiteId s, Cell& out, std::map<long, long>& vertex_ids) {
         const VoronoiCell& cell = cells_[s];
         for (const CellEdge& e : cell.edges) {
             CellSide side;
@@ -149,7 +149,14 @@ public:
             out.sides.front().from = out.sides.back().from;
             out.sides.pop_back();
         }
-        if (!cell.bounded() || !covers_) return INFINITY;
+        if (rings_ && out.bounded) out.reach = cover(s, &out.ring);
+    }
+
+    // The largest distance from the site's center to its bounded cell (an
+    // upper bound, rounded up), by covering the cell's edges; their points
+    // appended to `ring` when given.
+    double cover(SiteId s, std::vector<std::array<double, 2>>* ring) {
+        const VoronoiCell& cell = cells_[s];
         const Ellipse& site = sites_.sites[s];
         const std::vector<Ball> lifted = angles_.lifted(cell, cover_.prec + 24);
         double reach = 0;
@@ -159,7 +166,7 @@ public:
                 // The wall is a straight side between two vertices: its first
                 // vertex stands for it (the next side starts at the second),
                 // and its farthest point from the center is one of them.
-                if (rings_) out.ring.push_back(vertex_point(e.from));
+                if (ring) ring->push_back(vertex_point(e.from));
                 for (long face : {e.from, e.to}) {
                     const BallPoint v = angles_.vertex(face, cover_.prec + 24);
                     reach = std::max(reach, distance_bound(EdgeCoverBox{v.x, v.y, {}}, site.xc(), site.yc(), cover_.prec));
@@ -168,7 +175,7 @@ public:
             }
             NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
             for (const EdgeCoverBox& box : voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_)) {
-                if (rings_) out.ring.insert(out.ring.end(), box.points.begin(), box.points.end());
+                if (ring) ring->insert(ring->end(), box.points.begin(), box.points.end());
                 reach = std::max(reach, std::min(distance_bound(box, site.xc(), site.yc(), cover_.prec),
                                                  polyline_distance_bound(box, site)));
             }
@@ -222,7 +229,7 @@ private:
         return {v.x.mid_double(), v.y.mid_double()};
     }
 
-    bool covers_, rings_;
+    bool rings_;
     const PlaneSites& sites_;
     std::unique_ptr<DelaunayGraph> graph_;
     std::vector<VoronoiCell> cells_;
@@ -234,6 +241,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
                 const std::vector<char>& wanted, CellTessellation& out) {
     CellAreaOptions o;
     o.tolerance = options.tolerance;
+    o.arb_integrator_only = options.arb_integrator_only;
     // Only the wanted originals' cells: the mirrors' and copies' are not wanted.
     for (SiteId s = 0; s < sites.originals; ++s)
         if (wanted[s]) o.only.push_back(s);
@@ -252,6 +260,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
         c.perimeter = areas[s].perimeter;
         c.centroid = areas[s].centroid;
         c.second_moments = areas[s].second_moments;
+        c.reach = std::min(c.reach, areas[s].reach);
     }
 }
 
@@ -281,10 +290,8 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
         if (s >= sites.size()) throw InputError("cells: asked for the cell of site " + std::to_string(s) + " of " + std::to_string(sites.size()));
         wanted[s] = 1;
     }
-    const bool covers = options.rings || options.reach;
     std::unique_ptr<PlaneSites> plane;
     std::unique_ptr<OriginalCells> cells;
-    std::vector<double> reach(sites.size());
     std::map<long, long> vertex_ids;
     auto describe_all = [&]() {
         std::vector<SiteId> originals;
@@ -305,53 +312,65 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             if (!wanted[s]) continue;
             c.visible = cells->cell(s).visible;
             c.bounded = c.visible && cells->cell(s).bounded();
-            reach[s] = cells->describe(s, c, vertex_ids);
-            if (c.bounded) c.reach = reach[s];
+            cells->describe(s, c, vertex_ids);
             if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
         }
     };
+    // The areas, and each bounded cell's reach where it is asked for: the
+    // areas' (or the rings', the less), else by covering the cell's edges.
+    auto measure_all = [&](bool with_reach) {
+        fill_areas(*plane, cells->graph(), options, wanted, out);
+        for (SiteId s = 0; with_reach && s < sites.size(); ++s)
+            if (wanted[s] && out.cells[s].bounded && std::isinf(out.cells[s].reach))
+                out.cells[s].reach = cells->cover(s, nullptr);
+    };
     switch (domain.kind) {
         case CellDomain::Kind::plane:
             plane = std::make_unique<PlaneSites>(plane_sites(sites));
-            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, covers, options.rings);
+            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings);
             describe_all();
+            measure_all(options.reach);
             break;
         case CellDomain::Kind::box:
             plane = std::make_unique<PlaneSites>(
                 neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain)), wanted));
-            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, covers, options.rings);
+            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings);
             describe_all();
+            measure_all(options.reach);
             break;
         case CellDomain::Kind::periodic: {
             Rational e_max(0);
             for (const Ellipse& e : sites) e_max = std::max({e_max, e.a(), e.b()});
             const long first = starting_rings(sites, domain);
-            // Without rings the certificate needs only coarse covers: an
-            // eighth of the smaller period.
+            // Without rings the certificate needs only coarse covers (for
+            // the cells whose areas give no reach): an eighth of the smaller
+            // period.
             const double cover_tolerance =
                 options.rings ? boundary_tolerance
                               : std::min((domain.x1 - domain.x0).to_double(), (domain.y1 - domain.y0).to_double()) / 8;
             // Each ring more moves the missing copies a period farther out;
             // a cell that still reaches them after three more is an Error.
+            // (The areas are measured with each try: the first nearly always
+            // proves every cell.)
             for (long rings = first;; ++rings) {
                 if (rings > first + 3)
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
                                 std::to_string(rings - 1) + " rings of copies");
                 plane = std::make_unique<PlaneSites>(
                     neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings)), wanted));
-                cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, true, options.rings);
+                cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, options.rings);
                 describe_all();
+                measure_all(true);
                 bool proven = true;
                 for (SiteId s = 0; s < sites.size() && proven; ++s)
                     proven = !wanted[s] || !out.cells[s].visible ||
-                             periodic_cell_is_proven(reach[s], sites[s], distance_to_missing_copies(sites[s], domain, rings), e_max);
+                             periodic_cell_is_proven(out.cells[s].reach, sites[s], distance_to_missing_copies(sites[s], domain, rings), e_max);
                 if (proven) break;
             }
             break;
         }
     }
-    fill_areas(*plane, cells->graph(), options, wanted, out);
     out.vertices = cells->vertices(vertex_ids, cell_area_precision(options.tolerance));
     return out;
 }

@@ -1,5 +1,6 @@
 #include "cells/edge_quadrature.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -22,9 +23,9 @@ constexpr double kRho = 2;
 constexpr int kMaxDepth = 40;
 constexpr int kMaxPieces = 1 << 18;
 
-// Upper bounds of |density j| over the complex box of the Bernstein ellipse
-// of [a, b]; nothing when the certificate fails there.
-std::optional<std::array<double, kMeasures>> bounds_on_ellipse(NormalRayInDoubles& bisector, const Interval& mid,
+// The bounds of NormalRayInDoubles::bounds_on_box over the complex box of the
+// Bernstein ellipse of [a, b]; nothing when the certificate fails there.
+std::optional<NormalRayInDoubles::BoxBounds> bounds_on_ellipse(NormalRayInDoubles& bisector, const Interval& mid,
                                                                const Interval& half) {
     // Semi-axes h (rho + 1/rho) / 2 and h (rho - 1/rho) / 2, rounded up, plus
     // the uncertainty of the middle.
@@ -54,10 +55,13 @@ double gauss_error(const Interval& half, double M, double factor) { return (half
 // meets the piece's share of every tolerance by the bound of the complex box
 // (in doubles), then integrate_piece(A, B, n, error), which sums the rule on
 // [A, B] and returns false when a node cannot be certified. A piece whose box
-// or nodes fail is halved. False when that goes too deep or too long.
+// or nodes fail is halved. False when that goes too deep or too long. `reach`
+// is raised to the pieces' bounds of |V - p's center| (their boxes hold
+// [a.lo, b.hi]).
 template <class IntegratePiece>
 bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Interval& b,
-                      const double (&tolerance)[kMeasures], QuadratureCounts& count, IntegratePiece&& integrate_piece) {
+                      const double (&tolerance)[kMeasures], QuadratureCounts& count, double& reach,
+                      IntegratePiece&& integrate_piece) {
     struct Piece {
         double a, b;
         int depth;
@@ -85,32 +89,34 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
         if (piece.b - piece.a > 2 * certified_width && halve()) continue;
         const Interval A = end(piece.a), B = end(piece.b);
         const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
-        const std::optional<std::array<double, kMeasures>> M = bounds_on_ellipse(bisector, mid, half);
-        if (!M) {
+        const std::optional<NormalRayInDoubles::BoxBounds> bounds = bounds_on_ellipse(bisector, mid, half);
+        if (!bounds) {
             ++count.failed_boxes;
             if (!halve()) return false;
             continue;
         }
         certified_width = piece.b - piece.a;
+        const std::array<double, kMeasures>& M = bounds->density;
         // The least n that meets every measure's share of its tolerance.
         const double share = (piece.b - piece.a) / length;
         int n = 1;
         for (int j = 0; j < kMeasures; ++j)
             while (n <= GaussLegendreRules::kMaxPoints &&
-                   !(gauss_error(half, (*M)[j], factor[n]) <= tolerance[j] * share))
+                   !(gauss_error(half, M[j], factor[n]) <= tolerance[j] * share))
                 ++n;
         if (n > GaussLegendreRules::kMaxPoints) {
             if (!halve()) return false;
             continue;
         }
         std::array<double, kMeasures> error;
-        for (int j = 0; j < kMeasures; ++j) error[j] = gauss_error(half, (*M)[j], factor[n]);
+        for (int j = 0; j < kMeasures; ++j) error[j] = gauss_error(half, M[j], factor[n]);
         count.nodes += n;
         if (!integrate_piece(A, B, n, error)) {
             if (!halve()) return false;
             continue;
         }
         ++count.pieces;
+        reach = std::max(reach, bounds->center_distance);
     }
     return true;
 }
@@ -129,8 +135,9 @@ ComplexBall& measure(NormalRayBisector::Densities& d, int j) {
 
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
                                                double b, const double (&tolerance)[kMeasures],
-                                               QuadratureCounts* counts) {
+                                               QuadratureCounts* counts, double* reach) {
     QuadratureCounts local;
+    double local_reach = 0;
     MeasureIntervals total;
     for (Interval& x : total.m) x = Interval(0.0);
     // An edge between two equal vertices (four cocircular sites) adds nothing.
@@ -149,7 +156,8 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
         for (int j = 0; j < kMeasures; ++j) total.m[j] = total.m[j] + half * sum.m[j] + Interval(-error[j], error[j]);
         return true;
     };
-    if (!integrate_pieces(bisector, Interval(a), Interval(b), tolerance, counts ? *counts : local, integrate_piece))
+    if (!integrate_pieces(bisector, Interval(a), Interval(b), tolerance, counts ? *counts : local,
+                          reach ? *reach : local_reach, integrate_piece))
         return std::nullopt;
     return total;
 }
@@ -158,8 +166,9 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
                                                                   NormalRayBisector& bisector,
                                                                   GaussLegendreRules& rules, const Ball (&ends)[2],
                                                                   const double (&tolerance)[kMeasures], long prec,
-                                                                  QuadratureCounts* counts) {
+                                                                  QuadratureCounts* counts, double* reach) {
     QuadratureCounts local;
+    double local_reach = 0;
     NormalRayBisector::Densities total;
     // An edge between two equal vertices (four cocircular sites) adds nothing.
     if (arb_equal(ends[0].get(), ends[1].get())) return total;
@@ -199,7 +208,9 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
         }
         return true;
     };
-    if (!integrate_pieces(bounds, a, b, tolerance, counts ? *counts : local, integrate_piece)) return std::nullopt;
+    if (!integrate_pieces(bounds, a, b, tolerance, counts ? *counts : local, reach ? *reach : local_reach,
+                          integrate_piece))
+        return std::nullopt;
     return total;
 }
 

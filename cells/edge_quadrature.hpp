@@ -26,18 +26,21 @@
 namespace ellvor {
 
 // tolerance[j]: the absolute tolerance of measure j over the whole [a, b].
-// `counts`, when given, is added to.
+// `counts`, when given, is added to. `reach`, when given, is raised to an
+// upper bound of |V(theta) - p's center| over [a, b], from the pieces'
+// certificates: how far the edge gets from its site (the cell's reach).
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
                                                double b, const double (&tolerance)[MeasureIntervals::count],
-                                               QuadratureCounts* counts = nullptr);
+                                               QuadratureCounts* counts = nullptr, double* reach = nullptr);
 
 // The same measures at precision prec, between the exact angles `ends`
 // (balls of radius zero): the certificate of `bounds`, the nodes by
-// `bisector` (the same pair of sites).
+// `bisector` (the same pair of sites); `counts` and `reach` as above.
 std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDoubles& bounds,
                                                                   NormalRayBisector& bisector,
                                                                   GaussLegendreRules& rules, const Ball (&ends)[2],
                                                                   const double (&tolerance)[MeasureIntervals::count],
-                                                                  long prec, QuadratureCounts* counts = nullptr);
+                                                                  long prec, QuadratureCounts* counts = nullptr,
+                                                                  double* reach = nullptr);
 
 }  // namespace ellvor

@@ -352,6 +352,7 @@ struct NormalRayInDoubles::BoxRoot {
     ComplexInterval s, ds;               // s and s' over the box
     double s0, slope;                    // s = s0 + slope (theta - mid) + e(theta),
     ComplexInterval remainder;           // e(theta) in remainder
+    double center_distance;              // |V - p's center| <= this at the real angles of the box
 };
 
 std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
@@ -474,14 +475,20 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         const CI K(sym(k_bound[0]), sym(k_bound[0]));  // x_model(theta) + K holds s(theta)
         Model higher = s_model;  // s - (x_0 + x_1 d) - K
         higher.c[0] = higher.c[1] = {0, 0};
+        // |V - C|^2 as a model, on the box's real segment: there the root,
+        // hence V, is real (normal_ray_bisector.hpp), so its square lies in
+        // the enclosure's real part. (Far tighter than |V - C| over the
+        // whole complex box: the first order is the radial speed only.)
+        const Model vx = bp_model.x + X[0] * bp_model.nx - p_.xc, vy = bp_model.y + X[0] * bp_model.ny - p_.yc;
+        const Interval distance2 = (vx * vx + vy * vy).enclose(CI(sym(along), Interval(0.0))).re;
+        if (!(distance2.hi >= 0 && std::isfinite(distance2.hi))) return std::nullopt;
         return BoxRoot{bp,     s_model.enclose(dtheta) + K, -(on_box.F_theta[1].enclose(dtheta) / g_s),  // s' = -g_theta / g_s
-                       x0[0], x[0][1],   higher.enclose(dtheta) + K};
+                       x0[0], x[0][1],   higher.enclose(dtheta) + K, Interval(distance2.hi).sqrt().hi};
     }
     return std::nullopt;
 }
 
-std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::bounds_on_box(double mid, double along,
-                                                                                          double across) {
+std::optional<NormalRayInDoubles::BoxBounds> NormalRayInDoubles::bounds_on_box(double mid, double along, double across) {
     using CI = ComplexInterval;
     const std::optional<BoxRoot> r = box_root(mid, along, across);
     if (!r) return std::nullopt;
@@ -496,7 +503,8 @@ std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::b
         m[k] = m[k] + ab * power * kInverse[k + 1];
     }
     const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
-    std::array<double, MeasureIntervals::count> M;
+    BoxBounds out;
+    std::array<double, MeasureIntervals::count>& M = out.density;
     M[MeasureIntervals::area] = m[0].magnitude();
     for (int i = 0; i < 2; ++i) M[MeasureIntervals::first_x + i] = (rel[i] * m[0] + nrm[i] * m[1]).magnitude();
     const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
@@ -510,9 +518,10 @@ std::optional<std::array<double, MeasureIntervals::count>> NormalRayInDoubles::b
     const CI v2 = dot(vx, vy, vx, vy);
     if (!v2.re.positive()) return std::nullopt;
     M[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
+    out.center_distance = r->center_distance;
     for (double x : M)
         if (!std::isfinite(x)) return std::nullopt;
-    return M;
+    return out;
 }
 
 std::optional<NormalRayInDoubles::LinearModel> NormalRayInDoubles::linear_model(double mid, double along,

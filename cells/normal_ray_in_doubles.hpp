@@ -52,11 +52,17 @@ public:
     std::optional<MeasureIntervals> densities(const Interval& theta);
     // The bisector point V = P + s n~ at every angle in `theta`; likewise.
     std::optional<std::array<Interval, 2>> point(const Interval& theta);
-    // Upper bounds of the densities' moduli (MeasureIntervals' order) over
-    // the complex box mid +- along + i (+- across) of theta, where the same
-    // certificate, on Taylor models about the root's polynomial in theta,
-    // proves them holomorphic; nothing when it fails.
-    std::optional<std::array<double, MeasureIntervals::count>> bounds_on_box(double mid, double along, double across);
+    // Upper bounds over the complex box mid +- along + i (+- across) of
+    // theta, where the same certificate, on Taylor models about the root's
+    // polynomial in theta, proves the densities holomorphic: of the
+    // densities' moduli (MeasureIntervals' order), and of |V - p's center|
+    // at the box's real angles (how far the edge gets from p's center).
+    // Nothing when the certificate fails.
+    struct BoxBounds {
+        std::array<double, MeasureIntervals::count> density;
+        double center_distance;
+    };
+    std::optional<BoxBounds> bounds_on_box(double mid, double along, double across);
     // The root's linear model on that box, from the same certificate: for
     // every theta there s(theta) = s0 + s1 (theta - mid) + e(theta), e
     // holomorphic with |e| <= remainder; and |n~| <= normal there.

@@ -1018,7 +1018,8 @@ def _tiled_cells(client, sites, box, periodic, rectangle, tolerance, boundary_to
         area = float((hi[0] - lo[0]) * (hi[1] - lo[1]))
         spacing = math.sqrt(area / n) if area > 0 else float(max(hi - lo)) / n
         h0 = halo if halo is not None else 4 * spacing + 1e-300
-        # The edge covers bound the reach; without rings coarsely (a few per cent of a spacing off is plenty).
+        # The areas' quadrature bounds the reach; edge covers where it gives none (Arb's integrator), without rings
+        # coarsely (a few per cent of a spacing off is plenty).
         cover = boundary_tolerance if rings else spacing / 8
         walls = None
         if rectangle is not None:

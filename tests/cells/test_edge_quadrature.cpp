@@ -239,12 +239,46 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold
         const bool large = trial % 2;
         const double mid = facing_angle(p, q) + 0.4 * unit(rng), along = sizes[large][0], across = sizes[large][1];
         ++(large ? large_boxes : boxes);
-        const std::optional<std::array<double, MeasureIntervals::count>> M = fast.bounds_on_box(mid, along, across);
+        const std::optional<NormalRayInDoubles::BoxBounds> bounds = fast.bounds_on_box(mid, along, across);
         const std::optional<NormalRayInDoubles::LinearModel> model = fast.linear_model(mid, along, across);
         // One certificate: the bounds need it and more (Re V' . V' > 0 on the box).
-        CHECK((!M || model));
-        if (!M || !model) continue;
+        CHECK((!bounds || model));
+        if (!bounds || !model) continue;
+        const std::array<double, MeasureIntervals::count>& M = bounds->density;
         ++(large ? large_bounded : bounded);
+        // The center distance at real angles: V - C = a cos u + b sin v + s n~
+        // at 128 bits, u and v p's axes (normal_ray_bisector.hpp).
+        const SiteBalls site(p, 128);
+        for (int k = 0; k < 4; ++k) {
+            ComplexBall theta, s;
+            arb_set_d(theta.real(), mid + along * unit(rng));
+            REQUIRE(arb.solve(theta, 128, s));
+            Ball c, sn, d[2], t;
+            arb_cos(c.get(), theta.real(), 128);
+            arb_sin(sn.get(), theta.real(), 128);
+            // Along u: a cos + s b cos; along v: b sin + s a sin.
+            Ball along_u, along_v;
+            arb_mul(t.get(), acb_realref(s.get()), site.b.get(), 128);
+            arb_add(t.get(), t.get(), site.a.get(), 128);
+            arb_mul(along_u.get(), t.get(), c.get(), 128);
+            arb_mul(t.get(), acb_realref(s.get()), site.a.get(), 128);
+            arb_add(t.get(), t.get(), site.b.get(), 128);
+            arb_mul(along_v.get(), t.get(), sn.get(), 128);
+            // (x, y) = along_u (cos, sin) + along_v (-sin, cos) of the rotation.
+            arb_mul(d[0].get(), along_u.get(), site.cos.get(), 128);
+            arb_submul(d[0].get(), along_v.get(), site.sin.get(), 128);
+            arb_mul(d[1].get(), along_u.get(), site.sin.get(), 128);
+            arb_addmul(d[1].get(), along_v.get(), site.cos.get(), 128);
+            arb_sqr(d[0].get(), d[0].get(), 128);
+            arb_addmul(d[0].get(), d[1].get(), d[1].get(), 128);
+            arb_sqrt(d[0].get(), d[0].get(), 128);
+            Arf lower;
+            arb_get_lbound_arf(lower.get(), d[0].get(), 128);
+            INFO("trial " << trial << " |V - C| " << d[0].str(20) << " bound " << bounds->center_distance);
+            CHECK(arf_get_d(lower.get(), ARF_RND_DOWN) <= bounds->center_distance);
+            // Within the box's width of the true value: a bound, not a guess at infinity.
+            CHECK(bounds->center_distance <= 2 * arf_get_d(lower.get(), ARF_RND_UP) + 10 * (along + across));
+        }
         for (int k = 0; k < 8; ++k) {
             ComplexBall z;
             arb_set_d(z.real(), mid + along * unit(rng));
@@ -271,8 +305,8 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold
             for (int j = 0; j < MeasureIntervals::count; ++j) {
                 Mag m;
                 acb_get_mag_lower(m.get(), values[j]->get());
-                INFO("trial " << trial << " measure " << j << " bound " << (*M)[j]);
-                CHECK(mag_get_d(m.get()) <= (*M)[j]);
+                INFO("trial " << trial << " measure " << j << " bound " << M[j]);
+                CHECK(mag_get_d(m.get()) <= M[j]);
             }
         }
     }
