@@ -3,6 +3,7 @@
 #include "util/complex_interval.hpp"
 #include "util/complex_taylor_model.hpp"
 #include "util/interval_trig.hpp"
+#include "util/upward_interval.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,6 +15,14 @@ namespace {
 using Site = NormalRayInDoubles::Site;
 
 double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
+double magnitude(const UpwardInterval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
+
+// A site's enclosures for the node's certificate (the same bounds).
+struct UpwardSite {
+    UpwardInterval a, b, c, s, xc, yc;
+    explicit UpwardSite(const Site& e)
+        : a(e.a), b(e.b), c(e.c), s(e.s), xc(e.xc), yc(e.yc) {}
+};
 
 Interval sym(double r) { return {-r, r}; }
 
@@ -25,7 +34,7 @@ T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
 }
 
-Interval square(const Interval& x) { return x.square(); }
+UpwardInterval square(const UpwardInterval& x) { return x.square(); }
 ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
 
@@ -33,7 +42,7 @@ double square(double x) { return x * x; }
 // lengths N^2 near the reals); elsewhere an unbounded enclosure, which fails
 // every later check.
 double root_of(double x) { return std::sqrt(x); }
-Interval root_of(const Interval& x) { return x.lo > 0 ? x.sqrt() : Interval(-INFINITY, INFINITY); }
+UpwardInterval root_of(const UpwardInterval& x) { return x.lo > 0 ? x.sqrt() : UpwardInterval(-INFINITY, INFINITY); }
 template <int N>
 ComplexTaylorModel<N> root_of(const ComplexTaylorModel<N>& a) {
     return principal_root(a);
@@ -41,9 +50,10 @@ ComplexTaylorModel<N> root_of(const ComplexTaylorModel<N>& a) {
 
 // A site's boundary at an angle with the given sine and cosine: the point,
 // the unnormalized outward normal n~, their derivatives in the angle, and
-// N^2 = |n~|^2 (as Boundary in normal_ray_bisector.cpp). T: Interval for the
-// certificate, the site a Site; double for Newton, the site its EllipseShape
-// (the same member names).
+// N^2 = |n~|^2 (as Boundary in normal_ray_bisector.cpp). T: UpwardInterval
+// for a node's certificate, the site an UpwardSite; double for Newton, the
+// site its EllipseShape; Taylor models for the box's, the site a Site (the
+// same member names).
 template <class T>
 struct Frame {
     // What a frame holds: always the point and n~; q's frames the tangent
@@ -114,22 +124,25 @@ struct System {
 };
 
 // (V - Q) . n~q: positive when V lies outside q along its normal at Q.
-Interval side(const Frame<Interval>& bp, const Frame<Interval>& bq, const Interval& s) {
+template <class T>
+T side(const Frame<T>& bp, const Frame<T>& bq, const T& s) {
     return dot(bp.x + s * bp.nx - bq.x, bp.y + s * bp.ny - bq.y, bq.nx, bq.ny);
 }
 
-bool strictly_inside(const Interval& x, double r) { return x.lo > -r && x.hi < r; }
+template <class T>
+bool strictly_inside(const T& x, double r) { return x.lo > -r && x.hi < r; }
 
 // The Krawczyk image about the point, K = -C F + (I - C J(X)) Y, and whether
 // it lies in the interior of Y (each component within +- r_i).
-bool krawczyk_inside(const double (&C)[2][2], const Interval (&CF)[2], const Interval (&J)[2][2],
-                     const Interval (&Y)[2], const double (&r)[2], Interval (&K)[2]) {
+template <class T>
+bool krawczyk_inside(const double (&C)[2][2], const T (&CF)[2], const T (&J)[2][2], const T (&Y)[2],
+                     const double (&r)[2], T (&K)[2]) {
     bool inside = true;
     for (int i = 0; i < 2; ++i) {
         K[i] = -CF[i];
         for (int j = 0; j < 2; ++j) {
-            Interval m = -(C[i][0] * J[0][j] + C[i][1] * J[1][j]);
-            if (i == j) m = m + Interval(1.0);
+            T m = -(C[i][0] * J[0][j] + C[i][1] * J[1][j]);
+            if (i == j) m = m + T(1.0);
             K[i] = K[i] + m * Y[j];
         }
         inside = inside && strictly_inside(K[i], r[i]);
@@ -200,55 +213,17 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
     return false;
 }
 
-// The certified root at an interval of theta: s, its derivative s', and p's
-// boundary there.
-struct NormalRayInDoubles::Root {
-    Frame<Interval> bp;
-    Interval s, ds;
-    double x0[2];  // Newton's (s, phi), about which it was certified
-};
-
 std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& theta) {
-    const std::optional<Root> r = root(theta);
-    if (!r) return std::nullopt;
-    const Frame<Interval>& bp = r->bp;
-    const Interval &s = r->s, &ds = r->ds;
-    // The densities of NormalRayBisector::densities, in intervals.
-    const Interval ab = p_.a * p_.b;
-    Interval m[3], power = s;  // power = s^(k+1)
-    for (int k = 0; k < 3; ++k) {
-        m[k] = bp.n2 * power * kInverse[k];
-        power = power * s;
-        m[k] = m[k] + ab * power * kInverse[k + 1];
-    }
-    const Interval rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
-    MeasureIntervals out;
-    out.m[MeasureIntervals::area] = m[0];
-    for (int i = 0; i < 2; ++i) out.m[MeasureIntervals::first_x + i] = rel[i] * m[0] + nrm[i] * m[1];
-    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
-    for (int k = 0; k < 3; ++k) {
-        const int i = pairs[k][0], j = pairs[k][1];
-        out.m[MeasureIntervals::second_xx + k] =
-            rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2];
-    }
-    const Interval vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
-    const Interval v2 = dot(vx, vy, vx, vy);
-    if (!v2.positive()) return std::nullopt;
-    out.m[MeasureIntervals::length] = v2.sqrt();
-    for (const Interval& x : out.m)
-        if (!x.finite()) return std::nullopt;
-    return out;
+    std::optional<Node> n = node(theta);
+    return n ? n->densities : std::nullopt;
 }
 
 std::optional<std::array<Interval, 2>> NormalRayInDoubles::point(const Interval& theta) {
-    const std::optional<Root> r = root(theta);
-    if (!r) return std::nullopt;
-    const std::array<Interval, 2> v = {r->bp.x + r->s * r->bp.nx, r->bp.y + r->s * r->bp.ny};
-    if (!v[0].finite() || !v[1].finite()) return std::nullopt;
-    return v;
+    std::optional<Node> n = node(theta);
+    return n ? n->point : std::nullopt;
 }
 
-std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval& theta) {
+std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval& theta) {
     const double theta0 = theta.mid();
     if (!std::isfinite(theta0)) return std::nullopt;
     // Newton in doubles from the last node's root, which Gauss nodes, close
@@ -257,7 +232,7 @@ std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::root(const Interval&
     // rejects).
     double x0[2], C[2][2];
     if (newton(theta0, last_, x0, C))
-        if (std::optional<Root> r = certified(theta, x0, C)) return r;
+        if (std::optional<Node> n = certified(theta, x0, C)) return n;
     double start[2];
     if (!ray_start(theta0, start) || !newton(theta0, start, x0, C)) return std::nullopt;
     return certified(theta, x0, C);
@@ -275,58 +250,130 @@ bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
     return true;
 }
 
-std::optional<NormalRayInDoubles::Root> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2],
-                                                                      const double (&C)[2][2]) {
-    // F(x0) over the whole interval of theta (C, Newton's inverse of the
-    // Jacobian, may be any matrix to the proof).
-    Interval sin, cos;
-    sin_cos(theta, sin, cos);
-    const Frame<Interval> bp(p_, sin, cos);
-    Interval sin_phi, cos_phi;
-    sin_cos(Interval(x0[1]), sin_phi, cos_phi);
-    const Frame<Interval> bq0(q_, sin_phi, cos_phi, q_parts<Interval>(signed_));
-    const Interval s0(x0[0]);
-    Interval F[2];
-    Differences<Interval>(bp, bq0, s0).residual(bp, bq0, s0, signed_, F);
+namespace {
+
+// What certify_node reads: the pair, Newton's point x0 and inverse C, and the
+// sines and cosines at theta (an interval) and at x0's phi.
+struct NodeInput {
+    const Site &p, &q;
+    bool is_signed;
+    const Interval &medial_p, &medial_q;  // r_p, r_q
+    const double (&q_slack)[2];           // NormalRayInDoubles::q_slack_
+    Interval sin_theta, cos_theta, sin_phi, cos_phi;
+    const double (&x0)[2];
+    const double (&C)[2][2];
+};
+
+// The Krawczyk test about x0 with epsilon-inflation, F(x0) over the whole
+// interval of theta (C may be any matrix to the proof), and at the root it
+// proves the densities and the point V. All of it under the upward rounding
+// mode (util/upward_interval.hpp: one rounding an operation, no widening
+// step; these operations in Interval were about half of a cell's time). The
+// sines and cosines come from the caller (util/interval_trig.hpp needs
+// round-to-nearest); over phi0 +- r they follow from those at phi0:
+// sin(phi0 + t) = sin phi0 cos t + cos phi0 sin t, cos t in [1 - r^2/2, 1],
+// |sin t| <= min(r, 1). False when the root is not certified; the densities
+// are left empty when |V'|^2 > 0 or finiteness is not proved.
+ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::optional<MeasureIntervals>& densities,
+                                                  std::optional<std::array<Interval, 2>>& point) {
+    using U = UpwardInterval;
+    const UpwardRoundingScope upward;
+    const UpwardSite p(in.p), q(in.q);
+    const bool is_signed = in.is_signed;
+    const double(&x0)[2] = in.x0;
+    const double(&C)[2][2] = in.C;
+    const Frame<U> bp(p, U(in.sin_theta), U(in.cos_theta));
+    const U sin_phi(in.sin_phi), cos_phi(in.cos_phi);
+    const Frame<U> bq0(q, sin_phi, cos_phi, q_parts<U>(is_signed));
+    const U s0(x0[0]);
+    U F[2];
+    Differences<U>(bp, bq0, s0).residual(bp, bq0, s0, is_signed, F);
     // K = -C F(x0) + (I - C J(X)) (X - x0) inside the interior of X - x0?
-    Interval CF[2];
+    U CF[2];
     for (int i = 0; i < 2; ++i) CF[i] = C[i][0] * F[0] + C[i][1] * F[1];
     double r[2];
     for (int i = 0; i < 2; ++i) r[i] = 2 * magnitude(CF[i]) + std::ldexp(1 + std::fabs(x0[i]), -44);
+    const U medial_p(in.medial_p), medial_q(in.medial_q);
     for (int attempt = 0; attempt < 3; ++attempt) {
-        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
-        const Interval s = Interval(x0[0]) + sym(r[0]);
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return false;
+        const U s = s0 + U(-r[0], r[0]);
         // s > 0, or s > -r_p with the signed tie (normal_ray_bisector.hpp).
-        if (!(signed_ ? s + medial_p_ : s).positive()) return std::nullopt;
+        if (!(is_signed ? s + medial_p : s).positive()) return false;
         // On phi0 +- r: sine and cosine move by at most r (their derivatives
-        // are at most 1), and q's frame, linear in them, by r times q_slack_
-        // (the whole frame of the signed tie from the interval's sine and cosine).
-        Frame<Interval> bq = bq0;
-        if (signed_) {
-            sin_cos(Interval(x0[1]) + sym(r[1]), sin_phi, cos_phi);
-            bq = Frame<Interval>(q_, sin_phi, cos_phi);
+        // are at most 1), and q's frame, linear in them, by r times q_slack
+        // (the whole frame of the signed tie from the widened sine and cosine).
+        Frame<U> bq = bq0;
+        if (is_signed) {
+            const double h = std::min(r[1], 1.0);
+            const U sin_t(-h, h), cos_t(-((r[1] * r[1]) * 0.5 - 1.0), 1.0);
+            bq = Frame<U>(q, sin_phi * cos_t + cos_phi * sin_t, cos_phi * cos_t - sin_phi * sin_t);
         } else {
-            const Interval move[2] = {sym(Interval::up(r[1] * q_slack_[0])), sym(Interval::up(r[1] * q_slack_[1]))};
+            const double mx = r[1] * in.q_slack[0], my = r[1] * in.q_slack[1];  // rounded up
+            const U move[2] = {U(-mx, mx), U(-my, my)};
             bq.x = bq.x + move[0], bq.dx = bq.dx + move[0], bq.ny = bq.ny + move[0];
             bq.y = bq.y + move[1], bq.dy = bq.dy + move[1], bq.nx = bq.nx + move[1];
         }
-        const System<Interval> on_box(q_, bp, bq, s, signed_);
-        const Interval Y[2] = {sym(r[0]), sym(r[1])};
-        Interval K[2];
-        const bool inside = krawczyk_inside(C, CF, on_box.J, Y, r, K);
-        if (!inside) {
+        const System<U> on_box(q, bp, bq, s, is_signed);
+        const U Y[2] = {U(-r[0], r[0]), U(-r[1], r[1])};
+        U K[2];
+        if (!krawczyk_inside(C, CF, on_box.J, Y, r, K)) {
             for (int i = 0; i < 2; ++i) r[i] = std::max(2 * r[i], 2 * magnitude(K[i]));
             continue;
         }
         // V outside q along its normal, or above q's medial axis with the signed tie.
-        if (!(signed_ ? side(bp, bq, s) + medial_q_ * bq.n2 : side(bp, bq, s)).positive()) return std::nullopt;
-        last_[0] = x0[0], last_[1] = x0[1];
+        if (!(is_signed ? side(bp, bq, s) + medial_q * bq.n2 : side(bp, bq, s)).positive()) return false;
         // The root: s in x0 + K; the tie derivatives over X contain their values there.
-        const Interval& g_s = on_box.J[1][0];
-        if (g_s.contains_zero()) return std::nullopt;
-        return Root{bp, Interval(x0[0]) + K[0], -(on_box.F_theta[1] / g_s), {x0[0], x0[1]}};  // s' = -g_theta / g_s
+        const U& g_s = on_box.J[1][0];
+        if (g_s.contains_zero()) return false;
+        const U root = s0 + K[0], ds = -(on_box.F_theta[1] / g_s);  // s' = -g_theta / g_s
+        const U v[2] = {bp.x + root * bp.nx, bp.y + root * bp.ny};
+        if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
+        // The densities of NormalRayBisector::densities.
+        const U ab = p.a * p.b;
+        U m[3], power = root;  // power = s^(k+1)
+        for (int k = 0; k < 3; ++k) {
+            m[k] = bp.n2 * power * U(kInverse[k]);
+            power = power * root;
+            m[k] = m[k] + ab * power * U(kInverse[k + 1]);
+        }
+        const U rel[2] = {bp.x - p.xc, bp.y - p.yc}, nrm[2] = {bp.nx, bp.ny};
+        U out[MeasureIntervals::count];
+        out[MeasureIntervals::area] = m[0];
+        for (int i = 0; i < 2; ++i) out[MeasureIntervals::first_x + i] = rel[i] * m[0] + nrm[i] * m[1];
+        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+        for (int k = 0; k < 3; ++k) {
+            const int i = pairs[k][0], j = pairs[k][1];
+            out[MeasureIntervals::second_xx + k] =
+                rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2];
+        }
+        const U vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
+        const U v2 = dot(vx, vy, vx, vy);
+        if (!v2.positive()) return true;
+        out[MeasureIntervals::length] = v2.sqrt();
+        MeasureIntervals d;
+        for (int j = 0; j < MeasureIntervals::count; ++j) {
+            if (!out[j].finite()) return true;
+            d.m[j] = out[j].interval();
+        }
+        densities = d;
+        return true;
     }
-    return std::nullopt;
+    return false;
+}
+
+}  // namespace
+
+std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2],
+                                                                      const double (&C)[2][2]) {
+    Interval sin, cos, sin_phi, cos_phi;
+    sin_cos(theta, sin, cos);
+    sin_cos(Interval(x0[1]), sin_phi, cos_phi);
+    Node out;
+    if (!certify_node({p_, q_, signed_, medial_p_, medial_q_, q_slack_, sin, cos, sin_phi, cos_phi, x0, C},
+                      out.densities, out.point))
+        return std::nullopt;
+    last_[0] = x0[0], last_[1] = x0[1];
+    return out;
 }
 
 namespace {

@@ -1,5 +1,6 @@
 // The cell densities of cells/normal_ray_bisector.hpp at one real angle
-// theta, certified in outward-rounded double intervals (util/interval.hpp).
+// theta, certified in double intervals (under the upward rounding mode:
+// util/upward_interval.hpp; the .cpp is compiled with its flags).
 // These are the quadrature nodes of the cell integrals: at a tolerance of
 // 1e-9 they need about 40 bits, and Arb's complex balls cost ten times what
 // the doubles do there.
@@ -84,13 +85,18 @@ private:
     bool newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const;
     // Newton's start from the bisector point on p's normal ray at theta.
     bool ray_start(double theta, double (&start)[2]) const;
-    struct Root;
+    // What a node gives: the densities and the bisector point, each absent
+    // where the certificate of the root holds but theirs does not.
+    struct Node {
+        std::optional<MeasureIntervals> densities;
+        std::optional<std::array<Interval, 2>> point;
+    };
     struct BoxRoot;
     std::optional<BoxRoot> box_root(double mid, double along, double across);
-    // The certified root at theta, from the last root or from the ray.
-    std::optional<Root> root(const Interval& theta);
+    // The certified node at theta, from the last root or from the ray.
+    std::optional<Node> node(const Interval& theta);
     // The certificate about the point x0 (Newton's root).
-    std::optional<Root> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2]);
+    std::optional<Node> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2]);
 
     Site p_, q_;
     bool signed_;

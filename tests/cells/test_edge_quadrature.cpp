@@ -11,6 +11,7 @@
 #include <acb_calc.h>
 #include <catch2/catch.hpp>
 
+#include <cfenv>
 #include <cmath>
 #include <random>
 
@@ -139,6 +140,8 @@ TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bit
         if (!densities_at_200_bits(arb, theta, reference)) continue;
         ++compared;
         const std::optional<MeasureIntervals> d = fast.densities(Interval(theta));
+        // The node computes under the upward rounding mode and restores the caller's.
+        CHECK(std::fegetround() == FE_TONEAREST);
         if (!d) continue;
         ++certified;
         INFO("trial " << trial);
