@@ -317,11 +317,11 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
         }
     };
-    // The areas, and each bounded cell's reach where it is asked for: the
-    // areas' (or the rings', the less), else by covering the cell's edges.
-    auto measure_all = [&](bool with_reach) {
+    // The areas, and each bounded cell's reach: the areas' (or the rings',
+    // the less), else by covering the cell's edges.
+    auto measure_all = [&]() {
         fill_areas(*plane, cells->graph(), options, wanted, out);
-        for (SiteId s = 0; with_reach && s < sites.size(); ++s)
+        for (SiteId s = 0; s < sites.size(); ++s)
             if (wanted[s] && out.cells[s].bounded && std::isinf(out.cells[s].reach))
                 out.cells[s].reach = cells->cover(s, nullptr);
     };
@@ -330,14 +330,14 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             plane = std::make_unique<PlaneSites>(plane_sites(sites));
             cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings);
             describe_all();
-            measure_all(options.reach);
+            measure_all();
             break;
         case CellDomain::Kind::box:
             plane = std::make_unique<PlaneSites>(
                 neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain)), wanted));
             cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings);
             describe_all();
-            measure_all(options.reach);
+            measure_all();
             break;
         case CellDomain::Kind::periodic: {
             Rational e_max(0);
@@ -361,7 +361,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
                     neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings)), wanted));
                 cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, options.rings);
                 describe_all();
-                measure_all(true);
+                measure_all();
                 bool proven = true;
                 for (SiteId s = 0; s < sites.size() && proven; ++s)
                     proven = !wanted[s] || !out.cells[s].visible ||

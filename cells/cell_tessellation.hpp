@@ -37,13 +37,8 @@ struct CellOptions {
     // others are left as Cell{} (with their id: not visible, no sides). Every
     // site still shapes the wanted cells.
     std::vector<SiteId> only;
-    // True: bound each cell's extent (Cell::reach) for the tiled cells'
-    // certificate (python/ellvor/distributed.py, docs/DESIGN.md §8): from the
-    // areas' quadrature (CellArea::reach), else by covering the cell's edges
-    // at boundary_tolerance, as the rings do.
-    bool reach = false;
-    // Every edge by Arb's integrator, which gives no reach: the covers then
-    // give it (tests reach both so).
+    // Every edge by Arb's integrator, which gives no reach (Cell::reach):
+    // covers of the edges then give it (tests reach both so).
     bool arb_integrator_only = false;
     // Called after each cell's measures (done, total); may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
@@ -92,9 +87,11 @@ struct Cell {
     long precision = 0;                       // Arb precision that met the tolerance
     std::size_t edges_in_doubles = 0, edges_by_nodes_in_arb = 0, edges_by_arb = 0;  // its integrals' stages (CellArea)
     QuadratureCounts quadrature;                         // CellArea's
-    // With CellOptions::reach, rings or a periodic box, an upper bound
-    // (rounded up) of |x - c| over the points x of the cell's boundary, c the
-    // site's center; +inf otherwise and for unbounded or hidden cells.
+    // Bounded cells: an upper bound (rounded up) of |x - c| over the points x
+    // of the cell's boundary, c the site's center (for the periodic and the
+    // tiled cells' certificates: docs/DESIGN.md §8, §10), from the areas'
+    // quadrature, else from covers of the edges at the boundary tolerance;
+    // +inf for unbounded or hidden cells.
     double reach = INFINITY;
 };
 

@@ -42,7 +42,7 @@ class Cells:
     ``vertices_lo``, ``vertices_hi`` (m, 2): the Voronoi vertices; ``vertex_sites``, ``vertex_walls``
     (m, 3), ``vertex_shifts`` (m, 3, 2): the three sites of each vertex's face (a mirror's wall 1-4,
     a periodic copy's shift). ``reach``: per cell a bound of its boundary's distance from its site's
-    center (with rings; else inf). ``regions``, ``point_region``:
+    center (inf for unbounded and hidden cells). ``regions``, ``point_region``:
     scipy.spatial.Voronoi's shape. ``rings()``: the boundaries as polylines.
     """
 

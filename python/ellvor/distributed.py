@@ -804,7 +804,7 @@ def _cells_task(payload, ids, shifts, want, boxes, semi_axes, domain, tolerance,
     try:
         # (Sites without lines: an error names the sites by id, mapped to global ids below.)
         core = _ellvor._cells(_local_sites(payload), box, periodic, tolerance, boundary_tolerance, rings,
-                              want.tolist(), not whole)
+                              want.tolist())
     except InputError as e:
         return _error_result(e, ids)
     a = core.arrays()

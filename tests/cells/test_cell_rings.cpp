@@ -94,7 +94,6 @@ TEST_CASE("cells of some sites (only) are their cells among all and their reach 
     const CellTessellation whole = cell_tessellation(sites, box, all);
     CellOptions some;
     some.rings = false;
-    some.reach = true;
     // The reach from the areas' quadrature, or (Arb's integrator gives none)
     // from covers of the edges.
     some.arb_integrator_only = GENERATE(false, true);

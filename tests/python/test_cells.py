@@ -148,6 +148,26 @@ def test_rings_and_geojson(cli, sites_path, computed, tmp_path):
     assert len(doc["features"]) == sum(1 for r in rings if len(r))
 
 
+def test_reach_bounds_every_ring_point_with_or_without_rings(computed):
+    """A bounded cell's reach (from the areas' quadrature; the rings' covers only lower it) is at least the
+    distance of every ring point from the site's center, less the ring's tolerance; hidden and unbounded
+    cells have none."""
+    d, c = computed
+    plain = d.cells(rings=False)
+    assert not any(len(r) for r in plain.rings())
+    centers = np.array([[float(Fraction(e.xc)), float(Fraction(e.yc))] for e in d.sites])
+    bounded = 0
+    for k, ring in enumerate(c.rings()):
+        if not c.bounded[k]:
+            assert math.isinf(c.reach[k]) and math.isinf(plain.reach[k])
+            continue
+        bounded += 1
+        far = np.hypot(*(ring - centers[k]).T).max()
+        for reach in (c.reach[k], plain.reach[k]):
+            assert far - c.boundary_tolerance <= reach <= 1.1 * far + c.boundary_tolerance
+    assert bounded == 2
+
+
 @pytest.mark.parametrize("kwargs, message", [
     ({"tolerance": 0}, "tolerance: expected a number in (0, 1], got 0"),
     ({"tolerance": 2}, "tolerance: expected a number in (0, 1], got 2"),
