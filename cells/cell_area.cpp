@@ -25,10 +25,7 @@ constexpr double kTwoPi = 6.28318530717958647692;
 // A double interval as a real ball.
 ComplexBall to_ball(const Interval& x) {
     ComplexBall z;
-    Arf lo, hi;
-    arf_set_d(lo.get(), x.lo);
-    arf_set_d(hi.get(), x.hi);
-    arb_set_interval_arf(z.real(), lo.get(), hi.get(), 64);
+    arb_set(z.real(), ball_of(x, 64).get());
     return z;
 }
 

@@ -183,10 +183,11 @@ public:
         return reach;
     }
 
-    // The vertices to at least the precision of the areas' end angles (cell_area.cpp).
-    std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids, long area_prec) {
+    // The vertices at precision prec (CellVertexAngles::vertex), or the
+    // rings' when they are finer.
+    std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids, long prec) {
         std::vector<CellVertex> out(vertex_ids.size());
-        const long prec = std::max(cover_.prec + 24, area_prec);
+        if (rings_) prec = std::max(prec, cover_.prec + 24);
         const std::vector<std::array<SiteId, 3>> faces = graph_->faces();
         for (const auto& [face, id] : vertex_ids) {
             BallPoint v = angles_.vertex(face, prec);
@@ -371,7 +372,9 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             break;
         }
     }
-    out.vertices = cells->vertices(vertex_ids, cell_area_precision(options.tolerance));
+    // The vertices to 12 bits beyond the tolerance's (as the areas' end
+    // angles): at 1e-9 what the circles certified in doubles give.
+    out.vertices = cells->vertices(vertex_ids, static_cast<long>(std::ceil(-std::log2(options.tolerance))) + 12 + 24);
     return out;
 }
 

@@ -68,12 +68,7 @@ Ball CellVertexAngles::angle(long face, SiteId site, long prec) {
     const int i = position(face, site);
     if (prec - 24 <= kBitsInDoubles)
         if (const DoubleVoronoiCircle* d = circle_in_doubles(face)) {
-            Ball t;
-            Arf lo, hi;
-            arf_set_d(lo.get(), d->parameter[i].lo);
-            arf_set_d(hi.get(), d->parameter[i].hi);
-            arb_set_interval_arf(t.get(), lo.get(), hi.get(), prec);
-            Ball theta = angle_of_parameter(t, d->flipped[i], prec);
+            Ball theta = angle_of_parameter(ball_of(d->parameter[i], prec), d->flipped[i], prec);
             if (mag_cmp_2exp_si(arb_radref(theta.get()), 24 - prec) <= 0) {
                 ++angles_from_doubles_;
                 return theta;
@@ -87,6 +82,15 @@ Ball CellVertexAngles::angle(long face, SiteId site, long prec) {
 }
 
 BallPoint CellVertexAngles::vertex(long face, long prec) {
+    if (prec - 24 <= kBitsInDoubles)
+        if (const DoubleVoronoiCircle* d = circle_in_doubles(face)) {
+            BallPoint v{ball_of(d->center_x, prec), ball_of(d->center_y, prec)};
+            // As the solver's refine(prec - 24): that many correct bits in each.
+            if (arb_rel_accuracy_bits(v.x.get()) >= prec - 24 && arb_rel_accuracy_bits(v.y.get()) >= prec - 24) {
+                ++vertices_from_doubles_;
+                return v;
+            }
+        }
     VoronoiCircleSolver& s = solver(face, prec);
     BallPoint v{s.enclosure().center_x, s.enclosure().center_y};
     s.release_charts();

@@ -28,14 +28,16 @@ public:
     // `face`, theta = 2 atan(t) (or pi + 2 atan(u) in the flipped chart), its
     // radius about 2^(24 - prec) (at most that when it comes from the doubles).
     Ball angle(long face, SiteId site, long prec);
-    // The center of the Voronoi circle of face number `face`, refined to prec - 24 bits.
+    // The center of the Voronoi circle of face number `face`, to prec - 24
+    // correct bits (from the circle in doubles when that gives them).
     BallPoint vertex(long face, long prec);
     // The m + 1 angles of a bounded cell's m vertices (the first again at the
     // end), lifted so that consecutive differences lie in [0, 2 pi) (within
     // the balls) and the last is the first plus 2 pi; Error otherwise.
     std::vector<Ball> lifted(const VoronoiCell& cell, long prec);
-    // How many angles so far came from the circles certified in doubles.
+    // How many angles and vertices so far came from the circles certified in doubles.
     long angles_from_doubles() const { return angles_from_doubles_; }
+    long vertices_from_doubles() const { return vertices_from_doubles_; }
 
 private:
     VoronoiCircleSolver& solver(long face, long prec);
@@ -49,7 +51,7 @@ private:
     std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers_;
     std::vector<std::optional<DoubleVoronoiCircle>> circles_in_doubles_;
     std::vector<char> tried_in_doubles_;
-    long angles_from_doubles_ = 0;
+    long angles_from_doubles_ = 0, vertices_from_doubles_ = 0;
 };
 
 }  // namespace ellvor

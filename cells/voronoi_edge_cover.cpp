@@ -60,15 +60,6 @@ bool real_ray_points(NormalRayBisector& bisector, const SiteBalls& p, const Ball
     return true;
 }
 
-Ball real_ball(double l, double h, long prec) {
-    Arf al, ah;
-    arf_set_d(al.get(), l);
-    arf_set_d(ah.get(), h);
-    Ball theta;
-    arb_set_interval_arf(theta.get(), al.get(), ah.get(), prec);
-    return theta;
-}
-
 double magnitude_up(const acb_t z) {
     Mag m;
     acb_get_mag(m.get(), z);
@@ -126,7 +117,7 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
     }
 
     // Over J, in real balls.
-    const Ball J = real_ball(l, h, prec);
+    const Ball J = ball_of(Interval(l, h), prec);
     Ball cj, sj, s_lin, u1, v1, u2, v2, A, B;
     arb_sin_cos(sj.get(), cj.get(), J.get(), prec);
     arb_sub(s_lin.get(), J.get(), mid.get(), prec);
@@ -223,7 +214,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                     std::optional<std::array<Interval, 2>> v = points.point(Interval(theta));
                     Ball vx, vy;
                     if (!v) {  // Arb then
-                        if (!real_ray_points(bisector, p, real_ball(theta, theta, prec), prec, vx, vy)) {
+                        if (!real_ray_points(bisector, p, ball_of(Interval(theta), prec), prec, vx, vy)) {
                             gap = INFINITY;
                             break;
                         }
@@ -246,7 +237,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
             }
         }
         // First order.
-        if (!ok && real_ray_points(bisector, p, real_ball(l, h, prec), prec, box.x, box.y)) {
+        if (!ok && real_ray_points(bisector, p, ball_of(Interval(l, h), prec), prec, box.x, box.y)) {
             const std::array<double, 2> c{box.x.mid_double(), box.y.mid_double()};
             ok = hypot_up(gap_bound(box.x, c[0], prec), gap_bound(box.y, c[1], prec)) <= options.radius;
             box.points = {c};

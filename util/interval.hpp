@@ -129,6 +129,17 @@ inline Interval enclose(const Ball& b) {
     return {lo, hi};
 }
 
+// The ball of an interval's points (its ends are doubles: exact at any
+// precision; the ball's radius is rounded up).
+inline Ball ball_of(const Interval& x, long prec) {
+    Arf lo, hi;
+    arf_set_d(lo.get(), x.lo);
+    arf_set_d(hi.get(), x.hi);
+    Ball b;
+    arb_set_interval_arf(b.get(), lo.get(), hi.get(), prec);
+    return b;
+}
+
 // An enclosure of a rational: [down(x^), up(x^)] around its nearest double x^
 // (Rational::to_double), so x^ = up(lo) (circles/semi_static.hpp reads it so).
 inline Interval enclose(const Rational& q) { return Interval::around(q.to_double()); }

@@ -1,5 +1,5 @@
-// Vertex angles (cells/cell_vertex_angles.hpp): at low precision from the
-// circles certified in doubles, beyond from Arb's solver. On random and
+// Vertex angles and vertices (cells/cell_vertex_angles.hpp): at low
+// precision from the circles certified in doubles, beyond from Arb's solver. On random and
 // nested ellipses, every face and each of its sites: the two balls overlap,
 // each is as accurate as promised (radius at most 2^(24 - prec) for the
 // first), and lifting a cell's angles works at both precisions.
@@ -42,7 +42,20 @@ TEST_CASE("vertex angles: the doubles' and Arb's balls overlap, each as accurate
             ++lifted;
         }
     CHECK(lifted > 5);
+    // The vertices (Voronoi circles' centers) likewise, with that many correct bits.
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const BallPoint a = coarse.vertex(static_cast<long>(f), kCoarse), b = fine.vertex(static_cast<long>(f), kFine);
+        INFO("face " << f << ": " << a.x.str(20) << ", " << a.y.str(20) << " and " << b.x.str(40) << ", " << b.y.str(40));
+        CHECK(arb_overlaps(a.x.get(), b.x.get()));
+        CHECK(arb_overlaps(a.y.get(), b.y.get()));
+        CHECK(arb_rel_accuracy_bits(a.x.get()) >= 42);
+        CHECK(arb_rel_accuracy_bits(a.y.get()) >= 42);
+        CHECK(arb_rel_accuracy_bits(b.x.get()) >= 100);
+        CHECK(arb_rel_accuracy_bits(b.y.get()) >= 100);
+    }
     // Which stage answered: the doubles nearly always at 42 bits, never at 100.
     CHECK(coarse.angles_from_doubles() > 3 * static_cast<long>(faces.size()) * 9 / 10);
     CHECK(fine.angles_from_doubles() == 0);
+    CHECK(coarse.vertices_from_doubles() > static_cast<long>(faces.size()) * 8 / 10);
+    CHECK(fine.vertices_from_doubles() == 0);
 }
