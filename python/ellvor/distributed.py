@@ -614,13 +614,18 @@ class TiledDiagram:
 
 def local_cluster(workers=None):
     """A dask.distributed LocalCluster as ``build`` and ``cells`` start one when not given a client: ``workers``
-    worker processes (default: one per core), one thread each, no dashboard, and Dask's statistical profiler off
+    worker processes (default: one per core), one thread each, no dashboard, Dask's statistical profiler off
     in the workers (it samples each worker's stack every 10 ms: ~7% of a tile build's CPU on the project's
-    machine, experiments/results/distributed.md). Use it as a context manager, or close() it."""
+    machine, experiments/results/distributed.md), and glibc's malloc as in any process: Dask sets
+    MALLOC_TRIM_THRESHOLD_=65536 in its workers, which fixes glibc's mmap threshold at 128 kB, so that every
+    large numpy temporary is a fresh mmap whose pages fault in (a tile's seam arithmetic 8-10x slower). Use it
+    as a context manager, or close() it."""
     import dask
     from distributed import LocalCluster
+    environ = {key: value for key, value in dask.config.get("distributed.nanny.pre-spawn-environ").items()
+               if key != "MALLOC_TRIM_THRESHOLD_"}
     # The workers take the configuration in force when the cluster starts them.
-    with dask.config.set({"distributed.worker.profile.enabled": False}):
+    with dask.config.set({"distributed.worker.profile.enabled": False, "distributed.nanny.pre-spawn-environ": environ}):
         return LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
                             dashboard_address=None)
 

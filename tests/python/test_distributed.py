@@ -36,6 +36,9 @@ def test_the_local_cluster_has_its_workers_and_no_profiler(client):
     # Dask samples every worker's stack each 10 ms by default (~7% of a tile's CPU): off in ed.local_cluster.
     settings = client.run(lambda: __import__("dask").config.get("distributed.worker.profile.enabled"))
     assert list(settings.values()) == [False, False]
+    # Nor Dask's malloc trim threshold, which makes glibc mmap every large numpy temporary anew.
+    trim = client.run(lambda: __import__("os").environ.get("MALLOC_TRIM_THRESHOLD_"))
+    assert list(trim.values()) == [None, None]
     assert all(w["nthreads"] == 1 for w in client.scheduler_info()["workers"].values())
 
 
