@@ -204,6 +204,8 @@ def _disks_settled(boxes, region):
         return settled
     x0, y0 = float(lo[0] - g), float(lo[1] - g)
     nx, ny = int(extent[0] / g) + 3, int(extent[1] / g) + 3
+    if nx * ny > 4 * m + 1024:   # a thin strip of sites: its cells' frame would outnumber them
+        return settled
     i = np.floor((mid_x - x0) / g).astype(np.int64)
     j = np.floor((mid_y - y0) / g).astype(np.int64)
     # The center certainly in the open cell: its error and the cell walls' rounding (2^-50 of their size) inside.
