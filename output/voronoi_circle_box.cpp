@@ -1,8 +1,10 @@
 #include "output/voronoi_circle_box.hpp"
 
 #include "exact/medial_axis_tangency.hpp"
+#include "predicates/incircle.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ellvor {
@@ -32,9 +34,29 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
                                     const DoubleVoronoiCircle* c) {
     if (c && tight(*c)) return {c->center_x, c->center_y, c->radius};
     VoronoiCircleSolver solver(sites[face[0]], sites[face[1]], sites[face[2]], common_medial_axis_tangency);
+    // The wide double box (a huge circle) holds the root: Newton and Krawczyk from its middle spare the
+    // solver's guesses and tangent-line starts, milliseconds a huge circle (a tile's hull along its seam).
+    if (c) {
+        solver.certify_near(c->flipped, {c->parameter[0].mid(), c->parameter[1].mid(), c->parameter[2].mid(),
+                                         c->radius.mid(), c->center_x.mid(), c->center_y.mid()});
+    }
     solver.refine_existing(53);  // a face of a graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& e = solver.enclosure();
     return {enclose(e.center_x), enclose(e.center_y), enclose(e.radius)};
+}
+
+bool circle_boxes_meet(const VoronoiCircleBox& a, const VoronoiCircleBox& b) {
+    auto meet = [](const Interval& x, const Interval& y) { return x.lo <= y.hi && y.lo <= x.hi; };
+    return meet(a.center_x, b.center_x) && meet(a.center_y, b.center_y) && meet(a.radius, b.radius);
+}
+
+bool circle_differs_by_site(const std::vector<Ellipse>& sites, const VoronoiCircleBox& box,
+                            const std::array<SiteId, 3>& face, const std::array<SiteId, 3>& other) {
+    for (SiteId q : other) {
+        if (std::find(face.begin(), face.end(), q) != face.end()) continue;
+        if (filtered_distance_minus_radius(box.center_x, box.center_y, box.radius, sites[q]) > 0) return true;
+    }
+    return false;
 }
 
 }  // namespace ellvor

@@ -29,4 +29,15 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
                                     const DoubleVoronoiCircle* doubles);
 
+// Whether the boxes of two circles meet (all three components overlap).
+bool circle_boxes_meet(const VoronoiCircleBox& a, const VoronoiCircleBox& b);
+
+// Whether the Voronoi circle of `face`, certified in `box`, is proven to
+// differ from that of `other` (a face of the same graph) by one circle box:
+// a site of `other` that is not one of `face`'s is off face's circle
+// (delta(V, Q) > rho for all of the box, incircle's double filter), while
+// other's circle touches it. False: not proven (compare both boxes).
+bool circle_differs_by_site(const std::vector<Ellipse>& sites, const VoronoiCircleBox& box,
+                            const std::array<SiteId, 3>& face, const std::array<SiteId, 3>& other);
+
 }  // namespace ellvor

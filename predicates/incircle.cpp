@@ -25,32 +25,6 @@ namespace ellvor {
 
 namespace {
 
-// delta(V, Q) - rho with double intervals (the filter): -1, +1, or 0. Most
-// queries are far from tangent: Q's inscribed and circumscribed circles
-// (radii min and max of a, b about its center C) decide them first, since
-// |V - C| - max(a, b) <= delta(V, Q) <= |V - C| - min(a, b) (signed
-// distances to nested sets), and delta(V, Q) >= -min(a, b). An internal
-// circle (rho < 0) inside Q is left to the Arb stage, which measures the
-// depth.
-int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q) {
-    const Ellipse::Enclosure& k = q.enclosure();
-    const Interval squared_distance = (center_x - k.xc).square() + (center_y - k.yc).square();
-    const Interval outer = radius + Interval(Interval::max(k.a.hi, k.b.hi));
-    if (outer.lo > 0 && squared_distance.lo > outer.square().hi) return 1;
-    const Interval inner = radius + Interval(Interval::min(k.a.lo, k.b.lo));
-    if (inner.hi < 0) return 1;
-    if (inner.lo > 0 && squared_distance.hi < inner.square().lo) return -1;
-    const LocalPoint v = to_local(q, center_x, center_y);
-    const int side = filtered_side(v);
-    if (side < 0) return radius.lo >= 0 ? -1 : 0;  // the center is inside Q: delta < 0 <= rho
-    if (side == 0) return 0;
-    if (radius.hi < 0) return 1;  // outside Q: delta > 0 > rho
-    const Interval distance = outside_distance_bounds(v);
-    if (distance.lo > radius.hi) return 1;
-    if (distance.hi < radius.lo) return -1;
-    return 0;
-}
-
 // When V cannot be placed inside or outside Q it is within rounding of Q's
 // boundary, so |delta(V, Q)| is tiny: below rho > 0 (Q conflicts) or below
 // -rho for an internal circle (it does not), proven by the distance from V
@@ -161,6 +135,25 @@ Decision<InCircle> circle_incircle_exactly(const Ellipse& e1, const Ellipse& e2,
 }
 
 }  // namespace
+
+int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q) {
+    const Ellipse::Enclosure& k = q.enclosure();
+    const Interval squared_distance = (center_x - k.xc).square() + (center_y - k.yc).square();
+    const Interval outer = radius + Interval(Interval::max(k.a.hi, k.b.hi));
+    if (outer.lo > 0 && squared_distance.lo > outer.square().hi) return 1;
+    const Interval inner = radius + Interval(Interval::min(k.a.lo, k.b.lo));
+    if (inner.hi < 0) return 1;
+    if (inner.lo > 0 && squared_distance.hi < inner.square().lo) return -1;
+    const LocalPoint v = to_local(q, center_x, center_y);
+    const int side = filtered_side(v);
+    if (side < 0) return radius.lo >= 0 ? -1 : 0;  // the center is inside Q: delta < 0 <= rho
+    if (side == 0) return 0;
+    if (radius.hi < 0) return 1;  // outside Q: delta > 0 > rho
+    const Interval distance = outside_distance_bounds(v);
+    if (distance.lo > radius.hi) return 1;
+    if (distance.hi < radius.lo) return -1;
+    return 0;
+}
 
 Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
                             const InCircleOptions& options, VoronoiCircle* circle) {

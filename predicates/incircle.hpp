@@ -19,6 +19,17 @@ struct InCircleOptions {
     bool use_symmetry = true;  // false: skip the symmetry stage (tests that reach the exact stage on symmetric sites)
 };
 
+// delta(V, Q) - rho with double intervals (incircle's filter; also the tiled
+// build's test that a site is off a face's circle), for every V and rho in the
+// given intervals: -1, +1, or 0 (undecided). Most
+// queries are far from tangent: Q's inscribed and circumscribed circles
+// (radii min and max of a, b about its center C) decide them first, since
+// |V - C| - max(a, b) <= delta(V, Q) <= |V - C| - min(a, b) (signed
+// distances to nested sets), and delta(V, Q) >= -min(a, b). An internal
+// circle (rho < 0) inside Q is left to the Arb stage, which measures the
+// depth.
+int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q);
+
 // The cascade: for four circles, a closed-form filter in double intervals
 // (circle_incircle_filter.hpp), then the closed form exactly in Q(sqrt D)
 // (circle_predicates.hpp). Otherwise the filter is the circle certified in

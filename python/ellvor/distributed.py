@@ -175,6 +175,72 @@ def _disk_misses_outside(circles, r, everything):
     return ok
 
 
+def _disks_settled(boxes, region):
+    """Per site A (``boxes``: the tile's held sites, all of them): whether every empty disk touching A lies
+    in the interior of the closed rectangle ``region``, so that a face of A needs no circle for its seam test
+    (docs/DESIGN.md §8, "Faces far from the seam"). A grid of g x g cells (g the held sites' spacing) marks
+    the cells whose interior certainly holds a site's center: an interior point of a site. With r0 = 2.9 g
+    (> 2 sqrt(2) g), when every cell meeting A's box widened by r0 (one cell more each way, for rounding) has
+    a marked cell among its 3 x 3 block, an empty disk touching A has radius rho <= r0: were rho > r0, the
+    disk of radius r0 inside it tangent at its touching point a in A has its center V' within r0 of the box;
+    the square of half-side 2 g about V' lies in that smaller disk (2 sqrt(2) g < r0) and holds the closed
+    3 x 3 block of cells about V''s cell, so the disk would hold a site's interior point. Then the disk lies
+    in A's box widened by 2 r0, and that is tested inside the region, in doubles rounded the safe way."""
+    m = len(boxes)
+    settled = np.zeros(m, dtype=bool)
+    if m < 16:
+        return settled
+    mid_x, mid_y = 0.5 * (boxes[:, 0] + boxes[:, 1]), 0.5 * (boxes[:, 2] + boxes[:, 3])
+    # A box is the extent about the rounded center widened alike both ways (Sites._tiling_arrays): its middle
+    # is within a few ulps of the exact center, far within this bound.
+    error_x = 2.0 ** -44 * (np.abs(boxes[:, 0]) + np.abs(boxes[:, 1]))
+    error_y = 2.0 ** -44 * (np.abs(boxes[:, 2]) + np.abs(boxes[:, 3]))
+    lo = np.array([mid_x.min(), mid_y.min()])
+    hi = np.array([mid_x.max(), mid_y.max()])
+    extent = hi - lo
+    g = float(math.sqrt(extent[0] * extent[1] / m)) if extent.min() > 0 else 0.0
+    # Rounding (2^-52 of the coordinates) moves a computed cell index by less than a cell: the padding.
+    if not (np.all(np.isfinite(boxes)) and g > 2.0 ** -30 * float(np.abs(boxes).max())):
+        return settled
+    x0, y0 = float(lo[0] - g), float(lo[1] - g)
+    nx, ny = int(extent[0] / g) + 3, int(extent[1] / g) + 3
+    if nx * ny > 4 * m + 1024:   # a thin strip of sites: its cells' frame would outnumber them
+        return settled
+    i = np.floor((mid_x - x0) / g).astype(np.int64)
+    j = np.floor((mid_y - y0) / g).astype(np.int64)
+    # The center certainly in the open cell: its error and the cell walls' rounding (2^-50 of their size) inside.
+    wall_x = 2.0 ** -50 * (abs(x0) + (i + 1) * g)
+    wall_y = 2.0 ** -50 * (abs(y0) + (j + 1) * g)
+    sure = ((mid_x - error_x - wall_x > x0 + i * g) & (mid_x + error_x + wall_x < x0 + (i + 1) * g) &
+            (mid_y - error_y - wall_y > y0 + j * g) & (mid_y + error_y + wall_y < y0 + (j + 1) * g) &
+            (i >= 0) & (i < nx) & (j >= 0) & (j < ny))
+    marked = np.zeros((nx + 2, ny + 2), dtype=bool)   # a frame of unmarked cells about the grid
+    marked[i[sure] + 1, j[sure] + 1] = True
+    block = np.zeros((nx, ny), dtype=bool)
+    for di in range(3):
+        for dj in range(3):
+            block |= marked[di:di + nx, dj:dj + ny]
+    # Uncovered cells counted over rectangles of cells: a summed-area table.
+    table = np.zeros((nx + 1, ny + 1), dtype=np.int64)
+    table[1:, 1:] = np.cumsum(np.cumsum(~block, axis=0), axis=1)
+    r0 = 2.9 * g
+    i0 = np.floor((boxes[:, 0] - r0 - x0) / g).astype(np.int64) - 1
+    i1 = np.floor((boxes[:, 1] + r0 - x0) / g).astype(np.int64) + 1
+    j0 = np.floor((boxes[:, 2] - r0 - y0) / g).astype(np.int64) - 1
+    j1 = np.floor((boxes[:, 3] + r0 - y0) / g).astype(np.int64) + 1
+    in_grid = (i0 >= 0) & (i1 < nx) & (j0 >= 0) & (j1 < ny)
+    a0, a1 = np.clip(i0, 0, nx - 1), np.clip(i1, 0, nx - 1) + 1
+    b0, b1 = np.clip(j0, 0, ny - 1), np.clip(j1, 0, ny - 1) + 1
+    uncovered = table[a1, b1] - table[a0, b1] - table[a1, b0] + table[a0, b0]
+    reach = 2.0 * r0
+    with np.errstate(invalid="ignore", over="ignore"):
+        inside = ((np.nextafter(boxes[:, 0] - reach, -np.inf) > region[0]) &
+                  (np.nextafter(boxes[:, 1] + reach, np.inf) < region[1]) &
+                  (np.nextafter(boxes[:, 2] - reach, -np.inf) > region[2]) &
+                  (np.nextafter(boxes[:, 3] + reach, np.inf) < region[3]))
+    return in_grid & (uncovered == 0) & inside
+
+
 def _submit(client, fn, *args):
     """client.submit(fn, *args), not pure (each call runs). The sites go in the task itself, not scattered:
     the scheduler keeps a task's arguments, so a task whose worker dies runs again elsewhere (scattered data
@@ -199,10 +265,19 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
         certified = owned = np.ones(len(faces), dtype=bool)
         visible_sure = np.ones(len(ids), dtype=bool)
     else:
-        circle = d.circle_boxes()
-        certified = _disk_misses_outside(circle, region, everything) & ~_possibly_degenerate(d.face_neighbours(), circle)
+        # Faces with a site whose empty disks all lie inside the region need no circle box for the disk test;
+        # the neighbours' test asks only for the boxes it needs (docs/DESIGN.md §8).
+        settled = _disks_settled(boxes, region)[faces].any(axis=1)
+        circle, may_share = d.seam_circles(~settled)
+        certified = (settled | _disk_misses_outside(circle, region, everything)) & ~may_share
         visible_sure = _inside(boxes, region)
-        centers = np.stack([(circle[:, 0] + circle[:, 1]) / 2, (circle[:, 2] + circle[:, 3]) / 2], axis=1)[certified]
+        # Which tile keeps a face (a count only): its circle's center where the box is at hand, else the mean
+        # of its sites' box middles.
+        mid = np.stack([(boxes[:, 0] + boxes[:, 1]) / 2, (boxes[:, 2] + boxes[:, 3]) / 2], axis=1)[faces].mean(axis=1)
+        known = ~np.isnan(circle[:, 0])
+        mid[known] = np.stack([(circle[known, 0] + circle[known, 1]) / 2, (circle[known, 2] + circle[known, 3]) / 2],
+                              axis=1)
+        centers = mid[certified]
         owned = ((centers[:, 0] >= rect[0]) & (centers[:, 0] < rect[1]) & (centers[:, 1] >= rect[2]) &
                  (centers[:, 1] < rect[3]))
     visible_sure[hidden[:, 0]] = False
@@ -541,13 +616,18 @@ class TiledDiagram:
 
 def local_cluster(workers=None):
     """A dask.distributed LocalCluster as ``build`` and ``cells`` start one when not given a client: ``workers``
-    worker processes (default: one per core), one thread each, no dashboard, and Dask's statistical profiler off
+    worker processes (default: one per core), one thread each, no dashboard, Dask's statistical profiler off
     in the workers (it samples each worker's stack every 10 ms: ~7% of a tile build's CPU on the project's
-    machine, experiments/results/distributed.md). Use it as a context manager, or close() it."""
+    machine, experiments/results/distributed.md), and glibc's malloc as in any process: Dask sets
+    MALLOC_TRIM_THRESHOLD_=65536 in its workers, which fixes glibc's mmap threshold at 128 kB, so that every
+    large numpy temporary is a fresh mmap whose pages fault in (a tile's seam arithmetic 8-10x slower). Use it
+    as a context manager, or close() it."""
     import dask
     from distributed import LocalCluster
+    environ = {key: value for key, value in dask.config.get("distributed.nanny.pre-spawn-environ").items()
+               if key != "MALLOC_TRIM_THRESHOLD_"}
     # The workers take the configuration in force when the cluster starts them.
-    with dask.config.set({"distributed.worker.profile.enabled": False}):
+    with dask.config.set({"distributed.worker.profile.enabled": False, "distributed.nanny.pre-spawn-environ": environ}):
         return LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
                             dashboard_address=None)
 

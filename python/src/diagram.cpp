@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -353,6 +354,88 @@ py::array_t<double> circle_boxes(Diagram& d) {
     return out;
 }
 
+// The tiled build's seam certificate (python/ellvor/distributed.py, docs/
+// DESIGN.md §8), per face in `faces` order: its circle box as circle_boxes
+// gives it, where `needed` (no other proof that its disk lies in the tile's
+// region) or at hand in the circle cache, NaN elsewhere; and whether a face
+// across one of its edges may have the same circle (four sites on one empty
+// circle). Two neighbours' circles differ when their boxes are disjoint, or
+// when one box proves a site of the other off its circle: a face's circle is
+// certified (~5 µs) only when neither proof has the box it needs, so of two
+// uncached neighbours (a late site's star) one is.
+py::tuple seam_circles(Diagram& d, py::array_t<bool, py::array::c_style | py::array::forcecast> needed) {
+    std::vector<std::optional<VoronoiCircleBox>> box;
+    std::vector<char> shared;
+    locked(d, [&](Diagram& g) {  // the cache is the graph's: under its lock
+        const std::vector<Ellipse>& s = *g.sites;
+        const std::size_t m = g.faces.size();
+        if (static_cast<std::size_t>(needed.size()) != m) throw py::value_error("needed: expected one flag a face");
+        const bool* need = needed.data();
+        box.resize(m);
+        auto certify = [&](std::size_t k) {
+            if (!box[k]) box[k] = voronoi_circle_box(s, g.faces[k]);
+        };
+        for (std::size_t k = 0; k < m; ++k) {
+            const auto& f = g.faces[k];
+            if (VoronoiCircle* cached = g.traits->cached_circle(f[0], f[1], f[2]))
+                box[k] = voronoi_circle_box(s, f, cached->in_doubles());
+            else if (need[k])
+                certify(k);
+        }
+        shared.assign(m, 0);
+        const Triangulation& tds = g.graph->triangulation();
+        // Per face without a box, its neighbours without one: of two such neighbours the one with more is
+        // certified (on a chain of them, every other face).
+        std::vector<std::uint8_t> open(m, 0);
+        for (FaceIndex f : tds.faces()) {
+            const long k = face_number(g.numbers, f);
+            if (k < 0 || box[static_cast<std::size_t>(k)]) continue;
+            for (int i = 0; i < 3; ++i) {
+                const long j = face_number(g.numbers, tds.neighbor({f, i}));
+                if (j >= 0 && !box[static_cast<std::size_t>(j)]) ++open[static_cast<std::size_t>(k)];
+            }
+        }
+        for (FaceIndex f : tds.faces()) {
+            const long k = face_number(g.numbers, f);
+            if (k < 0) continue;
+            for (int i = 0; i < 3; ++i) {
+                const long j = face_number(g.numbers, tds.neighbor({f, i}));
+                if (j <= k) continue;  // infinite, or the pair met from j
+                const auto a = static_cast<std::size_t>(k), b = static_cast<std::size_t>(j);
+                if (!box[a] && !box[b]) certify(open[a] >= open[b] ? a : b);
+                bool differ = false;
+                if (box[a] && box[b]) {
+                    differ = !circle_boxes_meet(*box[a], *box[b]);
+                } else {
+                    const std::size_t known = box[a] ? a : b, other = box[a] ? b : a;
+                    differ = circle_differs_by_site(s, *box[known], g.faces[known], g.faces[other]);
+                    if (!differ) {
+                        certify(other);
+                        differ = !circle_boxes_meet(*box[a], *box[b]);
+                    }
+                }
+                if (!differ) shared[a] = shared[b] = 1;
+            }
+        }
+    });
+    const auto m = static_cast<py::ssize_t>(box.size());
+    auto boxes = new_array<double>({m, 6});
+    auto may_share = new_array<bool>({m});
+    double* out = boxes.mutable_data();
+    bool* flag = may_share.mutable_data();
+    for (std::size_t k = 0; k < box.size(); ++k, out += 6) {
+        if (box[k]) {
+            const VoronoiCircleBox& c = *box[k];
+            out[0] = c.center_x.lo, out[1] = c.center_x.hi, out[2] = c.center_y.lo, out[3] = c.center_y.hi;
+            out[4] = c.radius.lo, out[5] = c.radius.hi;
+        } else {
+            std::fill_n(out, 6, std::numeric_limits<double>::quiet_NaN());
+        }
+        flag[k] = shared[k] != 0;
+    }
+    return py::make_tuple(boxes, may_share);
+}
+
 // Per face (in `faces` order) the numbers of the three faces across its
 // edges, -1 for an infinite face: the triangulation's adjacency, which the
 // tiled build's test for cocircular neighbours needs.
@@ -478,6 +561,7 @@ void bind_diagram(py::module_& m) {
         .def("stats_json", [](Diagram& d) { return locked(d, [](Diagram& g) { return g.stats; }); })
         .def("circle_boxes", &circle_boxes)
         .def("face_neighbours", &face_neighbours)
+        .def("seam_circles", &seam_circles, py::arg("needed"))
         .def("vertex", &vertex, py::arg("i"), py::arg("bits"))
         .def("trace", &trace, py::arg("tolerance"), py::arg("margin"))
         .def("validate", &validate, py::arg("brute_force"));

@@ -54,3 +54,23 @@ TEST_CASE("voronoi_circle_box: a huge circle's wide double box gives way to Arb'
     const VoronoiCircleBox box = voronoi_circle_box(s, {0, 1, 2});
     check_box(s, box, 1e-9);
 }
+
+TEST_CASE("circle_boxes_meet: all three components overlap", "[output][voronoi_circle_box]") {
+    const VoronoiCircleBox a{{0, 1}, {0, 1}, {2, 3}};
+    CHECK(circle_boxes_meet(a, {{1, 2}, {-1, 0}, {3, 4}}));  // closed intervals: touching meets
+    CHECK_FALSE(circle_boxes_meet(a, {{0, 1}, {0, 1}, {3.5, 4}}));
+    CHECK_FALSE(circle_boxes_meet(a, {{1.5, 2}, {0, 1}, {2, 3}}));
+}
+
+TEST_CASE("circle_differs_by_site: a site of the other face proven off the circle",
+          "[output][voronoi_circle_box]") {
+    // Four unit circles at the corners of a square share one circle (center 0, radius sqrt(2) - 1): the faces
+    // (0, 1, 2) and (0, 2, 3) are one circle. Moving site 3 out makes them differ.
+    const std::vector<Ellipse> square = {Ellipse::circle(1, 1, 1), Ellipse::circle(-1, 1, 1),
+                                         Ellipse::circle(-1, -1, 1), Ellipse::circle(1, -1, 1),
+                                         Ellipse::circle(Rational(3, 2), Rational(-3, 2), 1)};
+    const VoronoiCircleBox box = voronoi_circle_box(square, {0, 1, 2});
+    CHECK_FALSE(circle_differs_by_site(square, box, {0, 1, 2}, {0, 2, 3}));  // site 3 touches the circle
+    CHECK(circle_differs_by_site(square, box, {0, 1, 2}, {0, 2, 4}));        // site 4 is off it
+    CHECK_FALSE(circle_differs_by_site(square, box, {0, 1, 2}, {2, 0, 1}));  // no site of its own proves anything
+}

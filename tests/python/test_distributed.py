@@ -36,6 +36,9 @@ def test_the_local_cluster_has_its_workers_and_no_profiler(client):
     # Dask samples every worker's stack each 10 ms by default (~7% of a tile's CPU): off in ed.local_cluster.
     settings = client.run(lambda: __import__("dask").config.get("distributed.worker.profile.enabled"))
     assert list(settings.values()) == [False, False]
+    # Nor Dask's malloc trim threshold, which makes glibc mmap every large numpy temporary anew.
+    trim = client.run(lambda: __import__("os").environ.get("MALLOC_TRIM_THRESHOLD_"))
+    assert list(trim.values()) == [None, None]
     assert all(w["nthreads"] == 1 for w in client.scheduler_info()["workers"].values())
 
 
@@ -257,6 +260,33 @@ def test_face_neighbours_share_an_edge():
             assert k in across[j]
     # Every finite face has a finite neighbour; the hull's faces have infinite ones.
     assert finite > 2 * len(faces) and (across < 0).any()
+
+
+def test_faces_far_from_the_seam_need_no_circle_and_their_disks_lie_inside():
+    sites = ellvor.generate("ellipses", 3000, seed=5)
+    _, _, boxes = ed._site_arrays(sites)
+    d = ellvor._ellvor._build(sites, "ell", None, 0.1)
+    faces, precise = d.faces(), d.circle_boxes()
+    lo, hi = boxes[:, [0, 2]].min(axis=0), boxes[:, [1, 3]].max(axis=0)
+    region = (float(lo[0] + 0.3 * (hi[0] - lo[0])), np.inf, -np.inf, float(hi[1] - 0.2 * (hi[1] - lo[1])))
+    settled = ed._disks_settled(boxes, region)[faces].any(axis=1)
+    assert 0.3 < settled.mean() < 0.9
+    # What the grid proves, the precise boxes confirm: the disk inside the open region.
+    rho = np.maximum(precise[:, 5], 0)
+    inside = ((precise[:, 0] - rho > region[0]) & (precise[:, 1] + rho < region[1]) &
+              (precise[:, 2] - rho > region[2]) & (precise[:, 3] + rho < region[3]))
+    assert inside[settled].all()
+    # seam_circles: boxes where asked (and where cached), the same neighbour verdicts as all boxes compared.
+    circles, may_share = d.seam_circles(~settled)
+    assert not np.isnan(circles[~settled]).any() and np.isnan(circles[settled]).any()
+    known = ~np.isnan(circles[:, 0])
+    assert np.array_equal(circles[known], precise[known])
+    assert np.array_equal(may_share, ed._possibly_degenerate(d.face_neighbours(), precise))
+    # Four unit circles on one circle: both faces of the square share it, with or without their boxes.
+    square = ellvor._ellvor._build([ellvor.Ellipse.circle(x, y, 1) for x, y in ((3, 3), (-3, 3), (-3, -3), (3, -3))],
+                                   "ell", None, 0.1)
+    for needed in (np.zeros(2, dtype=bool), np.ones(2, dtype=bool)):
+        assert square.seam_circles(needed)[1].tolist() == [True, True]
 
 
 def test_sites_travel_as_fractions_or_as_lines():
