@@ -214,16 +214,16 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
 }
 
 std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& theta) {
-    std::optional<Node> n = node(theta);
+    std::optional<Node> n = node(theta, true);
     return n ? n->densities : std::nullopt;
 }
 
 std::optional<std::array<Interval, 2>> NormalRayInDoubles::point(const Interval& theta) {
-    std::optional<Node> n = node(theta);
+    std::optional<Node> n = node(theta, false);
     return n ? n->point : std::nullopt;
 }
 
-std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval& theta) {
+std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval& theta, bool with_densities) {
     const double theta0 = theta.mid();
     if (!std::isfinite(theta0)) return std::nullopt;
     // Newton in doubles from the last node's root, which Gauss nodes, close
@@ -232,10 +232,10 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval&
     // rejects).
     double x0[2], C[2][2];
     if (newton(theta0, last_, x0, C))
-        if (std::optional<Node> n = certified(theta, x0, C)) return n;
+        if (std::optional<Node> n = certified(theta, x0, C, with_densities)) return n;
     double start[2];
     if (!ray_start(theta0, start) || !newton(theta0, start, x0, C)) return std::nullopt;
-    return certified(theta, x0, C);
+    return certified(theta, x0, C, with_densities);
 }
 
 bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
@@ -262,11 +262,12 @@ struct NodeInput {
     Interval sin_theta, cos_theta, sin_phi, cos_phi;
     const double (&x0)[2];
     const double (&C)[2][2];
+    bool with_densities;
 };
 
 // The Krawczyk test about x0 with epsilon-inflation, F(x0) over the whole
 // interval of theta (C may be any matrix to the proof), and at the root it
-// proves the densities and the point V. All of it under the upward rounding
+// proves the point V and (with_densities) the densities. All of it under the upward rounding
 // mode (util/upward_interval.hpp: one rounding an operation, no widening
 // step; these operations in Interval were about half of a cell's time). The
 // sines and cosines come from the caller (util/interval_trig.hpp needs
@@ -328,6 +329,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
         const U root = s0 + K[0], ds = -(on_box.F_theta[1] / g_s);  // s' = -g_theta / g_s
         const U v[2] = {bp.x + root * bp.nx, bp.y + root * bp.ny};
         if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
+        if (!in.with_densities) return true;
         // The densities of NormalRayBisector::densities.
         const U ab = p.a * p.b;
         U m[3], power = root;  // power = s^(k+1)
@@ -364,12 +366,12 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
 }  // namespace
 
 std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2],
-                                                                      const double (&C)[2][2]) {
+                                                                      const double (&C)[2][2], bool with_densities) {
     Interval sin, cos, sin_phi, cos_phi;
     sin_cos(theta, sin, cos);
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
     Node out;
-    if (!certify_node({p_, q_, signed_, medial_p_, medial_q_, q_slack_, sin, cos, sin_phi, cos_phi, x0, C},
+    if (!certify_node({p_, q_, signed_, medial_p_, medial_q_, q_slack_, sin, cos, sin_phi, cos_phi, x0, C, with_densities},
                       out.densities, out.point))
         return std::nullopt;
     last_[0] = x0[0], last_[1] = x0[1];

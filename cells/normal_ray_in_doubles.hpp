@@ -93,10 +93,12 @@ private:
     };
     struct BoxRoot;
     std::optional<BoxRoot> box_root(double mid, double along, double across);
-    // The certified node at theta, from the last root or from the ray.
-    std::optional<Node> node(const Interval& theta);
+    // The certified node at theta, from the last root or from the ray; its
+    // densities only when asked (point() does not need them).
+    std::optional<Node> node(const Interval& theta, bool with_densities);
     // The certificate about the point x0 (Newton's root).
-    std::optional<Node> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2]);
+    std::optional<Node> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2],
+                                  bool with_densities);
 
     Site p_, q_;
     bool signed_;
