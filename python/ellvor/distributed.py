@@ -282,7 +282,7 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
                  (centers[:, 1] < rect[3]))
     visible_sure[hidden[:, 0]] = False
     out = {
-        "faces": ids[faces[certified]], "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
+        "faces": _rows_in_order(ids[faces[certified]]), "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
         "tile_faces": len(faces), "certified": int(certified.sum()), "owned_faces": int(owned.sum()),
         "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
         "build_cpu_seconds": build_cpu, "rss_mb": _rss_mb(),
@@ -495,7 +495,7 @@ def _hull_task(payload, ids, polygon, depth):
                       _disk_misses_shrunk_polygon(circles, polygon, depth)) & ~_possibly_degenerate(d.face_neighbours(), circles))
     else:
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
-    return {"hull": ids[d.hull()], "faces": ids[faces[certified]], "hidden": ids[d.hidden()],
+    return {"hull": ids[d.hull()], "faces": _rows_in_order(ids[faces[certified]]), "hidden": ids[d.hidden()],
             "visible": np.zeros(0, dtype=np.int64), "tile_faces": len(faces), "certified": int(certified.sum()),
             "owned_faces": 0, "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
             "rss_mb": _rss_mb()}
@@ -530,26 +530,31 @@ class _DirectedEdges:
     each as its undirected key (i < j) and a bit for its direction (1: from j to i)."""
 
     def __init__(self, faces, hull):
-        src = np.concatenate([faces.ravel(), hull[:, 0]])
-        dst = np.concatenate([faces[:, [1, 2, 0]].ravel(), hull[:, 1]])
-        keep = src != dst
-        src, dst = src[keep], dst[keep]
-        self.m = int(max(src.max(), dst.max())) + 1 if len(src) else 1
-        x = (np.minimum(src, dst) * self.m + np.maximum(src, dst)) * 2 + (src > dst)
-        x.sort()
-        self.sorted = x
+        self.m = max(int(faces.max()) + 1 if len(faces) else 1, int(hull.max()) + 1 if len(hull) else 1)
+        # Sorted apart, then merged (a stable sort merges sorted runs): for faces in _unique_rows's order, each
+        # row's smallest id first, the edges a -> b come sorted and c -> a nearly so; only b -> c are in no order.
+        parts = []
+        for src, dst in ((faces[:, 0], faces[:, 1]), (faces[:, 2], faces[:, 0]), (faces[:, 1], faces[:, 2]),
+                         (hull[:, 0], hull[:, 1])):
+            keep = src != dst
+            src, dst = src[keep].astype(np.int64), dst[keep].astype(np.int64)
+            x = (np.minimum(src, dst) * self.m + np.maximum(src, dst)) * 2 + (src > dst)
+            x.sort(kind="stable")
+            parts.append(x)
+        self.sorted = np.concatenate(parts)
+        self.sorted.sort(kind="stable")
 
     def open_sites(self):
         """Sites on directed edges whose count differs from their twin's: where faces are missing. A key is
-        balanced when its runs of 0 and 1 bits are equally long."""
+        balanced when its run is of even length with bit 0 in its first half and 1 in its second."""
         x = self.sorted
         if len(x) == 0:
             return np.zeros(0, dtype=np.int64)
-        key, bit = x >> 1, (x & 1).astype(np.int64)
+        key = x >> 1
         starts = np.concatenate([[0], np.flatnonzero(key[1:] != key[:-1]) + 1])
-        length = np.diff(np.concatenate([starts, [len(x)]]))
-        ones = np.add.reduceat(bit, starts)
-        bad = key[starts[2 * ones != length]]
+        length = np.diff(np.append(starts, len(x)))
+        middle = starts + length // 2
+        bad = key[starts[(length % 2 == 1) | (x[middle - 1] & 1 == 1) | (x[np.minimum(middle, len(x) - 1)] & 1 == 0)]]
         return np.unique(np.concatenate([bad // self.m, bad % self.m]))
 
     def edges(self):
@@ -564,8 +569,16 @@ def _unique_rows(rows, n):
     rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
     if n ** 3 >= 2 ** 63:
         return np.unique(rows, axis=0)
-    keys = np.unique((rows[:, 0] * n + rows[:, 1]) * n + rows[:, 2])
+    keys = (rows[:, 0] * n + rows[:, 1]) * n + rows[:, 2]
+    keys.sort(kind="stable")   # merges the tiles' sorted runs (_rows_in_order)
+    keys = keys[np.concatenate([[True], keys[1:] != keys[:-1]])] if len(keys) else keys
     return np.stack([keys // (n * n), keys // n % n, keys % n], axis=1)
+
+
+def _rows_in_order(a):
+    """The rows of ``a`` sorted (lexicographically, its dtype kept): a tile sends its faces in order, so that the
+    client merges sorted runs (_unique_rows)."""
+    return a[np.lexsort(a.T[::-1])] if len(a) else a
 
 
 def _sorted_rows(a, width):

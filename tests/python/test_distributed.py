@@ -248,6 +248,38 @@ def test_the_seam_tests_refuse_what_they_cannot_prove():
     assert ed._possibly_degenerate(neighbours, c).tolist() == [True, True, False]
 
 
+def test_the_client_merge_against_brute_force():
+    # _unique_rows (sorted runs merged) and _DirectedEdges (open sites, edges) against counting, on random
+    # multisets of faces: a whole graph's faces, duplicates (faces certified by two tiles), missing faces,
+    # double edges, loops, int32 hull rows (a tile's ids).
+    from collections import Counter
+    rng = np.random.default_rng(7)
+    graph = ellvor.build(ellvor.generate("ellipses", 300, seed=5))
+    cases = [(graph.faces, graph.hull)]
+    for _ in range(200):
+        n = int(rng.integers(2, 9))
+        faces = rng.integers(0, n, size=(int(rng.integers(0, 12)), 3))
+        hull = rng.integers(0, n, size=(int(rng.integers(0, 4)), 2)).astype(np.int32)
+        cases.append((faces, hull))
+    for drop in (0, 1, 17):
+        cases.append((np.delete(graph.faces, drop, axis=0), graph.hull))
+    for faces, hull in cases:
+        n = int(max(faces.max(initial=0), hull.max(initial=0))) + 1
+        runs = [ed._rows_in_order(part) for part in np.array_split(np.concatenate([faces, faces[::3]]), 3)]
+        unique = ed._unique_rows(np.concatenate(runs), n)
+        assert unique.tolist() == [list(r) for r in sorted(set(map(tuple, faces.tolist())))]
+        directed = Counter()
+        for row in unique.tolist():
+            directed.update((row[k], row[(k + 1) % 3]) for k in range(3))
+        directed.update(map(tuple, hull.tolist()))
+        open_sites = sorted({s for (i, j), c in directed.items() if i != j and c != directed[(j, i)] for s in (i, j)})
+        edges = sorted(e for (i, j), c in directed.items() if i < j for e in [(i, j)] * c)
+        d = ed._DirectedEdges(unique, hull)
+        assert d.open_sites().tolist() == open_sites
+        assert d.edges().tolist() == [list(e) for e in edges]
+    assert ed._DirectedEdges(graph.faces, graph.hull).edges().tolist() == graph.edges.tolist()
+
+
 def test_face_neighbours_share_an_edge():
     d = ellvor._ellvor._build(ellvor.generate("ellipses", 200, seed=3), "ell", None, 0.1)
     faces, across = d.faces(), d.face_neighbours()
