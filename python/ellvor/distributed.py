@@ -536,25 +536,34 @@ class _DirectedEdges:
         parts = []
         for src, dst in ((faces[:, 0], faces[:, 1]), (faces[:, 2], faces[:, 0]), (faces[:, 1], faces[:, 2]),
                          (hull[:, 0], hull[:, 1])):
-            keep = src != dst
-            src, dst = src[keep].astype(np.int64), dst[keep].astype(np.int64)
-            x = (np.minimum(src, dst) * self.m + np.maximum(src, dst)) * 2 + (src > dst)
+            src, dst = src.astype(np.int64), dst.astype(np.int64)
+            x = np.minimum(src, dst)
+            x *= self.m
+            x += np.maximum(src, dst)
+            x *= 2
+            x += src > dst
+            loop = src == dst
+            if loop.any():
+                x = x[~loop]
             x.sort(kind="stable")
             parts.append(x)
         self.sorted = np.concatenate(parts)
         self.sorted.sort(kind="stable")
 
     def open_sites(self):
-        """Sites on directed edges whose count differs from their twin's: where faces are missing. A key is
-        balanced when its run is of even length with bit 0 in its first half and 1 in its second."""
+        """Sites on directed edges whose count differs from their twin's: where faces are missing. A whole
+        graph's keys come in pairs, bit 0 then bit 1, but for its few double edges: the entries are read in
+        pairs, and only the keys of pairs that are not such a pair are counted (a run of one key whose
+        every pair is such a pair is exactly one pair, balanced)."""
         x = self.sorted
-        if len(x) == 0:
-            return np.zeros(0, dtype=np.int64)
-        key = x >> 1
-        starts = np.concatenate([[0], np.flatnonzero(key[1:] != key[:-1]) + 1])
-        length = np.diff(np.append(starts, len(x)))
-        middle = starts + length // 2
-        bad = key[starts[(length % 2 == 1) | (x[middle - 1] & 1 == 1) | (x[np.minimum(middle, len(x) - 1)] & 1 == 0)]]
+        first, second = x[0:len(x) - 1:2], x[1::2]
+        unpaired = ~((second - first == 1) & (first & 1 == 0))
+        last = x[len(x) - 1:] if len(x) % 2 else x[:0]   # an entry without a pair
+        keys = np.concatenate([first[unpaired] >> 1, second[unpaired] >> 1, last >> 1])
+        keys = np.unique(keys)
+        zeros = np.searchsorted(x, 2 * keys + 1) - np.searchsorted(x, 2 * keys)
+        ones = np.searchsorted(x, 2 * keys + 2) - np.searchsorted(x, 2 * keys + 1)
+        bad = keys[zeros != ones]
         return np.unique(np.concatenate([bad // self.m, bad % self.m]))
 
     def edges(self):
