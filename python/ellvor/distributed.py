@@ -525,30 +525,81 @@ def _raise_worker_error(result, sites):
     raise InputError(reason)
 
 
-class _DirectedEdges:
-    """The directed edges of the faces and hull edges, loops left out (a loop is its own twin), sorted once:
-    each as its undirected key (i < j) and a bit for its direction (1: from j to i)."""
+def _directed_keys(src, dst, m):
+    """The directed edges src -> dst (ids below m), loops left out (a loop is its own twin), sorted: each as its
+    undirected key (i < j) and a bit for its direction (1: from j to i)."""
+    src, dst = src.astype(np.int64), dst.astype(np.int64)
+    x = np.minimum(src, dst)
+    x *= m
+    x += np.maximum(src, dst)
+    x *= 2
+    x += src > dst
+    loop = src == dst
+    if loop.any():
+        x = x[~loop]
+    x.sort(kind="stable")
+    return x
 
-    def __init__(self, faces, hull):
-        self.m = max(int(faces.max()) + 1 if len(faces) else 1, int(hull.max()) + 1 if len(hull) else 1)
-        # Sorted apart, then merged (a stable sort merges sorted runs): for faces in _unique_rows's order, each
-        # row's smallest id first, the edges a -> b come sorted and c -> a nearly so; only b -> c are in no order.
-        parts = []
-        for src, dst in ((faces[:, 0], faces[:, 1]), (faces[:, 2], faces[:, 0]), (faces[:, 1], faces[:, 2]),
-                         (hull[:, 0], hull[:, 1])):
-            src, dst = src.astype(np.int64), dst.astype(np.int64)
-            x = np.minimum(src, dst)
-            x *= self.m
-            x += np.maximum(src, dst)
-            x *= 2
-            x += src > dst
-            loop = src == dst
-            if loop.any():
-                x = x[~loop]
-            x.sort(kind="stable")
-            parts.append(x)
-        self.sorted = np.concatenate(parts)
-        self.sorted.sort(kind="stable")
+
+def _merged(a, b):
+    """Two sorted arrays as one (a stable sort merges sorted runs)."""
+    x = np.concatenate([a, b])
+    x.sort(kind="stable")
+    return x
+
+
+class _FaceUnion:
+    """The distinct faces the tiles certified so far and their directed edges' keys (_directed_keys, ids below
+    n), sorted: grown as results come, so that most of the merge runs while the last tiles still build. Each
+    face as one int64 key (a n + b) n + c where n^3 fits, else as rows."""
+
+    def __init__(self, n):
+        self.n = n
+        self.wide = n ** 3 >= 2 ** 63
+        self.face_keys = np.zeros(0, dtype=np.int64)
+        self.rows = np.zeros((0, 3), dtype=np.int64)
+        self.keys = np.zeros(0, dtype=np.int64)
+
+    @property
+    def faces(self):
+        """The faces found, sorted (rows; each row as a tile gave it, its smallest id first)."""
+        if self.wide:
+            return self.rows
+        n, k = self.n, self.face_keys
+        return np.stack([k // (n * n), k // n % n, k % n], axis=1)
+
+    def add(self, rows):
+        """Adds the faces ``rows`` (repeats allowed; the tiles' sorted runs, concatenated, merge fastest)."""
+        rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
+        n = self.n
+        if self.wide:
+            both, first = np.unique(np.concatenate([self.rows, rows]), axis=0, return_index=True)
+            new = both[first >= len(self.rows)]
+            self.rows = both
+        else:
+            k = (rows[:, 0] * n + rows[:, 1]) * n + rows[:, 2]
+            k.sort(kind="stable")   # merges sorted runs
+            k = k[np.concatenate([[True], k[1:] != k[:-1]])] if len(k) else k
+            if len(self.face_keys) and len(k):
+                at = np.minimum(np.searchsorted(self.face_keys, k), len(self.face_keys) - 1)
+                k = k[self.face_keys[at] != k]
+            self.face_keys = np.concatenate([self.face_keys, k])
+            self.face_keys.sort(kind="stable")
+            new = np.stack([k // (n * n), k // n % n, k % n], axis=1)
+        # Each part sorted apart, then all merged: for rows in order, each row's smallest id first, the edges
+        # a -> b come sorted and c -> a nearly so; only b -> c are in no order.
+        parts = [_directed_keys(src, dst, n) for src, dst in ((new[:, 0], new[:, 1]), (new[:, 2], new[:, 0]),
+                                                               (new[:, 1], new[:, 2]))]
+        self.keys = np.concatenate([self.keys, *parts])
+        self.keys.sort(kind="stable")
+
+
+class _DirectedEdges:
+    """The directed edges of a _FaceUnion's faces and the hull edges, sorted (_directed_keys)."""
+
+    def __init__(self, union, hull):
+        self.m = union.n
+        self.sorted = _merged(union.keys, _directed_keys(hull[:, 0], hull[:, 1], self.m))
 
     def open_sites(self):
         """Sites on directed edges whose count differs from their twin's: where faces are missing. A whole
@@ -572,21 +623,9 @@ class _DirectedEdges:
         return np.stack([key // self.m, key % self.m], axis=1)
 
 
-def _unique_rows(rows, n):
-    """The distinct rows of an (m, 3) array of ids below n, sorted (np.unique(axis=0)'s result): one int64 key
-    a row where n^3 fits, several times faster."""
-    rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
-    if n ** 3 >= 2 ** 63:
-        return np.unique(rows, axis=0)
-    keys = (rows[:, 0] * n + rows[:, 1]) * n + rows[:, 2]
-    keys.sort(kind="stable")   # merges the tiles' sorted runs (_rows_in_order)
-    keys = keys[np.concatenate([[True], keys[1:] != keys[:-1]])] if len(keys) else keys
-    return np.stack([keys // (n * n), keys // n % n, keys % n], axis=1)
-
-
 def _rows_in_order(a):
     """The rows of ``a`` sorted (lexicographically, its dtype kept): a tile sends its faces in order, so that the
-    client merges sorted runs (_unique_rows)."""
+    client merges sorted runs (_FaceUnion)."""
     return a[np.lexsort(a.T[::-1])] if len(a) else a
 
 
@@ -756,7 +795,8 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
               "build_cpu_seconds": 0.0, "rss_mb": 0.0}
              for t in range(nx * ny)]
 
-    faces_found, hidden_found, visible_found = [np.zeros((0, 3), np.int64)], [np.zeros((0, 2), np.int64)], []
+    union = _FaceUnion(n)
+    faces_found, hidden_found, visible_found = [], [np.zeros((0, 2), np.int64)], []
 
     def covers_everything(region, held):
         return len(held) == n or (region[0] <= everything[0] and region[1] >= everything[1] and
@@ -800,21 +840,34 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     if hull_job is None:
         hull_job = submit_hull()
     candidates, hull_future = hull_job
-    for t, f in futures.items():
-        collect(t, f.result())
-    h = hull_future.result()
-    if "error" in h:
-        _raise_worker_error(h, sites)
-    hull = h["hull"]
-    faces_found.append(h["faces"])
-    hidden_found.append(h["hidden"])
+    from distributed import as_completed
+    tile_of = {f: t for t, f in futures.items()}
+    outstanding = len(futures) + 1
+    workers = max(1, len(client.scheduler_info()["workers"]))
+    for f in as_completed([*futures.values(), hull_future]):
+        if f is hull_future:
+            h = f.result()
+            if "error" in h:
+                _raise_worker_error(h, sites)
+            hull = h["hull"]
+            faces_found.append(h["faces"])
+            hidden_found.append(h["hidden"])
+        else:
+            collect(tile_of[f], f.result())
+        outstanding -= 1
+        if outstanding <= workers:
+            # The last tasks build while the workers run out of work: merge what came meanwhile.
+            union.add(np.concatenate(faces_found))
+            faces_found = []
 
     # Later rounds: a patch around each site on a face that is missing, its halo doubling each round.
     patch_halo = np.full(n, 2.0 * halos.max())
     rounds = 1
     while True:
-        faces = _unique_rows(np.concatenate(faces_found), n)
-        faces_found = [faces]
+        if faces_found:
+            union.add(np.concatenate(faces_found))
+            faces_found = []
+        faces = union.faces
         hidden_all = np.concatenate(hidden_found)
         is_hidden = np.zeros(n, dtype=bool)
         is_hidden[hidden_all[:, 0]] = True
@@ -826,7 +879,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
             raise Error(f"tiled build: site {int(np.nonzero(is_hidden & is_visible)[0][0])} both hidden and visible")
         accepted = hull[is_visible[hull[:, 0]] & is_visible[hull[:, 1]]] if len(hull) else hull.reshape(-1, 2)
         unknown = np.nonzero(~is_hidden & ~is_visible)[0]
-        directed = _DirectedEdges(faces, accepted)
+        directed = _DirectedEdges(union, accepted)
         open_sites = np.union1d(directed.open_sites(), unknown)
         n_visible = int(is_visible.sum())
         if len(open_sites) == 0:

@@ -249,7 +249,7 @@ def test_the_seam_tests_refuse_what_they_cannot_prove():
 
 
 def test_the_client_merge_against_brute_force():
-    # _unique_rows (sorted runs merged) and _DirectedEdges (open sites, edges) against counting, on random
+    # _FaceUnion (sorted runs merged, in steps) and _DirectedEdges (open sites, edges) against counting, on random
     # multisets of faces: a whole graph's faces, duplicates (faces certified by two tiles), missing faces,
     # double edges, loops, int32 hull rows (a tile's ids).
     from collections import Counter
@@ -266,18 +266,28 @@ def test_the_client_merge_against_brute_force():
     for faces, hull in cases:
         n = int(max(faces.max(initial=0), hull.max(initial=0))) + 1
         runs = [ed._rows_in_order(part) for part in np.array_split(np.concatenate([faces, faces[::3]]), 3)]
-        unique = ed._unique_rows(np.concatenate(runs), n)
+        union = ed._FaceUnion(n)   # the runs added in two steps, as tiles come in
+        union.add(np.concatenate(runs[:2]))
+        union.add(runs[2])
+        unique = union.faces
         assert unique.tolist() == [list(r) for r in sorted(set(map(tuple, faces.tolist())))]
+        wide = ed._FaceUnion(n)   # the rows path, for n^3 beyond int64
+        wide.wide = True
+        wide.add(runs[0])
+        wide.add(np.concatenate(runs[1:]))
+        assert wide.faces.tolist() == unique.tolist() and wide.keys.tolist() == union.keys.tolist()
         directed = Counter()
         for row in unique.tolist():
             directed.update((row[k], row[(k + 1) % 3]) for k in range(3))
         directed.update(map(tuple, hull.tolist()))
         open_sites = sorted({s for (i, j), c in directed.items() if i != j and c != directed[(j, i)] for s in (i, j)})
         edges = sorted(e for (i, j), c in directed.items() if i < j for e in [(i, j)] * c)
-        d = ed._DirectedEdges(unique, hull)
+        d = ed._DirectedEdges(union, hull)
         assert d.open_sites().tolist() == open_sites
         assert d.edges().tolist() == [list(e) for e in edges]
-    assert ed._DirectedEdges(graph.faces, graph.hull).edges().tolist() == graph.edges.tolist()
+    whole = ed._FaceUnion(len(graph.sites))
+    whole.add(graph.faces)
+    assert ed._DirectedEdges(whole, graph.hull).edges().tolist() == graph.edges.tolist()
 
 
 def test_face_neighbours_share_an_edge():
