@@ -541,9 +541,9 @@ def _directed_keys(src, dst, m):
     return x
 
 
-def _merged(a, b):
-    """Two sorted arrays as one (a stable sort merges sorted runs)."""
-    x = np.concatenate([a, b])
+def _merged(*arrays):
+    """Sorted arrays as one (numpy's stable sort, a timsort, merges sorted runs)."""
+    x = np.concatenate(arrays)
     x.sort(kind="stable")
     return x
 
@@ -583,15 +583,13 @@ class _FaceUnion:
             if len(self.face_keys) and len(k):
                 at = np.minimum(np.searchsorted(self.face_keys, k), len(self.face_keys) - 1)
                 k = k[self.face_keys[at] != k]
-            self.face_keys = np.concatenate([self.face_keys, k])
-            self.face_keys.sort(kind="stable")
+            self.face_keys = _merged(self.face_keys, k)
             new = np.stack([k // (n * n), k // n % n, k % n], axis=1)
         # Each part sorted apart, then all merged: for rows in order, each row's smallest id first, the edges
         # a -> b come sorted and c -> a nearly so; only b -> c are in no order.
         parts = [_directed_keys(src, dst, n) for src, dst in ((new[:, 0], new[:, 1]), (new[:, 2], new[:, 0]),
                                                                (new[:, 1], new[:, 2]))]
-        self.keys = np.concatenate([self.keys, *parts])
-        self.keys.sort(kind="stable")
+        self.keys = _merged(self.keys, *parts)
 
 
 class _DirectedEdges:
