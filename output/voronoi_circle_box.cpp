@@ -16,14 +16,14 @@ constexpr double kTightWidth = 0x1p-40;
 
 double magnitude(const Interval& x) { return std::fmax(std::fabs(x.lo), std::fabs(x.hi)); }
 
-bool tight(const DoubleVoronoiCircle& c) {
+}  // namespace
+
+bool is_tight(const VoronoiCircleBox& c) {
     const double scale = magnitude(c.center_x) + magnitude(c.center_y) + magnitude(c.radius);
     for (const Interval* x : {&c.center_x, &c.center_y, &c.radius})
         if (!(x->hi - x->lo <= kTightWidth * scale)) return false;
     return true;
 }
-
-}  // namespace
 
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face) {
     const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(sites[face[0]], sites[face[1]], sites[face[2]]);
@@ -32,7 +32,7 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
 
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
                                     const DoubleVoronoiCircle* c) {
-    if (c && tight(*c)) return {c->center_x, c->center_y, c->radius};
+    if (c && is_tight({c->center_x, c->center_y, c->radius})) return {c->center_x, c->center_y, c->radius};
     VoronoiCircleSolver solver(sites[face[0]], sites[face[1]], sites[face[2]], common_medial_axis_tangency);
     // The wide double box (a huge circle) holds the root: Newton and Krawczyk from its middle spare the
     // solver's guesses and tangent-line starts, milliseconds a huge circle (a tile's hull along its seam).
@@ -43,6 +43,12 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
     solver.refine_existing(53);  // a face of a graph has its counter-clockwise circle
     const VoronoiCircleEnclosure& e = solver.enclosure();
     return {enclose(e.center_x), enclose(e.center_y), enclose(e.radius)};
+}
+
+VoronoiCircleBox voronoi_circle_box_any_width(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
+                                              const DoubleVoronoiCircle* doubles) {
+    if (doubles) return {doubles->center_x, doubles->center_y, doubles->radius};
+    return voronoi_circle_box(sites, face, nullptr);
 }
 
 bool circle_boxes_meet(const VoronoiCircleBox& a, const VoronoiCircleBox& b) {

@@ -29,6 +29,16 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
                                     const DoubleVoronoiCircle* doubles);
 
+// The double certificate's box however wide (`doubles`, when not nullptr), else
+// Arb's at 53 bits: for a test that asks voronoi_circle_box for the tight box
+// only where a wide one leaves it undecided (Arb costs ~0.3 ms a huge circle).
+VoronoiCircleBox voronoi_circle_box_any_width(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
+                                              const DoubleVoronoiCircle* doubles);
+
+// Whether every component of the box is within 2^-40 of the circle's
+// magnitude |center| + |radius| (what voronoi_circle_box returns).
+bool is_tight(const VoronoiCircleBox& box);
+
 // Whether the boxes of two circles meet (all three components overlap).
 bool circle_boxes_meet(const VoronoiCircleBox& a, const VoronoiCircleBox& b);
 

@@ -135,6 +135,21 @@ def _local_build(payload):
     return _ellvor._build_fractions(payload)
 
 
+def _in_curve_order(ids, points):
+    """``ids`` along a Z-order curve through their ``points`` (a 2^16 x 2^16 grid on their bounding box): a
+    tile's sites stored in that order lie in memory near their neighbours in the plane, where its graph
+    reads them (its build ~5% faster at 66000 sites than in the order of the ids)."""
+    xy = points[ids]
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    side = float(max(hi - lo))
+    if not (len(ids) > 1 and 0 < side < np.inf):
+        return ids
+    cells = np.minimum(((xy - lo) * (65535 / side)).astype(np.uint64), np.uint64(65535))  # NaN-free: 0 <= xy - lo <= side
+    for shift, mask in ((8, 0x00FF00FF), (4, 0x0F0F0F0F), (2, 0x33333333), (1, 0x55555555)):
+        cells = (cells | (cells << np.uint64(shift))) & np.uint64(mask)
+    return ids[np.argsort(cells[:, 0] | (cells[:, 1] << np.uint64(1)), kind="stable")]
+
+
 def _possibly_degenerate(neighbours, boxes):
     """Faces whose circle box meets that of a face across one of their edges (``neighbours``: the
     triangulation's adjacency, -1 for infinite faces): possibly the same circle (four or more sites on one
@@ -152,19 +167,26 @@ def _possibly_degenerate(neighbours, boxes):
     return suspect
 
 
-def _disk_misses_outside(circles, r, everything):
+def _disk_misses_outside(circles, r, everything, optimistic=False):
     """Faces whose closed disk (radius max(rho, 0): a circle with rho <= 0 is its center) misses the closure
     of B minus R, B = ``everything`` the box of all sites, R = ``r`` the tile's region, for every center and
-    radius in the face's box; in doubles rounded the safe way. B minus R is covered by four closed slabs."""
+    radius in the face's box; in doubles rounded the safe way. B minus R is covered by four closed slabs.
+    ``optimistic``: for some center and radius in the box instead, with a relative slack for rounding: a
+    superset of the faces that a narrower box of the same circle could prove (no proof of anything)."""
     bx0, bx1, by0, by1 = everything
     slabs = [(bx0, r[0], by0, by1), (r[1], bx1, by0, by1), (bx0, bx1, by0, r[2]), (bx0, bx1, r[3], by1)]
-    rho = np.maximum(circles[:, 5], 0.0)
-    rho2 = np.nextafter(rho * rho, np.inf)
+    rho = np.maximum(circles[:, 4 if optimistic else 5], 0.0)
+    rho2 = (1 - 1e-9) * rho * rho if optimistic else np.nextafter(rho * rho, np.inf)
     ok = np.ones(len(circles), dtype=bool)
     with np.errstate(invalid="ignore", over="ignore"):
         for x0, x1, y0, y1 in slabs:
             if not (x0 <= x1 and y0 <= y1):
                 continue  # empty: R covers B on that side
+            if optimistic:  # the farthest corner of the center box, per axis
+                dx = np.maximum(np.maximum(x0 - circles[:, 0], circles[:, 1] - x1), 0.0)
+                dy = np.maximum(np.maximum(y0 - circles[:, 2], circles[:, 3] - y1), 0.0)
+                ok &= dx * dx + dy * dy >= rho2
+                continue
             # A lower bound of the distance from the center box to the slab, per axis and squared.
             dx = np.maximum(np.maximum(np.nextafter(x0 - circles[:, 1], -np.inf),
                                        np.nextafter(circles[:, 0] - x1, -np.inf)), 0.0)
@@ -268,8 +290,14 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
         # Faces with a site whose empty disks all lie inside the region need no circle box for the disk test;
         # the neighbours' test asks only for the boxes it needs (docs/DESIGN.md §8).
         settled = _disks_settled(boxes, region)[faces].any(axis=1)
-        circle, may_share = d.seam_circles(~settled)
-        certified = (settled | _disk_misses_outside(circle, region, everything)) & ~may_share
+        circle, may_share, wide = d.seam_circles(~settled)
+        inside = _disk_misses_outside(circle, region, everything)
+        # A huge circle's wide double box, made tight (Arb) only where that might prove its disk inside.
+        retry = np.nonzero(wide & ~settled & ~inside & _disk_misses_outside(circle, region, everything, True))[0]
+        if len(retry):
+            circle[retry] = d.circle_boxes(retry)
+            inside[retry] = _disk_misses_outside(circle[retry], region, everything)
+        certified = (settled | inside) & ~may_share
         visible_sure = _inside(boxes, region)
         # Which tile keeps a face (a count only): its circle's center where the box is at hand, else the mean
         # of its sites' box middles.
@@ -282,7 +310,7 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
                  (centers[:, 1] < rect[3]))
     visible_sure[hidden[:, 0]] = False
     out = {
-        "faces": _rows_in_order(ids[faces[certified]]), "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
+        "faces": _faces_in_order(ids[faces[certified]]), "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
         "tile_faces": len(faces), "certified": int(certified.sum()), "owned_faces": int(owned.sum()),
         "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
         "build_cpu_seconds": build_cpu, "rss_mb": _rss_mb(),
@@ -495,7 +523,7 @@ def _hull_task(payload, ids, polygon, depth):
                       _disk_misses_shrunk_polygon(circles, polygon, depth)) & ~_possibly_degenerate(d.face_neighbours(), circles))
     else:
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
-    return {"hull": ids[d.hull()], "faces": _rows_in_order(ids[faces[certified]]), "hidden": ids[d.hidden()],
+    return {"hull": ids[d.hull()], "faces": _faces_in_order(ids[faces[certified]]), "hidden": ids[d.hidden()],
             "visible": np.zeros(0, dtype=np.int64), "tile_faces": len(faces), "certified": int(certified.sum()),
             "owned_faces": 0, "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
             "rss_mb": _rss_mb()}
@@ -621,10 +649,14 @@ class _DirectedEdges:
         return np.stack([key // self.m, key % self.m], axis=1)
 
 
-def _rows_in_order(a):
-    """The rows of ``a`` sorted (lexicographically, its dtype kept): a tile sends its faces in order, so that the
-    client merges sorted runs (_FaceUnion)."""
-    return a[np.lexsort(a.T[::-1])] if len(a) else a
+def _faces_in_order(a):
+    """The faces ``a`` (rows of three ids, counter-clockwise) each turned to start at its smallest id, then
+    sorted (lexicographically, the dtype kept): as the single build gives them (whatever order a tile's ids
+    are in), and in order, so that the client merges sorted runs (_FaceUnion)."""
+    if not len(a):
+        return a
+    a = np.take_along_axis(a, (a.argmin(axis=1)[:, None] + np.arange(3)) % 3, axis=1)
+    return a[np.lexsort(a.T[::-1])]
 
 
 def _sorted_rows(a, width):
@@ -829,7 +861,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
         held = np.nonzero(_meets(boxes, region))[0]
         if covers_everything(region, held):
             return one_build(f"the halo of tile {divmod(t, ny)} holds the whole set")
-        futures[t] = submit_tile(held, region, grid.rect(t), False)
+        futures[t] = submit_tile(_in_curve_order(held, params[:, 3:5]), region, grid.rect(t), False)
         tiles[t].update(sites=len(held), halo_sites=len(held) - tiles[t]["owned"], halo=float(halos[t]), retries=0)
         if len(futures) == 2:
             # The hull candidates' graph third: the workers have started on two tiles meanwhile, and it

@@ -332,18 +332,28 @@ std::string json(Diagram& d) {
     });
 }
 
-// Per face (in `faces` order) a certified box of its Voronoi circle:
-// [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi], outward-rounded doubles, tight
-// (output/voronoi_circle_box.hpp: the double certificate's box, else Arb's at
-// 53 bits). The double certificate the build made is read from the traits'
-// circle cache. The tiled build (python/ellvor/distributed.py) decides its
-// seams with them.
-py::array_t<double> circle_boxes(Diagram& d) {
+// Per face (in `faces` order, or of the faces numbered `which`) a certified
+// box of its Voronoi circle: [cx_lo, cx_hi, cy_lo, cy_hi, r_lo, r_hi],
+// outward-rounded doubles, tight (output/voronoi_circle_box.hpp: the double
+// certificate's box, else Arb's at 53 bits). The double certificate the build
+// made is read from the traits' circle cache. The tiled build (python/ellvor/
+// distributed.py) decides its seams with them.
+py::array_t<double> circle_boxes(Diagram& d, std::optional<py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>> which) {
     std::vector<double> boxes;
     locked(d, [&](Diagram& g) {  // the cache is the graph's: under its lock
         const std::vector<Ellipse>& s = *g.sites;
-        boxes.reserve(6 * g.faces.size());
-        for (const auto& f : g.faces) {
+        std::vector<std::size_t> numbers;
+        if (which) {
+            for (std::int64_t k : std::vector<std::int64_t>(which->data(), which->data() + which->size())) {
+                if (k < 0 || static_cast<std::size_t>(k) >= g.faces.size()) throw py::index_error("which: no face " + std::to_string(k));
+                numbers.push_back(static_cast<std::size_t>(k));
+            }
+        } else {
+            for (std::size_t k = 0; k < g.faces.size(); ++k) numbers.push_back(k);
+        }
+        boxes.reserve(6 * numbers.size());
+        for (std::size_t k : numbers) {
+            const auto& f = g.faces[k];
             VoronoiCircle* cached = g.traits->cached_circle(f[0], f[1], f[2]);
             const VoronoiCircleBox c = cached ? voronoi_circle_box(s, f, cached->in_doubles()) : voronoi_circle_box(s, f);
             boxes.insert(boxes.end(), {c.center_x.lo, c.center_x.hi, c.center_y.lo, c.center_y.hi, c.radius.lo, c.radius.hi});
@@ -355,30 +365,52 @@ py::array_t<double> circle_boxes(Diagram& d) {
 }
 
 // The tiled build's seam certificate (python/ellvor/distributed.py, docs/
-// DESIGN.md §8), per face in `faces` order: its circle box as circle_boxes
-// gives it, where `needed` (no other proof that its disk lies in the tile's
-// region) or at hand in the circle cache, NaN elsewhere; and whether a face
-// across one of its edges may have the same circle (four sites on one empty
-// circle). Two neighbours' circles differ when their boxes are disjoint, or
-// when one box proves a site of the other off its circle: a face's circle is
-// certified (~5 µs) only when neither proof has the box it needs, so of two
-// uncached neighbours (a late site's star) one is.
+// DESIGN.md §8), per face in `faces` order: a box of its circle where
+// `needed` (no other proof that its disk lies in the tile's region) or at hand
+// in the circle cache, NaN elsewhere; whether a face across one of its edges
+// may have the same circle (four sites on one empty circle); and whether the
+// box is the double certificate's wide one (a huge circle; circle_boxes gives
+// the tight one: ~0.3 ms a face in Arb, so only where a wide box leaves a test
+// undecided). Two neighbours' circles differ when their boxes are disjoint,
+// or when one box proves a site of the other off its circle: a face's circle
+// is certified (~3 us) only when neither proof has the box it needs, so of
+// two uncached neighbours (a late site's star) one is.
 py::tuple seam_circles(Diagram& d, py::array_t<bool, py::array::c_style | py::array::forcecast> needed) {
     std::vector<std::optional<VoronoiCircleBox>> box;
-    std::vector<char> shared;
+    std::vector<char> shared, wide;
     locked(d, [&](Diagram& g) {  // the cache is the graph's: under its lock
         const std::vector<Ellipse>& s = *g.sites;
         const std::size_t m = g.faces.size();
         if (static_cast<std::size_t>(needed.size()) != m) throw py::value_error("needed: expected one flag a face");
         const bool* need = needed.data();
         box.resize(m);
+        wide.assign(m, 0);
+        auto set_box = [&](std::size_t k, const DoubleVoronoiCircle* doubles) {
+            box[k] = voronoi_circle_box_any_width(s, g.faces[k], doubles);
+            wide[k] = doubles && !is_tight(*box[k]);
+        };
         auto certify = [&](std::size_t k) {
-            if (!box[k]) box[k] = voronoi_circle_box(s, g.faces[k]);
+            if (box[k]) return;
+            const auto& f = g.faces[k];
+            const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]]);
+            set_box(k, c ? &*c : nullptr);
+        };
+        auto tighten = [&](std::size_t k) {
+            if (!wide[k]) return;
+            box[k] = voronoi_circle_box(s, g.faces[k]);
+            wide[k] = 0;
+        };
+        // Disjoint boxes, the wide ones tightened where they meet.
+        auto boxes_differ = [&](std::size_t a, std::size_t b) {
+            if (!circle_boxes_meet(*box[a], *box[b])) return true;
+            if (!wide[a] && !wide[b]) return false;
+            tighten(a), tighten(b);
+            return !circle_boxes_meet(*box[a], *box[b]);
         };
         for (std::size_t k = 0; k < m; ++k) {
             const auto& f = g.faces[k];
             if (VoronoiCircle* cached = g.traits->cached_circle(f[0], f[1], f[2]))
-                box[k] = voronoi_circle_box(s, f, cached->in_doubles());
+                set_box(k, cached->in_doubles());
             else if (need[k])
                 certify(k);
         }
@@ -405,13 +437,13 @@ py::tuple seam_circles(Diagram& d, py::array_t<bool, py::array::c_style | py::ar
                 if (!box[a] && !box[b]) certify(open[a] >= open[b] ? a : b);
                 bool differ = false;
                 if (box[a] && box[b]) {
-                    differ = !circle_boxes_meet(*box[a], *box[b]);
+                    differ = boxes_differ(a, b);
                 } else {
                     const std::size_t known = box[a] ? a : b, other = box[a] ? b : a;
                     differ = circle_differs_by_site(s, *box[known], g.faces[known], g.faces[other]);
                     if (!differ) {
                         certify(other);
-                        differ = !circle_boxes_meet(*box[a], *box[b]);
+                        differ = boxes_differ(a, b);
                     }
                 }
                 if (!differ) shared[a] = shared[b] = 1;
@@ -420,9 +452,10 @@ py::tuple seam_circles(Diagram& d, py::array_t<bool, py::array::c_style | py::ar
     });
     const auto m = static_cast<py::ssize_t>(box.size());
     auto boxes = new_array<double>({m, 6});
-    auto may_share = new_array<bool>({m});
+    auto may_share = new_array<bool>({m}), is_wide = new_array<bool>({m});
     double* out = boxes.mutable_data();
     bool* flag = may_share.mutable_data();
+    bool* wide_out = is_wide.mutable_data();
     for (std::size_t k = 0; k < box.size(); ++k, out += 6) {
         if (box[k]) {
             const VoronoiCircleBox& c = *box[k];
@@ -432,8 +465,9 @@ py::tuple seam_circles(Diagram& d, py::array_t<bool, py::array::c_style | py::ar
             std::fill_n(out, 6, std::numeric_limits<double>::quiet_NaN());
         }
         flag[k] = shared[k] != 0;
+        wide_out[k] = wide[k] != 0;
     }
-    return py::make_tuple(boxes, may_share);
+    return py::make_tuple(boxes, may_share, is_wide);
 }
 
 // Per face (in `faces` order) the numbers of the three faces across its
@@ -559,7 +593,7 @@ void bind_diagram(py::module_& m) {
         .def("regions", &regions)
         .def("json", &json)
         .def("stats_json", [](Diagram& d) { return locked(d, [](Diagram& g) { return g.stats; }); })
-        .def("circle_boxes", &circle_boxes)
+        .def("circle_boxes", &circle_boxes, py::arg("which") = py::none())
         .def("face_neighbours", &face_neighbours)
         .def("seam_circles", &seam_circles, py::arg("needed"))
         .def("vertex", &vertex, py::arg("i"), py::arg("bits"))

@@ -53,6 +53,16 @@ TEST_CASE("voronoi_circle_box: a huge circle's wide double box gives way to Arb'
     CHECK(d->radius.hi - d->radius.lo > 1e-3);
     const VoronoiCircleBox box = voronoi_circle_box(s, {0, 1, 2});
     check_box(s, box, 1e-9);
+    CHECK(is_tight(box));
+    // Asked for any width, the wide double box itself; without a double certificate, Arb's.
+    const VoronoiCircleBox wide = voronoi_circle_box_any_width(s, {0, 1, 2}, &*d);
+    CHECK_FALSE(is_tight(wide));
+    CHECK(wide.radius.lo == d->radius.lo);
+    CHECK(wide.center_x.hi == d->center_x.hi);
+    check_box(s, wide, 10);
+    const VoronoiCircleBox arb = voronoi_circle_box_any_width(s, {0, 1, 2}, nullptr);
+    CHECK(is_tight(arb));
+    check_box(s, arb, 1e-9);
 }
 
 TEST_CASE("circle_boxes_meet: all three components overlap", "[output][voronoi_circle_box]") {

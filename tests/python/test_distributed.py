@@ -265,12 +265,13 @@ def test_the_client_merge_against_brute_force():
         cases.append((np.delete(graph.faces, drop, axis=0), graph.hull))
     for faces, hull in cases:
         n = int(max(faces.max(initial=0), hull.max(initial=0))) + 1
-        runs = [ed._rows_in_order(part) for part in np.array_split(np.concatenate([faces, faces[::3]]), 3)]
+        runs = [ed._faces_in_order(part) for part in np.array_split(np.concatenate([faces, faces[::3]]), 3)]
         union = ed._FaceUnion(n)   # the runs added in two steps, as tiles come in
         union.add(np.concatenate(runs[:2]))
         union.add(runs[2])
         unique = union.faces
-        assert unique.tolist() == [list(r) for r in sorted(set(map(tuple, faces.tolist())))]
+        turned = {tuple(np.roll(r, -int(np.argmin(r))).tolist()) for r in faces}   # smallest id first
+        assert unique.tolist() == [list(r) for r in sorted(turned)]
         wide = ed._FaceUnion(n)   # the rows path, for n^3 beyond int64
         wide.wide = True
         wide.add(runs[0])
@@ -318,17 +319,72 @@ def test_faces_far_from_the_seam_need_no_circle_and_their_disks_lie_inside():
     inside = ((precise[:, 0] - rho > region[0]) & (precise[:, 1] + rho < region[1]) &
               (precise[:, 2] - rho > region[2]) & (precise[:, 3] + rho < region[3]))
     assert inside[settled].all()
-    # seam_circles: boxes where asked (and where cached), the same neighbour verdicts as all boxes compared.
-    circles, may_share = d.seam_circles(~settled)
+    # seam_circles: boxes where asked (and where cached), the same neighbour verdicts as all boxes compared;
+    # a wide double box (some 2^-30 of the circle: 39 faces here) is kept as it is, and holds the circle.
+    circles, may_share, wide = d.seam_circles(~settled)
     assert not np.isnan(circles[~settled]).any() and np.isnan(circles[settled]).any()
     known = ~np.isnan(circles[:, 0])
-    assert np.array_equal(circles[known], precise[known])
+    assert wide.any() and not wide[~known].any()
+    assert np.array_equal(circles[known & ~wide], precise[known & ~wide])
+    assert (circles[wide][:, 0::2] <= precise[wide][:, 1::2]).all() and (precise[wide][:, 0::2] <= circles[wide][:, 1::2]).all()
+    assert (circles[wide][:, 1::2] - circles[wide][:, 0::2] > precise[wide][:, 1::2] - precise[wide][:, 0::2]).any()
+    assert np.array_equal(d.circle_boxes(np.nonzero(wide)[0]), precise[wide])
     assert np.array_equal(may_share, ed._possibly_degenerate(d.face_neighbours(), precise))
     # Four unit circles on one circle: both faces of the square share it, with or without their boxes.
     square = ellvor._ellvor._build([ellvor.Ellipse.circle(x, y, 1) for x, y in ((3, 3), (-3, 3), (-3, -3), (3, -3))],
                                    "ell", None, 0.1)
     for needed in (np.zeros(2, dtype=bool), np.ones(2, dtype=bool)):
         assert square.seam_circles(needed)[1].tolist() == [True, True]
+
+
+def test_a_wide_circle_box_is_made_tight_where_that_proves_the_disk_inside():
+    # A face whose double box is wide (some 2^-30 of the circle) and whose disk ends just inside the region:
+    # the wide box cannot prove it, the tight one (Arb) can, and _tile_task asks for it.
+    sites = ellvor.generate("ellipses", 3000, seed=5)
+    _, fractions, boxes = ed._site_arrays(sites)
+    ids = np.arange(len(sites))
+    d = ed._local_build(fractions)
+    faces = d.faces()
+    circles, may_share, wide = d.seam_circles(np.ones(len(faces), dtype=bool))
+    everything = (float(boxes[:, 0].min()), float(boxes[:, 1].max()), float(boxes[:, 2].min()), float(boxes[:, 3].max()))
+    # The region (-inf, x) x R: per wide face, the least x where its tight box proves the disk inside, and
+    # where its wide box does (bisection: both tests are monotone in x); the face where they differ most.
+    def threshold(box):
+        lo, hi = everything[0], everything[1]
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if ed._disk_misses_outside(box[None], (-np.inf, mid, -np.inf, np.inf), everything)[0] else (mid, hi)
+        return hi
+    candidates = np.nonzero(wide & ~may_share)[0]
+    tight = d.circle_boxes(candidates)
+    gap = [threshold(circles[k]) - threshold(t) for k, t in zip(candidates, tight)]
+    k, tight = int(candidates[np.argmax(gap)]), tight[np.argmax(gap)]
+    region = (-np.inf, threshold(tight) + max(gap) / 2, -np.inf, np.inf)
+    assert not ed._disk_misses_outside(circles[k:k + 1], region, everything)[0]
+    assert ed._disk_misses_outside(tight[None], region, everything)[0]
+    result = ed._tile_task(fractions, ids, boxes, region, region, everything, False)
+    assert any(np.array_equal(row, np.sort(faces[k])) for row in np.sort(result["faces"], axis=1))
+
+
+def test_the_optimistic_disk_test_keeps_every_face_a_narrower_box_proves():
+    # _tile_task asks Arb for a tight box only where the wide box passes the optimistic test: that must hold
+    # wherever some narrower box of the same circle passes the sure one (else a provable face is lost).
+    rng = np.random.default_rng(7)
+    m = 20000
+    everything = (-100.0, 100.0, -100.0, 100.0)
+    region = (-30.0, 40.0, -np.inf, 25.0)
+    cx, cy = rng.uniform(-120, 120, m), rng.uniform(-120, 120, m)
+    rho = rng.uniform(-5, 60, m)
+    def box(width):
+        w = width * rng.uniform(0, 1, (m, 6))
+        return np.stack([cx - w[:, 0], cx + w[:, 1], cy - w[:, 2], cy + w[:, 3], rho - w[:, 4], rho + w[:, 5]], axis=1)
+    narrow, wide = box(1e-9), box(rng.choice([1e-6, 1e-2, 3.0], m)[:, None])
+    sure = ed._disk_misses_outside(narrow, region, everything)
+    optimistic = ed._disk_misses_outside(wide, region, everything, True)
+    assert 0.1 < sure.mean() < 0.9
+    assert optimistic[sure].all()
+    # And it is a filter: many wide boxes are given up without Arb.
+    assert (~optimistic & ~ed._disk_misses_outside(wide, region, everything)).mean() > 0.1
 
 
 def test_sites_travel_as_fractions_or_as_lines():
