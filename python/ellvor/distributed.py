@@ -138,7 +138,7 @@ def _local_build(payload):
 def _in_curve_order(ids, points):
     """``ids`` along a Z-order curve through their ``points`` (a 2^16 x 2^16 grid on their bounding box): a
     tile's sites stored in that order lie in memory near their neighbours in the plane, where its graph
-    reads them (its build ~5% faster at 66000 sites than in the order of the ids)."""
+    reads them (a 66 000-site tile builds ~6% faster than in the order of the ids)."""
     xy = points[ids]
     lo, hi = xy.min(axis=0), xy.max(axis=0)
     side = float(max(hi - lo))
@@ -148,23 +148,6 @@ def _in_curve_order(ids, points):
     for shift, mask in ((8, 0x00FF00FF), (4, 0x0F0F0F0F), (2, 0x33333333), (1, 0x55555555)):
         cells = (cells | (cells << np.uint64(shift))) & np.uint64(mask)
     return ids[np.argsort(cells[:, 0] | (cells[:, 1] << np.uint64(1)), kind="stable")]
-
-
-def _possibly_degenerate(neighbours, boxes):
-    """Faces whose circle box meets that of a face across one of their edges (``neighbours``: the
-    triangulation's adjacency, -1 for infinite faces): possibly the same circle (four or more sites on one
-    empty circle), whose triangulation depends on the insertion order."""
-    me = np.repeat(np.arange(len(neighbours)), 3)
-    other = neighbours.ravel()
-    pair = other > me                    # each finite pair once
-    me, other = me[pair], other[pair]
-    x, y = boxes[me], boxes[other]
-    hit = ((x[:, 0] <= y[:, 1]) & (y[:, 0] <= x[:, 1]) & (x[:, 2] <= y[:, 3]) & (y[:, 2] <= x[:, 3]) &
-           (x[:, 4] <= y[:, 5]) & (y[:, 4] <= x[:, 5]))
-    suspect = np.zeros(len(neighbours), dtype=bool)
-    suspect[me[hit]] = True
-    suspect[other[hit]] = True
-    return suspect
 
 
 def _disk_misses_outside(circles, r, everything, optimistic=False):
@@ -292,7 +275,8 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
         settled = _disks_settled(boxes, region)[faces].any(axis=1)
         circle, may_share, wide = d.seam_circles(~settled)
         inside = _disk_misses_outside(circle, region, everything)
-        # A huge circle's wide double box, made tight (Arb) only where that might prove its disk inside.
+        # A wide double box (beyond 2^-40 of its circle: ~1% of the faces) made tight (Arb) only where that
+        # might prove its disk inside.
         retry = np.nonzero(wide & ~settled & ~inside & _disk_misses_outside(circle, region, everything, True))[0]
         if len(retry):
             circle[retry] = d.circle_boxes(retry)
@@ -517,10 +501,16 @@ def _hull_task(payload, ids, polygon, depth):
     except InputError as e:
         return _error_result(e, ids)
     faces = d.faces()
-    circles = d.circle_boxes()
     if len(polygon) >= 3:
-        certified = ((_disk_outside_polygon(circles, polygon, depth) |
-                      _disk_misses_shrunk_polygon(circles, polygon, depth)) & ~_possibly_degenerate(d.face_neighbours(), circles))
+        def beyond(c):
+            return _disk_outside_polygon(c, polygon, depth) | _disk_misses_shrunk_polygon(c, polygon, depth)
+        circles, may_share, wide = d.seam_circles(np.ones(len(faces), dtype=bool))
+        certified = beyond(circles)
+        retry = np.nonzero(wide & ~certified)[0]   # a wide double box made tight (Arb) where it fails
+        if len(retry):
+            circles[retry] = d.circle_boxes(retry)
+            certified[retry] = beyond(circles[retry])
+        certified &= ~may_share
     else:
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
     return {"hull": ids[d.hull()], "faces": _faces_in_order(ids[faces[certified]]), "hidden": ids[d.hidden()],

@@ -57,6 +57,18 @@ def circles(centers_radii):
     return ellvor.Sites([ellvor.Ellipse.circle(x, y, r) for x, y, r in centers_radii])
 
 
+def boxes_meet_across_an_edge(neighbours, boxes):
+    """The oracle of seam_circles' degenerate flags: faces whose circle box meets that of a face across one of
+    their edges (``neighbours``: the triangulation's adjacency, -1 for infinite faces)."""
+    suspect = np.zeros(len(neighbours), dtype=bool)
+    for k, row in enumerate(neighbours):
+        for j in row[row >= 0]:
+            x, y = boxes[k], boxes[j]
+            if all(x[2 * i] <= y[2 * i + 1] and y[2 * i] <= x[2 * i + 1] for i in range(3)):
+                suspect[k] = suspect[j] = True
+    return suspect
+
+
 @pytest.mark.parametrize("tiles", [(1, 1), (2, 2), (3, 2), (8, 8)])
 def test_random_ellipses_every_tiling(client, tiles):
     d = same_graph(ellvor.generate("ellipses", 1500, seed=11), client, tiles)
@@ -242,10 +254,6 @@ def test_the_seam_tests_refuse_what_they_cannot_prove():
     boxes = np.array([[4, 4, 5, 5, 1.9, 1.9], [4, 4, 5, 5, 2, 2], [3.9, 4.1, 5, 5, 1.85, 1.95],
                       [4, 4, 5, 5, -1, -0.5], [1, 1, 5, 5, -1, -0.5]])
     assert ed._disk_misses_outside(boxes, region, everything).tolist() == [True, False, False, True, False]
-    # Faces 0 - 1 - 2 in a row; 0 and 1 have overlapping circle boxes: possibly one circle (degenerate).
-    neighbours = np.array([[1, -1, -1], [0, 2, -1], [1, -1, -1]])
-    c = np.array([[0, 1, 0, 1, 1, 2], [0.5, 1.5, 0.5, 1.5, 1.5, 3], [5, 6, 5, 6, 1, 2]], dtype=float)
-    assert ed._possibly_degenerate(neighbours, c).tolist() == [True, True, False]
 
 
 def test_the_client_merge_against_brute_force():
@@ -329,7 +337,7 @@ def test_faces_far_from_the_seam_need_no_circle_and_their_disks_lie_inside():
     assert (circles[wide][:, 0::2] <= precise[wide][:, 1::2]).all() and (precise[wide][:, 0::2] <= circles[wide][:, 1::2]).all()
     assert (circles[wide][:, 1::2] - circles[wide][:, 0::2] > precise[wide][:, 1::2] - precise[wide][:, 0::2]).any()
     assert np.array_equal(d.circle_boxes(np.nonzero(wide)[0]), precise[wide])
-    assert np.array_equal(may_share, ed._possibly_degenerate(d.face_neighbours(), precise))
+    assert np.array_equal(may_share, boxes_meet_across_an_edge(d.face_neighbours(), precise))
     # Four unit circles on one circle: both faces of the square share it, with or without their boxes.
     square = ellvor._ellvor._build([ellvor.Ellipse.circle(x, y, 1) for x, y in ((3, 3), (-3, 3), (-3, -3), (3, -3))],
                                    "ell", None, 0.1)
@@ -364,6 +372,41 @@ def test_a_wide_circle_box_is_made_tight_where_that_proves_the_disk_inside():
     assert ed._disk_misses_outside(tight[None], region, everything)[0]
     result = ed._tile_task(fractions, ids, boxes, region, region, everything, False)
     assert any(np.array_equal(row, np.sort(faces[k])) for row in np.sort(result["faces"], axis=1))
+
+
+def test_the_hull_task_makes_a_wide_circle_box_tight_where_that_proves_the_face():
+    # As above for the hull candidates' graph: a depth (the test is monotone in it) between what a wide face's
+    # wide box and its tight box prove; _hull_task certifies the face.
+    sites = ellvor.generate("ellipses", 1500, seed=2)
+    params, fractions, boxes = ed._site_arrays(sites)
+    candidates, polygon = ed._hull_candidates(params, boxes, 1.0)
+    payload = ed._payload(sites, fractions, candidates)
+    d = ed._local_build(payload)
+    faces = d.faces()
+    circles, may_share, wide = d.seam_circles(np.ones(len(faces), dtype=bool))
+    def proven(box, depth):
+        return bool((ed._disk_outside_polygon(box[None], polygon, depth) |
+                     ed._disk_misses_shrunk_polygon(box[None], polygon, depth))[0])
+    def threshold(box):
+        lo, hi = 0.0, 1e3
+        if not proven(box, hi):
+            return np.inf
+        for _ in range(36):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if proven(box, mid) else (mid, hi)
+        return hi
+    candidates_wide = np.nonzero(wide & ~may_share)[0]
+    width = (circles[:, 1::2] - circles[:, 0::2]).sum(axis=1)
+    candidates_wide = candidates_wide[np.argsort(-width[candidates_wide])][:6]   # the widest: the largest gaps
+    tight = d.circle_boxes(candidates_wide)
+    gap = [threshold(circles[k]) - threshold(b) for k, b in zip(candidates_wide, tight)]
+    best = int(np.argmax([g if np.isfinite(g) else -1 for g in gap]))
+    k, tight = int(candidates_wide[best]), tight[best]
+    assert 0 < gap[best] < np.inf
+    depth = threshold(tight) + gap[best] / 2
+    assert proven(tight, depth) and not proven(circles[k], depth)
+    result = ed._hull_task(payload, candidates, polygon, depth)
+    assert any(np.array_equal(row, np.sort(candidates[faces[k]])) for row in np.sort(result["faces"], axis=1))
 
 
 def test_the_optimistic_disk_test_keeps_every_face_a_narrower_box_proves():
