@@ -32,7 +32,10 @@ VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std
 
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face,
                                     const DoubleVoronoiCircle* c) {
-    if (c && is_tight({c->center_x, c->center_y, c->radius})) return {c->center_x, c->center_y, c->radius};
+    if (c) {
+        const VoronoiCircleBox doubles{c->center_x, c->center_y, c->radius};
+        if (is_tight(doubles)) return doubles;
+    }
     VoronoiCircleSolver solver(sites[face[0]], sites[face[1]], sites[face[2]], common_medial_axis_tangency);
     // The wide double box (a huge circle) holds the root: Newton and Krawczyk from its middle spare the
     // solver's guesses and tangent-line starts, milliseconds a huge circle (a tile's hull along its seam).

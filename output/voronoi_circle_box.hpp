@@ -36,7 +36,7 @@ VoronoiCircleBox voronoi_circle_box_any_width(const std::vector<Ellipse>& sites,
                                               const DoubleVoronoiCircle* doubles);
 
 // Whether every component of the box is within 2^-40 of the circle's
-// magnitude |center| + |radius| (what voronoi_circle_box returns).
+// magnitude |center| + |radius|: a double box voronoi_circle_box keeps.
 bool is_tight(const VoronoiCircleBox& box);
 
 // Whether the boxes of two circles meet (all three components overlap).
