@@ -258,6 +258,9 @@ def _submit(client, fn, *args):
 def _tile_task(payload, ids, boxes, region, rect, everything, whole):
     """Builds one tile's diagram and returns what it proves about the whole one (global ids)."""
     start, cpu = time.perf_counter(), time.process_time()
+    if not (whole or isinstance(payload, str)):   # the sites stored in Z order (here, not on the busy client)
+        order = _in_curve_order(np.arange(len(ids)), np.stack([boxes[:, 0] + boxes[:, 1], boxes[:, 2] + boxes[:, 3]], axis=1))
+        payload, ids, boxes = payload[order], ids[order], boxes[order]
     build_cpu = time.process_time()
     try:
         d = _local_build(payload)
@@ -851,7 +854,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
         held = np.nonzero(_meets(boxes, region))[0]
         if covers_everything(region, held):
             return one_build(f"the halo of tile {divmod(t, ny)} holds the whole set")
-        futures[t] = submit_tile(_in_curve_order(held, params[:, 3:5]), region, grid.rect(t), False)
+        futures[t] = submit_tile(held, region, grid.rect(t), False)
         tiles[t].update(sites=len(held), halo_sites=len(held) - tiles[t]["owned"], halo=float(halos[t]), retries=0)
         if len(futures) == 2:
             # The hull candidates' graph third: the workers have started on two tiles meanwhile, and it
