@@ -69,6 +69,17 @@ def boxes_meet_across_an_edge(neighbours, boxes):
     return suspect
 
 
+def least_passing(passes, lo, hi, steps=60):
+    """The least x in [lo, hi] (to (hi - lo) / 2^steps) where the monotone test ``passes(x)`` holds; inf if
+    not at hi."""
+    if not passes(hi):
+        return np.inf
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if passes(mid) else (mid, hi)
+    return hi
+
+
 @pytest.mark.parametrize("tiles", [(1, 1), (2, 2), (3, 2), (8, 8)])
 def test_random_ellipses_every_tiling(client, tiles):
     d = same_graph(ellvor.generate("ellipses", 1500, seed=11), client, tiles)
@@ -358,16 +369,15 @@ def test_a_wide_circle_box_is_made_tight_where_that_proves_the_disk_inside():
     # The region (-inf, x) x R: per wide face, the least x where its tight box proves the disk inside, and
     # where its wide box does (bisection: both tests are monotone in x); the face where they differ most.
     def threshold(box):
-        lo, hi = everything[0], everything[1]
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (lo, mid) if ed._disk_misses_outside(box[None], (-np.inf, mid, -np.inf, np.inf), everything)[0] else (mid, hi)
-        return hi
+        return least_passing(lambda x: ed._disk_misses_outside(box[None], (-np.inf, x, -np.inf, np.inf), everything)[0],
+                             everything[0], everything[1])
     candidates = np.nonzero(wide & ~may_share)[0]
     tight = d.circle_boxes(candidates)
-    gap = [threshold(circles[k]) - threshold(t) for k, t in zip(candidates, tight)]
-    k, tight = int(candidates[np.argmax(gap)]), tight[np.argmax(gap)]
-    region = (-np.inf, threshold(tight) + max(gap) / 2, -np.inf, np.inf)
+    gap = np.array([threshold(circles[k]) - threshold(t) for k, t in zip(candidates, tight)])
+    best = int(np.argmax(np.where(np.isfinite(gap), gap, -1)))
+    k, tight = int(candidates[best]), tight[best]
+    assert 0 < gap[best] < np.inf
+    region = (-np.inf, threshold(tight) + gap[best] / 2, -np.inf, np.inf)
     assert not ed._disk_misses_outside(circles[k:k + 1], region, everything)[0]
     assert ed._disk_misses_outside(tight[None], region, everything)[0]
     result = ed._tile_task(fractions, ids, boxes, region, region, everything, False)
@@ -388,13 +398,7 @@ def test_the_hull_task_makes_a_wide_circle_box_tight_where_that_proves_the_face(
         return bool((ed._disk_outside_polygon(box[None], polygon, depth) |
                      ed._disk_misses_shrunk_polygon(box[None], polygon, depth))[0])
     def threshold(box):
-        lo, hi = 0.0, 1e3
-        if not proven(box, hi):
-            return np.inf
-        for _ in range(36):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (lo, mid) if proven(box, mid) else (mid, hi)
-        return hi
+        return least_passing(lambda depth: proven(box, depth), 0.0, 1e3, steps=36)
     candidates_wide = np.nonzero(wide & ~may_share)[0]
     width = (circles[:, 1::2] - circles[:, 0::2]).sum(axis=1)
     candidates_wide = candidates_wide[np.argsort(-width[candidates_wide])][:6]   # the widest: the largest gaps
