@@ -342,18 +342,13 @@ py::array_t<double> circle_boxes(Diagram& d, std::optional<py::array_t<std::int6
     std::vector<double> boxes;
     locked(d, [&](Diagram& g) {  // the cache is the graph's: under its lock
         const std::vector<Ellipse>& s = *g.sites;
-        std::vector<std::size_t> numbers;
-        if (which) {
-            for (std::int64_t k : std::vector<std::int64_t>(which->data(), which->data() + which->size())) {
-                if (k < 0 || static_cast<std::size_t>(k) >= g.faces.size()) throw py::index_error("which: no face " + std::to_string(k));
-                numbers.push_back(static_cast<std::size_t>(k));
-            }
-        } else {
-            for (std::size_t k = 0; k < g.faces.size(); ++k) numbers.push_back(k);
-        }
-        boxes.reserve(6 * numbers.size());
-        for (std::size_t k : numbers) {
-            const auto& f = g.faces[k];
+        const std::int64_t* numbers = which ? which->data() : nullptr;
+        const std::size_t count = which ? static_cast<std::size_t>(which->size()) : g.faces.size();
+        boxes.reserve(6 * count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::int64_t k = numbers ? numbers[i] : static_cast<std::int64_t>(i);
+            if (k < 0 || static_cast<std::size_t>(k) >= g.faces.size()) throw py::index_error("which: no face " + std::to_string(k));
+            const auto& f = g.faces[static_cast<std::size_t>(k)];
             VoronoiCircle* cached = g.traits->cached_circle(f[0], f[1], f[2]);
             const VoronoiCircleBox c = cached ? voronoi_circle_box(s, f, cached->in_doubles()) : voronoi_circle_box(s, f);
             boxes.insert(boxes.end(), {c.center_x.lo, c.center_x.hi, c.center_y.lo, c.center_y.hi, c.radius.lo, c.radius.hi});
@@ -369,8 +364,9 @@ py::array_t<double> circle_boxes(Diagram& d, std::optional<py::array_t<std::int6
 // `needed` (no other proof that its disk lies in the tile's region) or at hand
 // in the circle cache, NaN elsewhere; whether a face across one of its edges
 // may have the same circle (four sites on one empty circle); and whether the
-// box is the double certificate's wide one (a huge circle; circle_boxes gives
-// the tight one: ~0.3 ms a face in Arb, so only where a wide box leaves a test
+// box is the double certificate's wide one (beyond 2^-40 of its circle: ~1% of
+// a tile's faces, mostly huge circles along its hull; circle_boxes gives the
+// tight one, ~0.3 ms a face in Arb, so only where a wide box leaves a test
 // undecided). Two neighbours' circles differ when their boxes are disjoint,
 // or when one box proves a site of the other off its circle: a face's circle
 // is certified (~3 us) only when neither proof has the box it needs, so of

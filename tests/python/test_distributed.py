@@ -348,6 +348,9 @@ def test_faces_far_from_the_seam_need_no_circle_and_their_disks_lie_inside():
     assert (circles[wide][:, 0::2] <= precise[wide][:, 1::2]).all() and (precise[wide][:, 0::2] <= circles[wide][:, 1::2]).all()
     assert (circles[wide][:, 1::2] - circles[wide][:, 0::2] > precise[wide][:, 1::2] - precise[wide][:, 0::2]).any()
     assert np.array_equal(d.circle_boxes(np.nonzero(wide)[0]), precise[wide])
+    for bad in (-1, len(faces)):
+        with pytest.raises(IndexError, match="no face"):
+            d.circle_boxes(np.array([0, bad]))
     assert np.array_equal(may_share, boxes_meet_across_an_edge(d.face_neighbours(), precise))
     # Four unit circles on one circle: both faces of the square share it, with or without their boxes.
     square = ellvor._ellvor._build([ellvor.Ellipse.circle(x, y, 1) for x, y in ((3, 3), (-3, 3), (-3, -3), (3, -3))],
