@@ -103,15 +103,13 @@ def _rss_mb():
 
 
 def _site_arrays(sites):
-    """(params, fractions, boxes) in one pass over the sites (C++): their nearest doubles (n, 5) as
-    ``Sites.to_array`` gives them; their numerators and denominators (n, 10), what _payload sends of
-    them (None when one needs more than 64 bits); per site (xlo, xhi, ylo, yhi), a box containing the exact
-    ellipse (outward by 2^-40 of its magnitude). The fractions are int32 where they all fit: half the bytes
-    to send (a worker's copies of large messages cost time)."""
-    params, fractions, boxes = sites._tiling_arrays()
-    if fractions is not None and len(fractions) and -2 ** 31 < fractions.min() and fractions.max() < 2 ** 31:
-        fractions = fractions.astype(np.int32)
-    return params, fractions, boxes
+    """(params, fractions, boxes) in one pass over the sites (C++): their nearest doubles
+    (n, 5) as ``Sites.to_array`` gives them; their numerators and denominators (n, 10), what _payload sends
+    of them, in the narrowest of int16, int32 and int64 that holds them all (None when one needs more than
+    64 bits: sending a byte costs the client ~15 ns, copies at both ends of two sockets, and random sites'
+    fractions fit in int16); per site (xlo, xhi, ylo, yhi), a box containing the exact ellipse (outward by
+    2^-40 of its magnitude)."""
+    return sites._tiling_arrays()
 
 
 def _payload(sites, fractions, ids):
@@ -255,12 +253,14 @@ def _submit(client, fn, *args):
         return client.submit(fn, *args, pure=False)
 
 
-def _tile_task(payload, ids, boxes, region, rect, everything, whole):
-    """Builds one tile's diagram and returns what it proves about the whole one (global ids)."""
+def _tile_task(payload, ids, region, rect, everything, whole, n):
+    """Builds one tile's diagram and returns what it proves about the whole one (global ids below ``n``;
+    the faces as _faces_out gives them, but for the whole set's, which are rows)."""
     start, cpu = time.perf_counter(), time.process_time()
     if not (whole or isinstance(payload, str)):   # the sites stored in Z order (here, not on the busy client)
-        order = _in_curve_order(np.arange(len(ids)), np.stack([boxes[:, 0] + boxes[:, 1], boxes[:, 2] + boxes[:, 3]], axis=1))
-        payload, ids, boxes = payload[order], ids[order], boxes[order]
+        centers = np.stack([payload[:, 6] / payload[:, 7], payload[:, 8] / payload[:, 9]], axis=1)  # near enough
+        order = _in_curve_order(np.arange(len(ids)), centers)
+        payload, ids = payload[order], ids[order]
     build_cpu = time.process_time()
     try:
         d = _local_build(payload)
@@ -273,14 +273,18 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
         certified = owned = np.ones(len(faces), dtype=bool)
         visible_sure = np.ones(len(ids), dtype=bool)
     else:
+        boxes = d._site_boxes()   # made here, not sent: the client's boxes, from the same sites
         # Faces with a site whose empty disks all lie inside the region need no circle box for the disk test;
         # the neighbours' test asks only for the boxes it needs (docs/DESIGN.md §8).
         settled = _disks_settled(boxes, region)[faces].any(axis=1)
         circle, may_share, wide = d.seam_circles(~settled)
-        inside = _disk_misses_outside(circle, region, everything)
+        unsettled = np.nonzero(~settled)[0]   # the disk test for these only
+        inside = np.zeros(len(faces), dtype=bool)
+        inside[unsettled] = _disk_misses_outside(circle[unsettled], region, everything)
         # A wide double box (beyond 2^-40 of its circle: ~1% of the faces) made tight (Arb) only where that
         # might prove its disk inside.
-        retry = np.nonzero(wide & ~settled & ~inside & _disk_misses_outside(circle, region, everything, True))[0]
+        retry = unsettled[wide[unsettled] & ~inside[unsettled]]
+        retry = retry[_disk_misses_outside(circle[retry], region, everything, True)]
         if len(retry):
             circle[retry] = d.circle_boxes(retry)
             inside[retry] = _disk_misses_outside(circle[retry], region, everything)
@@ -288,16 +292,17 @@ def _tile_task(payload, ids, boxes, region, rect, everything, whole):
         visible_sure = _inside(boxes, region)
         # Which tile keeps a face (a count only): its circle's center where the box is at hand, else the mean
         # of its sites' box middles.
-        mid = np.stack([(boxes[:, 0] + boxes[:, 1]) / 2, (boxes[:, 2] + boxes[:, 3]) / 2], axis=1)[faces].mean(axis=1)
-        known = ~np.isnan(circle[:, 0])
-        mid[known] = np.stack([(circle[known, 0] + circle[known, 1]) / 2, (circle[known, 2] + circle[known, 3]) / 2],
-                              axis=1)
-        centers = mid[certified]
+        kept, kept_circle = faces[certified], circle[certified]
+        centers = np.stack([(boxes[:, 0] + boxes[:, 1]) / 2, (boxes[:, 2] + boxes[:, 3]) / 2], axis=1)[kept].mean(axis=1)
+        known = ~np.isnan(kept_circle[:, 0])
+        centers[known] = np.stack([(kept_circle[known, 0] + kept_circle[known, 1]) / 2,
+                                   (kept_circle[known, 2] + kept_circle[known, 3]) / 2], axis=1)
         owned = ((centers[:, 0] >= rect[0]) & (centers[:, 0] < rect[1]) & (centers[:, 1] >= rect[2]) &
                  (centers[:, 1] < rect[3]))
     visible_sure[hidden[:, 0]] = False
     out = {
-        "faces": _faces_in_order(ids[faces[certified]]), "hidden": ids[hidden], "visible": ids[np.nonzero(visible_sure)[0]],
+        "faces": _faces_in_order(ids[faces]) if whole else _faces_out(ids[kept], n), "hidden": ids[hidden],
+        "visible": ids[np.nonzero(visible_sure)[0]],
         "tile_faces": len(faces), "certified": int(certified.sum()), "owned_faces": int(owned.sum()),
         "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
         "build_cpu_seconds": build_cpu, "rss_mb": _rss_mb(),
@@ -495,7 +500,7 @@ def _convex_hull(points):
     return [(float(x), float(y)) for x, y in lower[:-1] + upper[:-1]]
 
 
-def _hull_task(payload, ids, polygon, depth):
+def _hull_task(payload, ids, polygon, depth, n):
     """The candidates' graph: its hull faces are those of the whole graph, and so are its finite faces whose
     disk misses the non-candidates' region (docs/DESIGN.md §8); its hidden sites are hidden."""
     start, cpu = time.perf_counter(), time.process_time()
@@ -516,7 +521,7 @@ def _hull_task(payload, ids, polygon, depth):
         certified &= ~may_share
     else:
         certified = np.ones(len(faces), dtype=bool)   # every site is a candidate
-    return {"hull": ids[d.hull()], "faces": _faces_in_order(ids[faces[certified]]), "hidden": ids[d.hidden()],
+    return {"hull": ids[d.hull()], "faces": _faces_out(ids[faces[certified]], n), "hidden": ids[d.hidden()],
             "visible": np.zeros(0, dtype=np.int64), "tile_faces": len(faces), "certified": int(certified.sum()),
             "owned_faces": 0, "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
             "rss_mb": _rss_mb()}
@@ -570,42 +575,45 @@ def _merged(*arrays):
 
 
 class _FaceUnion:
-    """The distinct faces the tiles certified so far and their directed edges' keys (_directed_keys, ids below
-    n), sorted: grown as results come, so that most of the merge runs while the last tiles still build. Each
-    face as one int64 key (a n + b) n + c where n^3 fits, else as rows."""
+    """The distinct faces the tiles certified so far, the sites on them, and their directed edges' keys
+    (_directed_keys, ids below n), sorted: grown as results come, so that most of the merge runs while the
+    last tiles still build. Faces come as _faces_out sends them: int64 keys (a n + b) n + c where n^3
+    fits (kept as such), else rows."""
 
     def __init__(self, n):
         self.n = n
-        self.wide = n ** 3 >= 2 ** 63
+        self.wide = not _keys_fit(n)
         self.face_keys = np.zeros(0, dtype=np.int64)
         self.rows = np.zeros((0, 3), dtype=np.int64)
         self.keys = np.zeros(0, dtype=np.int64)
+        self.visible = np.zeros(n, dtype=bool)
 
-    @property
+    def __len__(self):
+        return len(self.rows) if self.wide else len(self.face_keys)
+
     def faces(self):
         """The faces found, sorted (rows; each row as a tile gave it, its smallest id first)."""
-        if self.wide:
-            return self.rows
-        n, k = self.n, self.face_keys
-        return np.stack([k // (n * n), k // n % n, k % n], axis=1)
+        return self.rows if self.wide else _face_rows(self.face_keys, self.n)
 
-    def add(self, rows):
-        """Adds the faces ``rows`` (repeats allowed; the tiles' sorted runs, concatenated, merge fastest)."""
-        rows = np.asarray(rows, dtype=np.int64).reshape(-1, 3)
+    def add(self, parts):
+        """Adds the tiles' faces ``parts`` (a list of _faces_out's arrays; repeats allowed: sorted runs,
+        concatenated, merge fastest)."""
         n = self.n
         if self.wide:
+            rows = np.concatenate([np.asarray(p, dtype=np.int64).reshape(-1, 3) for p in parts])
             both, first = np.unique(np.concatenate([self.rows, rows]), axis=0, return_index=True)
             new = both[first >= len(self.rows)]
             self.rows = both
         else:
-            k = (rows[:, 0] * n + rows[:, 1]) * n + rows[:, 2]
+            k = np.concatenate(parts).astype(np.int64, copy=False)
             k.sort(kind="stable")   # merges sorted runs
             k = k[np.concatenate([[True], k[1:] != k[:-1]])] if len(k) else k
             if len(self.face_keys) and len(k):
                 at = np.minimum(np.searchsorted(self.face_keys, k), len(self.face_keys) - 1)
                 k = k[self.face_keys[at] != k]
             self.face_keys = _merged(self.face_keys, k)
-            new = np.stack([k // (n * n), k // n % n, k % n], axis=1)
+            new = _face_rows(k, n)
+        self.visible[new.ravel()] = True
         # Each part sorted apart, then all merged: for rows in order, each row's smallest id first, the edges
         # a -> b come sorted and c -> a nearly so; only b -> c are in no order.
         parts = [_directed_keys(src, dst, n) for src, dst in ((new[:, 0], new[:, 1]), (new[:, 2], new[:, 0]),
@@ -652,6 +660,28 @@ def _faces_in_order(a):
     return a[np.lexsort(a.T[::-1])]
 
 
+def _keys_fit(n):
+    """Whether a face of ids below n fits one int64 key (a n + b) n + c."""
+    return n ** 3 < 2 ** 63
+
+
+def _faces_out(a, n):
+    """A tile's faces ``a`` (ids below ``n``) as it sends them: each turned to start at its smallest id, as sorted
+    keys (a n + b) n + c where they fit (8 bytes a face, not 12, and no work on the client to make them),
+    else as sorted rows (_faces_in_order)."""
+    if not _keys_fit(n):
+        return _faces_in_order(a)
+    a = np.take_along_axis(a, (a.argmin(axis=1)[:, None] + np.arange(3)) % 3, axis=1).astype(np.int64)
+    k = (a[:, 0] * n + a[:, 1]) * n + a[:, 2]
+    k.sort()
+    return k
+
+
+def _face_rows(k, n):
+    """Faces from their keys (a n + b) n + c (_faces_out): rows (a, b, c)."""
+    return np.stack([k // (n * n), k // n % n, k % n], axis=1)
+
+
 def _sorted_rows(a, width):
     a = np.asarray(a, dtype=np.int64).reshape(-1, width)
     if len(a) == 0:
@@ -672,10 +702,18 @@ class TiledDiagram:
     call)."""
 
     def __init__(self, sites, hidden, edges, faces, hull, tiles, stats):
+        """``edges`` and ``faces``: arrays, or functions that make them (called on first use)."""
         self.sites = sites
-        arrays = (hidden, edges, faces, hull)   # (no map(): this module defines its own)
-        self.hidden, self.edges, self.faces, self.hull = (_frozen(np.asarray(a)) for a in arrays)
+        self.hidden, self.hull = _frozen(np.asarray(hidden)), _frozen(np.asarray(hull))
+        self._makers = {"edges": edges, "faces": faces}
         self.tiles, self.stats = tiles, stats
+
+    def _made(self, name):
+        a = self._makers.pop(name)
+        return _frozen(np.asarray(a() if callable(a) else a))
+
+    edges = functools.cached_property(lambda self: self._made("edges"))
+    faces = functools.cached_property(lambda self: self._made("faces"))
 
     @functools.cached_property
     def points(self):
@@ -704,14 +742,17 @@ def local_cluster(workers=None):
     in the workers (it samples each worker's stack every 10 ms: ~7% of a tile build's CPU on the project's
     machine, experiments/results/distributed.md), and glibc's malloc as in any process: Dask sets
     MALLOC_TRIM_THRESHOLD_=65536 in its workers, which fixes glibc's mmap threshold at 128 kB, so that every
-    large numpy temporary is a fresh mmap whose pages fault in (a tile's seam arithmetic 8-10x slower). Use it
-    as a context manager, or close() it."""
+    large numpy temporary is a fresh mmap whose pages fault in (a tile's seam arithmetic 8-10x slower); and a
+    scheduler that sends a worker its next task only when its thread is free (worker-saturation 1.0, not
+    Dask's 1.1, which gives a one-thread worker two: the last tile then waited behind another while the
+    other worker had nothing to do). Use it as a context manager, or close() it."""
     import dask
     from distributed import LocalCluster
     environ = {key: value for key, value in dask.config.get("distributed.nanny.pre-spawn-environ").items()
                if key != "MALLOC_TRIM_THRESHOLD_"}
     # The workers take the configuration in force when the cluster starts them.
-    with dask.config.set({"distributed.worker.profile.enabled": False, "distributed.nanny.pre-spawn-environ": environ}):
+    with dask.config.set({"distributed.worker.profile.enabled": False, "distributed.nanny.pre-spawn-environ": environ,
+                          "distributed.scheduler.worker-saturation": 1.0}):
         return LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
                             dashboard_address=None)
 
@@ -786,8 +827,8 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     id_type = np.int32 if n < 2 ** 31 else np.int64
 
     def submit_tile(ids, region, rect, whole):
-        return _submit(client, _tile_task, _payload(sites, fractions, ids), ids.astype(id_type), boxes[ids], region, rect,
-                       everything, whole)
+        return _submit(client, _tile_task, _payload(sites, fractions, ids), ids.astype(id_type), region, rect, everything,
+                       whole, n)
 
     def one_build(reason):
         result = submit_tile(all_ids, (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
@@ -813,7 +854,8 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     area = float((hi[0] - lo[0]) * (hi[1] - lo[1]))
     spacing = math.sqrt(area / n) if area > 0 else float(max(hi - lo)) / n
     halos = np.full(nx * ny, halo if halo is not None else 4 * spacing + 1e-300)
-    tiles = [{"index": divmod(t, ny), "sites": 0, "owned": int((owner == t).sum()), "halo_sites": 0, "halo": 0.0,
+    owned_count = np.bincount(owner, minlength=nx * ny)
+    tiles = [{"index": divmod(t, ny), "sites": 0, "owned": int(owned_count[t]), "halo_sites": 0, "halo": 0.0,
               "tile_faces": 0, "certified": 0, "faces_kept": 0, "retries": -1, "seconds": 0.0, "cpu_seconds": 0.0,
               "build_cpu_seconds": 0.0, "rss_mb": 0.0}
              for t in range(nx * ny)]
@@ -839,16 +881,14 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
         tiles[t]["build_cpu_seconds"] += result["build_cpu_seconds"]
         tiles[t]["rss_mb"] = max(tiles[t]["rss_mb"], result["rss_mb"])
 
-    def submit_hull():
-        candidates, polygon = _hull_candidates(params, boxes, halos.max())
-        return candidates, _submit(client, _hull_task, _payload(sites, fractions, candidates), candidates.astype(id_type), polygon,
-                                   halos.max())
-
-    # Round 1: the tiles.
+    # Round 1: the tiles, the largest first (the workers take them in that order, so that the last to end are
+    # small and the workers end together): by the sides on which a tile has a halo, then by its sites. The hull
+    # candidates' graph, smaller than a tile where tiles pay (experiments/results/distributed.md), is sent
+    # when the last tiles have started: Dask would start it at once (it queues only tasks of a large group).
+    halo_sides = [(0 < i) + (i < nx - 1) + (0 < j) + (j < ny - 1) for i, j in (divmod(t, ny) for t in range(nx * ny))]
     futures = {}
-    hull_job = None
-    for t in range(nx * ny):
-        if not (owner == t).any():
+    for t in sorted(range(nx * ny), key=lambda t: (-halo_sides[t], -owned_count[t], t)):
+        if not owned_count[t]:
             continue
         region = grid.region(t, halos[t])
         held = np.nonzero(_meets(boxes, region))[0]
@@ -856,18 +896,19 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
             return one_build(f"the halo of tile {divmod(t, ny)} holds the whole set")
         futures[t] = submit_tile(held, region, grid.rect(t), False)
         tiles[t].update(sites=len(held), halo_sites=len(held) - tiles[t]["owned"], halo=float(halos[t]), retries=0)
-        if len(futures) == 2:
-            # The hull candidates' graph third: the workers have started on two tiles meanwhile, and it
-            # does not come last (a worker would then build it alone).
-            hull_job = submit_hull()
-    if hull_job is None:
-        hull_job = submit_hull()
-    candidates, hull_future = hull_job
+    candidates, polygon = _hull_candidates(params, boxes, halos.max())
     from distributed import as_completed
     tile_of = {f: t for t, f in futures.items()}
-    outstanding = len(futures) + 1
     workers = max(1, len(client.scheduler_info()["workers"]))
-    for f in as_completed([*futures.values(), hull_future]):
+    running = as_completed(futures.values())
+    hull_future = None
+    outstanding = len(futures) + 1   # the tiles and the hull candidates' graph
+    while outstanding:
+        if hull_future is None and outstanding <= workers + 1:
+            hull_future = _submit(client, _hull_task, _payload(sites, fractions, candidates), candidates.astype(id_type),
+                                  polygon, halos.max(), n)
+            running.add(hull_future)
+        f = next(running)
         if f is hull_future:
             h = f.result()
             if "error" in h:
@@ -878,9 +919,10 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
         else:
             collect(tile_of[f], f.result())
         outstanding -= 1
-        if outstanding <= workers:
-            # The last tasks build while the workers run out of work: merge what came meanwhile.
-            union.add(np.concatenate(faces_found))
+        if len(faces_found) >= 4 or outstanding <= workers:
+            # Merged in batches as they come (each batch's merge rewrites the union so far), so that little is
+            # left to merge when the last task ends.
+            union.add(faces_found)
             faces_found = []
 
     # Later rounds: a patch around each site on a face that is missing, its halo doubling each round.
@@ -888,14 +930,12 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     rounds = 1
     while True:
         if faces_found:
-            union.add(np.concatenate(faces_found))
+            union.add(faces_found)
             faces_found = []
-        faces = union.faces
         hidden_all = np.concatenate(hidden_found)
         is_hidden = np.zeros(n, dtype=bool)
         is_hidden[hidden_all[:, 0]] = True
-        is_visible = np.zeros(n, dtype=bool)
-        is_visible[faces.ravel()] = True
+        is_visible = union.visible.copy()
         for v in visible_found:
             is_visible[v] = True
         if (is_hidden & is_visible).any():
@@ -906,7 +946,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
         open_sites = np.union1d(directed.open_sites(), unknown)
         n_visible = int(is_visible.sum())
         if len(open_sites) == 0:
-            if len(faces) + len(accepted) == 2 * n_visible - 2:
+            if len(union) + len(accepted) == 2 * n_visible - 2:
                 break
             return one_build("the faces found do not count up to the whole graph")
         if len(open_sites) > max(64, n // 10):
@@ -923,8 +963,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
                 return one_build(f"the patch around site {p} holds the whole set")
             patch_halo[p] *= 2
             batches.setdefault(int(owner[p]), []).append(
-                (_payload(sites, fractions, held), held.astype(id_type), boxes[held], r, (0.0, 0.0, 0.0, 0.0), everything,
-                 False))
+                (_payload(sites, fractions, held), held.astype(id_type), r, (0.0, 0.0, 0.0, 0.0), everything, False, n))
             tiles[int(owner[p])]["retries"] += 1
         futures = {t: _submit(client, _patches_task, jobs) for t, jobs in batches.items()}
         for t, f in futures.items():
@@ -935,7 +974,9 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     first = np.concatenate([[True], hidden_all[1:, 0] != hidden_all[:-1, 0]]) if len(hidden_all) else []
     hidden = hidden_all[first]
     accepted = _sorted_rows(accepted, 2)
-    return TiledDiagram(sites, hidden, directed.edges(), faces, accepted,
+    # The edges and faces are made on first use, as Diagram makes its arrays from its graph.
+    faces = union.rows if union.wide else functools.partial(_face_rows, union.face_keys, n)
+    return TiledDiagram(sites, hidden, directed.edges, faces, accepted,
                         [t for t in tiles if t["retries"] >= 0],
                         {"rounds": rounds, "fallback": False, "hull_candidates": len(candidates),
                          "seconds": time.perf_counter() - start})

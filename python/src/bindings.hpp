@@ -51,6 +51,8 @@ Sites sites_argument(py::handle value, const std::string& format);
 // Sites from (k, 10) int64 numerator/denominator pairs (Sites._tiling_arrays),
 // checked as a list of Ellipses is.
 Sites sites_from_fractions(py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> fractions);
+// Per site (xlo, xhi, ylo, yhi): the boxes Sites._tiling_arrays gives, each containing its exact ellipse.
+py::array_t<double> site_boxes(const std::vector<Ellipse>& sites);
 
 // ---- NumPy arrays (filled from C++, no Python loop) ---------------------------------------------------------
 

@@ -592,6 +592,9 @@ void bind_diagram(py::module_& m) {
         .def("circle_boxes", &circle_boxes, py::arg("which") = py::none())
         .def("face_neighbours", &face_neighbours)
         .def("seam_circles", &seam_circles, py::arg("needed"))
+        // The boxes of the graph's sites, as Sites._tiling_arrays gives them (a tile's worker makes them
+        // rather than being sent them: python/ellvor/distributed.py).
+        .def("_site_boxes", [](const Diagram& d) { return site_boxes(*d.sites); })
         .def("vertex", &vertex, py::arg("i"), py::arg("bits"))
         .def("trace", &trace, py::arg("tolerance"), py::arg("margin"))
         .def("validate", &validate, py::arg("brute_force"));

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace ellvor::python {
@@ -83,16 +84,55 @@ Sites sites_from_text(const std::string& text, const std::string& format, py::ob
     return s;
 }
 
+// One site's row of each of tiling_arrays' arrays: its fractions (false when
+// one needs more than 64 bits), nearest doubles and box. A box is the rotated
+// ellipse's extent about the rounded center, widened by 2^-40 of
+// |center| + a + b: the rounding of the parameters (half an ulp each) and of
+// the dozen operations below are far below that.
+bool tiling_values(const Ellipse& e, std::int64_t* f, double* p, double* b) {
+    constexpr std::int64_t kExactInteger = std::int64_t{1} << 53;
+    constexpr double kMargin = 0x1p-40;
+    const Rational* values[] = {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()};
+    bool fits = true;
+    for (int j = 0; j < 5; ++j) {
+        const fmpz *num = fmpq_numref(values[j]->get()), *den = fmpq_denref(values[j]->get());
+        const bool small = fmpz_fits_si(num) && fmpz_fits_si(den);
+        const std::int64_t nv = small ? fmpz_get_si(num) : 0, dv = small ? fmpz_get_si(den) : 1;
+        fits = fits && small;
+        f[2 * j] = nv;
+        f[2 * j + 1] = dv;
+        // Integers below 2^53 are exact doubles: one correctly rounded
+        // division is then the nearest double (to_double costs ~1 µs).
+        const bool exact = small && nv > -kExactInteger && nv < kExactInteger && dv < kExactInteger;
+        p[j] = exact ? static_cast<double>(nv) / static_cast<double>(dv) : values[j]->to_double();
+    }
+    const double a = p[0], bb = p[1], w = p[2], xc = p[3], yc = p[4];
+    const double c = (1 - w * w) / (1 + w * w), sn = 2 * w / (1 + w * w);  // w = tan(angle / 2)
+    const double hx = std::sqrt((a * c) * (a * c) + (bb * sn) * (bb * sn));
+    const double hy = std::sqrt((a * sn) * (a * sn) + (bb * c) * (bb * c));
+    const double mx = kMargin * (std::fabs(xc) + a + bb) + 5e-324, my = kMargin * (std::fabs(yc) + a + bb) + 5e-324;
+    b[0] = std::nextafter(xc - hx - mx, -HUGE_VAL);
+    b[1] = std::nextafter(xc + hx + mx, HUGE_VAL);
+    b[2] = std::nextafter(yc - hy - my, -HUGE_VAL);
+    b[3] = std::nextafter(yc + hy + my, HUGE_VAL);
+    return fits;
+}
+
+// The fractions narrowed to T (every value fits).
+template <class T>
+py::array_t<T> narrowed(const py::array_t<std::int64_t>& wide) {
+    auto out = new_array<T>({wide.shape(0), wide.shape(1)});
+    std::copy(wide.data(), wide.data() + wide.size(), out.mutable_data());
+    return out;
+}
+
 // What a tiled build (python/ellvor/distributed.py) needs of every site, in
 // one pass over the sites (a pass costs their cache misses): a tuple
 //   params (n, 5): the nearest doubles of a b w xc yc (as Sites.to_array);
-//   fractions (n, 10) int64: a_num a_den b_num ... yc_den, what the tiles are
-//       sent (no text to format or parse), or None when one needs more than
-//       64 bits;
+//   fractions (n, 10): a_num a_den b_num ... yc_den, what the tiles are sent
+//       (no text to format or parse), in the narrowest of int16, int32 and
+//       int64 that holds them all, or None when one needs more than 64 bits;
 //   boxes (n, 4): xlo xhi ylo yhi, a box that contains the exact ellipse.
-// A box is the rotated ellipse's extent about the rounded center, widened by
-// 2^-40 of |center| + a + b: the rounding of the parameters (half an ulp
-// each) and of the dozen operations below are far below that.
 py::tuple tiling_arrays(const Sites& s) {
     const auto n = static_cast<py::ssize_t>(s.file.sites.size());
     auto params = new_array<double>({n, static_cast<py::ssize_t>(5)});
@@ -102,46 +142,43 @@ py::tuple tiling_arrays(const Sites& s) {
     std::int64_t* f = fractions.mutable_data();
     double* b = boxes.mutable_data();
     bool fits = true;
+    std::int64_t lo = 0, hi = 0;
     {
         py::gil_scoped_release release;
         // Each site's parameters sit in a block of their own: fetching those a
         // few sites ahead overlaps the cache misses that dominate this loop.
         constexpr py::ssize_t kAhead = 8;
-        constexpr std::int64_t kExactInteger = std::int64_t{1} << 53;
-        constexpr double kMargin = 0x1p-40;
         for (py::ssize_t k = 0; k < n; ++k) {
             if (k + kAhead < n) s.file.sites[static_cast<std::size_t>(k + kAhead)].prefetch();
-            const Ellipse& e = s.file.sites[static_cast<std::size_t>(k)];
-            const Rational* values[] = {&e.a(), &e.b(), &e.w(), &e.xc(), &e.yc()};
-            for (int j = 0; j < 5; ++j) {
-                const fmpz *num = fmpq_numref(values[j]->get()), *den = fmpq_denref(values[j]->get());
-                const bool small = fmpz_fits_si(num) && fmpz_fits_si(den);
-                const std::int64_t nv = small ? fmpz_get_si(num) : 0, dv = small ? fmpz_get_si(den) : 1;
-                fits = fits && small;
-                *f++ = nv;
-                *f++ = dv;
-                // Integers below 2^53 are exact doubles: one correctly rounded
-                // division is then the nearest double (to_double costs ~1 µs).
-                const bool exact = small && nv > -kExactInteger && nv < kExactInteger && dv < kExactInteger;
-                p[j] = exact ? static_cast<double>(nv) / static_cast<double>(dv) : values[j]->to_double();
-            }
-            const double a = p[0], bb = p[1], w = p[2], xc = p[3], yc = p[4];
-            const double c = (1 - w * w) / (1 + w * w), sn = 2 * w / (1 + w * w);  // w = tan(angle / 2)
-            const double hx = std::sqrt((a * c) * (a * c) + (bb * sn) * (bb * sn));
-            const double hy = std::sqrt((a * sn) * (a * sn) + (bb * c) * (bb * c));
-            const double mx = kMargin * (std::fabs(xc) + a + bb) + 5e-324, my = kMargin * (std::fabs(yc) + a + bb) + 5e-324;
-            b[0] = std::nextafter(xc - hx - mx, -HUGE_VAL);
-            b[1] = std::nextafter(xc + hx + mx, HUGE_VAL);
-            b[2] = std::nextafter(yc - hy - my, -HUGE_VAL);
-            b[3] = std::nextafter(yc + hy + my, HUGE_VAL);
-            p += 5;
-            b += 4;
+            fits = tiling_values(s.file.sites[static_cast<std::size_t>(k)], f + 10 * k, p + 5 * k, b + 4 * k) && fits;
+            const auto [row_lo, row_hi] = std::minmax_element(f + 10 * k, f + 10 * k + 10);
+            lo = std::min(lo, *row_lo), hi = std::max(hi, *row_hi);
         }
     }
-    return py::make_tuple(params, fits ? py::object(std::move(fractions)) : py::none(), boxes);
+    using Short = std::numeric_limits<std::int16_t>;
+    using Int = std::numeric_limits<std::int32_t>;
+    py::object sent = py::none();
+    if (fits && lo >= Short::min() && hi <= Short::max())
+        sent = narrowed<std::int16_t>(fractions);
+    else if (fits && lo >= Int::min() && hi <= Int::max())
+        sent = narrowed<std::int32_t>(fractions);
+    else if (fits)
+        sent = std::move(fractions);
+    return py::make_tuple(params, sent, boxes);
 }
 
 }  // namespace
+
+py::array_t<double> site_boxes(const std::vector<Ellipse>& sites) {
+    const auto n = static_cast<py::ssize_t>(sites.size());
+    auto boxes = new_array<double>({n, static_cast<py::ssize_t>(4)});
+    double* b = boxes.mutable_data();
+    py::gil_scoped_release release;
+    std::int64_t f[10];
+    double p[5];
+    for (py::ssize_t k = 0; k < n; ++k) tiling_values(sites[static_cast<std::size_t>(k)], f, p, b + 4 * k);
+    return boxes;
+}
 
 // Sites from tiling_arrays' fractions, checked as a list of Ellipses is.
 Sites sites_from_fractions(py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> fractions) {

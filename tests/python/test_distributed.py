@@ -284,18 +284,21 @@ def test_the_client_merge_against_brute_force():
         cases.append((np.delete(graph.faces, drop, axis=0), graph.hull))
     for faces, hull in cases:
         n = int(max(faces.max(initial=0), hull.max(initial=0))) + 1
-        runs = [ed._faces_in_order(part) for part in np.array_split(np.concatenate([faces, faces[::3]]), 3)]
-        union = ed._FaceUnion(n)   # the runs added in two steps, as tiles come in
-        union.add(np.concatenate(runs[:2]))
-        union.add(runs[2])
-        unique = union.faces
+        parts = np.array_split(np.concatenate([faces, faces[::3]]), 3)
+        union = ed._FaceUnion(n)   # the tiles' keys added in two steps, as tiles come in
+        union.add([ed._faces_out(part, n) for part in parts[:2]])
+        union.add([ed._faces_out(parts[2], n)])
+        unique = union.faces()
         turned = {tuple(np.roll(r, -int(np.argmin(r))).tolist()) for r in faces}   # smallest id first
-        assert unique.tolist() == [list(r) for r in sorted(turned)]
-        wide = ed._FaceUnion(n)   # the rows path, for n^3 beyond int64
+        assert unique.tolist() == [list(r) for r in sorted(turned)] and len(union) == len(turned)
+        assert np.nonzero(union.visible)[0].tolist() == sorted({int(v) for r in turned for v in r})
+        wide = ed._FaceUnion(n)   # the rows path, for n^3 beyond int64: the tiles send rows
         wide.wide = True
-        wide.add(runs[0])
-        wide.add(np.concatenate(runs[1:]))
-        assert wide.faces.tolist() == unique.tolist() and wide.keys.tolist() == union.keys.tolist()
+        wide.add([ed._faces_in_order(parts[0])])
+        wide.add([ed._faces_in_order(part) for part in parts[1:]])
+        assert wide.faces().tolist() == unique.tolist() and wide.keys.tolist() == union.keys.tolist()
+        assert len(wide) == len(union) and wide.visible.tolist() == union.visible.tolist()
+        assert ed._faces_out(parts[0], 2 ** 21).tolist() == ed._faces_in_order(parts[0]).tolist()   # 2^63 <= (2^21)^3
         directed = Counter()
         for row in unique.tolist():
             directed.update((row[k], row[(k + 1) % 3]) for k in range(3))
@@ -306,7 +309,7 @@ def test_the_client_merge_against_brute_force():
         assert d.open_sites().tolist() == open_sites
         assert d.edges().tolist() == [list(e) for e in edges]
     whole = ed._FaceUnion(len(graph.sites))
-    whole.add(graph.faces)
+    whole.add([ed._faces_out(graph.faces, len(graph.sites))])
     assert ed._DirectedEdges(whole, graph.hull).edges().tolist() == graph.edges.tolist()
 
 
@@ -383,8 +386,9 @@ def test_a_wide_circle_box_is_made_tight_where_that_proves_the_disk_inside():
     region = (-np.inf, threshold(tight) + gap[best] / 2, -np.inf, np.inf)
     assert not ed._disk_misses_outside(circles[k:k + 1], region, everything)[0]
     assert ed._disk_misses_outside(tight[None], region, everything)[0]
-    result = ed._tile_task(fractions, ids, boxes, region, region, everything, False)
-    assert any(np.array_equal(row, np.sort(faces[k])) for row in np.sort(result["faces"], axis=1))
+    result = ed._tile_task(fractions, ids, region, region, everything, False, len(sites))
+    rows = ed._face_rows(result["faces"], len(sites))
+    assert any(np.array_equal(row, np.sort(faces[k])) for row in np.sort(rows, axis=1))
 
 
 def test_the_hull_task_makes_a_wide_circle_box_tight_where_that_proves_the_face():
@@ -412,8 +416,9 @@ def test_the_hull_task_makes_a_wide_circle_box_tight_where_that_proves_the_face(
     assert 0 < gap[best] < np.inf
     depth = threshold(tight) + gap[best] / 2
     assert proven(tight, depth) and not proven(circles[k], depth)
-    result = ed._hull_task(payload, candidates, polygon, depth)
-    assert any(np.array_equal(row, np.sort(candidates[faces[k]])) for row in np.sort(result["faces"], axis=1))
+    result = ed._hull_task(payload, candidates, polygon, depth, len(sites))
+    rows = ed._face_rows(result["faces"], len(sites))
+    assert any(np.array_equal(row, np.sort(candidates[faces[k]])) for row in np.sort(rows, axis=1))
 
 
 def test_the_optimistic_disk_test_keeps_every_face_a_narrower_box_proves():
@@ -441,17 +446,22 @@ def test_sites_travel_as_fractions_or_as_lines():
     rng = random.Random(5)
     sites = ellvor.generate("nested", 300, seed=4)
     ids = np.array(rng.sample(range(len(sites)), 120), dtype=np.int64)
-    params, fractions, _ = ed._site_arrays(sites)
+    params, fractions, boxes = ed._site_arrays(sites)
     assert np.array_equal(params, sites.to_array())
     payload = ed._payload(sites, fractions, ids)
     assert isinstance(payload, np.ndarray) and payload.shape == (120, 10)
     assert list(ed._local_sites(payload)) == [sites[int(k)] for k in ids]
+    # In the narrowest integers that hold them (these sites' fit in 16 bits); a tile makes its sites' boxes.
+    assert payload.dtype == np.int16
+    assert ed._site_arrays(ellvor.Sites([ellvor.Ellipse(1, 1, 0, 2 ** 15, 0), ellvor.Ellipse(1, 1, 0, 0, 0)]))[1].dtype == np.int32
+    assert np.array_equal(ed._local_build(payload)._site_boxes(), boxes[ids])
     # Numbers beyond 2^53 (not exact doubles): their fractions travel, their doubles are to_array's.
     wide = ellvor.Sites([ellvor.Ellipse(Fraction(2 ** 60 + 1, 3), Fraction(2 ** 60 - 1, 7), Fraction(-1, 2 ** 55 + 3),
                                         Fraction(2 ** 62 + 5, 2 ** 61 - 1), Fraction(-5, 3)),
                          ellvor.Ellipse(1, 1, 0, 10, 10)])
-    params, fractions, _ = ed._site_arrays(wide)
-    assert fractions is not None and np.array_equal(params, wide.to_array())
+    params, fractions, boxes = ed._site_arrays(wide)
+    assert fractions is not None and fractions.dtype == np.int64 and np.array_equal(params, wide.to_array())
+    assert np.array_equal(ed._local_build(fractions)._site_boxes(), boxes)
     assert list(ed._local_sites(ed._payload(wide, fractions, np.array([1, 0])))) == [wide[1], wide[0]]
     # A numerator beyond 64 bits: the lines carry it.
     big = ellvor.Sites([ellvor.Ellipse(2, 1, 0, 0, 0), ellvor.Ellipse(1, 1, 0, Fraction(3 ** 50, 7), 5)])
@@ -460,6 +470,7 @@ def test_sites_travel_as_fractions_or_as_lines():
     payload = ed._payload(big, fractions, np.array([1, 0]))
     assert isinstance(payload, str)
     assert list(ed._local_sites(payload)) == [big[1], big[0]]
+    assert np.array_equal(ed._local_build(payload)._site_boxes(), ed._site_arrays(big)[2][[1, 0]])
     # Received fractions are checked as Ellipses are.
     with pytest.raises(ellvor.InputError, match="semi-axis a must be positive"):
         ed._local_sites(np.array([[-1, 1, 1, 1, 0, 1, 0, 1, 0, 1]], dtype=np.int64))
