@@ -293,10 +293,10 @@ def _tile_task(payload, ids, region, rect, everything, whole, n):
         # Which tile keeps a face (a count only): its circle's center where the box is at hand, else the mean
         # of its sites' box middles.
         kept, kept_circle = faces[certified], circle[certified]
-        centers = np.stack([(boxes[:, 0] + boxes[:, 1]) / 2, (boxes[:, 2] + boxes[:, 3]) / 2], axis=1)[kept].mean(axis=1)
-        known = ~np.isnan(kept_circle[:, 0])
-        centers[known] = np.stack([(kept_circle[known, 0] + kept_circle[known, 1]) / 2,
-                                   (kept_circle[known, 2] + kept_circle[known, 3]) / 2], axis=1)
+        centers = np.stack([kept_circle[:, 0] + kept_circle[:, 1], kept_circle[:, 2] + kept_circle[:, 3]], axis=1) / 2
+        unknown = np.nonzero(np.isnan(centers[:, 0]))[0]
+        middles = np.stack([boxes[:, 0] + boxes[:, 1], boxes[:, 2] + boxes[:, 3]], axis=1) / 2
+        centers[unknown] = sum(middles[kept[unknown, k]] for k in range(3)) / 3
         owned = ((centers[:, 0] >= rect[0]) & (centers[:, 0] < rect[1]) & (centers[:, 1] >= rect[2]) &
                  (centers[:, 1] < rect[3]))
     visible_sure[hidden[:, 0]] = False
