@@ -51,8 +51,9 @@ def _sites_of(sites, fmt):
 
 
 def _in_double_range(params):
+    """Every parameter 0 or of magnitude in (_TINY, _HUGE) (a NaN or an infinity fails)."""
     m = np.abs(params)
-    return bool(np.all(np.isfinite(m)) and np.all((m == 0) | ((m > _TINY) & (m < _HUGE))))
+    return bool(m.max(initial=0.0) < _HUGE and np.min(m, where=m != 0, initial=np.inf) > _TINY)   # NaN: max is NaN
 
 
 class _Grid:
@@ -60,7 +61,10 @@ class _Grid:
     centers' bounding box evenly, the outer tiles reach infinity."""
 
     def __init__(self, centers, nx, ny):
-        lo, hi = centers.min(axis=0), centers.max(axis=0)
+        # Column by column: numpy reduces a strided (n, 2) view along axis 0 several times slower.
+        lo = np.array([centers[:, 0].min(), centers[:, 1].min()])
+        hi = np.array([centers[:, 0].max(), centers[:, 1].max()])
+        self.lo, self.hi = lo, hi
         self.nx, self.ny = nx, ny
         self.xs = np.concatenate([[-np.inf], lo[0] + (hi[0] - lo[0]) * np.arange(1, nx) / nx, [np.inf]])
         self.ys = np.concatenate([[-np.inf], lo[1] + (hi[1] - lo[1]) * np.arange(1, ny) / ny, [np.inf]])
@@ -817,7 +821,6 @@ def build(sites, tiles="auto", client=None, *, fmt="ell", halo=None):
 
 def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
     n = len(sites)
-    all_ids = np.arange(n, dtype=np.int64)
 
     everything = (float(boxes[:, 0].min()), float(boxes[:, 1].max()), float(boxes[:, 2].min()),
                   float(boxes[:, 3].max())) if n else (0.0, 0.0, 0.0, 0.0)
@@ -831,7 +834,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
                        whole, n)
 
     def one_build(reason):
-        result = submit_tile(all_ids, (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
+        result = submit_tile(np.arange(n, dtype=np.int64), (-np.inf, np.inf, -np.inf, np.inf), (-np.inf, np.inf, -np.inf, np.inf),
                              True).result()
         if "error" in result:
             _raise_worker_error(result, sites)
@@ -850,7 +853,7 @@ def _tiled_build(client, sites, params, fractions, boxes, nx, ny, halo, start):
 
     grid = _Grid(params[:, 3:5], nx, ny)
     owner = grid.tile_of(params[:, 3:5])
-    lo, hi = params[:, 3:5].min(axis=0), params[:, 3:5].max(axis=0)
+    lo, hi = grid.lo, grid.hi
     area = float((hi[0] - lo[0]) * (hi[1] - lo[1]))
     spacing = math.sqrt(area / n) if area > 0 else float(max(hi - lo)) / n
     halos = np.full(nx * ny, halo if halo is not None else 4 * spacing + 1e-300)

@@ -491,6 +491,13 @@ def test_empty_and_tiny_sets(client):
         assert d.stats["fallback"] == "too few sites or extreme coordinates"
 
 
+def test_the_tiling_takes_only_coordinates_doubles_hold_well():
+    # Beyond 1e280 or below 1e-280 in magnitude (zero apart), NaN, infinity: one build, not tiles.
+    for row, fine in [([1.0, 0.0, -3.5], True), ([1e-279, -1e279, 0.0], True), ([1e-281, 1.0, 1.0], False),
+                      ([1e281, 1.0, 1.0], False), ([np.nan, 1.0, 1.0], False), ([1.0, -np.inf, 1.0], False)]:
+        assert ed._in_double_range(np.array([row, [1.0, 2.0, 3.0]])) == fine, row
+
+
 def test_map_builds_each_file_whole(client, tmp_path):
     paths = []
     for k, kind in enumerate(("ellipses", "nested", "circles")):
