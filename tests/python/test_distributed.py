@@ -40,6 +40,8 @@ def test_the_local_cluster_has_its_workers_and_no_profiler(client):
     trim = client.run(lambda: __import__("os").environ.get("MALLOC_TRIM_THRESHOLD_"))
     assert list(trim.values()) == [None, None]
     assert all(w["nthreads"] == 1 for w in client.scheduler_info()["workers"].values())
+    # A worker is given its next task only when its thread is free (Dask's 1.1 gives it two).
+    assert client.run_on_scheduler(lambda dask_scheduler: dask_scheduler.WORKER_SATURATION) == 1.0
 
 
 def same_graph(sites, client, tiles, **kwargs):
