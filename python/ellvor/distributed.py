@@ -654,13 +654,18 @@ class _DirectedEdges:
         return np.stack([key // self.m, key % self.m], axis=1)
 
 
+def _turned(a):
+    """The faces ``a`` (rows of three ids, counter-clockwise) each turned to start at its smallest id, as the
+    single build gives them (whatever order a tile's ids are in)."""
+    return np.take_along_axis(a, (a.argmin(axis=1)[:, None] + np.arange(3)) % 3, axis=1)
+
+
 def _faces_in_order(a):
-    """The faces ``a`` (rows of three ids, counter-clockwise) each turned to start at its smallest id, then
-    sorted (lexicographically, the dtype kept): as the single build gives them (whatever order a tile's ids
-    are in), and in order, so that the client merges sorted runs (_FaceUnion)."""
+    """The faces ``a`` turned (_turned), then sorted (lexicographically, the dtype kept), so that the client
+    merges sorted runs (_FaceUnion)."""
     if not len(a):
         return a
-    a = np.take_along_axis(a, (a.argmin(axis=1)[:, None] + np.arange(3)) % 3, axis=1)
+    a = _turned(a)
     return a[np.lexsort(a.T[::-1])]
 
 
@@ -675,7 +680,7 @@ def _faces_out(a, n):
     else as sorted rows (_faces_in_order)."""
     if not _keys_fit(n):
         return _faces_in_order(a)
-    a = np.take_along_axis(a, (a.argmin(axis=1)[:, None] + np.arange(3)) % 3, axis=1).astype(np.int64)
+    a = _turned(a).astype(np.int64)
     k = (a[:, 0] * n + a[:, 1]) * n + a[:, 2]
     k.sort()
     return k
