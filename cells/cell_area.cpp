@@ -1,21 +1,29 @@
 #include "cells/cell_area.hpp"
 
 #include "cells/cell_vertex_angles.hpp"
+#include "cells/edge_integrals.hpp"
 #include "cells/edge_quadrature.hpp"
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
 #include "cells/normal_ray_in_doubles.hpp"
+#include "graph/insertion_order.hpp"
 #include "util/error.hpp"
 
 #include <acb_calc.h>
+#include <flint/flint.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <exception>
+#include <mutex>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 
 namespace ellvor {
 namespace {
@@ -31,19 +39,27 @@ ComplexBall to_ball(const Interval& x) {
 
 NormalRayBisector::Densities as_balls(const MeasureIntervals& I) {
     NormalRayBisector::Densities d;
-    d.area = to_ball(I.m[MeasureIntervals::area]);
-    d.length = to_ball(I.m[MeasureIntervals::length]);
-    for (int i = 0; i < 2; ++i) d.first[i] = to_ball(I.m[MeasureIntervals::first_x + i]);
-    for (int k = 0; k < 3; ++k) d.second[k] = to_ball(I.m[MeasureIntervals::second_xx + k]);
+    for (int j = 0; j < EdgeMeasure::count; ++j) d.m[j] = to_ball(I.m[j]);
     return d;
 }
 
+// Measure j (EdgeMeasure) is scaled by L^-kLengthPower[j] to area units (L
+// the cell's length unit, about the square root of its area), so that one
+// absolute tolerance serves every measure.
+constexpr int kLengthPower[EdgeMeasure::count] = {0, 0, -1, 1, 1, 1, 2, 2, 2};
+// Arb's integrator takes the measures in pairs f + i g, both real on the
+// reals, so that the real and imaginary parts of the integral enclose the
+// two integrals (-1: none).
+constexpr int kMeasurePairs = 5;
+constexpr int kPairs[kMeasurePairs][2] = {{EdgeMeasure::x_dy, EdgeMeasure::y_dx},
+                                          {EdgeMeasure::x2_dy, EdgeMeasure::y2_dx},
+                                          {EdgeMeasure::x3_dy, EdgeMeasure::y3_dx},
+                                          {EdgeMeasure::x2y_dy, EdgeMeasure::xy_dy},
+                                          {EdgeMeasure::length, -1}};
+
 class DensityCache;
 
-// The integrand of one pair of measures on one edge: f + i g, both real on
-// the reals, so that the real and imaginary parts of the integral enclose
-// the two integrals. Each measure is scaled by the cell's length unit L to a
-// power (area units), so that one absolute tolerance serves both.
+// The integrand of one pair of measures on one edge (kPairs), in area units.
 struct EdgeIntegrand {
     NormalRayBisector* bisector;
     // Values at points (order 0) need only the goal's bits, not the working
@@ -51,14 +67,12 @@ struct EdgeIntegrand {
     // point_precision spares the longer limbs.
     NormalRayBisector* point_bisector;
     long point_precision;
-    int pair;  // 0: area + i L length, 1: first / L (x + i y), 2: second / L^2 (xx + i yy), 3: second / L^2 (xy)
+    int pair;          // kPairs
     long length_unit;  // L = 2^length_unit (exact scaling)
     DensityCache* cache;
 };
 
-constexpr int kMeasurePairs = 4;
-
-// Arb evaluates the four pairs on mostly the same balls: the densities of
+// Arb evaluates the five pairs on mostly the same balls: the densities of
 // each ball are kept for the next pair, found by the ball's midpoint and radii
 // rounded to doubles and the precision, and used only for the very ball they
 // were computed on (acb_equal): a rounded key can cost a recomputation, never
@@ -103,13 +117,12 @@ private:
 // f + i g of the pair from the densities (scaled as above).
 void pair_value(const NormalRayBisector::Densities& d, int pair, long unit, slong prec, acb_t out) {
     ComplexBall f, g;
-    switch (pair) {
-        case 0: f = d.area; acb_mul_2exp_si(g.get(), d.length.get(), unit); break;
-        case 1: acb_mul_2exp_si(f.get(), d.first[0].get(), -unit); acb_mul_2exp_si(g.get(), d.first[1].get(), -unit); break;
-        case 2: acb_mul_2exp_si(f.get(), d.second[0].get(), -2 * unit); acb_mul_2exp_si(g.get(), d.second[2].get(), -2 * unit); break;
-        default: acb_mul_2exp_si(f.get(), d.second[1].get(), -2 * unit); break;
+    const int j = kPairs[pair][0], k = kPairs[pair][1];
+    acb_mul_2exp_si(f.get(), d.m[j].get(), -kLengthPower[j] * unit);
+    if (k >= 0) {
+        acb_mul_2exp_si(g.get(), d.m[k].get(), -kLengthPower[k] * unit);
+        acb_mul_onei(g.get(), g.get());
     }
-    acb_mul_onei(g.get(), g.get());
     acb_add(out, f.get(), g.get(), prec);
 }
 
@@ -141,24 +154,8 @@ int edge_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong 
     return 0;
 }
 
-// Everything a cell's integrals add up, in area units (see EdgeIntegrand).
-struct MeasureSums {
-    std::array<ComplexBall, kMeasurePairs> pairs;
-};
-
 // The goals (bits) that the double-interval stage serves.
 constexpr long kDoubleGoalBits = 44;
-// Measure j is scaled by L^-kLengthPower[j] to area units in the pairs (as
-// pair_value does): its tolerance is the area's times L^kLengthPower[j].
-constexpr int kLengthPower[MeasureIntervals::count] = {0, -1, 1, 1, 2, 2, 2};
-
-void add_to_pairs(const NormalRayBisector::Densities& d, long unit, long prec, MeasureSums& sums) {
-    for (int pair = 0; pair < kMeasurePairs; ++pair) {
-        ComplexBall v;
-        pair_value(d, pair, unit, prec, v.get());
-        acb_add(sums.pairs[pair].get(), sums.pairs[pair].get(), v.get(), prec);
-    }
-}
 
 // Moves the ball's middle to the nearest double and widens it to still
 // contain the ball; returns that double.
@@ -206,11 +203,29 @@ void require_normal_lines_reach(const std::vector<Ellipse>& sites, const Voronoi
                      InputError::SitePair{std::min(a, b), std::max(a, b)});
 }
 
+// What the first pass of a cell needs to know before it integrates: whether
+// a neighbour meets the site, and the scale of its area (the site's, unless a
+// neighbour meets it, or half an estimate of the cell's if larger).
+struct FirstPassScale {
+    bool meets = false;
+    double area_floor = 0;
+};
+
 class CellAreaSolver {
 public:
-    CellAreaSolver(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, double tolerance,
-                   bool arb_integrator_only)
-        : sites_(sites), tolerance_(tolerance), arb_integrator_only_(arb_integrator_only), angles_(graph, sites) {}
+    CellAreaSolver(std::shared_ptr<const CellVertexAngles::Faces> faces, const std::vector<Ellipse>& sites,
+                   const std::vector<VoronoiCell>& cells, double tolerance, bool arb_integrator_only)
+        : sites_(sites),
+          cells_(cells),
+          tolerance_(tolerance),
+          arb_integrator_only_(arb_integrator_only),
+          angles_(std::move(faces), sites),
+          scales_(cells.size()),
+          pending_(cells.size(), 0) {}
+
+    // The cells still to be measured: the first pass of each integrates its
+    // edges with those once for both (see measure()).
+    void set_pending(SiteId s, bool pending) { pending_.at(s) = pending; }
 
     // The measures of a bounded cell at precision prec, or nothing when the
     // pass could not certify its area within the tolerance. Pass k asks Arb
@@ -220,123 +235,64 @@ public:
         CellArea r;
         r.site_area = site_area(site, prec);
         const std::size_t m = cell.edges.size();
-        const long goal = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
-        // Below 45 bits the edges go to the double-interval quadrature first,
-        // beyond to its pieces with the nodes in Arb; Arb's integrator takes
-        // what they cannot certify.
-        const bool in_doubles = !arb_integrator_only_ && goal <= kDoubleGoalBits;
-        const bool nodes_in_arb = !arb_integrator_only_ && !in_doubles;
-        // The double quadrature reads the ends as doubles and adds their
-        // radii times the density: goal + 8 bits of angle leave those terms
-        // far below the tolerance (the circles certified in doubles give
-        // them); the other stages take the angles at the working precision.
-        std::vector<Ball> lifted = angles_.lifted(cell, in_doubles ? goal + 8 + 24 : prec);
-        // A zero-length edge (four cocircular sites, as at a wall's mirror
-        // images) needs its two equal ends to round to the same double,
-        // which takes the working precision.
-        const auto nearest_double = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_NEAR); };
-        for (std::size_t k = 0; in_doubles && k + 1 < lifted.size(); ++k)
-            if (!(nearest_double(lifted[k]) < nearest_double(lifted[k + 1]))) {
-                lifted = angles_.lifted(cell, prec);
-                break;
-            }
-        std::vector<std::unique_ptr<NormalRayBisector>> bisectors;
-        bool meets = false;  // a neighbour crosses or touches the site
-        for (const CellEdge& e : cell.edges) {
-            bisectors.push_back(std::make_unique<NormalRayBisector>(site, sites_[e.neighbor]));
-            meets = meets || (bisectors.back()->signed_tie() && NormalRayBisector::meet(site, sites_[e.neighbor]));
-        }
-
-        // The scale of the tolerances and the length unit: the cell is at
-        // least the site unless a neighbour meets it; on the first pass (on
-        // every pass when a neighbour meets the site) half an estimate of its
-        // area (the final check below, not the estimate, decides).
-        double area_floor = meets ? 0.0 : r.site_area.mid_double();
-        if (pass == 0 || meets) area_floor = std::max(area_floor, 0.5 * estimated_area(cell, lifted, bisectors));
+        const Goal goal = goal_of(pass);
+        std::vector<Ball> lifted = lifted_angles(cell, goal, prec);
+        const FirstPassScale& first = first_pass_scale(cell.site);
+        // The scale of the tolerances and the length unit: the first pass's,
+        // then the site's unless a neighbour meets it (the final check below,
+        // not the estimate, decides).
+        double area_floor = first.area_floor;
+        if (pass > 0 && !first.meets) area_floor = r.site_area.mid_double();
+        if (pass > 0 && first.meets) area_floor = std::max(0.0, 0.5 * estimated_area(cell, lifted));
         if (!(area_floor > 0)) area_floor = r.site_area.mid_double();
         const long unit = std::lround(0.5 * std::log2(area_floor));  // L = 2^unit, about sqrt(area)
-        Mag tol;
-        // Per edge and pair an eighth of the tolerance's share: with the ends'
-        // terms the area's width stays well below T * area.
-        mag_set_d(tol.get(), std::ldexp(tolerance_ * area_floor / static_cast<double>(m), -3 - 6 * pass));
-        MeasureSums sums;
-        // The edges' pieces bound their distance from the center between the
-        // midpoints of the end balls; beyond, up to the true end angles, V
-        // moves at most the ball's radius times |V'| (the length density).
+        const double edge_tolerance = edge_area_tolerance(area_floor, m, pass);
+
+        CellIntegrals sums;
+        const BallPoint center{Ball(site.xc(), prec), Ball(site.yc(), prec)};
         double reach = 0;
-        bool reach_known = true;
         for (std::size_t k = 0; k < m; ++k) {
-            NormalRayBisector& bisector = *bisectors[k];
-            NormalRayInDoubles bisector_in_doubles(site, sites_[cell.edges[k].neighbor], bisector.signed_tie());
-            Ball ends[2] = {lifted[k], lifted[k + 1]};
-            double tolerances[MeasureIntervals::count];
-            for (int j = 0; j < MeasureIntervals::count; ++j)
-                tolerances[j] = std::ldexp(mag_get_d(tol.get()), static_cast<int>(kLengthPower[j] * unit));
-            bool integrated = false;
-            double edge_reach = 0;
-            if (in_doubles) {
-                const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
-                if (const std::optional<MeasureIntervals> I =
-                        integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature, &edge_reach)) {
-                    add_to_pairs(as_balls(*I), unit, prec, sums);
-                    integrated = true;
-                    ++r.edges_in_doubles;
-                } else {
-                    ends[0] = lifted[k], ends[1] = lifted[k + 1];
-                }
-            } else if (nodes_in_arb) {
-                Ball middles[2];
-                for (int i = 0; i < 2; ++i) arb_get_mid_arb(middles[i].get(), ends[i].get());
-                if (const std::optional<NormalRayBisector::Densities> I = integrate_edge_in_arb(
-                        bisector_in_doubles, bisector, rules_, middles, tolerances, prec, &r.quadrature, &edge_reach)) {
-                    add_to_pairs(*I, unit, prec, sums);
-                    integrated = true;
-                    ++r.edges_by_nodes_in_arb;
+            const CellEdge& e = cell.edges[k];
+            // The first pass takes an edge its neighbour integrated for both
+            // (along the neighbour's angle, the edge runs from `to` to `from`).
+            if (pass == 0) {
+                const auto shared = shared_.find(edge_key(e.neighbor, cell.site, e.to, e.from));
+                if (shared != shared_.end()) {
+                    add_edge(shared->second.integrals, false, center, prec, sums);
+                    reach = std::max(reach, shared->second.neighbor_reach);
+                    ++r.edges_from_neighbors;
+                    shared_.erase(shared);
+                    continue;
                 }
             }
-            if (!integrated) {
-                if (!integrate_with_arb(bisector, ends, goal, tol, unit, prec, sums)) return std::nullopt;
-                ++r.edges_by_arb;
-                reach_known = false;
+            // The neighbour's first pass can take this edge when its cell is
+            // still to be measured: integrated to the tighter of the two
+            // cells' tolerances.
+            const bool share = pass == 0 && pending_[e.neighbor];
+            double tolerance = edge_tolerance;
+            if (share) {
+                const FirstPassScale& other = first_pass_scale(e.neighbor);
+                tolerance = std::min(tolerance, edge_area_tolerance(other.area_floor,
+                                                                    cells_[e.neighbor].edges.size(), 0));
             }
-            // The pieces between the certified end angles and their midpoints:
-            // at most the radius times a bound of the density on the ball
-            // (in double intervals over the ball's real interval when the
-            // edge was integrated so, else, or if that fails, by Arb).
-            for (const Ball* end : {&ends[0], &ends[1]}) {
-                NormalRayBisector::Densities d;
-                const std::optional<MeasureIntervals> fast =
-                    integrated ? bisector_in_doubles.densities(enclose(*end)) : std::nullopt;
-                if (fast) {
-                    d = as_balls(*fast);
-                } else {
-                    ComplexBall theta(*end);
-                    if (!bisector.densities(theta, prec, d)) return std::nullopt;
-                }
-                Mag radius;
-                mag_set(radius.get(), arb_radref(end->get()));
-                for (int pair = 0; pair < kMeasurePairs; ++pair) {
-                    ComplexBall v;
-                    pair_value(d, pair, unit, prec, v.get());
-                    Mag bound;
-                    acb_get_mag(bound.get(), v.get());
-                    mag_mul(bound.get(), bound.get(), radius.get());
-                    acb_add_error_mag(sums.pairs[pair].get(), bound.get());
-                }
-                Mag moved;
-                acb_get_mag(moved.get(), d.length.get());
-                mag_mul(moved.get(), moved.get(), radius.get());
-                reach = std::max(reach, std::nextafter(edge_reach + mag_get_d(moved.get()), INFINITY));
-            }
+            EdgeIntegrals integrals;
+            std::array<double, 2> edge_reach = {0, 0};
+            if (!integrate_edge_of_cell(cell, k, lifted, goal, tolerance, unit, prec, r, integrals, edge_reach))
+                return std::nullopt;
+            add_edge(integrals, true, center, prec, sums);
+            reach = std::max(reach, edge_reach[0]);
+            if (share)
+                shared_.emplace(edge_key(cell.site, e.neighbor, e.from, e.to),
+                                SharedEdge{std::move(integrals), edge_reach[1]});
         }
-        arb_add(r.area.get(), r.site_area.get(), acb_realref(sums.pairs[0].get()), prec);
+        r.area = sums.area;
         Arf lo, width;
         arb_get_lbound_arf(lo.get(), r.area.get(), prec);
         arf_set_mag(width.get(), arb_radref(r.area.get()));
         const double w = 2 * arf_get_d(width.get(), ARF_RND_UP), l = arf_get_d(lo.get(), ARF_RND_DOWN);
         if (!(l > 0) || !(w <= tolerance_ * l)) return std::nullopt;
-        finish_moments(site, sums, unit, prec, r);
-        r.reach = reach_known ? reach : INFINITY;
+        finish_moments(center, sums, prec, r);
+        r.reach = reach;
         return r;
     }
 
@@ -349,40 +305,182 @@ public:
     }
 
 private:
-    // The cell's area by 8 Gauss nodes an edge in floating point, or 0 when
-    // a node fails: a scale, not a bound.
-    double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted,
-                          const std::vector<std::unique_ptr<NormalRayBisector>>& bisectors) {
+    // The bits a pass asks of its integrals, and the stage that serves them.
+    struct Goal {
+        long bits;
+        // Below 45 bits the edges go to the double-interval quadrature first,
+        // beyond to its pieces with the nodes in Arb; Arb's integrator takes
+        // what they cannot certify.
+        bool in_doubles, nodes_in_arb;
+    };
+    Goal goal_of(int pass) const {
+        const long bits = static_cast<long>(std::ceil(-std::log2(tolerance_))) + 4 + 6 * pass;
+        const bool in_doubles = !arb_integrator_only_ && bits <= kDoubleGoalBits;
+        return {bits, in_doubles, !arb_integrator_only_ && !in_doubles};
+    }
+
+    // Per edge an eighth of the area tolerance's share: with the ends' terms
+    // the area's width stays well below T * area.
+    double edge_area_tolerance(double area_floor, std::size_t edges, int pass) const {
+        return std::ldexp(tolerance_ * area_floor / static_cast<double>(edges), -3 - 6 * pass);
+    }
+
+    // The cell's vertex angles, lifted (cells/cell_vertex_angles.hpp).
+    std::vector<Ball> lifted_angles(const VoronoiCell& cell, const Goal& goal, long prec) {
+        // The double quadrature reads the ends as doubles and adds their
+        // radii times the density: goal + 8 bits of angle leave those terms
+        // far below the tolerance (the circles certified in doubles give
+        // them); the other stages take the angles at the working precision.
+        std::vector<Ball> lifted = angles_.lifted(cell, goal.in_doubles ? goal.bits + 8 + 24 : prec);
+        // A zero-length edge (four cocircular sites, as at a wall's mirror
+        // images) needs its two equal ends to round to the same double,
+        // which takes the working precision.
+        const auto nearest_double = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_NEAR); };
+        for (std::size_t k = 0; goal.in_doubles && k + 1 < lifted.size(); ++k)
+            if (!(nearest_double(lifted[k]) < nearest_double(lifted[k + 1]))) return angles_.lifted(cell, prec);
+        return lifted;
+    }
+
+    const FirstPassScale& first_pass_scale(SiteId s) {
+        std::optional<FirstPassScale>& scale = scales_[s];
+        if (scale) return *scale;
+        const VoronoiCell& cell = cells_[s];
+        const Ellipse& site = sites_[s];
+        FirstPassScale f;
+        for (const CellEdge& e : cell.edges)
+            f.meets = f.meets || (NormalRayBisector::uses_signed_tie(site, sites_[e.neighbor]) &&
+                                  NormalRayBisector::meet(site, sites_[e.neighbor]));
+        const double own = site_area(site, 64).mid_double();
+        f.area_floor = std::max(f.meets ? 0.0 : own, 0.5 * estimated_area(cell, lifted_angles(cell, goal_of(0), 64)));
+        if (!(f.area_floor > 0)) f.area_floor = own;
+        scale = f;
+        return *scale;
+    }
+
+    // The integrals of the cell's edge k along the site's angle, about the
+    // middle of its vertices, between its true vertices; false when the last
+    // stage fails on the area. `reach` gets upper bounds of the distance of
+    // the edge from the site's and the neighbour's centers (+inf when Arb's
+    // integrator, which gives none, took the edge).
+    bool integrate_edge_of_cell(const VoronoiCell& cell, std::size_t k, const std::vector<Ball>& lifted,
+                                const Goal& goal, double area_tolerance, long unit, long prec, CellArea& r,
+                                EdgeIntegrals& out, std::array<double, 2>& reach) {
+        const Ellipse& site = sites_[cell.site];
+        const CellEdge& e = cell.edges[k];
+        const long vertex_prec = goal.in_doubles ? goal.bits + 8 + 24 : prec;
+        out.start = angles_.vertex(e.from, vertex_prec);
+        out.end = angles_.vertex(e.to, vertex_prec);
+        for (int i = 0; i < 2; ++i) {
+            const Ball& a = i == 0 ? out.start.x : out.start.y;
+            const Ball& b = i == 0 ? out.end.x : out.end.y;
+            out.origin[i] = 0.5 * (a.mid_double() + b.mid_double());
+        }
+        NormalRayBisector bisector(site, sites_[e.neighbor]);
+        NormalRayInDoubles bisector_in_doubles(site, sites_[e.neighbor], bisector.signed_tie());
+        bisector.set_origin(out.origin[0], out.origin[1]);
+        bisector_in_doubles.set_origin(out.origin[0], out.origin[1]);
+        Ball ends[2] = {lifted[k], lifted[k + 1]};
+        double tolerances[EdgeMeasure::count];
+        for (int j = 0; j < EdgeMeasure::count; ++j)
+            tolerances[j] = std::ldexp(area_tolerance, static_cast<int>(kLengthPower[j] * unit));
+        bool integrated = false;
+        reach = {0, 0};
+        if (goal.in_doubles) {
+            const double a = centre_on_double(ends[0]), b = centre_on_double(ends[1]);
+            if (const std::optional<MeasureIntervals> I =
+                    integrate_edge(bisector_in_doubles, rules_, a, b, tolerances, &r.quadrature, &reach)) {
+                for (int j = 0; j < EdgeMeasure::count; ++j) out.m[j] = ball_of(I->m[j], 64);
+                integrated = true;
+                ++r.edges_in_doubles;
+            } else {
+                ends[0] = lifted[k], ends[1] = lifted[k + 1];
+            }
+        } else if (goal.nodes_in_arb) {
+            Ball middles[2];
+            for (int i = 0; i < 2; ++i) arb_get_mid_arb(middles[i].get(), ends[i].get());
+            if (const std::optional<NormalRayBisector::Densities> I = integrate_edge_in_arb(
+                    bisector_in_doubles, bisector, rules_, middles, tolerances, prec, &r.quadrature, &reach)) {
+                for (int j = 0; j < EdgeMeasure::count; ++j) arb_set(out.m[j].get(), acb_realref(I->m[j].get()));
+                integrated = true;
+                ++r.edges_by_nodes_in_arb;
+            }
+        }
+        if (!integrated) {
+            if (!integrate_with_arb(bisector, ends, goal.bits, area_tolerance, unit, prec, out)) return false;
+            ++r.edges_by_arb;
+            reach = {INFINITY, INFINITY};
+        }
+        // The pieces between the certified end angles and their midpoints:
+        // at most the radius times a bound of the density on the ball (in
+        // double intervals over the ball's real interval when the edge was
+        // integrated so, else, or if that fails, by Arb).
+        for (const Ball* end : {&ends[0], &ends[1]}) {
+            NormalRayBisector::Densities d;
+            const std::optional<MeasureIntervals> fast =
+                integrated ? bisector_in_doubles.densities(enclose(*end)) : std::nullopt;
+            if (fast) {
+                d = as_balls(*fast);
+            } else {
+                ComplexBall theta(*end);
+                if (!bisector.densities(theta, prec, d)) return false;
+            }
+            Mag radius;
+            mag_set(radius.get(), arb_radref(end->get()));
+            for (int j = 0; j < EdgeMeasure::count; ++j) {
+                Mag bound;
+                acb_get_mag(bound.get(), d.m[j].get());
+                mag_mul(bound.get(), bound.get(), radius.get());
+                arb_add_error_mag(out.m[j].get(), bound.get());
+            }
+            // The edge moves at most the radius times |V'| (the length density).
+            Mag moved;
+            acb_get_mag(moved.get(), d.m[EdgeMeasure::length].get());
+            mag_mul(moved.get(), moved.get(), radius.get());
+            for (double& x : reach) x = std::nextafter(x + mag_get_d(moved.get()), INFINITY);
+        }
+        return true;
+    }
+
+    // The cell's area by 8 Gauss nodes an edge in floating point (Green's
+    // formula about the site's center), or 0 when a node fails: a scale, not
+    // a bound.
+    double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted) {
         const Ellipse& site = sites_[cell.site];
         const GaussLegendreRule& rule = rules_.rule(8);
-        double area = site_area(site, 64).mid_double();
+        const EllipseShape shape = EllipseShape::of(site);
+        double area = 0;
         for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor], bisectors[k]->signed_tie());
+            NormalRayInDoubles nodes(site, sites_[cell.edges[k].neighbor]);
+            nodes.set_origin(shape.xc, shape.yc);
             const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
             for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
                 const std::optional<MeasureIntervals> d = nodes.densities(Interval(mid + half * rule.nodes[i].mid()));
                 if (!d) return 0;
-                area += half * rule.weights[i].mid() * d->m[MeasureIntervals::area].mid();
+                const double density = 0.5 * (d->m[EdgeMeasure::x_dy].mid() - d->m[EdgeMeasure::y_dx].mid());
+                area += half * rule.weights[i].mid() * density;
             }
         }
         return std::isfinite(area) ? area : 0;
     }
 
     // The edge's measures between the midpoints of its end balls by Arb's
-    // integrator, added to the sums; false when the area's is not finite.
-    bool integrate_with_arb(NormalRayBisector& bisector, const Ball (&ends)[2], long goal, Mag& tol, long unit,
-                            long prec, MeasureSums& sums) {
+    // integrator, in `out`; false when the area's are not finite.
+    bool integrate_with_arb(NormalRayBisector& bisector, const Ball (&ends)[2], long goal, double area_tolerance,
+                            long unit, long prec, EdgeIntegrals& out) {
         acb_calc_integrate_opt_t options;
         acb_calc_integrate_opt_init(options);
         // 20 bits beyond the goal, in whole limbs.
         const long point_precision = 64 * ((goal + 20 + 63) / 64);
         NormalRayBisector point_bisector(bisector.first(), bisector.second(), bisector.signed_tie());
+        point_bisector.set_origin(out.origin[0], out.origin[1]);
         DensityCache cache;
         ComplexBall a, b;
         arb_get_mid_arb(a.real(), ends[0].get());
         arb_get_mid_arb(b.real(), ends[1].get());
+        Mag tol;
+        mag_set_d(tol.get(), area_tolerance);
         for (int pair = 0; pair < kMeasurePairs; ++pair) {
             EdgeIntegrand integrand{&bisector, &point_bisector, point_precision, pair, unit, &cache};
             ComplexBall integral;
@@ -392,59 +490,55 @@ private:
                 if (pair == 0) return false;
                 acb_indeterminate(integral.get());
             }
-            acb_add(sums.pairs[pair].get(), sums.pairs[pair].get(), integral.get(), prec);
+            for (int part = 0; part < 2; ++part) {
+                const int j = kPairs[pair][part];
+                if (j < 0) continue;
+                const arb_struct* value = part == 0 ? acb_realref(integral.get()) : acb_imagref(integral.get());
+                arb_mul_2exp_si(out.m[j].get(), value, kLengthPower[j] * unit);
+            }
         }
         return true;
     }
 
-    // Perimeter, centroid and central second moments from the sums (about
-    // the site's center C; the site adds pi a b / 4 R diag(a^2, b^2) R^T to
-    // the second moments and nothing to the first).
-    static void finish_moments(const Ellipse& site, const MeasureSums& sums, long unit, long prec, CellArea& r) {
+    // Area, perimeter, centroid and central second moments from the sums
+    // about the site's center.
+    static void finish_moments(const BallPoint& center, const CellIntegrals& sums, long prec, CellArea& r) {
         const Ball& area = r.area;
-        arb_mul_2exp_si(r.perimeter.get(), acb_imagref(sums.pairs[0].get()), -unit);
-        Ball first[2];
-        arb_mul_2exp_si(first[0].get(), acb_realref(sums.pairs[1].get()), unit);
-        arb_mul_2exp_si(first[1].get(), acb_imagref(sums.pairs[1].get()), unit);
-        Ball second[3];
-        arb_mul_2exp_si(second[0].get(), acb_realref(sums.pairs[2].get()), 2 * unit);
-        arb_mul_2exp_si(second[1].get(), acb_realref(sums.pairs[3].get()), 2 * unit);
-        arb_mul_2exp_si(second[2].get(), acb_imagref(sums.pairs[2].get()), 2 * unit);
-        Ball a2(site.a(), prec), b2(site.b(), prec), c(site.cos_rotation(), prec), s(site.sin_rotation(), prec), t, u;
-        arb_sqr(a2.get(), a2.get(), prec);
-        arb_sqr(b2.get(), b2.get(), prec);
-        Ball quarter_area;  // pi a b / 4
-        arb_mul_2exp_si(quarter_area.get(), r.site_area.get(), -2);
-        const Ball* own_axes[3][2] = {{&c, &c}, {&c, &s}, {&s, &s}};  // a^2 u_i u_j + b^2 v_i v_j, u = (c, s), v = (-s, c)
-        const Ball* other_axes[3][2] = {{&s, &s}, {&s, &c}, {&c, &c}};
-        for (int k = 0; k < 3; ++k) {
-            arb_mul(t.get(), own_axes[k][0]->get(), own_axes[k][1]->get(), prec);
-            arb_mul(t.get(), t.get(), a2.get(), prec);
-            arb_mul(u.get(), other_axes[k][0]->get(), other_axes[k][1]->get(), prec);
-            arb_mul(u.get(), u.get(), b2.get(), prec);
-            if (k == 1) arb_neg(u.get(), u.get());
-            arb_add(t.get(), t.get(), u.get(), prec);
-            arb_addmul(second[k].get(), t.get(), quarter_area.get(), prec);
-        }
+        r.perimeter = sums.perimeter;
         // Centroid C + first / area; central moments second - first first^T / area.
-        Ball center[2] = {Ball(site.xc(), prec), Ball(site.yc(), prec)};
-        Ball d[2];
+        const Ball* c[2] = {&center.x, &center.y};
+        Ball d[2], t;
         for (int i = 0; i < 2; ++i) {
-            arb_div(d[i].get(), first[i].get(), area.get(), prec);
-            arb_add(r.centroid[i].get(), center[i].get(), d[i].get(), prec);
+            arb_div(d[i].get(), sums.first[i].get(), area.get(), prec);
+            arb_add(r.centroid[i].get(), c[i]->get(), d[i].get(), prec);
         }
         const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
         for (int k = 0; k < 3; ++k) {
-            arb_mul(t.get(), first[pairs[k][0]].get(), d[pairs[k][1]].get(), prec);
-            arb_sub(r.second_moments[k].get(), second[k].get(), t.get(), prec);
+            arb_mul(t.get(), sums.first[pairs[k][0]].get(), d[pairs[k][1]].get(), prec);
+            arb_sub(r.second_moments[k].get(), sums.second[k].get(), t.get(), prec);
         }
     }
 
+    static std::array<long, 4> edge_key(SiteId owner, SiteId neighbor, long from, long to) {
+        return {static_cast<long>(owner), static_cast<long>(neighbor), from, to};
+    }
+    // An edge integrated by one cell's first pass for its neighbour's.
+    struct SharedEdge {
+        EdgeIntegrals integrals;
+        double neighbor_reach;  // of the edge from the neighbour's center
+    };
+
     const std::vector<Ellipse>& sites_;
+    const std::vector<VoronoiCell>& cells_;
     double tolerance_;
     bool arb_integrator_only_;
     CellVertexAngles angles_;
     GaussLegendreRules rules_;
+    std::vector<std::optional<FirstPassScale>> scales_;
+    std::vector<char> pending_;
+    // By (owner, neighbour, from, to): the owner's edge from face `from` to
+    // face `to`, until the neighbour's first pass takes it.
+    std::map<std::array<long, 4>, SharedEdge> shared_;
 };
 
 }  // namespace
@@ -472,57 +566,125 @@ void require_followable_edges(const DelaunayGraph& graph, const std::vector<Elli
 
 long cell_area_precision(double tolerance) { return 64 + static_cast<long>(std::ceil(-std::log2(tolerance))); }
 
+namespace {
+
+// The measures of one cell (left at their defaults unless visible and bounded).
+void measure_cell(CellAreaSolver& solver, const VoronoiCell& cell, const Ellipse& site, long start, CellArea& r) {
+    r.site = cell.site;
+    r.visible = cell.visible;
+    r.bounded = cell.bounded();
+    r.site_area = CellAreaSolver::site_area(site, start);
+    for (Ball* b : {&r.perimeter, &r.centroid[0], &r.centroid[1], &r.second_moments[0], &r.second_moments[1],
+                    &r.second_moments[2]})
+        arb_indeterminate(b->get());
+    if (!cell.visible) {
+        arb_zero(r.area.get());
+        arb_zero(r.perimeter.get());
+        return;
+    }
+    if (!r.bounded) {
+        arb_pos_inf(r.area.get());
+        arb_pos_inf(r.perimeter.get());
+        return;
+    }
+    // Each pass doubles the precision: the vertex angles, the certificates
+    // and the quadrature all tighten with it.
+    for (long prec = start, pass = 0; !r.precision; prec *= 2, ++pass) {
+        if (prec > 16 * start)
+            throw Error("cell_areas: the area of cell " + std::to_string(cell.site) +
+                        " could not be certified to the tolerance below " + std::to_string(prec / 2) + " bits");
+        std::optional<CellArea> m = solver.measure(cell, prec, static_cast<int>(pass));
+        if (pass == 0) solver.set_pending(cell.site, false);
+        if (m) {
+            m->site = cell.site;
+            m->visible = true;
+            m->bounded = true;
+            m->precision = prec;
+            r = std::move(*m);
+        }
+    }
+}
+
+// The sites along a Hilbert curve through their centers.
+std::vector<SiteId> hilbert_order(const std::vector<Ellipse>& sites, std::vector<SiteId> which) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    std::vector<std::uint32_t> place(sites.size(), 0);
+    for (SiteId s : which) {
+        const EllipseShape e = EllipseShape::of(sites[s]);
+        lo[0] = std::min(lo[0], e.xc), lo[1] = std::min(lo[1], e.yc);
+        hi[0] = std::max(hi[0], e.xc), hi[1] = std::max(hi[1], e.yc);
+    }
+    const double side = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    for (SiteId s : which) {
+        const EllipseShape e = EllipseShape::of(sites[s]);
+        place[s] = hilbert_index(e.xc, e.yc, lo[0], lo[1], side);
+    }
+    std::stable_sort(which.begin(), which.end(), [&](SiteId a, SiteId b) { return place[a] < place[b]; });
+    return which;
+}
+
+}  // namespace
+
 std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
                                  const CellAreaOptions& options) {
     const double T = options.tolerance;
     if (!(T > 0 && T <= 1)) throw InputError("cell_areas: the tolerance must be in (0, 1]");
     const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
-    CellAreaSolver solver(graph, sites, T, options.arb_integrator_only);
     std::vector<CellArea> out(cells.size());
     const long start = cell_area_precision(T);
     std::vector<SiteId> which = options.only;
     if (which.empty())
         for (SiteId s = 0; s < cells.size(); ++s) which.push_back(s);
+    for (SiteId s : which) cells.at(s);  // out of range: an Error before any thread
     require_followable_edges(graph, sites, which, options.input_ids);
+    // In chunks of `chunk` cells along a Hilbert curve, each by a solver of
+    // its own: an edge one cell integrated for its neighbour waits only a
+    // short while (CellAreaSolver::measure), and each chunk's result depends
+    // on nothing but its cells, whichever thread measures it.
+    const std::vector<SiteId> order = hilbert_order(sites, std::move(which));
+    const auto faces = std::make_shared<const CellVertexAngles::Faces>(graph.faces());
+    if (options.chunk == 0) throw Error("cell_areas: chunks of no cells");
+    const std::size_t size = options.chunk, chunks = (order.size() + size - 1) / size;
+    std::atomic<std::size_t> next_chunk{0}, first_failed{chunks};
+    std::vector<std::exception_ptr> errors(chunks);
     std::size_t done = 0;
-    for (SiteId s : which) {
-        if (options.progress && done) options.progress(done, which.size());
-        ++done;
-        const VoronoiCell& cell = cells.at(s);
-        CellArea& r = out[s];
-        r.site = s;
-        r.visible = cell.visible;
-        r.bounded = cell.bounded();
-        r.site_area = CellAreaSolver::site_area(sites[s], start);
-        for (Ball* b : {&r.perimeter, &r.centroid[0], &r.centroid[1], &r.second_moments[0], &r.second_moments[1],
-                        &r.second_moments[2]})
-            arb_indeterminate(b->get());
-        if (!cell.visible) {
-            arb_zero(r.area.get());
-            arb_zero(r.perimeter.get());
-            continue;
-        }
-        if (!r.bounded) {
-            arb_pos_inf(r.area.get());
-            arb_pos_inf(r.perimeter.get());
-            continue;
-        }
-        // Each pass doubles the precision: the vertex angles, the certificates
-        // and the quadrature all tighten with it.
-        for (long prec = start, pass = 0; !r.precision; prec *= 2, ++pass) {
-            if (prec > 16 * start)
-                throw Error("cell_areas: the area of cell " + std::to_string(s) +
-                            " could not be certified to the tolerance below " + std::to_string(prec / 2) + " bits");
-            if (std::optional<CellArea> m = solver.measure(cell, prec, static_cast<int>(pass))) {
-                m->site = s;
-                m->visible = true;
-                m->bounded = true;
-                m->precision = prec;
-                r = std::move(*m);
+    std::mutex progress_lock;
+    const auto work = [&] {
+        for (std::size_t c; (c = next_chunk.fetch_add(1)) < chunks;) {
+            // After a failed chunk only the chunks before it: the error
+            // reported is the first chunk's, whatever the threads.
+            if (c > first_failed.load()) continue;
+            try {
+                CellAreaSolver solver(faces, sites, cells, T, options.arb_integrator_only);
+                const auto begin = order.begin() + static_cast<std::ptrdiff_t>(c * size);
+                const auto end = order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), (c + 1) * size));
+                for (auto it = begin; it != end; ++it)
+                    if (cells[*it].visible && cells[*it].bounded()) solver.set_pending(*it, true);
+                for (auto it = begin; it != end; ++it) {
+                    measure_cell(solver, cells[*it], sites[*it], start, out[*it]);
+                    const std::lock_guard<std::mutex> lock(progress_lock);
+                    if (options.progress && ++done < order.size()) options.progress(done, order.size());
+                }
+            } catch (...) {
+                errors[c] = std::current_exception();
+                for (std::size_t f = first_failed.load(); c < f && !first_failed.compare_exchange_weak(f, c);) {
+                }
             }
         }
-    }
-    if (options.progress) options.progress(which.size(), which.size());
+    };
+    unsigned threads = options.threads ? options.threads : std::max(1U, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, chunks)));
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t)
+        pool.emplace_back([&work] {
+            work();
+            flint_cleanup();  // the thread's own caches (Arb's constants, FLINT's integers)
+        });
+    work();
+    for (std::thread& t : pool) t.join();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+    if (options.progress) options.progress(order.size(), order.size());
     return out;
 }
 

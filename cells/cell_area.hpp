@@ -32,8 +32,16 @@ struct CellAreaOptions {
     // The input id of each site in the errors (the originals of mirrors and
     // periodic copies); empty: the ids themselves.
     std::vector<SiteId> input_ids;
-    // Called after each measured cell (done, total); may be empty.
+    // Called after each measured cell (done, total), from any of the threads,
+    // one call at a time; may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
+    // Threads measuring cells; 0: one per core. The cells are measured in
+    // chunks of `chunk` cells along a Hilbert curve, each chunk by itself (an
+    // edge is integrated once for both its cells only within a chunk:
+    // docs/DESIGN.md §10), so the result depends on the chunk size, not on
+    // the threads.
+    unsigned threads = 1;
+    std::size_t chunk = 1024;
     // Every edge by Arb's integrator, the last stage (tests reach it so).
     bool arb_integrator_only = false;
 };
@@ -61,6 +69,9 @@ struct CellArea {
     // up to 44 bits), its pieces with the nodes in Arb (beyond), or Arb's
     // integrator (edges neither certifies).
     std::size_t edges_in_doubles = 0, edges_by_nodes_in_arb = 0, edges_by_arb = 0;
+    // The edges whose integrals the neighbour's cell took for both (its first
+    // pass; docs/DESIGN.md §10): counted there, in its stages and quadrature.
+    std::size_t edges_from_neighbors = 0;
     // What the double-interval stage did on those edges (every attempt of that pass).
     QuadratureCounts quadrature;
 };

@@ -247,6 +247,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
     for (SiteId s = 0; s < sites.originals; ++s)
         if (wanted[s]) o.only.push_back(s);
     o.progress = options.progress;
+    o.threads = options.threads;
     o.input_ids = sites.original;
     const std::vector<CellArea> areas = cell_areas(graph, sites.sites, o);
     for (SiteId s : o.only) {
@@ -257,6 +258,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
         c.edges_in_doubles = areas[s].edges_in_doubles;
         c.edges_by_nodes_in_arb = areas[s].edges_by_nodes_in_arb;
         c.edges_by_arb = areas[s].edges_by_arb;
+        c.edges_from_neighbors = areas[s].edges_from_neighbors;
         c.quadrature = areas[s].quadrature;
         c.perimeter = areas[s].perimeter;
         c.centroid = areas[s].centroid;

@@ -40,8 +40,11 @@ struct CellOptions {
     // Every edge by Arb's integrator, which gives no reach (Cell::reach):
     // covers of the edges then give it (tests reach both so).
     bool arb_integrator_only = false;
-    // Called after each cell's measures (done, total); may be empty.
+    // Called after each cell's measures (done, total), from any of the
+    // threads, one call at a time; may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
+    // Threads measuring the areas (CellAreaOptions::threads); 0: one per core.
+    unsigned threads = 1;
 };
 
 // One side of a cell: a Voronoi edge, or a piece of a wall.
@@ -86,6 +89,7 @@ struct Cell {
     std::vector<std::array<double, 2>> ring;  // closed (first point not repeated); empty if unbounded or hidden
     long precision = 0;                       // Arb precision that met the tolerance
     std::size_t edges_in_doubles = 0, edges_by_nodes_in_arb = 0, edges_by_arb = 0;  // its integrals' stages (CellArea)
+    std::size_t edges_from_neighbors = 0;  // integrated by a neighbour's cell for both (CellArea)
     QuadratureCounts quadrature;                         // CellArea's
     // Bounded cells: an upper bound (rounded up) of |x - c| over the points x
     // of the cell's boundary, c the site's center (for the periodic and the

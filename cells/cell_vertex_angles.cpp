@@ -31,24 +31,27 @@ Ball angle_of_parameter(const Ball& t, bool flipped, long prec) {
 }  // namespace
 
 CellVertexAngles::CellVertexAngles(const DelaunayGraph& graph, const std::vector<Ellipse>& sites)
+    : CellVertexAngles(std::make_shared<const Faces>(graph.faces()), sites) {}
+
+CellVertexAngles::CellVertexAngles(std::shared_ptr<const Faces> faces, const std::vector<Ellipse>& sites)
     : sites_(sites),
-      faces_(graph.faces()),
-      solvers_(faces_.size()),
-      circles_in_doubles_(faces_.size()),
-      tried_in_doubles_(faces_.size(), 0) {}
+      faces_(std::move(faces)),
+      solvers_(faces_->size()),
+      circles_in_doubles_(faces_->size()),
+      tried_in_doubles_(faces_->size(), 0) {}
 
 const DoubleVoronoiCircle* CellVertexAngles::circle_in_doubles(long face) {
     const auto f = static_cast<std::size_t>(face);
     if (!tried_in_doubles_[f]) {
         tried_in_doubles_[f] = 1;
         circles_in_doubles_[f] =
-            certify_voronoi_circle_in_doubles(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]]);
+            certify_voronoi_circle_in_doubles(sites_[(*faces_)[f][0]], sites_[(*faces_)[f][1]], sites_[(*faces_)[f][2]]);
     }
     return circles_in_doubles_[f] ? &*circles_in_doubles_[f] : nullptr;
 }
 
 int CellVertexAngles::position(long face, SiteId site) const {
-    const auto& triple = faces_.at(static_cast<std::size_t>(face));
+    const auto& triple = faces_->at(static_cast<std::size_t>(face));
     const int i = static_cast<int>(std::find(triple.begin(), triple.end(), site) - triple.begin());
     if (i == 3) throw Error("CellVertexAngles: a cell's vertex misses its site");
     return i;
@@ -56,9 +59,9 @@ int CellVertexAngles::position(long face, SiteId site) const {
 
 VoronoiCircleSolver& CellVertexAngles::solver(long face, long prec) {
     const auto f = static_cast<std::size_t>(face);
-    if (face < 0 || f >= faces_.size()) throw Error("CellVertexAngles: no face " + std::to_string(face));
+    if (face < 0 || f >= faces_->size()) throw Error("CellVertexAngles: no face " + std::to_string(face));
     if (!solvers_[f])
-        solvers_[f] = std::make_unique<VoronoiCircleSolver>(sites_[faces_[f][0]], sites_[faces_[f][1]], sites_[faces_[f][2]],
+        solvers_[f] = std::make_unique<VoronoiCircleSolver>(sites_[(*faces_)[f][0]], sites_[(*faces_)[f][1]], sites_[(*faces_)[f][2]],
                                                                common_medial_axis_tangency);
     solvers_[f]->refine_existing(prec - 24);
     return *solvers_[f];

@@ -21,8 +21,12 @@ namespace ellvor {
 
 class CellVertexAngles {
 public:
+    using Faces = std::vector<std::array<SiteId, 3>>;
     // The sites must outlive this object.
     CellVertexAngles(const DelaunayGraph& graph, const std::vector<Ellipse>& sites);
+    // With the graph's faces (DelaunayGraph::faces()) made once for several
+    // of these (one a thread).
+    CellVertexAngles(std::shared_ptr<const Faces> faces, const std::vector<Ellipse>& sites);
 
     // The tangency angle on `site` of the Voronoi circle of face number
     // `face`, theta = 2 atan(t) (or pi + 2 atan(u) in the flipped chart), its
@@ -47,7 +51,7 @@ private:
     int position(long face, SiteId site) const;
 
     const std::vector<Ellipse>& sites_;
-    std::vector<std::array<SiteId, 3>> faces_;
+    std::shared_ptr<const Faces> faces_;
     std::vector<std::unique_ptr<VoronoiCircleSolver>> solvers_;
     std::vector<std::optional<DoubleVoronoiCircle>> circles_in_doubles_;
     std::vector<char> tried_in_doubles_;

@@ -56,11 +56,11 @@ double gauss_error(const Interval& half, double M, double factor) { return (half
 // (in doubles), then integrate_piece(A, B, n, error), which sums the rule on
 // [A, B] and returns false when a node cannot be certified. A piece whose box
 // or nodes fail is halved. False when that goes too deep or too long. `reach`
-// is raised to the pieces' bounds of |V - p's center| (their boxes hold
-// [a.lo, b.hi]).
+// is raised to the pieces' bounds of |V - p's center| and |V - q's center|
+// (their boxes hold [a.lo, b.hi]).
 template <class IntegratePiece>
 bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Interval& b,
-                      const double (&tolerance)[kMeasures], QuadratureCounts& count, double& reach,
+                      const double (&tolerance)[kMeasures], QuadratureCounts& count, std::array<double, 2>& reach,
                       IntegratePiece&& integrate_piece) {
     struct Piece {
         double a, b;
@@ -116,28 +116,18 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
             continue;
         }
         ++count.pieces;
-        reach = std::max(reach, bounds->center_distance);
+        for (int i = 0; i < 2; ++i) reach[i] = std::max(reach[i], bounds->center_distance[i]);
     }
     return true;
-}
-
-// Measure j of the densities.
-ComplexBall& measure(NormalRayBisector::Densities& d, int j) {
-    switch (j) {
-        case MeasureIntervals::area: return d.area;
-        case MeasureIntervals::length: return d.length;
-        case MeasureIntervals::first_x: case MeasureIntervals::first_y: return d.first[j - MeasureIntervals::first_x];
-        default: return d.second[j - MeasureIntervals::second_xx];
-    }
 }
 
 }  // namespace
 
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
                                                double b, const double (&tolerance)[kMeasures],
-                                               QuadratureCounts* counts, double* reach) {
+                                               QuadratureCounts* counts, std::array<double, 2>* reach) {
     QuadratureCounts local;
-    double local_reach = 0;
+    std::array<double, 2> local_reach = {0, 0};
     MeasureIntervals total;
     for (Interval& x : total.m) x = Interval(0.0);
     // An edge between two equal vertices (four cocircular sites) adds nothing.
@@ -166,9 +156,9 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
                                                                   NormalRayBisector& bisector,
                                                                   GaussLegendreRules& rules, const Ball (&ends)[2],
                                                                   const double (&tolerance)[kMeasures], long prec,
-                                                                  QuadratureCounts* counts, double* reach) {
+                                                                  QuadratureCounts* counts, std::array<double, 2>* reach) {
     QuadratureCounts local;
-    double local_reach = 0;
+    std::array<double, 2> local_reach = {0, 0};
     NormalRayBisector::Densities total;
     // An edge between two equal vertices (four cocircular sites) adds nothing.
     if (arb_equal(ends[0].get(), ends[1].get())) return total;
@@ -198,13 +188,13 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
             arb_add(theta.real(), theta.real(), mid.get(), prec);
             if (!bisector.densities(theta, prec, f)) return false;
             for (int j = 0; j < kMeasures; ++j)
-                acb_addmul_arb(measure(sum, j).get(), measure(f, j).get(), rule.weights[k].get(), prec);
+                acb_addmul_arb(sum.m[j].get(), f.m[j].get(), rule.weights[k].get(), prec);
         }
         for (int j = 0; j < kMeasures; ++j) {
-            acb_addmul_arb(measure(total, j).get(), measure(sum, j).get(), half.get(), prec);
+            acb_addmul_arb(total.m[j].get(), sum.m[j].get(), half.get(), prec);
             Mag bound;
             mag_set_d(bound.get(), error[j]);
-            arb_add_error_mag(acb_realref(measure(total, j).get()), bound.get());
+            arb_add_error_mag(acb_realref(total.m[j].get()), bound.get());
         }
         return true;
     };

@@ -1,5 +1,5 @@
-// The seven cell measures over a piece [a, b] of an edge, seen from its
-// site p (docs/DESIGN.md §10), by Gauss-Legendre quadrature in double
+// The measures of EdgeMeasure (cells/normal_ray_bisector.hpp) over a piece
+// [a, b] of an edge, seen from its site p (docs/DESIGN.md §10), by Gauss-Legendre quadrature in double
 // intervals: the fast stage of the cell integrals, for goals up to about
 // 44 bits (the default tolerance 1e-9 needs 34).
 //
@@ -21,17 +21,19 @@
 #include "cells/normal_ray_in_doubles.hpp"
 #include "cells/quadrature_counts.hpp"
 
+#include <array>
 #include <optional>
 
 namespace ellvor {
 
 // tolerance[j]: the absolute tolerance of measure j over the whole [a, b].
-// `counts`, when given, is added to. `reach`, when given, is raised to an
-// upper bound of |V(theta) - p's center| over [a, b], from the pieces'
-// certificates: how far the edge gets from its site (the cell's reach).
+// `counts`, when given, is added to. `reach`, when given, is raised to upper
+// bounds of |V(theta) - p's center| and |V(theta) - q's center| over [a, b],
+// from the pieces' certificates: how far the edge gets from either site (the
+// cells' reach).
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
                                                double b, const double (&tolerance)[MeasureIntervals::count],
-                                               QuadratureCounts* counts = nullptr, double* reach = nullptr);
+                                               QuadratureCounts* counts = nullptr, std::array<double, 2>* reach = nullptr);
 
 // The same measures at precision prec, between the exact angles `ends`
 // (balls of radius zero): the certificate of `bounds`, the nodes by
@@ -41,6 +43,6 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
                                                                   GaussLegendreRules& rules, const Ball (&ends)[2],
                                                                   const double (&tolerance)[MeasureIntervals::count],
                                                                   long prec, QuadratureCounts* counts = nullptr,
-                                                                  double* reach = nullptr);
+                                                                  std::array<double, 2>* reach = nullptr);
 
 }  // namespace ellvor

@@ -316,6 +316,7 @@ NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q)
 
 NormalRayBisector::NormalRayBisector(const Ellipse& p, const Ellipse& q, bool signed_tie)
     : p_(&p), q_(&q), p_shape_(EllipseShape::of(p)), q_shape_(EllipseShape::of(q)), signed_(signed_tie) {
+    origin_[0] = p_shape_.xc, origin_[1] = p_shape_.yc;
     size_ = std::max({p_shape_.a, p_shape_.b, q_shape_.a, q_shape_.b,
                       std::hypot(p_shape_.xc - q_shape_.xc, p_shape_.yc - q_shape_.yc)});
 }
@@ -515,23 +516,11 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
     return false;
 }
 
-bool NormalRayBisector::area_density(const ComplexBall& theta, long prec, ComplexBall& density) {
+bool NormalRayBisector::point(const ComplexBall& theta, long prec, ComplexBall& vx, ComplexBall& vy) {
     ComplexBall s;
-    if (!solve(theta, prec, s)) return false;
-    // s N^2 + a b s^2 / 2, N^2 = a^2 sin^2 + b^2 cos^2.
-    ComplexBall c, sn, t, n2;
-    acb_sin_cos(sn.get(), c.get(), theta.get(), prec);
-    acb_mul_arb(sn.get(), sn.get(), pb_.a.get(), prec);
-    acb_mul_arb(c.get(), c.get(), pb_.b.get(), prec);
-    acb_mul(n2.get(), sn.get(), sn.get(), prec);
-    acb_mul(t.get(), c.get(), c.get(), prec);
-    acb_add(n2.get(), n2.get(), t.get(), prec);
-    acb_mul(density.get(), s.get(), n2.get(), prec);
-    acb_mul(t.get(), s.get(), s.get(), prec);
-    acb_mul_arb(t.get(), t.get(), pb_.a.get(), prec);
-    acb_mul_arb(t.get(), t.get(), pb_.b.get(), prec);
-    acb_mul_2exp_si(t.get(), t.get(), -1);
-    acb_add(density.get(), density.get(), t.get(), prec);
+    Boundary bp;
+    if (!solve(theta, prec, s, nullptr, nullptr, &bp)) return false;
+    ray_point(bp, s, prec, vx, vy);
     return true;
 }
 
@@ -539,61 +528,39 @@ bool NormalRayBisector::densities(const ComplexBall& theta, long prec, Densities
     ComplexBall s, g_s, g_theta;
     Boundary bp;
     if (!solve(theta, prec, s, &g_s, &g_theta, &bp)) return false;
-    ComplexBall px, py, ab, t, u;
-    acb_sub_arb(px.get(), bp.x.get(), pb_.xc.get(), prec);
-    acb_sub_arb(py.get(), bp.y.get(), pb_.yc.get(), prec);
-    acb_set_arb(ab.get(), pb_.a.get());
-    acb_mul_arb(ab.get(), ab.get(), pb_.b.get(), prec);
-    // m_k = N^2 s^(k+1) / (k+1) + a b s^(k+2) / (k+2), k = 0, 1, 2.
-    ComplexBall m[3], power(s);  // power = s^(k+1)
-    for (int k = 0; k < 3; ++k) {
-        acb_mul(m[k].get(), bp.n2.get(), power.get(), prec);
-        acb_div_ui(m[k].get(), m[k].get(), static_cast<ulong>(k + 1), prec);
-        acb_mul(power.get(), power.get(), s.get(), prec);
-        acb_mul(t.get(), ab.get(), power.get(), prec);
-        acb_div_ui(t.get(), t.get(), static_cast<ulong>(k + 2), prec);
-        acb_add(m[k].get(), m[k].get(), t.get(), prec);
-    }
-    out.area = m[0];
-    const ComplexBall* r[2] = {&px, &py};
-    const ComplexBall* n[2] = {&bp.nx, &bp.ny};
-    for (int i = 0; i < 2; ++i) {
-        acb_mul(out.first[i].get(), r[i]->get(), m[0].get(), prec);
-        acb_mul(t.get(), n[i]->get(), m[1].get(), prec);
-        acb_add(out.first[i].get(), out.first[i].get(), t.get(), prec);
-    }
-    // (r + sigma n)_i (r + sigma n)_j = r_i r_j + sigma (r_i n_j + n_i r_j) + sigma^2 n_i n_j.
-    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
-    for (int k = 0; k < 3; ++k) {
-        const int i = pairs[k][0], j = pairs[k][1];
-        ComplexBall& e = out.second[k];
-        acb_mul(e.get(), r[i]->get(), r[j]->get(), prec);
-        acb_mul(e.get(), e.get(), m[0].get(), prec);
-        acb_mul(t.get(), r[i]->get(), n[j]->get(), prec);
-        acb_mul(u.get(), n[i]->get(), r[j]->get(), prec);
-        acb_add(t.get(), t.get(), u.get(), prec);
-        acb_mul(t.get(), t.get(), m[1].get(), prec);
-        acb_add(e.get(), e.get(), t.get(), prec);
-        acb_mul(t.get(), n[i]->get(), n[j]->get(), prec);
-        acb_mul(t.get(), t.get(), m[2].get(), prec);
-        acb_add(e.get(), e.get(), t.get(), prec);
-    }
     // s' = -g_theta / g_s (g_theta and g_s carry the factor 2 alike).
-    ComplexBall ds, vx, vy;
+    ComplexBall ds, t, X, Y, dX, dY;
     acb_div(ds.get(), g_theta.get(), g_s.get(), prec);
     acb_neg(ds.get(), ds.get());
-    // V' = P' + s' n~ + s n~'
+    // V - O and V' = P' + s' n~ + s n~'.
+    ray_point(bp, s, prec, X, Y);
+    Ball origin[2];
+    for (int i = 0; i < 2; ++i) arb_set_d(origin[i].get(), origin_[i]);
+    acb_sub_arb(X.get(), X.get(), origin[0].get(), prec);
+    acb_sub_arb(Y.get(), Y.get(), origin[1].get(), prec);
     for (int i = 0; i < 2; ++i) {
-        ComplexBall& v = i == 0 ? vx : vy;
+        ComplexBall& v = i == 0 ? dX : dY;
         acb_mul(v.get(), ds.get(), (i == 0 ? bp.nx : bp.ny).get(), prec);
         acb_add(v.get(), v.get(), (i == 0 ? bp.dx : bp.dy).get(), prec);
         acb_mul(t.get(), s.get(), (i == 0 ? bp.dnx : bp.dny).get(), prec);
         acb_add(v.get(), v.get(), t.get(), prec);
     }
-    dot(vx, vy, vx, vy, prec, t);
+    ComplexBall X2, Y2;
+    acb_sqr(X2.get(), X.get(), prec);
+    acb_sqr(Y2.get(), Y.get(), prec);
+    using M = EdgeMeasure;
+    acb_mul(out.m[M::x_dy].get(), X.get(), dY.get(), prec);
+    acb_mul(out.m[M::y_dx].get(), Y.get(), dX.get(), prec);
+    acb_mul(out.m[M::x2_dy].get(), X2.get(), dY.get(), prec);
+    acb_mul(out.m[M::y2_dx].get(), Y2.get(), dX.get(), prec);
+    acb_mul(out.m[M::xy_dy].get(), out.m[M::x_dy].get(), Y.get(), prec);
+    acb_mul(out.m[M::x3_dy].get(), out.m[M::x2_dy].get(), X.get(), prec);
+    acb_mul(out.m[M::y3_dx].get(), out.m[M::y2_dx].get(), Y.get(), prec);
+    acb_mul(out.m[M::x2y_dy].get(), out.m[M::x2_dy].get(), Y.get(), prec);
+    dot(dX, dY, dX, dY, prec, t);
     // Holomorphic only away from the cut (|V'|^2 > 0 on the reals).
-    acb_sqrt_analytic(out.length.get(), t.get(), 1, prec);
-    return acb_is_finite(out.length.get());
+    acb_sqrt_analytic(out.m[M::length].get(), t.get(), 1, prec);
+    return acb_is_finite(out.m[M::length].get());
 }
 
 }  // namespace ellvor

@@ -61,6 +61,16 @@ struct SiteBalls {
     SiteBalls(const Ellipse& e, long prec);
 };
 
+// The measures of an edge that a cell's Green integrals need (docs/DESIGN.md
+// §10), as densities per unit of p's angle theta, with (X, Y) = V - O for an
+// origin O the caller chooses and dX, dY their theta-derivatives: X dY, Y dX,
+// the edge's length |V'|, X^2 dY, Y^2 dX, X Y dY, X^3 dY, Y^3 dX and X^2 Y
+// dY. A cell's area and moments about any point follow from them
+// (cells/edge_integrals.hpp).
+struct EdgeMeasure {
+    enum Index { x_dy, y_dx, length, x2_dy, y2_dx, xy_dy, x3_dy, y3_dx, x2y_dy, count };
+};
+
 class NormalRayBisector {
 public:
     // The sites must outlive this object. The first form asks
@@ -92,28 +102,20 @@ public:
     };
     bool solve(const ComplexBall& theta, long prec, LinearModel& model);
 
-    // The cell's area density on the edge (docs/DESIGN.md §10): the area
-    // swept by p's normal segments [0, rho(theta)] per unit of theta,
-    //     rho |P'| + kappa |P'| rho^2 / 2 = s N^2 + a b s^2 / 2.
-    // False when solve() is.
-    bool area_density(const ComplexBall& theta, long prec, ComplexBall& density);
-
-    // The densities of all the cell's measures on the edge, per unit of theta
-    // (docs/DESIGN.md §10): with the ray point X = P + sigma n~, sigma in
-    // [0, s], and the Jacobian J = N^2 + a b sigma, the moments of the swept
-    // segment, m_k = integral of sigma^k J dsigma, give
-    //   area   m_0,
-    //   first  (P - C) m_0 + n~ m_1                              (about p's center C),
-    //   second (P - C)(P - C)^T m_0 + ((P - C) n~^T + n~ (P - C)^T) m_1 + n~ n~^T m_2,
-    // and the edge's own length |V'(theta)|, V' = P' + s' n~ + s n~', with
-    // s' = -dg/dtheta / dg/ds from the tie function (its foot point drops out).
-    // False when solve() is, or when |V'|^2 may touch the square root's cut.
-    struct Densities {
-        ComplexBall area, length;
-        ComplexBall first[2];   // x, y
-        ComplexBall second[3];  // xx, xy, yy
+    // The origin O of the densities (exact doubles); p's center rounded to
+    // doubles unless set.
+    void set_origin(double x, double y) { origin_[0] = x, origin_[1] = y; }
+    // The densities of EdgeMeasure on the edge, V' = P' + s' n~ + s n~', with
+    // s' = -dg/dtheta / dg/ds from the tie function (its foot point drops
+    // out). False when solve() is, or when |V'|^2 may touch the square root's
+    // cut.
+    struct Densities : EdgeMeasure {
+        ComplexBall m[count];
     };
     bool densities(const ComplexBall& theta, long prec, Densities& out);
+    // The bisector point V = P + s n~ for every theta in the ball; false when
+    // solve() is.
+    bool point(const ComplexBall& theta, long prec, ComplexBall& vx, ComplexBall& vy);
 
     const Ellipse& first() const { return *p_; }
     const Ellipse& second() const { return *q_; }
@@ -137,6 +139,7 @@ private:
     long prec_ = 0;
     SiteBalls pb_, qb_;
     Ball medial_p_, medial_q_;  // r_p, r_q (see above)
+    double origin_[2];
 };
 
 }  // namespace ellvor

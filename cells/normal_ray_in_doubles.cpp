@@ -26,12 +26,25 @@ struct UpwardSite {
 
 Interval sym(double r) { return {-r, r}; }
 
-// 1, 1/2, 1/3, 1/4 enclosed (the densities' coefficients 1/(k + 1)).
-const Interval kInverse[4] = {Interval(1.0), Interval(0.5), Interval(1.0) / Interval(3.0), Interval(0.25)};
-
 template <class T>
 T dot(const T& ax, const T& ay, const T& bx, const T& by) {
     return ax * bx + ay * by;
+}
+
+// The Green densities of MeasureIntervals but the length, from V - O = (X, Y)
+// and V' = (dX, dY).
+template <class T>
+void green_densities(const T& X, const T& Y, const T& dX, const T& dY, T (&out)[MeasureIntervals::count]) {
+    using M = MeasureIntervals;
+    const T X2 = X * X, Y2 = Y * Y;
+    out[M::x_dy] = X * dY;
+    out[M::y_dx] = Y * dX;
+    out[M::x2_dy] = X2 * dY;
+    out[M::y2_dx] = Y2 * dX;
+    out[M::xy_dy] = X * Y * dY;
+    out[M::x3_dy] = X2 * X * dY;
+    out[M::y3_dx] = Y2 * Y * dX;
+    out[M::x2y_dy] = X2 * Y * dY;
 }
 
 UpwardInterval square(const UpwardInterval& x) { return x.square(); }
@@ -185,6 +198,7 @@ NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q)
 NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool signed_tie)
     : p_(site_of(p)), q_(site_of(q)), signed_(signed_tie), medial_p_(medial_depth(p_)), medial_q_(medial_depth(q_)) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
+    origin_[0] = ps.xc, origin_[1] = ps.yc;
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
     const double a = magnitude(q_.a), b = magnitude(q_.b), c = magnitude(q_.c), s = magnitude(q_.s);
     q_slack_[0] = Interval::up(Interval::up(a * c) + Interval::up(b * s));
@@ -262,6 +276,7 @@ struct NodeInput {
     Interval sin_theta, cos_theta, sin_phi, cos_phi;
     const double (&x0)[2];
     const double (&C)[2][2];
+    const double (&origin)[2];
     bool with_densities;
 };
 
@@ -331,24 +346,9 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
         if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
         if (!in.with_densities) return true;
         // The densities of NormalRayBisector::densities.
-        const U ab = p.a * p.b;
-        U m[3], power = root;  // power = s^(k+1)
-        for (int k = 0; k < 3; ++k) {
-            m[k] = bp.n2 * power * U(kInverse[k]);
-            power = power * root;
-            m[k] = m[k] + ab * power * U(kInverse[k + 1]);
-        }
-        const U rel[2] = {bp.x - p.xc, bp.y - p.yc}, nrm[2] = {bp.nx, bp.ny};
-        U out[MeasureIntervals::count];
-        out[MeasureIntervals::area] = m[0];
-        for (int i = 0; i < 2; ++i) out[MeasureIntervals::first_x + i] = rel[i] * m[0] + nrm[i] * m[1];
-        const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
-        for (int k = 0; k < 3; ++k) {
-            const int i = pairs[k][0], j = pairs[k][1];
-            out[MeasureIntervals::second_xx + k] =
-                rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2];
-        }
         const U vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
+        U out[MeasureIntervals::count];
+        green_densities(v[0] - U(in.origin[0]), v[1] - U(in.origin[1]), vx, vy, out);
         const U v2 = dot(vx, vy, vx, vy);
         if (!v2.positive()) return true;
         out[MeasureIntervals::length] = v2.sqrt();
@@ -371,7 +371,8 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Inte
     sin_cos(theta, sin, cos);
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
     Node out;
-    if (!certify_node({p_, q_, signed_, medial_p_, medial_q_, q_slack_, sin, cos, sin_phi, cos_phi, x0, C, with_densities},
+    if (!certify_node({p_, q_, signed_, medial_p_, medial_q_, q_slack_, sin, cos, sin_phi, cos_phi, x0, C, origin_,
+                      with_densities},
                       out.densities, out.point))
         return std::nullopt;
     last_[0] = x0[0], last_[1] = x0[1];
@@ -401,7 +402,7 @@ struct NormalRayInDoubles::BoxRoot {
     ComplexInterval s, ds;               // s and s' over the box
     double s0, slope;                    // s = s0 + slope (theta - mid) + e(theta),
     ComplexInterval remainder;           // e(theta) in remainder
-    double center_distance;              // |V - p's center| <= this at the real angles of the box
+    std::array<double, 2> center_distance;  // |V - p's, q's center| <= these at the real angles of the box
 };
 
 std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
@@ -528,11 +529,17 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         // hence V, is real (normal_ray_bisector.hpp), so its square lies in
         // the enclosure's real part. (Far tighter than |V - C| over the
         // whole complex box: the first order is the radial speed only.)
-        const Model vx = bp_model.x + X[0] * bp_model.nx - p_.xc, vy = bp_model.y + X[0] * bp_model.ny - p_.yc;
-        const Interval distance2 = (vx * vx + vy * vy).enclose(CI(sym(along), Interval(0.0))).re;
-        if (!(distance2.hi >= 0 && std::isfinite(distance2.hi))) return std::nullopt;
+        const Model vx = bp_model.x + X[0] * bp_model.nx, vy = bp_model.y + X[0] * bp_model.ny;
+        std::array<double, 2> center_distance;
+        for (int i = 0; i < 2; ++i) {
+            const Site& e = i == 0 ? p_ : q_;
+            const Model dx = vx - e.xc, dy = vy - e.yc;
+            const Interval distance2 = (dx * dx + dy * dy).enclose(CI(sym(along), Interval(0.0))).re;
+            if (!(distance2.hi >= 0 && std::isfinite(distance2.hi))) return std::nullopt;
+            center_distance[i] = Interval(distance2.hi).sqrt().hi;
+        }
         return BoxRoot{bp,     s_model.enclose(dtheta) + K, -(on_box.F_theta[1].enclose(dtheta) / g_s),  // s' = -g_theta / g_s
-                       x0[0], x[0][1],   higher.enclose(dtheta) + K, Interval(distance2.hi).sqrt().hi};
+                       x0[0], x[0][1],   higher.enclose(dtheta) + K, center_distance};
     }
     return std::nullopt;
 }
@@ -544,31 +551,17 @@ std::optional<NormalRayInDoubles::BoxBounds> NormalRayInDoubles::bounds_on_box(d
     const Frame<CI>& bp = r->bp;
     const CI &s = r->s, &ds = r->ds;
     // The densities of NormalRayBisector::densities over the box.
-    const Interval ab = p_.a * p_.b;
-    CI m[3], power = s;
-    for (int k = 0; k < 3; ++k) {
-        m[k] = bp.n2 * power * kInverse[k];
-        power = power * s;
-        m[k] = m[k] + ab * power * kInverse[k + 1];
-    }
-    const CI rel[2] = {bp.x - p_.xc, bp.y - p_.yc}, nrm[2] = {bp.nx, bp.ny};
-    BoxBounds out;
-    std::array<double, MeasureIntervals::count>& M = out.density;
-    M[MeasureIntervals::area] = m[0].magnitude();
-    for (int i = 0; i < 2; ++i) M[MeasureIntervals::first_x + i] = (rel[i] * m[0] + nrm[i] * m[1]).magnitude();
-    const int pairs[3][2] = {{0, 0}, {0, 1}, {1, 1}};
-    for (int k = 0; k < 3; ++k) {
-        const int i = pairs[k][0], j = pairs[k][1];
-        M[MeasureIntervals::second_xx + k] =
-            (rel[i] * rel[j] * m[0] + (rel[i] * nrm[j] + nrm[i] * rel[j]) * m[1] + nrm[i] * nrm[j] * m[2]).magnitude();
-    }
     // |V'| = sqrt(V' . V'), holomorphic where Re V' . V' > 0.
     const CI vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
     const CI v2 = dot(vx, vy, vx, vy);
     if (!v2.re.positive()) return std::nullopt;
-    M[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
+    CI densities[MeasureIntervals::count];
+    green_densities(bp.x + s * bp.nx - Interval(origin_[0]), bp.y + s * bp.ny - Interval(origin_[1]), vx, vy, densities);
+    BoxBounds out;
+    for (int j = 0; j < MeasureIntervals::count; ++j) out.density[j] = densities[j].magnitude();
+    out.density[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
     out.center_distance = r->center_distance;
-    for (double x : M)
+    for (double x : out.density)
         if (!std::isfinite(x)) return std::nullopt;
     return out;
 }

@@ -34,10 +34,9 @@
 
 namespace ellvor {
 
-// The seven measures of NormalRayBisector::Densities as intervals: their
-// densities at an angle, or their integrals over an edge.
-struct MeasureIntervals {
-    enum Index { area, length, first_x, first_y, second_xx, second_xy, second_yy, count };
+// The measures of EdgeMeasure (cells/normal_ray_bisector.hpp) as intervals:
+// their densities at an angle, or their integrals over an edge.
+struct MeasureIntervals : EdgeMeasure {
     Interval m[count];
 };
 
@@ -48,6 +47,9 @@ public:
     NormalRayInDoubles(const Ellipse& p, const Ellipse& q);
     NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool signed_tie);
 
+    // The origin O of the densities (exact doubles); p's center rounded to
+    // doubles unless set.
+    void set_origin(double x, double y) { origin_[0] = x, origin_[1] = y; }
     // The densities at every angle in `theta` (a real interval); nothing when
     // the certificate fails there.
     std::optional<MeasureIntervals> densities(const Interval& theta);
@@ -57,11 +59,11 @@ public:
     // theta, where the same certificate, on Taylor models about the root's
     // polynomial in theta, proves the densities holomorphic: of the
     // densities' moduli (MeasureIntervals' order), and of |V - p's center|
-    // at the box's real angles (how far the edge gets from p's center).
-    // Nothing when the certificate fails.
+    // and |V - q's center| at the box's real angles (how far the edge gets
+    // from either site's center). Nothing when the certificate fails.
     struct BoxBounds {
         std::array<double, MeasureIntervals::count> density;
-        double center_distance;
+        std::array<double, 2> center_distance;
     };
     std::optional<BoxBounds> bounds_on_box(double mid, double along, double across);
     // The root's linear model on that box, from the same certificate: for
@@ -104,6 +106,7 @@ private:
     bool signed_;
     Interval medial_p_, medial_q_;  // r_p, r_q of normal_ray_bisector.hpp
     double size_;  // scale of the pair, for the double start
+    double origin_[2];
     // How far q's frame moves (x, dx, ny; y, dy, nx) per unit change of its
     // sine and cosine: |a||c| + |b||s| and |a||s| + |b||c|, rounded up.
     double q_slack_[2];

@@ -21,7 +21,7 @@ namespace {
 
 const char* const kHelp =
     "usage: ellvor cells FILE [--cin] [--box X0 Y0 X1 Y1 | --periodic X0 Y0 X1 Y1] [--tolerance T]\n"
-    "                   [--boundary-tolerance D] [--format csv|json|geojson] [-o OUT]\n"
+    "                   [--boundary-tolerance D] [--threads N] [--format csv|json|geojson] [-o OUT]\n"
     "\n"
     "The Voronoi cells of the sites of FILE, each certified: every interval printed provably\n"
     "contains the exact value. A cell holds its site (the set-Voronoi convention: the cells tile\n"
@@ -42,6 +42,8 @@ const char* const kHelp =
     "                    the rings' certified distance to the cells' boundaries, D > 0\n"
     "                    (default 1e-3 of the median larger semi-axis); JSON and GeoJSON only:\n"
     "                    the CSV has no rings and is computed without them (faster)\n"
+    "  --threads N       measure the areas on N threads (default 1; 0: one per core); the\n"
+    "                    output does not depend on N\n"
     "  --format F        csv (default), json or geojson\n"
     "  -o, --output OUT  write to OUT, atomically (default '-': standard output); a summary\n"
     "                    line goes to standard output\n"
@@ -132,6 +134,7 @@ int run(const std::vector<std::string>& arguments) {
     Arguments parsed(args, {{"--cin", false},
                             {"--tolerance", true},
                             {"--boundary-tolerance", true},
+                            {"--threads", true},
                             {"--format", true},
                             {"-o", true, "--output"}});
     parsed.expect_positional(1, 1, "FILE");
@@ -141,6 +144,7 @@ int run(const std::vector<std::string>& arguments) {
     CellOptions options;
     options.tolerance = parsed.real("--tolerance", 1e-9);
     options.rings = format != "csv";  // the CSV has no rings: spare their cost
+    options.threads = static_cast<unsigned>(parsed.integer("--threads", 1, 0, 1024));
     std::optional<double> boundary_tolerance;
     if (parsed.has("--boundary-tolerance")) boundary_tolerance = parsed.real("--boundary-tolerance", 0);
     const CellArgumentNames names = {"option --box", "option --periodic", "option --tolerance",

@@ -79,13 +79,14 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
     const CellTessellation cells = cell_tessellation(set.sites, domain, options);
     const double time = now_cpu() - c0;
     long bounded = 0;
-    std::size_t in_doubles = 0, nodes_in_arb = 0, by_arb = 0;
+    std::size_t in_doubles = 0, nodes_in_arb = 0, by_arb = 0, from_neighbors = 0;
     QuadratureCounts quadrature;
     for (const ellvor::Cell& c : cells.cells) {
         bounded += c.bounded;
         in_doubles += c.edges_in_doubles;
         nodes_in_arb += c.edges_by_nodes_in_arb;
         by_arb += c.edges_by_arb;
+        from_neighbors += c.edges_from_neighbors;
         quadrature += c.quadrature;
     }
     const std::size_t certified = in_doubles + nodes_in_arb;  // edges with the double certificate's pieces
@@ -107,6 +108,8 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
             fmt("%.1f", 1e3 * time / static_cast<double>(std::max(1L, bounded))),
             share(in_doubles),
             share(nodes_in_arb),
+            fmt("%.1f", 100.0 * static_cast<double>(from_neighbors) /
+                            static_cast<double>(std::max<std::size_t>(1, certified + by_arb + from_neighbors))),
             certified ? fmt("%.1f", static_cast<double>(quadrature.pieces) / edges) : "-",
             certified ? fmt("%.1f", static_cast<double>(quadrature.failed_boxes) / edges) : "-",
             certified ? fmt("%.0f", static_cast<double>(quadrature.nodes) / edges) : "-",
@@ -132,7 +135,7 @@ int main(int argc, char** argv) {
     Report report("Certified cells against the build", "cells_timing", args.command);
     Table table("cells", {"set", "sites", "domain", "T", "bounded cells", "build s", "cells s", "cells / build",
                           "ms per bounded cell", "edges in doubles %", "edges with nodes in Arb %",
-                          "pieces per edge", "failed boxes per edge",
+                          "edges from neighbours %", "pieces per edge", "failed boxes per edge",
                           "nodes per edge", "cells peak MB"});
     if (large) {
         for (long n : {10000L, 100000L})
@@ -161,8 +164,10 @@ int main(int argc, char** argv) {
                  "the rings too, at the default boundary tolerance, 10^-3 of the median semi-axis). `edges in "
                  "doubles`: the share of the cells' edges integrated by the double-interval stage "
                  "(cells/edge_quadrature.hpp, goals up to 44 bits), `with nodes in Arb` by its pieces with the nodes "
-                 "evaluated in Arb (beyond 44 bits), the rest by Arb's integrator; `pieces`, `failed boxes` and "
-                 "`nodes per edge`: the work of those two stages on each such edge (seen from one of its two sites), the pieces it "
+                 "evaluated in Arb (beyond 44 bits), the rest by Arb's integrator (shares of the edges a cell "
+                 "integrated itself); `edges from neighbours`: the share of the cells' edges whose integrals the "
+                 "neighbour's cell had made for both (docs/DESIGN.md §10); `pieces`, `failed boxes` and "
+                 "`nodes per edge`: the work of those two stages on each edge they integrated, the pieces it "
                  "integrated, the pieces whose complex box it could not certify (then halved) and the density "
                  "nodes. Peak memory: " +
                  std::string(kPeakMemoryMethod) + ", here of one cell_tessellation.");

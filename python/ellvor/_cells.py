@@ -1,6 +1,7 @@
 """Diagram.cells() and the Cells it returns: certified Voronoi cells as NumPy arrays."""
 
 import math
+import numbers
 import os
 
 import numpy as np
@@ -113,10 +114,12 @@ def _number(value, name):
     return x
 
 
-def cells(sites, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None, rings=True):
+def cells(sites, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None, rings=True, threads=1):
     """The certified cells of ``sites`` (a path, Sites or Ellipses); see Diagram.cells."""
     t = _number(tolerance, "tolerance")
     b = None if boundary_tolerance is None else _number(boundary_tolerance, "boundary_tolerance")
     if b is not None and math.isnan(b):
         raise InputError("boundary_tolerance: expected a positive number, got nan")
-    return Cells(_ellvor._cells(sites, box, periodic, t, b, bool(rings)))
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or not 0 <= threads <= 1024:
+        raise InputError(f"threads: expected a whole number from 0 to 1024, got {threads!r}")
+    return Cells(_ellvor._cells(sites, box, periodic, t, b, bool(rings), threads=int(threads)))

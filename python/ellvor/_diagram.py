@@ -213,13 +213,14 @@ class Diagram:
         """scipy.spatial.Voronoi's ``point_region``: site k's region is ``regions[k]``."""
         return _frozen(np.arange(len(self), dtype=np.int64))
 
-    def cells(self, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None, rings=True):
+    def cells(self, box=None, periodic=None, tolerance=1e-9, boundary_tolerance=None, rings=True, threads=1):
         """The certified Voronoi cells (a Cells), as ``ellvor cells``: every area an interval
         with hi - lo <= tolerance * area, the site's own area included. ``box`` or
         ``periodic``: (x0, y0, x1, y1), exact numbers (a box clips the cells; a periodic
         box tiles the torus); ``boundary_tolerance``: the rings' certified distance to the
         boundaries (default 1e-3 of the median larger semi-axis); ``rings=False`` skips the
-        rings (about three quarters of the time; ``rings()`` is then empty). The cells are computed
+        rings (about three quarters of the time; ``rings()`` is then empty); ``threads``: threads
+        measuring the areas (0: one per core; the result does not depend on it). The cells are computed
         anew from the sites (their vertices are numbered as ``vertices``). Sites may touch or
         cross (signed distances), but not so deeply that an edge runs through a site's medial
         axis. Raises InputError with ``ellvor cells``'s message for bad arguments and sites at
@@ -227,7 +228,7 @@ class Diagram:
         if len(self.removed):
             raise ValueError("cells: not available after remove(); build the remaining sites")
         return _cells(self.sites, box=box, periodic=periodic, tolerance=tolerance,
-                      boundary_tolerance=boundary_tolerance, rings=rings)
+                      boundary_tolerance=boundary_tolerance, rings=rings, threads=threads)
 
     def vertex(self, i, bits=53):
         """The Voronoi circle of face ``i`` refined to ``bits`` correct bits (a VoronoiCircle

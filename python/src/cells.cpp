@@ -47,13 +47,15 @@ CellDomain domain_argument(py::handle box, py::handle periodic) {
 }
 
 std::unique_ptr<Cells> cells(py::handle sites, py::handle box, py::handle periodic, double tolerance,
-                             std::optional<double> boundary_tolerance, bool rings, std::vector<SiteId> only) {
+                             std::optional<double> boundary_tolerance, bool rings, std::vector<SiteId> only,
+                             unsigned threads) {
     const Sites input = sites_argument(sites, "ell");
     const CellDomain domain = domain_argument(box, periodic);
     CellOptions options;
     options.tolerance = tolerance;
     options.rings = rings;
     options.only = std::move(only);
+    options.threads = threads;
     auto out = std::make_unique<Cells>();
     py::gil_scoped_release release;
     out->t = cells_of_site_file(input.file, domain, options, boundary_tolerance, kNames);
@@ -211,7 +213,8 @@ void bind_cells(py::module_& m) {
             write_file_atomically(path, [&](std::ostream& o) { o << j.dump() << "\n"; });
         });
     m.def("_cells", &cells, py::arg("sites"), py::arg("box"), py::arg("periodic"), py::arg("tolerance"),
-          py::arg("boundary_tolerance"), py::arg("rings"), py::arg("only") = std::vector<SiteId>{});
+          py::arg("boundary_tolerance"), py::arg("rings"), py::arg("only") = std::vector<SiteId>{},
+          py::arg("threads") = 1U);
     m.def("_check_cells", &check_cells, py::arg("sites"), py::arg("box"), py::arg("periodic"), py::arg("tolerance"),
           py::arg("boundary_tolerance"));
 }

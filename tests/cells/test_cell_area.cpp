@@ -391,8 +391,8 @@ TEST_CASE("cell areas: a circle nearly inside the circle it crosses, in doubles,
     // either site. The certified pieces shrink with g; at g = 1/100 the double
     // stage needs about 900 of them on the hairpin edge (9000 with the
     // certificate before Taylor models; it once gave up at 4096 and left the
-    // edge to Arb's integrator, minutes a cell). Eight circles around make
-    // both cells bounded.
+    // edge to Arb's integrator, minutes a cell), integrated once for both
+    // cells. Eight circles around make both cells bounded.
     const Rational g(1, 100), r0(1, 5), r1(3, 5);
     std::vector<Ellipse> sites = {Ellipse::circle(Rational(0), Rational(0), r0),
                                   Ellipse::circle(r1 - r0 + g * r0, Rational(0), r1)};
@@ -411,8 +411,9 @@ TEST_CASE("cell areas: a circle nearly inside the circle it crosses, in doubles,
         CHECK(std::fabs(areas[i].area.mid_double() - independent) <= 1e-9 * std::fabs(independent));
         CHECK(relative_width(areas[i].area) <= 1e-9);
         CHECK(areas[i].edges_by_arb == 0);
-        CHECK(areas[i].quadrature.pieces > 500);
     }
+    CHECK(areas[0].quadrature.pieces + areas[1].quadrature.pieces > 500);
+    CHECK(areas[0].edges_from_neighbors + areas[1].edges_from_neighbors >= 1);
 }
 
 TEST_CASE("cell areas: a crossing through a medial axis is refused; bad tolerances are input errors", "[cells]") {
@@ -434,4 +435,55 @@ TEST_CASE("cell areas: a crossing through a medial axis is refused; bad toleranc
         o.tolerance = T;
         CHECK_THROWS_AS(cell_areas(g2, apart, o), InputError);
     }
+}
+
+TEST_CASE("cell areas: threads do not change the result; edges are shared within a chunk", "[cells]") {
+    GeneratorOptions g;
+    g.count = 120;
+    g.seed = 3;
+    const std::vector<Ellipse> sites = generate_sites(g);
+    DelaunayGraph graph = test::ellipse_graph(sites);
+    graph.insert_all();
+    const auto areas = [&](unsigned threads, std::size_t chunk, std::vector<std::size_t>* progress = nullptr) {
+        CellAreaOptions o;
+        o.threads = threads;
+        o.chunk = chunk;
+        if (progress) o.progress = [progress](std::size_t done, std::size_t) { progress->push_back(done); };
+        return cell_areas(graph, sites, o);
+    };
+    std::vector<std::size_t> progress;
+    const std::vector<CellArea> one = areas(1, 16), three = areas(3, 16, &progress), all = areas(0, 16);
+    const std::vector<CellArea> whole = areas(2, 1024);
+    // Every call once, in order, the last with the total (the calls come one at a time).
+    REQUIRE(progress.size() == sites.size());
+    for (std::size_t k = 0; k < progress.size(); ++k) CHECK(progress[k] == k + 1);
+    const std::vector<VoronoiCell> cells = voronoi_cells(graph, face_numbers(graph));
+    std::size_t bounded = 0, shared_in_chunks = 0, shared_whole = 0, between_bounded = 0;
+    for (SiteId s = 0; s < sites.size(); ++s) {
+        for (const std::vector<CellArea>* other : {&three, &all}) {
+            const CellArea& a = one[s];
+            const CellArea& b = (*other)[s];
+            CHECK(arb_equal(a.area.get(), b.area.get()));
+            CHECK(arb_equal(a.perimeter.get(), b.perimeter.get()));
+            for (int i = 0; i < 2; ++i) CHECK(arb_equal(a.centroid[i].get(), b.centroid[i].get()));
+            for (int k = 0; k < 3; ++k) CHECK(arb_equal(a.second_moments[k].get(), b.second_moments[k].get()));
+            CHECK(a.edges_from_neighbors == b.edges_from_neighbors);
+        }
+        CHECK(arb_overlaps(one[s].area.get(), whole[s].area.get()));
+        if (!cells[s].visible || !cells[s].bounded()) continue;
+        ++bounded;
+        shared_in_chunks += one[s].edges_from_neighbors;
+        shared_whole += whole[s].edges_from_neighbors;
+        for (const CellEdge& e : cells[s].edges) between_bounded += cells[e.neighbor].visible && cells[e.neighbor].bounded();
+    }
+    REQUIRE(bounded >= 60);
+    // In one chunk each edge between two bounded cells is integrated once (a
+    // cell whose first pass failed integrates its edges again); in chunks of
+    // 16 the edges across chunks twice.
+    INFO("edges between bounded cells " << between_bounded << ", shared " << shared_whole << " in one chunk, "
+                                        << shared_in_chunks << " in chunks of 16");
+    CHECK(2 * shared_whole <= between_bounded);
+    CHECK(2 * shared_whole >= between_bounded * 9 / 10);
+    CHECK(shared_in_chunks < shared_whole);
+    CHECK(shared_in_chunks > 0);
 }

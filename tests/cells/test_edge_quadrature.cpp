@@ -37,15 +37,21 @@ bool densities_at_200_bits(NormalRayBisector& arb, double theta, NormalRayBisect
 
 // Every measure's interval meets Arb's ball of it.
 void check_overlaps(const MeasureIntervals& d, const NormalRayBisector::Densities& reference) {
-    const ComplexBall* expected[MeasureIntervals::count] = {&reference.area,      &reference.length,
-                                                            &reference.first[0],  &reference.first[1],
-                                                            &reference.second[0], &reference.second[1],
-                                                            &reference.second[2]};
     for (int j = 0; j < MeasureIntervals::count; ++j) {
         INFO("measure " << j << " [" << d.m[j].lo << ", " << d.m[j].hi << "]");
-        CHECK(overlap(d.m[j], *expected[j]));
+        CHECK(overlap(d.m[j], reference.m[j]));
     }
 }
+
+// Absolute tolerances of the measures: `area` for those in area units (X dY,
+// Y dX), times scale^(d - 2) for those of degree d in lengths.
+struct Tolerances {
+    double t[MeasureIntervals::count];
+    explicit Tolerances(double area, double scale = 1) {
+        const int degree[MeasureIntervals::count] = {2, 2, 1, 3, 3, 3, 4, 4, 4};
+        for (int j = 0; j < MeasureIntervals::count; ++j) t[j] = area * std::pow(scale, degree[j] - 2);
+    }
+};
 
 double relative_width(const Interval& x) { return (x.hi - x.lo) / std::max(std::fabs(x.lo), std::fabs(x.hi)); }
 
@@ -71,33 +77,39 @@ double facing_angle(const Ellipse& p, const Ellipse& q) {
     return std::atan2(ly * p.b().to_double(), lx * p.a().to_double());
 }
 
-struct AreaIntegrand {
+// One measure's density, for Arb's integrator.
+struct MeasureIntegrand {
     NormalRayBisector* bisector;
+    int measure;
 };
 
-int area_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong prec) {
+int measure_integrand(acb_ptr out, const acb_t in, void* param, slong order, slong prec) {
     if (order > 1) {
         acb_indeterminate(out);
         return 0;
     }
-    ComplexBall theta, density;
+    const auto* integrand = static_cast<MeasureIntegrand*>(param);
+    ComplexBall theta;
+    NormalRayBisector::Densities d;
     acb_set(theta.get(), in);
-    if (static_cast<AreaIntegrand*>(param)->bisector->area_density(theta, prec, density))
-        acb_set(out, density.get());
+    if (integrand->bisector->densities(theta, prec, d))
+        acb_set(out, d.m[integrand->measure].get());
     else
         acb_indeterminate(out);
     return 0;
 }
 
-// The area over [a, b] by Arb's integrator to the absolute tolerance, at prec bits.
-ComplexBall area_by_arb(NormalRayBisector& bisector, const Ball& a, const Ball& b, double tolerance, long prec) {
-    AreaIntegrand param{&bisector};
+// Measure j over [a, b] by Arb's integrator to the absolute tolerance, at prec bits.
+ComplexBall integral_by_arb(NormalRayBisector& bisector, int j, const Ball& a, const Ball& b, double tolerance,
+                            long prec) {
+    MeasureIntegrand param{&bisector, j};
     ComplexBall A(a), B(b), integral;
     Mag tol;
     mag_set_d(tol.get(), tolerance);
     acb_calc_integrate_opt_t options;
     acb_calc_integrate_opt_init(options);
-    acb_calc_integrate(integral.get(), area_integrand, &param, A.get(), B.get(), prec - 40, tol.get(), options, prec);
+    acb_calc_integrate(integral.get(), measure_integrand, &param, A.get(), B.get(), prec - 40, tol.get(), options,
+                       prec);
     return integral;
 }
 
@@ -146,8 +158,9 @@ TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bit
         ++certified;
         INFO("trial " << trial);
         check_overlaps(*d, reference);
-        CHECK(relative_width(d->m[MeasureIntervals::area]) < 1e-11);
         CHECK(relative_width(d->m[MeasureIntervals::length]) < 1e-11);
+        const Interval &x_dy = d->m[MeasureIntervals::x_dy], &y_dx = d->m[MeasureIntervals::y_dx];
+        CHECK(std::max(x_dy.hi - x_dy.lo, y_dx.hi - y_dx.lo) < 1e-11 * (std::fabs(x_dy.mid()) + std::fabs(y_dx.mid())));
     }
     // The stage must be reached: it certifies (nearly) every point Arb does.
     CHECK(compared >= 40);
@@ -177,7 +190,10 @@ TEST_CASE("NormalRayInDoubles on crossing sites: the signed tie's densities cont
         NormalRayBisector::Densities reference;
         if (!densities_at_200_bits(arb, theta, reference)) continue;
         ++compared;
-        (arb_is_negative(acb_realref(reference.area.get())) ? inside : outside) += 1;
+        ComplexBall ball, s;
+        arb_set_d(ball.real(), theta);
+        REQUIRE(arb.solve(ball, 200, s));
+        (arb_is_negative(acb_realref(s.get())) ? inside : outside) += 1;
         const std::optional<MeasureIntervals> dens = fast.densities(Interval(theta));
         if (!dens) continue;
         ++certified;
@@ -216,8 +232,7 @@ TEST_CASE("close disjoint sites: the signed tie's densities equal the squared ti
         if (!densities_at_200_bits(squared, theta, reference)) continue;
         ++compared;
         REQUIRE(densities_at_200_bits(signed_tie, theta, other));
-        CHECK(acb_overlaps(reference.area.get(), other.area.get()));
-        CHECK(acb_overlaps(reference.length.get(), other.length.get()));
+        for (int j = 0; j < MeasureIntervals::count; ++j) CHECK(acb_overlaps(reference.m[j].get(), other.m[j].get()));
         const std::optional<MeasureIntervals> dens = fast.densities(Interval(theta));
         if (!dens) continue;
         ++certified;
@@ -272,15 +287,27 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold
             arb_submul(d[0].get(), along_v.get(), site.sin.get(), 128);
             arb_mul(d[1].get(), along_u.get(), site.sin.get(), 128);
             arb_addmul(d[1].get(), along_v.get(), site.cos.get(), 128);
-            arb_sqr(d[0].get(), d[0].get(), 128);
-            arb_addmul(d[0].get(), d[1].get(), d[1].get(), 128);
-            arb_sqrt(d[0].get(), d[0].get(), 128);
-            Arf lower;
-            arb_get_lbound_arf(lower.get(), d[0].get(), 128);
-            INFO("trial " << trial << " |V - C| " << d[0].str(20) << " bound " << bounds->center_distance);
-            CHECK(arf_get_d(lower.get(), ARF_RND_DOWN) <= bounds->center_distance);
-            // Within the box's width of the true value: a bound, not a guess at infinity.
-            CHECK(bounds->center_distance <= 2 * arf_get_d(lower.get(), ARF_RND_UP) + 10 * (along + across));
+            // V - C_q = (V - C_p) + (C_p - C_q).
+            const SiteBalls other(q, 128);
+            Ball e[2];
+            arb_add(e[0].get(), d[0].get(), site.xc.get(), 128);
+            arb_sub(e[0].get(), e[0].get(), other.xc.get(), 128);
+            arb_add(e[1].get(), d[1].get(), site.yc.get(), 128);
+            arb_sub(e[1].get(), e[1].get(), other.yc.get(), 128);
+            for (int i = 0; i < 2; ++i) {
+                Ball& v = i == 0 ? d[0] : e[0];
+                const Ball& w = i == 0 ? d[1] : e[1];
+                arb_sqr(v.get(), v.get(), 128);
+                arb_addmul(v.get(), w.get(), w.get(), 128);
+                arb_sqrt(v.get(), v.get(), 128);
+                Arf lower;
+                arb_get_lbound_arf(lower.get(), v.get(), 128);
+                const double bound = bounds->center_distance[i];
+                INFO("trial " << trial << " |V - C| of " << (i ? "q " : "p ") << v.str(20) << " bound " << bound);
+                CHECK(arf_get_d(lower.get(), ARF_RND_DOWN) <= bound);
+                // Within the box's width of the true value: a bound, not a guess at infinity.
+                CHECK(bound <= 2 * arf_get_d(lower.get(), ARF_RND_UP) + 10 * (along + across));
+            }
         }
         for (int k = 0; k < 8; ++k) {
             ComplexBall z;
@@ -303,11 +330,9 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold
             Mag e;
             acb_get_mag_lower(e.get(), error.get());
             CHECK(mag_get_d(e.get()) <= model->remainder);
-            const ComplexBall* values[MeasureIntervals::count] = {&d.area,      &d.length,    &d.first[0], &d.first[1],
-                                                                  &d.second[0], &d.second[1], &d.second[2]};
             for (int j = 0; j < MeasureIntervals::count; ++j) {
                 Mag m;
-                acb_get_mag_lower(m.get(), values[j]->get());
+                acb_get_mag_lower(m.get(), d.m[j].get());
                 INFO("trial " << trial << " measure " << j << " bound " << M[j]);
                 CHECK(mag_get_d(m.get()) <= M[j]);
             }
@@ -328,19 +353,21 @@ TEST_CASE("integrate_edge: the area over an edge piece overlaps Arb's integral",
         NormalRayBisector reference(p, q);
         NormalRayInDoubles nodes(p, q);
         const double a = facing_angle(p, q) - 0.4, b = a + 0.8;
-        const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
-        const std::optional<MeasureIntervals> I = integrate_edge(nodes, rules, a, b, tolerance);
+        // p's center is the origin: X and Y reach about 100.
+        const Tolerances tolerance(1e-9, 100);
+        const std::optional<MeasureIntervals> I = integrate_edge(nodes, rules, a, b, tolerance.t);
         REQUIRE(I);
         ++integrated;
-        for (int j = 0; j < MeasureIntervals::count; ++j) CHECK(I->m[j].hi - I->m[j].lo <= 2 * tolerance[j]);
+        for (int j = 0; j < MeasureIntervals::count; ++j) CHECK(I->m[j].hi - I->m[j].lo <= 2 * tolerance.t[j]);
         Ball A, B;
         arb_set_d(A.get(), a);
         arb_set_d(B.get(), b);
-        const ComplexBall exact = area_by_arb(reference, A, B, 1e-25, 128);
-        REQUIRE(acb_is_finite(exact.get()));
-        INFO("trial " << trial << " doubles [" << I->m[MeasureIntervals::area].lo << ", "
-                      << I->m[MeasureIntervals::area].hi << "]");
-        CHECK(overlap(I->m[MeasureIntervals::area], exact));
+        for (int j : {MeasureIntervals::x_dy, MeasureIntervals::y_dx, MeasureIntervals::length, MeasureIntervals::x2y_dy}) {
+            const ComplexBall exact = integral_by_arb(reference, j, A, B, 1e-25, 128);
+            REQUIRE(acb_is_finite(exact.get()));
+            INFO("trial " << trial << " measure " << j << " doubles [" << I->m[j].lo << ", " << I->m[j].hi << "]");
+            CHECK(overlap(I->m[j], exact));
+        }
     }
     CHECK(integrated == 12);
 }
@@ -364,20 +391,23 @@ TEST_CASE("integrate_edge_in_arb: 10^-25 over an edge piece, inside Arb's integr
         arb_mul_2exp_si(tiny.get(), tiny.get(), -70);
         arb_add(ends[0].get(), ends[0].get(), tiny.get(), prec);
         arb_sub(ends[1].get(), ends[1].get(), tiny.get(), prec);
-        const double tolerance[MeasureIntervals::count] = {1e-25, 1e-25, 1e-25, 1e-25, 1e-25, 1e-25, 1e-25};
+        const Tolerances tolerance(1e-25, 100);
         QuadratureCounts counts;
         const std::optional<NormalRayBisector::Densities> I =
-            integrate_edge_in_arb(bounds, nodes, rules, ends, tolerance, prec, &counts);
+            integrate_edge_in_arb(bounds, nodes, rules, ends, tolerance.t, prec, &counts);
         REQUIRE(I);
         CHECK(counts.pieces >= 1);
-        CHECK(mag_cmp_2exp_si(arb_radref(acb_realref(I->area.get())), -80) <= 0);  // 2^-80 ~ 8e-25
-        const ComplexBall exact = area_by_arb(reference, ends[0], ends[1], 1e-30, 160);
-        REQUIRE(acb_is_finite(exact.get()));
-        Ball ours, arbs;
-        arb_set(ours.get(), acb_realref(I->area.get()));
-        arb_set(arbs.get(), acb_realref(exact.get()));
-        INFO("trial " << trial << " nodes in Arb " << ours.str(30) << " Arb's " << arbs.str(30));
-        CHECK(acb_overlaps(I->area.get(), exact.get()));
+        for (int j : {MeasureIntervals::x_dy, MeasureIntervals::y_dx, MeasureIntervals::x3_dy}) {
+            const ComplexBall& ours = I->m[j];
+            CHECK(mag_get_d(arb_radref(acb_realref(ours.get()))) <= tolerance.t[j]);
+            const ComplexBall exact = integral_by_arb(reference, j, ends[0], ends[1], 1e-30, 160);
+            REQUIRE(acb_is_finite(exact.get()));
+            Ball a, b;
+            arb_set(a.get(), acb_realref(ours.get()));
+            arb_set(b.get(), acb_realref(exact.get()));
+            INFO("trial " << trial << " measure " << j << " nodes in Arb " << a.str(30) << " Arb's " << b.str(30));
+            CHECK(acb_overlaps(ours.get(), exact.get()));
+        }
     }
 }
 
@@ -388,12 +418,12 @@ TEST_CASE("integrate_edge: a range the bisector does not reach is not certified"
     const Ellipse q = Ellipse::circle(Rational(10), Rational(0), Rational(1));
     NormalRayInDoubles nodes(p, q);
     GaussLegendreRules rules;
-    const double tolerance[MeasureIntervals::count] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
-    CHECK(!integrate_edge(nodes, rules, kPi - 0.2, kPi + 0.2, tolerance));
+    const Tolerances tolerance(1e-9);
+    CHECK(!integrate_edge(nodes, rules, kPi - 0.2, kPi + 0.2, tolerance.t));
     CHECK(!nodes.densities(Interval(kPi)));
     NormalRayBisector arb_nodes(p, q);
     Ball ends[2];
     arb_set_d(ends[0].get(), kPi - 0.2);
     arb_set_d(ends[1].get(), kPi + 0.2);
-    CHECK(!integrate_edge_in_arb(nodes, arb_nodes, rules, ends, tolerance, 128));
+    CHECK(!integrate_edge_in_arb(nodes, arb_nodes, rules, ends, tolerance.t, 128));
 }

@@ -229,7 +229,8 @@ TEST_CASE("cells --help documents every column", "[cli][cells]") {
     const auto r = dir.ellvor("cells --help");
     REQUIRE(r.status == 0);
     for (const std::string& column : csv_fields(kHeader)) CHECK(contains(r.out, column));
-    for (const char* option : {"--box", "--periodic", "--tolerance", "--boundary-tolerance", "--format", "--cin"})
+    for (const char* option :
+         {"--box", "--periodic", "--tolerance", "--boundary-tolerance", "--threads", "--format", "--cin"})
         CHECK(contains(r.out, option));
 }
 
@@ -255,6 +256,8 @@ TEST_CASE("cells: bad arguments and bad sites exit 2 naming them, nothing writte
         {"--boundary-tolerance 0", "option --boundary-tolerance: expected a positive number, got 0"},
         {"--boundary-tolerance -2", "option --boundary-tolerance: expected a positive number, got -2"},
         {"--format xml", "option --format: expected csv, json or geojson"},
+        {"--threads -1", "option --threads: expected an integer in [0, 1024], got '-1'"},
+        {"--threads two", "option --threads: expected an integer in [0, 1024], got 'two'"},
     };
     for (const Bad& b : cases) {
         const auto r = dir.ellvor("cells '" + f + "' " + b.args + " -o '" + out + "'");

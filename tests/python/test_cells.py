@@ -179,12 +179,28 @@ def test_reach_bounds_every_ring_point_with_or_without_rings(computed):
     ({"periodic": (0, 3, 1, "3")}, "periodic: an empty box: Y0 = 3 is not below Y1 = 3"),
     ({"box": (0, 0, 1)}, "box: expected four numbers (x0, y0, x1, y1)"),
     ({"box": (0, 0, 1, 1), "periodic": (0, 0, 1, 1)}, "box and periodic exclude each other"),
+    ({"threads": -1}, "threads: expected a whole number from 0 to 1024, got -1"),
+    ({"threads": 1.5}, "threads: expected a whole number from 0 to 1024, got 1.5"),
+    ({"threads": True}, "threads: expected a whole number from 0 to 1024, got True"),
 ])
 def test_bad_arguments_raise_input_error(computed, kwargs, message):
     d, _ = computed
     with pytest.raises(ellvor.InputError) as e:
         d.cells(**kwargs)
     assert str(e.value) == message
+
+
+def test_threads_give_the_same_cells(cli, tmp_path):
+    # 1500 sites: two chunks of cells (cells/cell_area.hpp), measured by two threads or one.
+    path = tmp_path / "sites.ell"
+    path.write_text(cli("generate", "ellipses", "--count", "1500", "--seed", "4")[1])
+    d = ellvor.build(path)
+    one, two = d.cells(box=(-101, -101, 101, 101), rings=False), d.cells(box=(-101, -101, 101, 101), rings=False,
+                                                                          threads=2)
+    for name in ("area_lo", "area_hi", "perimeter_lo", "perimeter_hi"):
+        assert np.array_equal(getattr(one, name), getattr(two, name)), name
+    assert np.array_equal(one.indices, two.indices)
+    assert one.area_lo.sum() <= 202 ** 2 <= one.area_hi.sum()
 
 
 def test_site_errors_carry_the_cli_message(cli, sites_path, write_sites):
