@@ -1,29 +1,24 @@
 #include "cells/cell_area.hpp"
 
+#include "cells/cell_chunks.hpp"
 #include "cells/cell_vertex_angles.hpp"
 #include "cells/edge_integrals.hpp"
 #include "cells/edge_quadrature.hpp"
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
 #include "cells/normal_ray_in_doubles.hpp"
-#include "graph/insertion_order.hpp"
 #include "util/error.hpp"
 
 #include <acb_calc.h>
-#include <flint/flint.h>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <cstdint>
-#include <exception>
 #include <mutex>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
-#include <thread>
 
 namespace ellvor {
 namespace {
@@ -605,24 +600,6 @@ void measure_cell(CellAreaSolver& solver, const VoronoiCell& cell, const Ellipse
     }
 }
 
-// The sites along a Hilbert curve through their centers.
-std::vector<SiteId> hilbert_order(const std::vector<Ellipse>& sites, std::vector<SiteId> which) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    std::vector<std::uint32_t> place(sites.size(), 0);
-    for (SiteId s : which) {
-        const EllipseShape e = EllipseShape::of(sites[s]);
-        lo[0] = std::min(lo[0], e.xc), lo[1] = std::min(lo[1], e.yc);
-        hi[0] = std::max(hi[0], e.xc), hi[1] = std::max(hi[1], e.yc);
-    }
-    const double side = std::max(hi[0] - lo[0], hi[1] - lo[1]);
-    for (SiteId s : which) {
-        const EllipseShape e = EllipseShape::of(sites[s]);
-        place[s] = hilbert_index(e.xc, e.yc, lo[0], lo[1], side);
-    }
-    std::stable_sort(which.begin(), which.end(), [&](SiteId a, SiteId b) { return place[a] < place[b]; });
-    return which;
-}
-
 }  // namespace
 
 std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
@@ -637,53 +614,23 @@ std::vector<CellArea> cell_areas(const DelaunayGraph& graph, const std::vector<E
         for (SiteId s = 0; s < cells.size(); ++s) which.push_back(s);
     for (SiteId s : which) cells.at(s);  // out of range: an Error before any thread
     require_followable_edges(graph, sites, which, options.input_ids);
-    // In chunks of `chunk` cells along a Hilbert curve, each by a solver of
-    // its own: an edge one cell integrated for its neighbour waits only a
-    // short while (CellAreaSolver::measure), and each chunk's result depends
-    // on nothing but its cells, whichever thread measures it.
+    // In chunks along a Hilbert curve (cells/cell_chunks.hpp), each by a
+    // solver of its own: an edge one cell integrated for its neighbour waits
+    // only a short while (CellAreaSolver::measure).
     const std::vector<SiteId> order = hilbert_order(sites, std::move(which));
     const auto faces = std::make_shared<const CellVertexAngles::Faces>(graph.faces());
-    if (options.chunk == 0) throw Error("cell_areas: chunks of no cells");
-    const std::size_t size = options.chunk, chunks = (order.size() + size - 1) / size;
-    std::atomic<std::size_t> next_chunk{0}, first_failed{chunks};
-    std::vector<std::exception_ptr> errors(chunks);
     std::size_t done = 0;
     std::mutex progress_lock;
-    const auto work = [&] {
-        for (std::size_t c; (c = next_chunk.fetch_add(1)) < chunks;) {
-            // After a failed chunk only the chunks before it: the error
-            // reported is the first chunk's, whatever the threads.
-            if (c > first_failed.load()) continue;
-            try {
-                CellAreaSolver solver(faces, sites, cells, T, options.arb_integrator_only);
-                const auto begin = order.begin() + static_cast<std::ptrdiff_t>(c * size);
-                const auto end = order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), (c + 1) * size));
-                for (auto it = begin; it != end; ++it)
-                    if (cells[*it].visible && cells[*it].bounded()) solver.set_pending(*it, true);
-                for (auto it = begin; it != end; ++it) {
-                    measure_cell(solver, cells[*it], sites[*it], start, out[*it]);
-                    const std::lock_guard<std::mutex> lock(progress_lock);
-                    if (options.progress && ++done < order.size()) options.progress(done, order.size());
-                }
-            } catch (...) {
-                errors[c] = std::current_exception();
-                for (std::size_t f = first_failed.load(); c < f && !first_failed.compare_exchange_weak(f, c);) {
-                }
-            }
+    for_each_chunk(order, options.chunk, options.threads, [&](const SiteId* begin, const SiteId* end) {
+        CellAreaSolver solver(faces, sites, cells, T, options.arb_integrator_only);
+        for (const SiteId* s = begin; s != end; ++s)
+            if (cells[*s].visible && cells[*s].bounded()) solver.set_pending(*s, true);
+        for (const SiteId* s = begin; s != end; ++s) {
+            measure_cell(solver, cells[*s], sites[*s], start, out[*s]);
+            const std::lock_guard<std::mutex> lock(progress_lock);
+            if (options.progress && ++done < order.size()) options.progress(done, order.size());
         }
-    };
-    unsigned threads = options.threads ? options.threads : std::max(1U, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, chunks)));
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back([&work] {
-            work();
-            flint_cleanup();  // the thread's own caches (Arb's constants, FLINT's integers)
-        });
-    work();
-    for (std::thread& t : pool) t.join();
-    for (const std::exception_ptr& e : errors)
-        if (e) std::rethrow_exception(e);
+    });
     if (options.progress) options.progress(order.size(), order.size());
     return out;
 }

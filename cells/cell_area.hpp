@@ -6,6 +6,7 @@
 // plane).
 #pragma once
 
+#include "cells/cell_chunks.hpp"
 #include "cells/quadrature_counts.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "graph/delaunay_graph.hpp"
@@ -41,7 +42,7 @@ struct CellAreaOptions {
     // docs/DESIGN.md §10), so the result depends on the chunk size, not on
     // the threads.
     unsigned threads = 1;
-    std::size_t chunk = 1024;
+    std::size_t chunk = kCellChunk;
     // Every edge by Arb's integrator, the last stage (tests reach it so).
     bool arb_integrator_only = false;
 };

@@ -2,6 +2,7 @@
 
 #include "cells/box_mirrors.hpp"
 #include "cells/cell_area.hpp"
+#include "cells/cell_chunks.hpp"
 #include "cells/cell_vertex_angles.hpp"
 #include "cells/face_numbers.hpp"
 #include "cells/normal_ray_bisector.hpp"
@@ -105,6 +106,117 @@ PlaneSites neighbourhood_of_originals(const PlaneSites& all, const std::vector<c
     return out;
 }
 
+// The covers of cells' edges (cells/voronoi_edge_cover.hpp): their rings and
+// reach. A cell still to be covered (pending) takes the boxes of an edge its
+// neighbour covered, backwards: each edge between two pending cells is covered
+// once, along the angle of the first.
+class CellCovers {
+    // The vertices and their angles to 44 bits, what the circles certified in
+    // doubles give (cells/cell_vertex_angles.hpp): the covers need them only
+    // well within their radius (the angles' widths are the covers' overshoot).
+    static constexpr long kVertexPrecision = 44 + 24;
+
+public:
+    CellCovers(const PlaneSites& sites, const std::vector<VoronoiCell>& cells,
+               std::shared_ptr<const CellVertexAngles::Faces> faces, const EdgeCoverOptions& cover)
+        : sites_(sites), cells_(cells), angles_(std::move(faces), sites.sites), cover_(cover),
+          pending_(cells.size(), 0) {}
+
+    void set_pending(SiteId s, bool pending) { pending_.at(s) = pending; }
+
+    // The largest distance from the site's center to its bounded cell (an
+    // upper bound, rounded up), by covering the cell's edges; their points
+    // appended to `ring` when given.
+    double cover(SiteId s, std::vector<std::array<double, 2>>* ring) {
+        const VoronoiCell& cell = cells_[s];
+        const Ellipse& site = sites_.sites[s];
+        pending_[s] = 0;
+        std::vector<Ball> lifted;
+        double reach = 0;
+        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
+            const CellEdge& e = cell.edges[k];
+            if (sites_.wall[e.neighbor] != Wall::none) {
+                // The wall is a straight side between two vertices: its first
+                // vertex stands for it (the next side starts at the second),
+                // and its farthest point from the center is one of them.
+                if (ring) ring->push_back(vertex_point(e.from));
+                for (long face : {e.from, e.to}) {
+                    const BallPoint v = angles_.vertex(face, kVertexPrecision);
+                    reach = std::max(reach, distance_bound(EdgeCoverBox{v.x, v.y, {}}, site.xc(), site.yc(), cover_.prec));
+                }
+                continue;
+            }
+            // Along the neighbour's angle the edge runs from `to` to `from`.
+            std::vector<EdgeCoverBox> boxes;
+            const auto shared = shared_.find({static_cast<long>(e.neighbor), static_cast<long>(s), e.to, e.from});
+            if (shared != shared_.end()) {
+                boxes = std::move(shared->second);
+                shared_.erase(shared);
+                std::reverse(boxes.begin(), boxes.end());
+                for (EdgeCoverBox& box : boxes) std::reverse(box.points.begin(), box.points.end());
+            } else {
+                if (lifted.empty()) lifted = lifted_angles(cell);
+                NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
+                boxes = voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_);
+                if (pending_[e.neighbor])
+                    shared_.emplace(std::array<long, 4>{static_cast<long>(s), static_cast<long>(e.neighbor), e.from, e.to},
+                                    boxes);
+            }
+            for (const EdgeCoverBox& box : boxes) {
+                if (ring) ring->insert(ring->end(), box.points.begin(), box.points.end());
+                reach = std::max(reach, std::min(distance_bound(box, site.xc(), site.yc(), cover_.prec),
+                                                 polyline_distance_bound(box, site)));
+            }
+        }
+        return reach;
+    }
+
+private:
+    // The cell's vertex angles (CellVertexAngles::lifted) at kVertexPrecision,
+    // or at the covers' when two are less than a thousand times their radii
+    // apart (a very short edge: its end pieces must hold the vertex balls).
+    std::vector<Ball> lifted_angles(const VoronoiCell& cell) {
+        std::vector<Ball> lifted = angles_.lifted(cell, kVertexPrecision);
+        for (std::size_t k = 0; k + 1 < lifted.size(); ++k) {
+            const double gap = lifted[k + 1].mid_double() - lifted[k].mid_double();
+            if (!(gap > 1024 * (lifted[k].radius_double() + lifted[k + 1].radius_double())))
+                return angles_.lifted(cell, cover_.prec + 24);
+        }
+        return lifted;
+    }
+
+    // V(J) lies within the cover radius of the piece's polyline, whose
+    // farthest point from the center is one of its points: often tighter than
+    // the box V(J) (rounded up; +inf without points).
+    double polyline_distance_bound(const EdgeCoverBox& box, const Ellipse& site) const {
+        if (box.points.empty()) return INFINITY;
+        double far = 0;
+        for (const auto& q : box.points) {
+            Ball x, y;
+            arb_set_d(x.get(), q[0]);
+            arb_set_d(y.get(), q[1]);
+            far = std::max(far, distance_bound(EdgeCoverBox{x, y, {}}, site.xc(), site.yc(), cover_.prec));
+        }
+        return std::nextafter(far + cover_.radius, INFINITY);
+    }
+
+    // A Voronoi vertex as a ring point within the cover radius of the true one.
+    std::array<double, 2> vertex_point(long face) {
+        const BallPoint v = angles_.vertex(face, kVertexPrecision);
+        const double r = std::hypot(v.x.radius_double(), v.y.radius_double());
+        if (!(r <= cover_.radius / 2)) throw Error("cell_tessellation: a Voronoi vertex is not known to the ring's tolerance");
+        return {v.x.mid_double(), v.y.mid_double()};
+    }
+
+    const PlaneSites& sites_;
+    const std::vector<VoronoiCell>& cells_;
+    CellVertexAngles angles_;
+    EdgeCoverOptions cover_;
+    std::vector<char> pending_;
+    // By (covered cell, neighbour, from, to): an edge's boxes until the neighbour takes them.
+    std::map<std::array<long, 4>, std::vector<EdgeCoverBox>> shared_;
+};
+
 // The cells of the originals of a plane diagram: sides, vertices, rings, and
 // for the torus the certificate; areas come after (cell_areas).
 class OriginalCells {
@@ -113,7 +225,8 @@ public:
     // else for the reach of the cells whose areas gave none.
     OriginalCells(const PlaneSites& sites, double boundary_tolerance, bool rings)
         : rings_(rings), sites_(sites), graph_(built_graph(sites.sites)),
-          cells_(voronoi_cells(*graph_, face_numbers(*graph_))), angles_(*graph_, sites_.sites) {
+          cells_(voronoi_cells(*graph_, face_numbers(*graph_))),
+          faces_(std::make_shared<const CellVertexAngles::Faces>(graph_->faces())), angles_(faces_, sites_.sites) {
         double size = 0;
         for (const Ellipse& e : sites.sites) size = std::max(size, std::max(e.a().to_double(), e.b().to_double()));
         cover_.radius = boundary_tolerance / 2;
@@ -149,46 +262,34 @@ public:
             out.sides.front().from = out.sides.back().from;
             out.sides.pop_back();
         }
-        if (rings_ && out.bounded) out.reach = cover(s, &out.ring);
     }
 
-    // The largest distance from the site's center to its bounded cell (an
-    // upper bound, rounded up), by covering the cell's edges; their points
-    // appended to `ring` when given.
-    double cover(SiteId s, std::vector<std::array<double, 2>>* ring) {
-        const VoronoiCell& cell = cells_[s];
-        const Ellipse& site = sites_.sites[s];
-        const std::vector<Ball> lifted = angles_.lifted(cell, cover_.prec + 24);
-        double reach = 0;
-        for (std::size_t k = 0; k < cell.edges.size(); ++k) {
-            const CellEdge& e = cell.edges[k];
-            if (sites_.wall[e.neighbor] != Wall::none) {
-                // The wall is a straight side between two vertices: its first
-                // vertex stands for it (the next side starts at the second),
-                // and its farthest point from the center is one of them.
-                if (ring) ring->push_back(vertex_point(e.from));
-                for (long face : {e.from, e.to}) {
-                    const BallPoint v = angles_.vertex(face, cover_.prec + 24);
-                    reach = std::max(reach, distance_bound(EdgeCoverBox{v.x, v.y, {}}, site.xc(), site.yc(), cover_.prec));
-                }
-                continue;
-            }
-            NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
-            for (const EdgeCoverBox& box : voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_)) {
-                if (ring) ring->insert(ring->end(), box.points.begin(), box.points.end());
-                reach = std::max(reach, std::min(distance_bound(box, site.xc(), site.yc(), cover_.prec),
-                                                 polyline_distance_bound(box, site)));
-            }
-        }
-        return reach;
+    // The rings of the wanted bounded cells and their reach, in chunks along
+    // a Hilbert curve (cells/cell_chunks.hpp) on `threads` threads: the same
+    // rings whatever the threads.
+    void rings(const std::vector<SiteId>& wanted, unsigned threads, CellTessellation& out) {
+        std::vector<SiteId> which;
+        for (SiteId s : wanted)
+            if (out.cells[s].bounded) which.push_back(s);
+        for_each_chunk(hilbert_order(sites_.sites, std::move(which)), kCellChunk, threads,
+                       [&](const SiteId* begin, const SiteId* end) {
+                           CellCovers covers(sites_, cells_, faces_, cover_);
+                           for (const SiteId* s = begin; s != end; ++s) covers.set_pending(*s, true);
+                           for (const SiteId* s = begin; s != end; ++s)
+                               out.cells[*s].reach = covers.cover(*s, &out.cells[*s].ring);
+                       });
     }
 
-    // The vertices at precision prec (CellVertexAngles::vertex), or the
-    // rings' when they are finer.
+    // A bounded cell's reach by covering its edges (cells whose areas gave none).
+    double reach(SiteId s) { return CellCovers(sites_, cells_, faces_, cover_).cover(s, nullptr); }
+
+    // The vertices at precision prec (CellVertexAngles::vertex), or 8 bits
+    // finer than the rings' tolerance relative to the sites' size when that
+    // is finer (cover_.prec is 64 bits beyond those bits).
     std::vector<CellVertex> vertices(const std::map<long, long>& vertex_ids, long prec) {
         std::vector<CellVertex> out(vertex_ids.size());
-        if (rings_) prec = std::max(prec, cover_.prec + 24);
-        const std::vector<std::array<SiteId, 3>> faces = graph_->faces();
+        if (rings_) prec = std::max(prec, cover_.prec - 64 + 8 + 24);
+        const CellVertexAngles::Faces& faces = *faces_;
         for (const auto& [face, id] : vertex_ids) {
             BallPoint v = angles_.vertex(face, prec);
             CellVertex& w = out[static_cast<std::size_t>(id)];
@@ -202,38 +303,16 @@ public:
     }
 
 private:
-    // V(J) lies within the cover radius of the piece's polyline, whose
-    // farthest point from the center is one of its points: often tighter than
-    // the box V(J) (rounded up; +inf without points).
-    double polyline_distance_bound(const EdgeCoverBox& box, const Ellipse& site) const {
-        if (box.points.empty()) return INFINITY;
-        double far = 0;
-        for (const auto& q : box.points) {
-            Ball x, y;
-            arb_set_d(x.get(), q[0]);
-            arb_set_d(y.get(), q[1]);
-            far = std::max(far, distance_bound(EdgeCoverBox{x, y, {}}, site.xc(), site.yc(), cover_.prec));
-        }
-        return std::nextafter(far + cover_.radius, INFINITY);
-    }
-
     static long vertex_id(long face, std::map<long, long>& ids) {
         if (face < 0) return -1;
         return ids.emplace(face, static_cast<long>(ids.size())).first->second;
-    }
-
-    // A Voronoi vertex as a ring point within the cover radius of the true one.
-    std::array<double, 2> vertex_point(long face) {
-        const BallPoint v = angles_.vertex(face, cover_.prec + 24);
-        const double r = std::hypot(v.x.radius_double(), v.y.radius_double());
-        if (!(r <= cover_.radius / 2)) throw Error("cell_tessellation: a Voronoi vertex is not known to the ring's tolerance");
-        return {v.x.mid_double(), v.y.mid_double()};
     }
 
     bool rings_;
     const PlaneSites& sites_;
     std::unique_ptr<DelaunayGraph> graph_;
     std::vector<VoronoiCell> cells_;
+    std::shared_ptr<const CellVertexAngles::Faces> faces_;
     CellVertexAngles angles_;
     EdgeCoverOptions cover_;
 };
@@ -319,6 +398,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
         }
+        if (options.rings) cells->rings(originals, options.threads, out);
     };
     // The areas, and each bounded cell's reach: the areas' (or the rings',
     // the less), else by covering the cell's edges.
@@ -326,7 +406,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
         fill_areas(*plane, cells->graph(), options, wanted, out);
         for (SiteId s = 0; s < sites.size(); ++s)
             if (wanted[s] && out.cells[s].bounded && std::isinf(out.cells[s].reach))
-                out.cells[s].reach = cells->cover(s, nullptr);
+                out.cells[s].reach = cells->reach(s);
     };
     switch (domain.kind) {
         case CellDomain::Kind::plane:

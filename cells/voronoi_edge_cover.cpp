@@ -85,12 +85,18 @@ struct PieceBounds {
 };
 
 std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayInDoubles& doubles, const SiteBalls& p,
-                                        double l, double h, double margin, long prec) {
+                                        double l, double h, double margin, long prec, bool& doubles_held) {
     const double half = 0.5 * (h - l), m = 0.5 * (l + h);
-    // The model: in double intervals, else by Arb.
+    // The model: in double intervals, else by Arb, unless the doubles held on
+    // an earlier piece of the edge: then this one is likely only too wide,
+    // and halving it is cheaper than Arb's try (a rule of cost: a piece is
+    // never accepted without a certificate).
     Ball mid, s0, s1;
     double remainder, M;  // |e| and |e n~| on Z
-    if (const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin, margin)) {
+    const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin, margin);
+    if (!fast && doubles_held) return std::nullopt;
+    if (fast) {
+        doubles_held = true;
         arb_set_d(mid.get(), fast->mid);
         arb_set_d(s0.get(), fast->s0);
         arb_set_d(s1.get(), fast->s1);
@@ -164,6 +170,19 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
     return out;
 }
 
+// Whether V(l) and V(h) are certainly more than `distance` apart (false when
+// either is not certified in double intervals).
+bool apart(NormalRayInDoubles& points, double l, double h, double distance) {
+    const std::optional<std::array<Interval, 2>> a = points.point(Interval(l)), b = points.point(Interval(h));
+    if (!a || !b) return false;
+    double gap2 = 0;  // a lower bound of |V(l) - V(h)|^2
+    for (int i = 0; i < 2; ++i) {
+        const double g = std::max({0.0, (*a)[i].lo - (*b)[i].hi, (*b)[i].lo - (*a)[i].hi});
+        gap2 += g * g;
+    }
+    return gap2 * (1 - std::ldexp(1.0, -50)) > distance * distance;
+}
+
 }  // namespace
 
 std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const Ball& from, const Ball& to,
@@ -190,6 +209,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
     // The model holds on pieces of about the same width: a piece over twice
     // as wide as the last one it held on is halved untried.
     double certified_width = INFINITY;
+    bool doubles_held = false;
     std::vector<std::pair<double, double>> stack{{lo, hi}};
     while (!stack.empty()) {
         const auto [l, h] = stack.back();
@@ -199,7 +219,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
         const double m = 0.5 * (l + h);
         // Second order: points along J, as many as its bounds ask.
         const std::optional<PieceBounds> bounds =
-            h - l > 2 * certified_width ? std::nullopt : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec);
+            h - l > 2 * certified_width ? std::nullopt : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec, doubles_held);
         if (bounds) {
             certified_width = h - l;
             // Nine tenths of the radius for the chords and the overshoot, a
@@ -236,8 +256,11 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                 }
             }
         }
-        // First order.
-        if (!ok && real_ray_points(bisector, p, ball_of(Interval(l, h), prec), prec, box.x, box.y)) {
+        // First order, unless V(l) and V(h), both in V(J), are over twice the
+        // radius apart (certified in double intervals): then no point is
+        // within the radius of all of V(J).
+        if (!ok && !apart(points, l, h, 2 * options.radius) &&
+            real_ray_points(bisector, p, ball_of(Interval(l, h), prec), prec, box.x, box.y)) {
             const std::array<double, 2> c{box.x.mid_double(), box.y.mid_double()};
             ok = hypot_up(gap_bound(box.x, c[0], prec), gap_bound(box.y, c[1], prec)) <= options.radius;
             box.points = {c};
