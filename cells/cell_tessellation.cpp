@@ -267,11 +267,11 @@ public:
     // The rings of the wanted bounded cells and their reach, in chunks along
     // a Hilbert curve (cells/cell_chunks.hpp) on `threads` threads: the same
     // rings whatever the threads.
-    void rings(const std::vector<SiteId>& wanted, unsigned threads, CellTessellation& out) {
+    void rings(const std::vector<SiteId>& wanted, unsigned threads, std::size_t chunk, CellTessellation& out) {
         std::vector<SiteId> which;
         for (SiteId s : wanted)
             if (out.cells[s].bounded) which.push_back(s);
-        for_each_chunk(hilbert_order(sites_.sites, std::move(which)), kCellChunk, threads,
+        for_each_chunk(hilbert_order(sites_.sites, std::move(which)), chunk, threads,
                        [&](const SiteId* begin, const SiteId* end) {
                            CellCovers covers(sites_, cells_, faces_, cover_);
                            for (const SiteId* s = begin; s != end; ++s) covers.set_pending(*s, true);
@@ -327,6 +327,7 @@ void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellO
         if (wanted[s]) o.only.push_back(s);
     o.progress = options.progress;
     o.threads = options.threads;
+    o.chunk = options.chunk;
     o.input_ids = sites.original;
     const std::vector<CellArea> areas = cell_areas(graph, sites.sites, o);
     for (SiteId s : o.only) {
@@ -398,7 +399,7 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
             if (domain.kind != CellDomain::Kind::plane && c.visible && !c.bounded)
                 throw Error("cell_tessellation: the cell of site " + std::to_string(s) + " in a box is unbounded");
         }
-        if (options.rings) cells->rings(originals, options.threads, out);
+        if (options.rings) cells->rings(originals, options.threads, options.chunk, out);
     };
     // The areas, and each bounded cell's reach: the areas' (or the rings',
     // the less), else by covering the cell's edges.

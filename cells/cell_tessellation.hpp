@@ -8,6 +8,7 @@
 // the Python `Diagram.cells()` and the benchmarks call it.
 #pragma once
 
+#include "cells/cell_chunks.hpp"
 #include "cells/cell_domain.hpp"
 #include "cells/quadrature_counts.hpp"
 #include "decision/site_id.hpp"
@@ -43,8 +44,10 @@ struct CellOptions {
     // Called after each cell's measures (done, total), from any of the
     // threads, one call at a time; may be empty.
     std::function<void(std::size_t done, std::size_t total)> progress;
-    // Threads measuring the areas (CellAreaOptions::threads); 0: one per core.
+    // Threads measuring the areas and making the rings (CellAreaOptions::threads);
+    // 0: one per core. The result depends on the chunk size, not on them.
     unsigned threads = 1;
+    std::size_t chunk = kCellChunk;
 };
 
 // One side of a cell: a Voronoi edge, or a piece of a wall.

@@ -145,3 +145,28 @@ TEST_CASE("cells of some sites (only) are their cells among all and their reach 
     }
     CHECK(bounded >= 1);
 }
+
+TEST_CASE("cell rings and areas: threads do not change them; rings across chunks hold too", "[cells]") {
+    GeneratorOptions g;
+    g.count = 60;
+    g.seed = 5;
+    const std::vector<Ellipse> sites = generate_sites(g);
+    const auto tessellation = [&](unsigned threads) {
+        CellOptions o;
+        o.boundary_tolerance = 0.5;
+        o.threads = threads;
+        o.chunk = 8;  // several chunks: edges shared within them, covered twice across
+        return cell_tessellation(sites, CellDomain{}, o);
+    };
+    const CellTessellation one = tessellation(1), three = tessellation(3);
+    std::size_t bounded = 0;
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+        const Cell &a = one.cells[s], &b = three.cells[s];
+        CHECK(a.ring == b.ring);
+        CHECK(a.reach == b.reach);
+        CHECK(arb_equal(a.area.get(), b.area.get()));
+        // The rings of some cells against the oracle (slow: not all).
+        if (a.bounded && bounded++ % 8 == 0) check_ring(sites, one, a);
+    }
+    CHECK(bounded >= 30);
+}
