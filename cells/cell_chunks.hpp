@@ -13,9 +13,11 @@
 
 namespace ellvor {
 
-// The cells of a chunk by default: an edge between chunks (a few per cent of
-// them at this size) is integrated or covered once for each of its cells.
-constexpr std::size_t kCellChunk = 1024;
+// The cells of a chunk by default. An edge between chunks is integrated or
+// covered once for each of its cells: 2000 random cells in a box cost 4.3%
+// more instructions in chunks of 256 than of 1024, and 500 cells make two
+// chunks for two threads.
+constexpr std::size_t kCellChunk = 256;
 
 // `which` ordered along a Hilbert curve through the sites' centers.
 std::vector<SiteId> hilbert_order(const std::vector<Ellipse>& sites, std::vector<SiteId> which);

@@ -191,9 +191,9 @@ def test_bad_arguments_raise_input_error(computed, kwargs, message):
 
 
 def test_threads_give_the_same_cells(cli, tmp_path):
-    # 1500 sites: two chunks of cells (cells/cell_area.hpp), measured by two threads or one.
+    # 600 sites: three chunks of cells (cells/cell_chunks.hpp), measured by two threads or one.
     path = tmp_path / "sites.ell"
-    path.write_text(cli("generate", "ellipses", "--count", "1500", "--seed", "4")[1])
+    path.write_text(cli("generate", "ellipses", "--count", "600", "--seed", "4")[1])
     d = ellvor.build(path)
     one, two = d.cells(box=(-101, -101, 101, 101), rings=False), d.cells(box=(-101, -101, 101, 101), rings=False,
                                                                           threads=2)
