@@ -111,15 +111,16 @@ PlaneSites neighbourhood_of_originals(const PlaneSites& all, const std::vector<c
 // neighbour covered, backwards: each edge between two pending cells is covered
 // once, along the angle of the first.
 class CellCovers {
-    // The vertices and their angles to 44 bits, what the circles certified in
-    // doubles give (cells/cell_vertex_angles.hpp): the covers need them only
-    // well within their radius (the angles' widths are the covers' overshoot).
-    static constexpr long kVertexPrecision = 44 + 24;
-
 public:
     CellCovers(const PlaneSites& sites, const std::vector<VoronoiCell>& cells,
                std::shared_ptr<const CellVertexAngles::Faces> faces, const EdgeCoverOptions& cover)
         : sites_(sites), cells_(cells), angles_(std::move(faces), sites.sites), cover_(cover),
+          // The vertices and their angles to 24 bits beyond the covers' radius
+          // relative to the sites (cover.prec is 64 bits beyond it), at least
+          // to the 44 bits the circles certified in doubles give
+          // (cells/cell_vertex_angles.hpp): the covers need them well within
+          // their radius (the angles' widths are the covers' overshoot).
+          vertex_precision_(std::max(44L, cover.prec - 64 + 24) + 24),
           pending_(cells.size(), 0) {}
 
     void set_pending(SiteId s, bool pending) { pending_.at(s) = pending; }
@@ -141,7 +142,7 @@ public:
                 // and its farthest point from the center is one of them.
                 if (ring) ring->push_back(vertex_point(e.from));
                 for (long face : {e.from, e.to}) {
-                    const BallPoint v = angles_.vertex(face, kVertexPrecision);
+                    const BallPoint v = angles_.vertex(face, vertex_precision_);
                     reach = std::max(reach, distance_bound(EdgeCoverBox{v.x, v.y, {}}, site.xc(), site.yc(), cover_.prec));
                 }
                 continue;
@@ -172,11 +173,11 @@ public:
     }
 
 private:
-    // The cell's vertex angles (CellVertexAngles::lifted) at kVertexPrecision,
+    // The cell's vertex angles (CellVertexAngles::lifted) at vertex_precision_,
     // or at the covers' when two are less than a thousand times their radii
     // apart (a very short edge: its end pieces must hold the vertex balls).
     std::vector<Ball> lifted_angles(const VoronoiCell& cell) {
-        std::vector<Ball> lifted = angles_.lifted(cell, kVertexPrecision);
+        std::vector<Ball> lifted = angles_.lifted(cell, vertex_precision_);
         for (std::size_t k = 0; k + 1 < lifted.size(); ++k) {
             const double gap = lifted[k + 1].mid_double() - lifted[k].mid_double();
             if (!(gap > 1024 * (lifted[k].radius_double() + lifted[k + 1].radius_double())))
@@ -200,18 +201,23 @@ private:
         return std::nextafter(far + cover_.radius, INFINITY);
     }
 
-    // A Voronoi vertex as a ring point within the cover radius of the true one.
+    // A Voronoi vertex as a ring point within the cover radius of the true one
+    // (at the covers' precision when vertex_precision_ is not enough: a vertex
+    // far out).
     std::array<double, 2> vertex_point(long face) {
-        const BallPoint v = angles_.vertex(face, kVertexPrecision);
-        const double r = std::hypot(v.x.radius_double(), v.y.radius_double());
-        if (!(r <= cover_.radius / 2)) throw Error("cell_tessellation: a Voronoi vertex is not known to the ring's tolerance");
-        return {v.x.mid_double(), v.y.mid_double()};
+        for (long prec : {vertex_precision_, cover_.prec + 24}) {
+            const BallPoint v = angles_.vertex(face, prec);
+            if (std::hypot(v.x.radius_double(), v.y.radius_double()) <= cover_.radius / 2)
+                return {v.x.mid_double(), v.y.mid_double()};
+        }
+        throw Error("cell_tessellation: a Voronoi vertex is not known to the ring's tolerance");
     }
 
     const PlaneSites& sites_;
     const std::vector<VoronoiCell>& cells_;
     CellVertexAngles angles_;
     EdgeCoverOptions cover_;
+    long vertex_precision_;
     std::vector<char> pending_;
     // By (covered cell, neighbour, from, to): an edge's boxes until the neighbour takes them.
     std::map<std::array<long, 4>, std::vector<EdgeCoverBox>> shared_;

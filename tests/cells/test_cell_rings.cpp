@@ -170,3 +170,22 @@ TEST_CASE("cell rings and areas: threads do not change them; rings across chunks
     }
     CHECK(bounded >= 30);
 }
+
+TEST_CASE("cell rings to a tolerance finer than the vertices in doubles give", "[cells]") {
+    // D = 1e-6 on sites some 10 wide about 100 from the origin: the covers ask
+    // the vertices to more than the circles certified in doubles hold.
+    GeneratorOptions g;
+    g.count = 8;
+    g.seed = 11;
+    const std::vector<Ellipse> sites = generate_sites(g);
+    CellOptions o;
+    o.boundary_tolerance = 1e-6;
+    const CellTessellation t = cell_tessellation(sites, CellDomain{}, o);
+    long bounded = 0;
+    for (const Cell& c : t.cells)
+        if (c.bounded) {
+            ++bounded;
+            check_ring(sites, t, c);
+        }
+    CHECK(bounded >= 1);
+}

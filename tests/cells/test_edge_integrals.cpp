@@ -3,6 +3,7 @@
 // origin of its own, forward or (as a neighbour's edge) backward; the sums
 // about a random point against the polygon's closed forms (shoelace sums).
 #include "cells/edge_integrals.hpp"
+#include "util/interval.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -18,11 +19,8 @@ namespace {
 
 constexpr long kPrec = 128;
 
-Ball ball(double x) {
-    Ball b;
-    arb_set_d(b.get(), x);
-    return b;
-}
+// A double as an exact ball.
+Ball ball(double x) { return ball_of(Interval(x), kPrec); }
 
 // The measures of EdgeMeasure over the segment from a to b about `origin`:
 // polynomials of degree <= 4 in the segment's parameter, which 3-point
