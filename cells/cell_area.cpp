@@ -326,14 +326,10 @@ private:
         // radii times the density: goal + 8 bits of angle leave those terms
         // far below the tolerance (the circles certified in doubles give
         // them); the other stages take the angles at the working precision.
-        std::vector<Ball> lifted = angles_.lifted(cell, goal.in_doubles ? goal.bits + 8 + 24 : prec);
-        // A zero-length edge (four cocircular sites, as at a wall's mirror
-        // images) needs its two equal ends to round to the same double,
-        // which takes the working precision.
-        const auto nearest_double = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_NEAR); };
-        for (std::size_t k = 0; goal.in_doubles && k + 1 < lifted.size(); ++k)
-            if (!(nearest_double(lifted[k]) < nearest_double(lifted[k + 1]))) return angles_.lifted(cell, prec);
-        return lifted;
+        // (A zero-length edge, four cocircular sites as at a wall's mirror
+        // images, may get ends a rounding apart in either order: the
+        // quadrature takes them reversed.)
+        return angles_.lifted(cell, goal.in_doubles ? goal.bits + 8 + 24 : prec);
     }
 
     const FirstPassScale& first_pass_scale(SiteId s) {

@@ -123,6 +123,16 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
 std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, GaussLegendreRules& rules, double a,
                                                double b, const double (&tolerance)[kMeasures],
                                                QuadratureCounts* counts, std::array<double, 2>* reach) {
+    // Two ends in reverse order: the integral from b to a, negated (the ends
+    // of an edge between two equal vertices, four cocircular sites, come from
+    // two certified circles and may cross by a rounding).
+    if (b < a) {
+        if (counts) ++counts->reversed_edges;
+        std::optional<MeasureIntervals> reversed = integrate_edge(bisector, rules, b, a, tolerance, counts, reach);
+        if (reversed)
+            for (Interval& x : reversed->m) x = -x;
+        return reversed;
+    }
     QuadratureCounts local;
     std::array<double, 2> local_reach = {0, 0};
     MeasureIntervals total;
@@ -154,6 +164,16 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
                                                                   GaussLegendreRules& rules, const Ball (&ends)[2],
                                                                   const double (&tolerance)[kMeasures], long prec,
                                                                   QuadratureCounts* counts, std::array<double, 2>* reach) {
+    // Two ends in reverse order: the integral from the second to the first, negated.
+    if (arb_gt(ends[0].get(), ends[1].get())) {
+        if (counts) ++counts->reversed_edges;
+        const Ball reversed_ends[2] = {ends[1], ends[0]};
+        std::optional<NormalRayBisector::Densities> reversed =
+            integrate_edge_in_arb(bounds, bisector, rules, reversed_ends, tolerance, prec, counts, reach);
+        if (reversed)
+            for (ComplexBall& x : reversed->m) acb_neg(x.get(), x.get());
+        return reversed;
+    }
     QuadratureCounts local;
     std::array<double, 2> local_reach = {0, 0};
     NormalRayBisector::Densities total;

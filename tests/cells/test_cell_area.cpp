@@ -186,6 +186,40 @@ TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centr
     CHECK(bounded >= 2);
 }
 
+TEST_CASE("cell areas: a grid of equal circles, its zero-length edges in doubles", "[cells]") {
+    // Four cocircular circles about each square of the grid: a Voronoi vertex
+    // of degree 4, split into two faces with one circle, so a cell has an edge
+    // of length zero whose ends come from two circles certified in doubles,
+    // and a rounding apart in either order (the quadrature then integrates it
+    // backwards). Non-dyadic coordinates, so that the roundings differ.
+    std::vector<Ellipse> sites;
+    std::vector<Point> centres;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j) {
+            const Ellipse c = Ellipse::circle(Rational(7 * i, 3) + Rational(1, 7), Rational(7 * j, 3) - Rational(1, 11),
+                                              Rational(1, 3));
+            sites.push_back(c);
+            centres.push_back(c.center());
+        }
+    const std::vector<CellArea> areas = built_areas(sites, 1e-9);
+    QuadratureCounts work;
+    int bounded = 0;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+        const Polygon cell = point_voronoi_cell(centres, i, Rational(1000000));
+        INFO("site " << i << " area " << areas[i].area.str(25));
+        REQUIRE(areas[i].bounded == !cell.touches_frame);
+        if (!areas[i].bounded) continue;
+        ++bounded;
+        work += areas[i].quadrature;
+        CHECK(areas[i].edges_by_nodes_in_arb == 0);
+        CHECK(areas[i].edges_by_arb == 0);
+        CHECK(contains(areas[i].area, cell.area()));
+        CHECK(relative_width(areas[i].area) <= 1e-9);
+    }
+    CHECK(bounded == 9);
+    CHECK(work.reversed_edges >= 1);
+}
+
 namespace {
 
 // The polar radius around the centre of circle i of its cell: along the ray
