@@ -447,10 +447,9 @@ private:
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
             for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-                const std::optional<MeasureIntervals> d = nodes.densities(Interval(mid + half * rule.nodes[i].mid()));
-                if (!d) return 0;
-                const double density = 0.5 * (d->m[EdgeMeasure::x_dy].mid() - d->m[EdgeMeasure::y_dx].mid());
-                area += half * rule.weights[i].mid() * density;
+                const std::optional<double> density = nodes.area_density_estimate(mid + half * rule.nodes[i].mid());
+                if (!density) return 0;
+                area += half * rule.weights[i].mid() * *density;
             }
         }
         return std::isfinite(area) ? area : 0;

@@ -232,6 +232,21 @@ std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& th
     return n ? n->densities : std::nullopt;
 }
 
+std::optional<double> NormalRayInDoubles::area_density_estimate(double theta) {
+    double x[2], start[2], C[2][2];
+    if (!newton(theta, last_, x, C) && !(ray_start(theta, start) && newton(theta, start, x, C))) return std::nullopt;
+    last_[0] = x[0], last_[1] = x[1];
+    const double s = x[0];
+    const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
+    const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), q_parts<double>(signed_)),
+                            s, signed_);
+    const double ds = -at.F_theta[1] / at.J[1][0];  // s' = -g_theta / g_s
+    const double X = bp.x + s * bp.nx - origin_[0], Y = bp.y + s * bp.ny - origin_[1];
+    const double dX = bp.dx + ds * bp.nx + s * bp.dnx, dY = bp.dy + ds * bp.ny + s * bp.dny;
+    const double density = 0.5 * (X * dY - Y * dX);
+    return std::isfinite(density) ? std::optional<double>(density) : std::nullopt;
+}
+
 std::optional<std::array<Interval, 2>> NormalRayInDoubles::point(const Interval& theta) {
     std::optional<Node> n = node(theta, false);
     return n ? n->point : std::nullopt;

@@ -55,6 +55,9 @@ public:
     std::optional<MeasureIntervals> densities(const Interval& theta);
     // The bisector point V = P + s n~ at every angle in `theta`; likewise.
     std::optional<std::array<Interval, 2>> point(const Interval& theta);
+    // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
+    // not certified: a scale (cell_area.cpp's first estimate of an area).
+    std::optional<double> area_density_estimate(double theta);
     // Upper bounds over the complex box mid +- along + i (+- across) of
     // theta, where the same certificate, on Taylor models about the root's
     // polynomial in theta, proves the densities holomorphic: of the
