@@ -161,6 +161,11 @@ TEST_CASE("NormalRayInDoubles: its densities contain the Arb solver's at 200 bit
         CHECK(relative_width(d->m[MeasureIntervals::length]) < 1e-11);
         const Interval &x_dy = d->m[MeasureIntervals::x_dy], &y_dx = d->m[MeasureIntervals::y_dx];
         CHECK(std::max(x_dy.hi - x_dy.lo, y_dx.hi - y_dx.lo) < 1e-11 * (std::fabs(x_dy.mid()) + std::fabs(y_dx.mid())));
+        // The uncertified estimate of the area density (a scale) agrees.
+        NormalRayInDoubles estimate(p, q);
+        const std::optional<double> area = estimate.area_density_estimate(theta);
+        REQUIRE(area);
+        CHECK(std::fabs(*area - 0.5 * (x_dy.mid() - y_dx.mid())) <= 1e-9 * (std::fabs(x_dy.mid()) + std::fabs(y_dx.mid())));
     }
     // The stage must be reached: it certifies (nearly) every point Arb does.
     CHECK(compared >= 40);
