@@ -370,6 +370,7 @@ private:
         NormalRayInDoubles bisector_in_doubles(site, sites_[e.neighbor], bisector.signed_tie());
         bisector.set_origin(out.origin[0], out.origin[1]);
         bisector_in_doubles.set_origin(out.origin[0], out.origin[1]);
+        bisector_in_doubles.start_near(lifted[k].mid_double(), out.start.x.mid_double(), out.start.y.mid_double());
         Ball ends[2] = {lifted[k], lifted[k + 1]};
         double tolerances[EdgeMeasure::count];
         for (int j = 0; j < EdgeMeasure::count; ++j)
@@ -446,6 +447,8 @@ private:
             const double a = arf_get_d(arb_midref(lifted[k].get()), ARF_RND_NEAR);
             const double b = arf_get_d(arb_midref(lifted[k + 1].get()), ARF_RND_NEAR);
             const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+            const BallPoint v = angles_.vertex(cell.edges[k].from, 64);
+            nodes.start_near(a, v.x.mid_double(), v.y.mid_double());
             for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
                 const std::optional<double> density = nodes.area_density_estimate(mid + half * rule.nodes[i].mid());
                 if (!density) return 0;

@@ -232,6 +232,15 @@ std::optional<MeasureIntervals> NormalRayInDoubles::densities(const Interval& th
     return n ? n->densities : std::nullopt;
 }
 
+void NormalRayInDoubles::start_near(double theta, double x, double y) {
+    const EllipseShape& ps = p_.shape;
+    double px, py, nx, ny;  // (nx, ny) the unit normal: s = rho / N as in ray_start
+    ps.point(theta, px, py);
+    ps.normal(theta, nx, ny);
+    last_[0] = ((x - px) * nx + (y - py) * ny) / std::hypot(ps.b * std::cos(theta), ps.a * std::sin(theta));
+    last_[1] = q_.shape.nearest_angle(x, y);
+}
+
 std::optional<double> NormalRayInDoubles::area_density_estimate(double theta) {
     double x[2], start[2], C[2][2];
     if (!newton(theta, last_, x, C) && !(ray_start(theta, start) && newton(theta, start, x, C))) return std::nullopt;
@@ -551,6 +560,7 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         if (!(distance2.hi >= 0 && std::isfinite(distance2.hi))) return std::nullopt;
         center_distance[i] = Interval(distance2.hi).sqrt().hi;
     }
+    last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
     return BoxRoot{bp,     s_model.enclose(dtheta) + K, -(on_box.F_theta[1].enclose(dtheta) / g_s),  // s' = -g_theta / g_s
                    x0[0], x[0][1],   higher.enclose(dtheta) + K, center_distance};
 }

@@ -55,6 +55,12 @@ public:
     std::optional<MeasureIntervals> densities(const Interval& theta);
     // The bisector point V = P + s n~ at every angle in `theta`; likewise.
     std::optional<std::array<Interval, 2>> point(const Interval& theta);
+    // Newton's next start from a point of the bisector near p's angle theta
+    // (a Voronoi vertex of the edge): s by projection on the normal, phi the
+    // nearest point of q. Any start is sound (a wrong root fails the
+    // certificates); without one, or when Newton fails from it, the start is
+    // found along the normal ray (about ten times the cost of Newton).
+    void start_near(double theta, double x, double y);
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
     std::optional<double> area_density_estimate(double theta);
