@@ -46,8 +46,8 @@ constexpr double gamma(int n) { return (n + 1) * 0x1p-53; }
 // half-widths' 1-norm.
 inline void split(const ComplexInterval& z, Complex& center, double& radius) {
     center = {z.re.mid(), z.im.mid()};
-    const double r = std::fmax(z.re.hi - center.re, center.re - z.re.lo);
-    const double i = std::fmax(z.im.hi - center.im, center.im - z.im.lo);
+    const double r = Interval::max(z.re.hi - center.re, center.re - z.re.lo);
+    const double i = Interval::max(z.im.hi - center.im, center.im - z.im.lo);
     radius = inflated(r + i);
     if (!std::isfinite(center.re) || !std::isfinite(center.im)) radius = INFINITY;
 }
@@ -174,7 +174,7 @@ struct ComplexTaylorModel {
     friend ComplexTaylorModel operator*(const ComplexTaylorModel& a, const ComplexTaylorModel& b) {
         using namespace taylor_model_detail;
         ComplexTaylorModel p;
-        p.radius = std::fmax(a.radius, b.radius);
+        p.radius = Interval::max(a.radius, b.radius);
         double power[2 * N + 1], na[N + 1], nb[N + 1];
         p.radius_powers(power);
         for (int k = 0; k <= N; ++k) na[k] = norm1(a.c[k]), nb[k] = norm1(b.c[k]);
@@ -214,7 +214,7 @@ private:
     static ComplexTaylorModel sum(const ComplexTaylorModel& a, const ComplexTaylorModel& b, double sign) {
         using namespace taylor_model_detail;
         ComplexTaylorModel s;
-        s.radius = std::fmax(a.radius, b.radius);
+        s.radius = Interval::max(a.radius, b.radius);
         double power[2 * N + 1], rounding = 0;
         s.radius_powers(power);
         for (int k = 0; k <= N; ++k) {
