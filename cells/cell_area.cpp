@@ -373,8 +373,12 @@ private:
         bisector_in_doubles.start_near(lifted[k].mid_double(), out.start.x.mid_double(), out.start.y.mid_double());
         Ball ends[2] = {lifted[k], lifted[k + 1]};
         double tolerances[EdgeMeasure::count];
+        // The perimeter, about 4 L, at the area's relative accuracy: 4 L times
+        // the area tolerance over L^2. (It decided the rule size on nearly
+        // every piece at L; 2% fewer instructions.)
         for (int j = 0; j < EdgeMeasure::count; ++j)
-            tolerances[j] = std::ldexp(area_tolerance, static_cast<int>(kLengthPower[j] * unit));
+            tolerances[j] = std::ldexp(area_tolerance, static_cast<int>(kLengthPower[j] * unit) +
+                                                           (j == EdgeMeasure::length ? 2 : 0));
         bool integrated = false;
         reach = {0, 0};
         if (goal.in_doubles) {
