@@ -85,16 +85,15 @@ struct PieceBounds {
 };
 
 std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayInDoubles& doubles, const SiteBalls& p,
-                                        double l, double h, double margin, long prec, bool& doubles_held) {
+                                        double l, double h, double margin, long prec, bool& doubles_held,
+                                        bool arb_may_try) {
     const double half = 0.5 * (h - l), m = 0.5 * (l + h);
-    // The model: in double intervals, else by Arb, unless the doubles held on
-    // an earlier piece of the edge: then this one is likely only too wide,
-    // and halving it is cheaper than Arb's try (a rule of cost: a piece is
-    // never accepted without a certificate).
+    // The model: in double intervals, else by Arb when the caller allows it
+    // (a rule of cost: a piece is never accepted without a certificate).
     Ball mid, s0, s1;
     double remainder, M;  // |e| and |e n~| on Z
     const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin, margin);
-    if (!fast && doubles_held) return std::nullopt;
+    if (!fast && !arb_may_try) return std::nullopt;
     if (fast) {
         doubles_held = true;
         arb_set_d(mid.get(), fast->mid);
@@ -217,9 +216,16 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
         EdgeCoverBox box;
         bool ok = false;
         const double m = 0.5 * (l + h);
-        // Second order: points along J, as many as its bounds ask.
+        // Second order: points along J, as many as its bounds ask. Arb's
+        // model is tried only where the doubles' never held on the edge, and
+        // on pieces of at most a sixteenth of it: a wider piece is most often
+        // only too wide for either (Arb's tries on the first pieces of the
+        // edges were an eighth of a JSON run), and halving it is cheaper.
+        const bool arb_may_try = !doubles_held && h - l <= (hi - lo) / 16;
         const std::optional<PieceBounds> bounds =
-            h - l > 2 * certified_width ? std::nullopt : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec, doubles_held);
+            h - l > 2 * certified_width
+                ? std::nullopt
+                : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec, doubles_held, arb_may_try);
         if (bounds) {
             certified_width = h - l;
             // Nine tenths of the radius for the chords and the overshoot, a
