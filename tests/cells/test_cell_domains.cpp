@@ -14,6 +14,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -106,6 +108,81 @@ TEST_CASE("cells in a box: random ellipses add up to the box area", "[cells]") {
             walls += s.wall != Wall::none;
         }
     CHECK(walls >= 4);
+}
+
+namespace {
+
+std::vector<Ellipse> shifted_sites(const std::vector<Ellipse>& sites, const Rational& dx, const Rational& dy) {
+    std::vector<Ellipse> out;
+    for (const Ellipse& e : sites) out.emplace_back(e.a(), e.b(), e.w(), e.xc() + dx, e.yc() + dy);
+    return out;
+}
+
+// The distance from q to the closed polyline `ring`, in long double.
+long double distance_to_ring(const std::array<double, 2>& q, const std::vector<std::array<double, 2>>& ring) {
+    long double best = INFINITY;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+        const auto &a = ring[k], &b = ring[(k + 1) % ring.size()];
+        const long double ux = b[0] - a[0], uy = b[1] - a[1], wx = q[0] - a[0], wy = q[1] - a[1];
+        const long double len2 = ux * ux + uy * uy;
+        const long double t = len2 > 0 ? std::clamp((wx * ux + wy * uy) / len2, 0.0L, 1.0L) : 0.0L;
+        best = std::min(best, std::hypot(wx - t * ux, wy - t * uy));
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST_CASE("cells far from the origin: the cells at the origin, moved, in doubles", "[cells]") {
+    // Sites of size about 1 near 10^9: the double stages would lose 30 bits
+    // there; the cells are computed about the box's middle and moved back.
+    const std::vector<Ellipse> sites = random_ellipses(6, 7);
+    const Rational dx = Rational(1000000000) + Rational(1, 7), dy(-300000000);
+    CellOptions o;
+    o.boundary_tolerance = 1;
+    const CellTessellation near =
+        cell_tessellation(sites, rectangle(CellDomain::Kind::box, Rational(-130), Rational(-120), Rational(125), Rational(135)), o);
+    const CellDomain far_box =
+        rectangle(CellDomain::Kind::box, Rational(-130) + dx, Rational(-120) + dy, Rational(125) + dx, Rational(135) + dy);
+    const CellTessellation far = cell_tessellation(shifted_sites(sites, dx, dy), far_box, o);
+    CHECK(far.domain.x0 == far_box.x0);
+    check_area_identity(far, o.tolerance);
+    std::size_t in_doubles = 0, by_arb = 0;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+        const Cell &a = near.cells[i], &b = far.cells[i];
+        INFO("site " << i);
+        REQUIRE(a.sides.size() == b.sides.size());
+        for (std::size_t k = 0; k < a.sides.size(); ++k) CHECK(a.sides[k].neighbor == b.sides[k].neighbor);
+        CHECK(arb_overlaps(a.area.get(), b.area.get()));
+        CHECK(arb_overlaps(a.perimeter.get(), b.perimeter.get()));
+        for (int k = 0; k < 3; ++k) CHECK(arb_overlaps(a.second_moments[k].get(), b.second_moments[k].get()));
+        const Rational shift[2] = {dx, dy};
+        for (int k = 0; k < 2; ++k) {
+            Ball moved;
+            arb_sub(moved.get(), b.centroid[k].get(), Ball(shift[k], 256).get(), 256);
+            CHECK(arb_overlaps(moved.get(), a.centroid[k].get()));
+        }
+        // Both rings within the boundary tolerance of the one boundary.
+        for (const auto& q : b.ring) {
+            const std::array<double, 2> back = {static_cast<double>(q[0] - 1000000000.0L - 1.0L / 7),
+                                                static_cast<double>(q[1] + 300000000.0L)};
+            CHECK(distance_to_ring(back, a.ring) <= 2 * o.boundary_tolerance + 1e-6);
+        }
+        in_doubles += b.edges_in_doubles;
+        by_arb += b.edges_by_arb + b.edges_by_nodes_in_arb;
+    }
+    CHECK(in_doubles > 0);
+    CHECK(by_arb == 0);
+    // Ring points near 10^15 are doubles 2^-52 * 10^15 (about 0.2) apart:
+    // not within a boundary tolerance of 0.1.
+    const Rational huge(1000000000000000L);
+    const CellDomain huge_box =
+        rectangle(CellDomain::Kind::box, Rational(-130) + huge, Rational(-120), Rational(125) + huge, Rational(135));
+    o.boundary_tolerance = 0.1;
+    CHECK_THROWS_WITH(cell_tessellation(shifted_sites(sites, huge, Rational(0)), huge_box, o),
+                      Catch::Contains("cannot be held in doubles"));
+    o.boundary_tolerance = 1;
+    CHECK_NOTHROW(cell_tessellation(shifted_sites(sites, huge, Rational(0)), huge_box, o));
 }
 
 TEST_CASE("cells in a periodic box: random ellipses add up to the box area", "[cells]") {
