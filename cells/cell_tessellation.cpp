@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <string>
@@ -490,6 +491,18 @@ std::array<long, 2> translation_to_origin(const std::vector<Ellipse>& sites, con
     return t;
 }
 
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return text;
+}
+
+// Ring points (doubles) near coordinates of modulus `extent` are 2^-52 extent
+// apart: the rings' tolerance must leave its free half for that rounding.
+bool rings_fit_in_doubles(double extent, double boundary_tolerance) {
+    return std::ldexp(extent, -52) <= 0.5 * boundary_tolerance;
+}
+
 // x + t for an integer t, in a ball that contains the exact sum.
 void add_integer(Ball& x, long t) { arb_add_si(x.get(), x.get(), t, std::max(64L, arb_bits(x.get()) + 64)); }
 
@@ -509,6 +522,20 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
     // The input errors that name coordinates, before the translation.
     require_proper_rectangle(domain);
     if (domain.kind == CellDomain::Kind::box) require_sites_inside_box(input, domain);
+    if (options.rings && domain.kind != CellDomain::Kind::plane) {
+        // The rings stay within the box (the torus: within a period of it).
+        const double tolerance =
+            options.boundary_tolerance > 0 ? options.boundary_tolerance : default_boundary_tolerance(input);
+        const double x0 = domain.x0.to_double(), x1 = domain.x1.to_double(), y0 = domain.y0.to_double(),
+                     y1 = domain.y1.to_double();
+        const double extent = std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)}) +
+                              std::max(x1 - x0, y1 - y0);
+        if (!rings_fit_in_doubles(extent, tolerance))
+            throw InputError("cells: the boundary tolerance " + number(tolerance) +
+                             (options.boundary_tolerance > 0 ? "" : " (the default, 1e-3 of the median site size)") +
+                             " is finer than doubles can hold at coordinates near " + number(extent) +
+                             " (at least " + number(std::ldexp(extent, -51)) + ")");
+    }
     const std::array<long, 2> t = translation_to_origin(input, domain);
     if (t[0] == 0 && t[1] == 0) return cells_near_origin(input, domain, options);
     const Rational tx(t[0]), ty(t[1]);
@@ -525,10 +552,10 @@ CellTessellation cell_tessellation(const std::vector<Ellipse>& input, const Cell
         if (arb_is_finite(c.centroid[0].get())) add_integer(c.centroid[0], t[0]), add_integer(c.centroid[1], t[1]);
         for (std::array<double, 2>& q : c.ring) {
             q[0] += static_cast<double>(t[0]), q[1] += static_cast<double>(t[1]);
-            if (!(std::ldexp(std::max(std::fabs(q[0]), std::fabs(q[1])), -52) <= 0.5 * out.boundary_tolerance))
-                throw Error("cell_tessellation: a ring point at (" + std::to_string(q[0]) + ", " + std::to_string(q[1]) +
+            if (!rings_fit_in_doubles(std::max(std::fabs(q[0]), std::fabs(q[1])), out.boundary_tolerance))
+                throw Error("cell_tessellation: a ring point at (" + number(q[0]) + ", " + number(q[1]) +
                             ") cannot be held in doubles within the boundary tolerance " +
-                            std::to_string(out.boundary_tolerance));
+                            number(out.boundary_tolerance));
         }
     }
     return out;

@@ -174,13 +174,17 @@ TEST_CASE("cells far from the origin: the cells at the origin, moved, in doubles
     CHECK(in_doubles > 0);
     CHECK(by_arb == 0);
     // Ring points near 10^15 are doubles 2^-52 * 10^15 (about 0.2) apart:
-    // not within a boundary tolerance of 0.1.
+    // not within a boundary tolerance of 0.1 (an input error with a box).
     const Rational huge(1000000000000000L);
     const CellDomain huge_box =
         rectangle(CellDomain::Kind::box, Rational(-130) + huge, Rational(-120), Rational(125) + huge, Rational(135));
     o.boundary_tolerance = 0.1;
+    CHECK_THROWS_AS(cell_tessellation(shifted_sites(sites, huge, Rational(0)), huge_box, o), InputError);
     CHECK_THROWS_WITH(cell_tessellation(shifted_sites(sites, huge, Rational(0)), huge_box, o),
-                      Catch::Contains("cannot be held in doubles"));
+                      Catch::Contains("the boundary tolerance 0.1 is finer than doubles can hold"));
+    // The plane has no box to tell beforehand: the ring points are checked.
+    CHECK_THROWS_WITH(cell_tessellation(shifted_sites(sites, huge, Rational(0)), CellDomain{}, o),
+                      Catch::Contains("cannot be held in doubles within the boundary tolerance 0.1"));
     o.boundary_tolerance = 1;
     CHECK_NOTHROW(cell_tessellation(shifted_sites(sites, huge, Rational(0)), huge_box, o));
 }

@@ -258,6 +258,8 @@ TEST_CASE("cells: bad arguments and bad sites exit 2 naming them, nothing writte
         {"--format xml", "option --format: expected csv, json or geojson"},
         {"--threads -1", "option --threads: expected an integer in [0, 1024], got '-1'"},
         {"--threads two", "option --threads: expected an integer in [0, 1024], got 'two'"},
+        {"--box -10 -10 10000000000000000 10 --boundary-tolerance 1 --format json",
+         "cells: the boundary tolerance 1 is finer than doubles can hold at coordinates near 2e+16"},
     };
     for (const Bad& b : cases) {
         const auto r = dir.ellvor("cells '" + f + "' " + b.args + " -o '" + out + "'");
