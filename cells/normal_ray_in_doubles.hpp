@@ -59,7 +59,7 @@ public:
     // (a Voronoi vertex of the edge): s by projection on the normal, phi the
     // nearest point of q. Any start is sound (a wrong root fails the
     // certificates); without one, or when Newton fails from it, the start is
-    // found along the normal ray (about ten times the cost of Newton).
+    // found along the normal ray (about twenty times the cost of Newton).
     void start_near(double theta, double x, double y);
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
