@@ -429,13 +429,31 @@ bool NormalRayBisector::solve(const ComplexBall& theta, long prec, ComplexBall& 
         acb_add(x_lin[i].get(), x_lin[i].get(), x0[i]->get(), prec);
     }
     // H(0, theta) = F(x_lin(theta), theta) over the theta-ball in the
-    // mean-value form around the middle: F(x0, mid) + H'(Theta) (Theta - mid),
-    // H' = J x' + F_theta over (x_lin(Theta), Theta).
+    // mean-value form around the middle: F(x0, mid) + H'(S) (Theta - mid),
+    // H' = J x' + F_theta over (x_lin(S), S), S a ball holding the segment
+    // from mid to every theta of the ball: the ball itself when it holds mid
+    // (balls about the reals, as the integrator's and the covers'), else its
+    // union with mid (a ball off the reals: H' on it alone proves nothing).
     Boundary bpT;
     boundary_at(pb_, theta, prec, bpT);
-    boundary_at(qb_, x_lin[1], prec, bq);
+    Boundary bp_segment;
+    ComplexBall x_segment[2];
+    const bool holds_mid = acb_contains(theta.get(), mid.get());
+    if (!holds_mid) {
+        ComplexBall segment, offset;
+        acb_union(segment.get(), theta.get(), mid.get(), prec);
+        boundary_at(pb_, segment, prec, bp_segment);
+        acb_sub(offset.get(), segment.get(), mid.get(), prec);
+        for (int i = 0; i < 2; ++i) {
+            acb_mul(x_segment[i].get(), slope[i].get(), offset.get(), prec);
+            acb_add(x_segment[i].get(), x_segment[i].get(), x0[i]->get(), prec);
+        }
+    }
+    const Boundary& bp_line = holds_mid ? bpT : bp_segment;
+    const ComplexBall* x_line = holds_mid ? x_lin : x_segment;
+    boundary_at(qb_, x_line[1], prec, bq);
     BisectorSystem on_line;
-    on_line.evaluate(qb_, bpT, bq, x_lin[0], signed_, prec);
+    on_line.evaluate(qb_, bp_line, bq, x_line[0], signed_, prec);
     ComplexBall H[2];
     for (int i = 0; i < 2; ++i) {
         ComplexBall& h = H[i];

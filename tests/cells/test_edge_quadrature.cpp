@@ -13,6 +13,7 @@
 
 #include <cfenv>
 #include <cmath>
+#include <complex>
 #include <random>
 
 using namespace ellvor;
@@ -347,6 +348,109 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex box hold
     CHECK(bounded >= boxes * 3 / 4);
     INFO("large boxes certified: " << large_bounded << " of " << large_boxes);
     CHECK(large_bounded >= large_boxes / 2);
+}
+
+// The system of normal_ray_bisector.hpp in complex doubles, for Newton's
+// method: F0 = (V - Q) . Q', F1 the squared tie or the signed one
+// (principal square roots).
+struct ComplexSystem {
+    using Z = std::complex<double>;
+    EllipseShape p, q;
+    bool is_signed;
+    struct Frame {
+        Z x, y, nx, ny, dx, dy, n2;
+    };
+    static Frame frame(const EllipseShape& e, Z t) {
+        const Z c = std::cos(t), s = std::sin(t);
+        const auto rotate = [&e](Z u, Z v, Z& X, Z& Y) { X = u * e.c - v * e.s, Y = u * e.s + v * e.c; };
+        Frame f;
+        rotate(e.a * c, e.b * s, f.x, f.y);
+        f.x += e.xc, f.y += e.yc;
+        rotate(e.b * c, e.a * s, f.nx, f.ny);
+        rotate(-e.a * s, e.b * c, f.dx, f.dy);
+        f.n2 = e.a * e.a * s * s + e.b * e.b * c * c;
+        return f;
+    }
+    void operator()(Z theta, Z s, Z phi, Z (&F)[2]) const {
+        const Frame P = frame(p, theta), Q = frame(q, phi);
+        const Z vx = P.x + s * P.nx - Q.x, vy = P.y + s * P.ny - Q.y, ex = P.x - Q.x, ey = P.y - Q.y;
+        F[0] = vx * Q.dx + vy * Q.dy;
+        F[1] = is_signed ? vx * Q.nx + vy * Q.ny - s * std::sqrt(P.n2) * std::sqrt(Q.n2)
+                         : ex * ex + ey * ey + 2.0 * s * (ex * P.nx + ey * P.ny);
+    }
+    // Newton at theta from (s, phi), difference quotients for the Jacobian
+    // (the residual, not the Jacobian, decides the root).
+    void newton(Z theta, Z& s, Z& phi) const {
+        for (int step = 0; step < 40; ++step) {
+            Z F[2], Fs[2], Fphi[2];
+            const double h = 1e-7;
+            (*this)(theta, s, phi, F);
+            (*this)(theta, s + h, phi, Fs);
+            (*this)(theta, s, phi + h, Fphi);
+            const Z a = (Fs[0] - F[0]) / h, b = (Fphi[0] - F[0]) / h, c = (Fs[1] - F[1]) / h, d = (Fphi[1] - F[1]) / h;
+            const Z det = a * d - b * c;
+            s -= (d * F[0] - b * F[1]) / det;
+            phi -= (a * F[1] - c * F[0]) / det;
+        }
+    }
+};
+
+TEST_CASE("NormalRayBisector: on balls off the real axis, the root of the system", "[cells][quadrature]") {
+    // The certificate's mean-value form in theta runs from the ball's real
+    // middle: over a ball that does not hold it (here points and small balls
+    // at mid + t e^(i alpha)) it must take the whole segment, or it encloses
+    // a wrong value (2e-4 from the root at t = 0.01, with a radius of 5e-6).
+    // The reference: Newton's method on the same system in complex doubles,
+    // from the real root at mid, to a residual at rounding level.
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int compared = 0;
+    for (int trial = 0; trial < 24; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        const bool is_signed = trial % 2;
+        NormalRayBisector arb(p, q, is_signed);
+        const ComplexSystem system{EllipseShape::of(p), EllipseShape::of(q), is_signed};
+        const double mid = facing_angle(p, q) + 0.4 * unit(rng);
+        ComplexBall theta0, s0;
+        arb_set_d(theta0.real(), mid);
+        REQUIRE(arb.solve(theta0, 128, s0));
+        const double s_mid = arf_get_d(arb_midref(s0.real()), ARF_RND_NEAR);
+        double px, py, nx, ny;
+        system.p.point(mid, px, py);
+        system.p.normal(mid, nx, ny);
+        const double rho = s_mid * std::hypot(system.p.b * std::cos(mid), system.p.a * std::sin(mid));
+        const double phi_mid = system.q.nearest_angle(px + rho * nx, py + rho * ny);
+        for (const double t : {0.003, 0.01, 0.03}) {
+            const double alpha = kPi * unit(rng);
+            const ComplexSystem::Z theta(mid + t * std::cos(alpha), t * std::sin(alpha));
+            ComplexSystem::Z s = s_mid, phi = phi_mid;
+            system.newton(theta, s, phi);
+            ComplexSystem::Z F[2];
+            system(theta, s, phi, F);
+            REQUIRE(std::abs(F[0]) + std::abs(F[1]) < 1e-12);
+            for (const double radius : {0.0, 0.1 * t}) {
+                ComplexBall ball, root;
+                arb_set_d(ball.real(), theta.real());
+                arb_set_d(ball.imag(), theta.imag());
+                mag_set_d(arb_radref(ball.real()), radius);
+                if (!arb.solve(ball, 128, root)) continue;
+                ++compared;
+                // Newton's root, within its rounding, lies in the ball.
+                ComplexBall newton;
+                arb_set_d(newton.real(), s.real());
+                arb_set_d(newton.imag(), s.imag());
+                mag_set_d(arb_radref(newton.real()), 1e-12);
+                mag_set_d(arb_radref(newton.imag()), 1e-12);
+                Ball re, im;
+                arb_set(re.get(), root.real());
+                arb_set(im.get(), root.imag());
+                INFO("trial " << trial << " t " << t << " radius " << radius << " Arb " << re.str(15) << " + i "
+                              << im.str(15) << ", Newton " << s.real() << " + i " << s.imag());
+                CHECK(acb_overlaps(root.get(), newton.get()));
+            }
+        }
+    }
+    CHECK(compared >= 120);
 }
 
 TEST_CASE("integrate_edge: the area over an edge piece overlaps Arb's integral", "[cells][quadrature]") {
