@@ -9,11 +9,11 @@ namespace ellvor {
 namespace {
 
 constexpr int kMeasures = MeasureIntervals::count;
-// The Bernstein parameter: larger needs fewer nodes but a wider box, on which
-// the certificate fails sooner. With the second-order box enclosure 2 did
-// best on random and packed cells (callgrind, 30 sites each: 2.25 and 2.5
-// within 1.5%, 3 7% worse, 4 20%).
-constexpr double kRho = 2;
+// The Bernstein parameter: larger needs fewer nodes but a wider disk, on
+// which the certificate fails sooner. With the certificate on the disk that
+// holds the ellipse, 2.25 did best on 150 random and 150 packed cells in a
+// box (callgrind: 2 +2%, 2.5 +0.5%, 2.75 +2%).
+constexpr double kRho = 2.25;
 // The narrowest piece (2^-kMaxDepth of the edge), and pieces tried in all,
 // before the caller takes over. An edge that passes near a site's medial axis (a circle nearly inside
 // the one it crosses: a hairpin about its centre) certifies only on pieces
@@ -27,16 +27,16 @@ constexpr int kMaxPieces = 1 << 18;
 // cells in a box; 1.1 and 1.5 did worse).
 constexpr double kGrowth = 1.2;
 
-// The bounds of NormalRayInDoubles::bounds_on_box over the complex box of the
-// Bernstein ellipse of [a, b]; nothing when the certificate fails there.
-std::optional<NormalRayInDoubles::BoxBounds> bounds_on_ellipse(NormalRayInDoubles& bisector, const Interval& mid,
+// The bounds of NormalRayInDoubles::bounds_on_disk over a disk holding the
+// Bernstein ellipse of [a, b] (the center distances over [a, b]): about the
+// middle, of radius its semi-major axis h (rho + 1/rho) / 2, rounded up, plus
+// the uncertainty of the middle. Nothing when the certificate fails there.
+std::optional<NormalRayInDoubles::DiskBounds> bounds_on_ellipse(NormalRayInDoubles& bisector, const Interval& mid,
                                                                const Interval& half) {
-    // Semi-axes h (rho + 1/rho) / 2 and h (rho - 1/rho) / 2, rounded up, plus
-    // the uncertainty of the middle.
     const Interval rho(kRho), inverse = Interval(1.0) / rho;
-    const double along = Interval::up(((rho + inverse) * half).hi * 0.5 + (mid.hi - mid.lo));
-    const double across = Interval::up(((rho - inverse) * half).hi * 0.5);
-    return bisector.bounds_on_box(mid.mid(), along, across);
+    const double uncertainty = mid.hi - mid.lo;
+    const double R = Interval::up(((rho + inverse) * half).hi * 0.5 + uncertainty);
+    return bisector.bounds_on_disk(mid.mid(), R, Interval::up(half.hi + uncertainty));
 }
 
 // (64/15) rho^(2 - 2n) / (rho^2 - 1) for n = 0 .. kMaxPoints, rounded up.
@@ -56,12 +56,12 @@ double gauss_error(const Interval& half, double M, double factor) { return (half
 
 // The certified pieces of the edge [a, b] (enclosures of its ends; the pieces
 // split it at doubles between them): on each, the least rule size n that
-// meets the piece's share of every tolerance by the bound of the complex box
-// (in doubles), then integrate_piece(A, B, n, error), which sums the rule on
-// [A, B] and returns false when a node cannot be certified. A piece whose box
-// or nodes fail is halved. False when that goes too narrow or too long. `reach`
-// is raised to the pieces' bounds of |V - p's center| and |V - q's center|
-// (their boxes hold [a.lo, b.hi]).
+// meets the piece's share of every tolerance by the bounds on the complex
+// disk (in doubles), then integrate_piece(A, B, n, error), which sums the rule
+// on [A, B] and returns false when a node cannot be certified. A piece whose
+// disk or nodes fail is halved. False when that goes too narrow or too long.
+// `reach` is raised to the pieces' bounds of |V - p's center| and |V - q's
+// center| (over the pieces, which cover [a.lo, b.hi]).
 template <class IntegratePiece>
 bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Interval& b,
                       const double (&tolerance)[kMeasures], QuadratureCounts& count, std::array<double, 2>& reach,
@@ -70,7 +70,7 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
     const auto end = [&](double x) { return x == first ? a : x == last ? b : Interval(x); };
     const double length = last - first, smallest = std::ldexp(length, -kMaxDepth);
     static const std::array<double, GaussLegendreRules::kMaxPoints + 1> factor = error_factors();
-    // Along the edge from its first end, as a step control: a piece whose box
+    // Along the edge from its first end, as a step control: a piece whose disk
     // or nodes fail is halved, the one after a certified piece grows by
     // kGrowth (the certificate holds on pieces of about the same width).
     double start = first, width = length;
@@ -85,7 +85,7 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
         };
         const Interval A = end(start), B = end(stop);
         const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
-        const std::optional<NormalRayInDoubles::BoxBounds> bounds = bounds_on_ellipse(bisector, mid, half);
+        const std::optional<NormalRayInDoubles::DiskBounds> bounds = bounds_on_ellipse(bisector, mid, half);
         if (!bounds) {
             ++count.failed_boxes;
             if (!shrink()) return false;

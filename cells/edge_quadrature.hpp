@@ -3,15 +3,16 @@
 // intervals: the fast stage of the cell integrals, for goals up to about
 // 44 bits (the default tolerance 1e-9 needs 34).
 //
-// On each piece [a, b] (half-length h) one complex box holds the Bernstein
-// ellipse with foci a, b and parameter rho (semi-axes h (rho +- 1/rho) / 2).
-// The certificate of NormalRayInDoubles::bounds_on_box proves the densities
-// holomorphic there and bounds each by M; then n-point Gauss-Legendre
+// On each piece [a, b] (half-length h) one complex disk about its middle
+// holds the Bernstein ellipse with foci a, b and parameter rho (semi-axes
+// h (rho +- 1/rho) / 2): its radius is the major semi-axis. The certificate
+// of NormalRayInDoubles::bounds_on_disk proves the densities holomorphic
+// there and bounds each by M (from their Taylor models); then n-point Gauss-Legendre
 // quadrature errs by at most h (64/15) M rho^(2 - 2n) / (rho^2 - 1)
 // (Trefethen, Approximation Theory and Approximation Practice, Thm. 19.3,
 // stated for n + 1 points with rho^(-2n): we use the weaker exponent of n - 1),
 // and n is the least that meets the piece's share of the tolerance. The nodes
-// are certified in double intervals too. A piece whose box or nodes cannot be
+// are certified in double intervals too. A piece whose disk or nodes cannot be
 // certified is halved; nothing is claimed when that goes too deep, and the
 // caller integrates the edge with Arb's integrator instead.
 #pragma once

@@ -65,7 +65,7 @@ ComplexTaylorModel<N> root_of(const ComplexTaylorModel<N>& a) {
 // the unnormalized outward normal n~, their derivatives in the angle, and
 // N^2 = |n~|^2 (as Boundary in normal_ray_bisector.cpp). T: UpwardInterval
 // for a node's certificate, the site an UpwardSite; double for Newton, the
-// site its EllipseShape; Taylor models for the box's, the site a Site (the
+// site its EllipseShape; Taylor models for the disk's, the site a Site (the
 // same member names).
 template <class T>
 struct Frame {
@@ -405,7 +405,7 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Inte
 
 namespace {
 
-// The Taylor models of the box certificate: degree 2 (the root's model
+// The Taylor models of the disk certificate: degree 2 (the root's model
 // below is its Taylor polynomial of that degree).
 constexpr int kModelDegree = 2;
 using Model = ComplexTaylorModel<kModelDegree>;
@@ -419,17 +419,16 @@ Model polynomial(const std::array<double, kModelDegree + 1>& x, double R) {
 
 }  // namespace
 
-// The certificate on a complex box of theta: the root there, and what the
-// densities and the linear model need.
-struct NormalRayInDoubles::BoxRoot {
-    Frame<ComplexInterval> bp;           // p's boundary over the box
-    ComplexInterval s, ds;               // s and s' over the box
+// The certificate on a disk of theta: the root there as Taylor models, and
+// what the densities and the linear model need.
+struct NormalRayInDoubles::DiskRoot {
+    Frame<Model> bp;                     // p's boundary on the disk
+    Model s, ds;                         // s and s' on the disk
     double s0, slope;                    // s = s0 + slope (theta - mid) + e(theta),
-    ComplexInterval remainder;           // e(theta) in remainder
-    std::array<double, 2> center_distance;  // |V - p's, q's center| <= these at the real angles of the box
+    double remainder;                    // |e(theta)| <= remainder
 };
 
-std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double mid, double along, double across) {
+std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double mid, double R) {
     using CI = ComplexInterval;
     constexpr int N = kModelDegree;
     // Newton's root x0 at the real middle (the certificate below covers it:
@@ -467,14 +466,13 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         }
     }
 
-    // On the box mid + d, d in the rectangle +- along + i (+- across), inside
-    // the disk |d| <= R: x = x_model(theta) + y. H(theta) = F(x_model(theta),
-    // theta) as a model: the polynomial leaves it of the order N + 1 in R.
-    // (Interval evaluations over the box lose how every quantity follows d:
-    // a first-order mean-value form, then second-order jets, overestimated H
-    // and I - C J(X) ten to thirty times over and kept the boxes small.)
-    const CI dtheta(sym(along), sym(across));
-    const double R = (Interval(along).square() + Interval(across).square()).sqrt().hi;
+    // On the disk mid + d, |d| <= R: x = x_model(theta) + y. H(theta) =
+    // F(x_model(theta), theta) as a model: the polynomial leaves it of the
+    // order N + 1 in R. (Interval evaluations over a box lose how every
+    // quantity follows d: a first-order mean-value form, then second-order
+    // jets, overestimated H and I - C J(X) ten to thirty times over and kept
+    // the boxes small.)
+    if (!(R >= 0) || !std::isfinite(R)) return std::nullopt;
     const Model variable = Model::variable(CI(), R);  // d
     sin_cos(Model::variable(CI(Interval(mid)), R), sin, cos);
     const Frame<Model> bp_model(p_, sin, cos);
@@ -491,9 +489,6 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     preconditioned(constant_C, CH);
     for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i] + std::ldexp(1 + std::fabs(x0[i]), -44);
     if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
-    CI sin_t, cos_t;
-    sin_cos(dtheta + Interval(mid), sin_t, cos_t);
-    const Frame<CI> bp(p_, sin_t, cos_t);
     // Y_i = +- r_i + i (+- r_i) lies in the disk of radius sqrt(2) r_i
     // (1.4142135623730951 > sqrt(2)).
     double reach[2];
@@ -503,8 +498,8 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
         X[i].remainder = Interval::up(X[i].remainder + reach[i]);
     }
     // Re s > 0, or Re s > -r_p with the signed tie (normal_ray_bisector.hpp).
-    const CI s_box = X[0].enclose(dtheta);
-    if (!(signed_ ? s_box.re + medial_p_ : s_box.re).positive()) return std::nullopt;
+    const CI s_disk = X[0].enclose_disk();
+    if (!(signed_ ? s_disk.re + medial_p_ : s_disk.re).positive()) return std::nullopt;
     sin_cos(X[1], sin, cos);
     const Frame<Model> bq(q_, sin, cos, q_parts<Model>(signed_));
     const System<Model> on_box(q_, bp_model, bq, X[0], signed_);
@@ -538,63 +533,64 @@ std::optional<NormalRayInDoubles::BoxRoot> NormalRayInDoubles::box_root(double m
     }
     if (!inside) return std::nullopt;
     // One root in X, holomorphic in theta; q's nearest point when V - Q
-    // points out of q (normal_ray_bisector.hpp).
-    // (or above q's medial axis with the signed tie).
+    // points out of q (normal_ray_bisector.hpp), or above q's medial axis
+    // with the signed tie.
     const Model side = dot(bp_model.x + X[0] * bp_model.nx - bq.x, bp_model.y + X[0] * bp_model.ny - bq.y, bq.nx, bq.ny);
-    if (!(signed_ ? side + medial_q_ * bq.n2 : side).enclose(dtheta).re.positive()) return std::nullopt;
-    const CI g_s = on_box.J[1][0].enclose(dtheta);
-    if (!g_s.zero_free()) return std::nullopt;
-    const CI K(sym(k_bound[0]), sym(k_bound[0]));  // x_model(theta) + K holds s(theta)
-    Model higher = s_model;  // s - (x_0 + x_1 d) - K
-    higher.c[0] = higher.c[1] = {0, 0};
-    // |V - C|^2 as a model, on the box's real segment: there the root,
-    // hence V, is real (normal_ray_bisector.hpp), so its square lies in
-    // the enclosure's real part. (Far tighter than |V - C| over the
-    // whole complex box: the first order is the radial speed only.)
-    const Model vx = bp_model.x + X[0] * bp_model.nx, vy = bp_model.y + X[0] * bp_model.ny;
-    std::array<double, 2> center_distance;
-    for (int i = 0; i < 2; ++i) {
-        const Site& e = i == 0 ? p_ : q_;
-        const Model dx = vx - e.xc, dy = vy - e.yc;
-        const Interval distance2 = (dx * dx + dy * dy).enclose(CI(sym(along), Interval(0.0))).re;
-        if (!(distance2.hi >= 0 && std::isfinite(distance2.hi))) return std::nullopt;
-        center_distance[i] = Interval(distance2.hi).sqrt().hi;
-    }
+    if (!(signed_ ? side + medial_q_ * bq.n2 : side).enclose_disk().re.positive()) return std::nullopt;
+    // The root s(theta) lies within |K_0| <= k_bound[0] of x_model(theta),
+    // and s' = -g_theta / g_s (g_s zero-free on the disk, else the
+    // reciprocal's remainder is infinite).
+    Model s_root = s_model;
+    s_root.remainder = Interval::up(s_root.remainder + k_bound[0]);
+    const Model ds = -(on_box.F_theta[1] / on_box.J[1][0]);
+    if (!std::isfinite(ds.remainder)) return std::nullopt;
+    Model higher = s_model.variation();  // x_2 d^2 = s - (x_0 + x_1 d) - K
+    higher.c[1] = {0, 0};
+    const double remainder = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
-    return BoxRoot{bp,     s_model.enclose(dtheta) + K, -(on_box.F_theta[1].enclose(dtheta) / g_s),  // s' = -g_theta / g_s
-                   x0[0], x[0][1],   higher.enclose(dtheta) + K, center_distance};
+    return DiskRoot{bp_model, s_root, ds, x0[0], x[0][1], remainder};
 }
 
-std::optional<NormalRayInDoubles::BoxBounds> NormalRayInDoubles::bounds_on_box(double mid, double along, double across) {
+std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk(double mid, double R, double half) {
     using CI = ComplexInterval;
-    const std::optional<BoxRoot> r = box_root(mid, along, across);
+    if (!(half >= 0 && half <= R)) return std::nullopt;
+    const std::optional<DiskRoot> r = disk_root(mid, R);
     if (!r) return std::nullopt;
-    const Frame<CI>& bp = r->bp;
-    const CI &s = r->s, &ds = r->ds;
-    // The densities of NormalRayBisector::densities over the box.
+    const Frame<Model>& bp = r->bp;
+    const Model &s = r->s, &ds = r->ds;
+    // The densities of NormalRayBisector::densities on the disk, as models.
     // |V'| = sqrt(V' . V'), holomorphic where Re V' . V' > 0.
-    const CI vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
-    const CI v2 = dot(vx, vy, vx, vy);
-    if (!v2.re.positive()) return std::nullopt;
-    CI densities[MeasureIntervals::count];
-    green_densities(bp.x + s * bp.nx - Interval(origin_[0]), bp.y + s * bp.ny - Interval(origin_[1]), vx, vy, densities);
-    BoxBounds out;
-    for (int j = 0; j < MeasureIntervals::count; ++j) out.density[j] = densities[j].magnitude();
-    out.density[MeasureIntervals::length] = Interval(v2.magnitude()).sqrt().hi;
-    out.center_distance = r->center_distance;
-    for (double x : out.density)
-        if (!std::isfinite(x)) return std::nullopt;
+    const Model x = bp.x + s * bp.nx, y = bp.y + s * bp.ny;  // V
+    const Model vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
+    const Model v2 = dot(vx, vy, vx, vy);
+    if (!v2.enclose_disk().re.positive()) return std::nullopt;
+    Model densities[MeasureIntervals::count];
+    green_densities(x - Interval(origin_[0]), y - Interval(origin_[1]), vx, vy, densities);
+    DiskBounds out;
+    for (int j = 0; j < MeasureIntervals::count; ++j) out.density[j] = densities[j].bound();
+    out.density[MeasureIntervals::length] = Interval(v2.bound()).sqrt().hi;
+    for (double b : out.density)
+        if (!std::isfinite(b)) return std::nullopt;
+    // |V - C|^2 as a model, on the real angles mid +- half: there the root,
+    // hence V, is real (normal_ray_bisector.hpp), so its square lies in the
+    // enclosure's real part. (Far tighter than |V - C| over the whole disk:
+    // the first order is the radial speed only.)
+    for (int i = 0; i < 2; ++i) {
+        const Site& e = i == 0 ? p_ : q_;
+        const Model dx = x - e.xc, dy = y - e.yc;
+        const Interval distance2 = (dx * dx + dy * dy).enclose(CI(sym(half), Interval(0.0))).re;
+        if (!(distance2.hi >= 0 && std::isfinite(distance2.hi))) return std::nullopt;
+        out.center_distance[i] = Interval(distance2.hi).sqrt().hi;
+    }
     return out;
 }
 
-std::optional<NormalRayInDoubles::LinearModel> NormalRayInDoubles::linear_model(double mid, double along,
-                                                                                double across) {
-    const std::optional<BoxRoot> r = box_root(mid, along, across);
+std::optional<NormalRayInDoubles::LinearModel> NormalRayInDoubles::linear_model(double mid, double R) {
+    const std::optional<DiskRoot> r = disk_root(mid, R);
     if (!r) return std::nullopt;
-    const double normal = (r->bp.nx.re.square() + r->bp.nx.im.square() + r->bp.ny.re.square() + r->bp.ny.im.square())
-                              .sqrt()
-                              .hi;  // |n~|^2 = |nx|^2 + |ny|^2
-    LinearModel model{mid, r->s0, r->slope, r->remainder.magnitude(), normal};
+    // |n~| <= sqrt(|nx|^2 + |ny|^2).
+    const double nx = r->bp.nx.bound(), ny = r->bp.ny.bound();
+    LinearModel model{mid, r->s0, r->slope, r->remainder, (Interval(nx).square() + Interval(ny).square()).sqrt().hi};
     if (!std::isfinite(model.remainder) || !std::isfinite(model.normal)) return std::nullopt;
     return model;
 }

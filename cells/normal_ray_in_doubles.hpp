@@ -14,10 +14,10 @@
 // cannot prove is "not certified", and the caller asks the Arb solver
 // instead.
 //
-// On a complex box of theta the Krawczyk test runs about the root's Taylor
+// On a complex disk of theta the Krawczyk test runs about the root's Taylor
 // polynomial x_model(theta) = x0 + x1 d + x2 d^2 (d = theta - mid, the
 // coefficients from Newton in doubles), every quantity a complex Taylor model
-// in d on a disk holding the box (util/complex_taylor_model.hpp), with its own
+// in d on the disk (util/complex_taylor_model.hpp), with its own
 // preconditioner C(theta) = C + C1 d at each theta (C1 = -C J' C, which
 // cancels the first order of I - C(theta) J). Interval evaluations over the
 // box (a first-order mean-value form, then second-order jets) enclosed H =
@@ -64,24 +64,25 @@ public:
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
     std::optional<double> area_density_estimate(double theta);
-    // Upper bounds over the complex box mid +- along + i (+- across) of
-    // theta, where the same certificate, on Taylor models about the root's
-    // polynomial in theta, proves the densities holomorphic: of the
-    // densities' moduli (MeasureIntervals' order), and of |V - p's center|
-    // and |V - q's center| at the box's real angles (how far the edge gets
-    // from either site's center). Nothing when the certificate fails.
-    struct BoxBounds {
+    // Upper bounds over the complex disk |theta - mid| <= R, where the same
+    // certificate, on Taylor models about the root's polynomial in theta,
+    // proves the densities holomorphic: of the densities' moduli
+    // (MeasureIntervals' order, from their models on the disk), and of
+    // |V - p's center| and |V - q's center| at the real angles mid +- half,
+    // half <= R (how far the edge gets from either site's center). Nothing
+    // when the certificate fails.
+    struct DiskBounds {
         std::array<double, MeasureIntervals::count> density;
         std::array<double, 2> center_distance;
     };
-    std::optional<BoxBounds> bounds_on_box(double mid, double along, double across);
-    // The root's linear model on that box, from the same certificate: for
+    std::optional<DiskBounds> bounds_on_disk(double mid, double R, double half);
+    // The root's linear model on that disk, from the same certificate: for
     // every theta there s(theta) = s0 + s1 (theta - mid) + e(theta), e
     // holomorphic with |e| <= remainder; and |n~| <= normal there.
     struct LinearModel {
         double mid, s0, s1, remainder, normal;
     };
-    std::optional<LinearModel> linear_model(double mid, double along, double across);
+    std::optional<LinearModel> linear_model(double mid, double R);
 
     struct Site {
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center
@@ -102,8 +103,8 @@ private:
         std::optional<MeasureIntervals> densities;
         std::optional<std::array<Interval, 2>> point;
     };
-    struct BoxRoot;
-    std::optional<BoxRoot> box_root(double mid, double along, double across);
+    struct DiskRoot;
+    std::optional<DiskRoot> disk_root(double mid, double R);
     // The certified node at theta, from the last root or from the ray; its
     // densities only when asked (point() does not need them).
     std::optional<Node> node(const Interval& theta, bool with_densities);

@@ -69,8 +69,9 @@ double magnitude_up(const acb_t z) {
 // Points a second-order piece may ask for before it is halved instead.
 constexpr double kMaxPointsAPiece = 4096;
 
-// Bounds on a piece J = [l, h] from the root's linear model on the box Z
-// about J (real radius half + margin, imaginary radius margin): with
+// Bounds on a piece J = [l, h] from the root's linear model on a region Z
+// about J (in doubles the disk of radius half + margin about J's middle;
+// Arb's, the box of real radius half + margin, imaginary radius margin): with
 // s_lin = s0 + s1 (theta - mid) and W = P + s_lin n~ = C + R (c (a + b s_lin),
 // sn (b + a s_lin)) (c, sn the cosine and sine of theta, R the rotation),
 // V = W + e n~ where |e n~| <= M = remainder sup_Z |n~| on Z, so on J
@@ -92,7 +93,7 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
     // (a rule of cost: a piece is never accepted without a certificate).
     Ball mid, s0, s1;
     double remainder, M;  // |e| and |e n~| on Z
-    const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin, margin);
+    const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin);
     if (!fast && !arb_may_try) return std::nullopt;
     if (fast) {
         doubles_held = true;

@@ -97,6 +97,13 @@ struct ComplexTaylorModel {
         for (int k = N; k >= 0; --k) b = b * radius + std::sqrt(c[k].re * c[k].re + c[k].im * c[k].im);
         return taylor_model_detail::inflated(b + remainder);
     }
+    // A rectangle holding f(d) for every d on the disk: c_0 +- (the
+    // variation's bound).
+    ComplexInterval enclose_disk() const {
+        const double e = variation().bound();
+        const Interval spread(-e, e);
+        return {Interval(c[0].re) + spread, Interval(c[0].im) + spread};
+    }
     // A rectangle holding f(d) for every d in the rectangle `d` (which must
     // lie in the disk): the polynomial by Horner's rule in intervals, plus
     // the remainder.
