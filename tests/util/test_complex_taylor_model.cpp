@@ -2,7 +2,8 @@
 // bits: for random centers and disk radii (0 included), each operation and
 // a longer expression built from them, the exact function minus the model's
 // polynomial, at random points of the disk and on its circle, is within the
-// remainder; and the remainders are of the order the degree promises.
+// remainder, and the function lies in the model's enclosure of the disk; and
+// the remainders are of the order the degree promises.
 #include "util/complex_taylor_model.hpp"
 
 #include "util/complex_ball.hpp"
@@ -39,6 +40,17 @@ bool within(const ComplexTaylorModel<N>& model, const ComplexBall& d, const Comp
     arb_get_ubound_arf(upper.get(), distance.get(), kPrec);
     arf_set_d(remainder.get(), model.remainder);
     return arb_is_finite(distance.get()) && arf_cmp(upper.get(), remainder.get()) <= 0;
+}
+
+// The rectangle holds the ball.
+bool holds(const ComplexInterval& rectangle, const ComplexBall& z) {
+    const auto part_holds = [](const Interval& x, const arb_t y) {
+        Arf lo, hi;
+        arb_get_lbound_arf(lo.get(), y, kPrec);
+        arb_get_ubound_arf(hi.get(), y, kPrec);
+        return arb_is_finite(y) && arf_cmp_d(lo.get(), x.lo) >= 0 && arf_cmp_d(hi.get(), x.hi) <= 0;
+    };
+    return part_holds(rectangle.re, acb_realref(z.get())) && part_holds(rectangle.im, acb_imagref(z.get()));
 }
 
 // A function of theta in both arithmetics.
@@ -138,6 +150,7 @@ void check_against_arb(unsigned seed) {
                     acb_add(t.get(), t.get(), d.get(), kPrec);
                     c.exact(truth, t);
                     CHECK(within(model, d, truth));
+                    CHECK(holds(model.enclose_disk(), truth));
                     ++checked;
                 }
                 // Of the order the degree promises: R^(N+1) times the size of
