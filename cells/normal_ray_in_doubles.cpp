@@ -426,6 +426,7 @@ struct NormalRayInDoubles::DiskRoot {
     Model s, ds;                         // s and s' on the disk
     double s0, slope;                    // s = s0 + slope (theta - mid) + e(theta),
     double remainder;                    // |e(theta)| <= remainder
+    double contraction;                  // DiskBounds::contraction
 };
 
 std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double mid, double R) {
@@ -548,7 +549,10 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     higher.c[1] = {0, 0};
     const double remainder = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
-    return DiskRoot{bp_model, s_root, ds, x0[0], x[0][1], remainder};
+    // Of K's bound over r, at least 1/2 (r = 2 |C H| + ...): the rest, the
+    // contraction's share, grows with the square of R.
+    const double contraction = std::max(k_bound[0] / r[0], k_bound[1] / r[1]);
+    return DiskRoot{bp_model, s_root, ds, x0[0], x[0][1], remainder, contraction};
 }
 
 std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk(double mid, double R, double half) {
@@ -567,6 +571,7 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     Model densities[MeasureIntervals::count];
     green_densities(x - Interval(origin_[0]), y - Interval(origin_[1]), vx, vy, densities);
     DiskBounds out;
+    out.contraction = r->contraction;
     for (int j = 0; j < MeasureIntervals::count; ++j) out.density[j] = densities[j].bound();
     out.density[MeasureIntervals::length] = Interval(v2.bound()).sqrt().hi;
     for (double b : out.density)

@@ -71,9 +71,13 @@ public:
     // |V - p's center| and |V - q's center| at the real angles mid +- half,
     // half <= R (how far the edge gets from either site's center). Nothing
     // when the certificate fails.
+    // `contraction`: how near the Krawczyk test came to failing, the
+    // largest ratio of the image's bound to the box's (between 1/2 and 1):
+    // a step size's guide, not a bound.
     struct DiskBounds {
         std::array<double, MeasureIntervals::count> density;
         std::array<double, 2> center_distance;
+        double contraction;
     };
     std::optional<DiskBounds> bounds_on_disk(double mid, double R, double half);
     // The root's linear model on that disk, from the same certificate: for
