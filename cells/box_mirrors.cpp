@@ -1,7 +1,9 @@
 #include "cells/box_mirrors.hpp"
 
 #include "util/error.hpp"
+#include "util/interval.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace ellvor {
@@ -31,13 +33,41 @@ void require_sites_inside_box(const std::vector<Ellipse>& sites, const CellDomai
     }
 }
 
-MirroredSites with_box_mirrors(const std::vector<Ellipse>& sites, const CellDomain& box) {
+namespace {
+constexpr Wall kWalls[4] = {Wall::left, Wall::bottom, Wall::right, Wall::top};
+}  // namespace
+
+MirroredSites with_box_mirrors(const std::vector<Ellipse>& sites, const CellDomain& box,
+                               const std::vector<WallMirrors>& across) {
+    if (across.size() != sites.size()) throw Error("with_box_mirrors: one set of walls a site");
     MirroredSites out;
     out.originals = sites.size();
     out.sites = sites;
-    out.sites.reserve(5 * sites.size());
-    for (const Ellipse& e : sites)
-        for (Wall w : {Wall::left, Wall::bottom, Wall::right, Wall::top}) out.sites.push_back(mirror_across(e, wall_line(w, box)));
+    for (SiteId i = 0; i < sites.size(); ++i) out.original.push_back(i);
+    out.wall.assign(sites.size(), Wall::none);
+    for (SiteId i = 0; i < sites.size(); ++i)
+        for (int k = 0; k < 4; ++k)
+            if (across[i][static_cast<std::size_t>(k)]) {
+                out.sites.push_back(mirror_across(sites[i], wall_line(kWalls[k], box)));
+                out.original.push_back(i);
+                out.wall.push_back(kWalls[k]);
+            }
+    return out;
+}
+
+double distance_to_wall(const Ellipse& site, Wall wall, const CellDomain& box) {
+    const AxisLine line = wall_line(wall, box);
+    const Rational difference = (line.vertical ? site.xc() : site.yc()) - line.c;
+    return enclose(difference.sign() < 0 ? -difference : difference).lo;
+}
+
+std::vector<WallMirrors> walls_near(const std::vector<Ellipse>& sites, const CellDomain& box, double distance) {
+    std::vector<WallMirrors> out(sites.size());
+    for (SiteId i = 0; i < sites.size(); ++i) {
+        const double size = std::max(sites[i].a().to_double(), sites[i].b().to_double());
+        for (int k = 0; k < 4; ++k)
+            out[i][static_cast<std::size_t>(k)] = distance_to_wall(sites[i], kWalls[k], box) <= distance + size;
+    }
     return out;
 }
 

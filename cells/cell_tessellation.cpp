@@ -56,10 +56,8 @@ PlaneSites plane_sites(const MirroredSites& m) {
     PlaneSites out;
     out.sites = m.sites;
     out.originals = m.originals;
-    for (SiteId s = 0; s < m.sites.size(); ++s) {
-        out.original.push_back(m.original_of(s));
-        out.wall.push_back(m.wall_of(s));
-    }
+    out.original = m.original;
+    out.wall = m.wall;
     out.shift.assign(m.sites.size(), {0, 0});
     return out;
 }
@@ -424,13 +422,46 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
             describe_all();
             measure_all();
             break;
-        case CellDomain::Kind::box:
-            plane = std::make_unique<PlaneSites>(
-                neighbourhood_of_originals(plane_sites(with_box_mirrors(sites, domain)), wanted));
-            cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings);
-            describe_all();
-            measure_all();
+        case CellDomain::Kind::box: {
+            // Mirrors across the walls near each site, a guess of where the
+            // cells reach (twice the spacing of sites spread evenly); a wanted
+            // cell that reaches a wall its site has no mirror across
+            // (unbounded, or its reach, proven, not below the wall's distance)
+            // gets its site's four mirrors, and the cells are made again; the
+            // third try mirrors every site (docs/DESIGN.md §10). (Every site's
+            // four mirrors made a five times larger diagram.)
+            const double area = ((domain.x1 - domain.x0) * (domain.y1 - domain.y0)).to_double();
+            std::vector<WallMirrors> across =
+                walls_near(sites, domain, 2 * std::sqrt(area / static_cast<double>(std::max<std::size_t>(1, sites.size()))));
+            for (out.attempts = 1;; ++out.attempts) {
+                if (out.attempts == 3) across.assign(sites.size(), {true, true, true, true});
+                PlaneSites mirrored = plane_sites(with_box_mirrors(sites, domain, across));
+                plane = std::make_unique<PlaneSites>(options.only.empty() ? std::move(mirrored)
+                                                                          : neighbourhood_of_originals(mirrored, wanted));
+                cells = std::make_unique<OriginalCells>(*plane, boundary_tolerance, options.rings);
+                const auto all_walls = [](const WallMirrors& w) { return w[0] && w[1] && w[2] && w[3]; };
+                bool past_the_walls = false;
+                for (SiteId s = 0; s < sites.size(); ++s)
+                    if (wanted[s] && cells->cell(s).visible && !cells->cell(s).bounded() && !all_walls(across[s])) {
+                        across[s] = {true, true, true, true};
+                        past_the_walls = true;
+                    }
+                if (past_the_walls) continue;
+                describe_all();
+                measure_all();
+                for (SiteId s = 0; s < sites.size(); ++s) {
+                    if (!wanted[s] || !out.cells[s].visible || all_walls(across[s])) continue;
+                    for (int k = 0; k < 4; ++k)
+                        if (!across[s][static_cast<std::size_t>(k)] &&
+                            !(out.cells[s].reach < distance_to_wall(sites[s], static_cast<Wall>(1 + k), domain))) {
+                            across[s] = {true, true, true, true};
+                            past_the_walls = true;
+                        }
+                }
+                if (!past_the_walls) break;
+            }
             break;
+        }
         case CellDomain::Kind::periodic: {
             Rational e_max(0);
             for (const Ellipse& e : sites) e_max = std::max({e_max, e.a(), e.b()});
@@ -446,6 +477,7 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
             // (The areas are measured with each try: the first nearly always
             // proves every cell.)
             for (long rings = first;; ++rings) {
+                out.attempts = static_cast<int>(rings - first + 1);
                 if (rings > first + 3)
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
                                 std::to_string(rings - 1) + " rings of copies");

@@ -109,6 +109,9 @@ struct CellTessellation {
     // a torus: the vertices of the cells (walls and corners included), in order of first use.
     std::vector<CellVertex> vertices;
     std::vector<Cell> cells;  // one per input site, in input order
+    // How many times the mirrors (a box) or the copies (a torus) were made:
+    // more than once when a cell reached past them.
+    int attempts = 1;
 };
 
 // Throws InputError for a tolerance outside (0, 1], a box with x0 >= x1 or

@@ -110,6 +110,52 @@ TEST_CASE("cells in a box: random ellipses add up to the box area", "[cells]") {
     CHECK(walls >= 4);
 }
 
+TEST_CASE("cells in a box: sites in a corner reach the walls they were not mirrored across", "[cells]") {
+    // Mirrors are first made across the walls within twice the even spacing
+    // (here about 150) of a site: none across the right and top walls, 400
+    // away, which the cluster's outer cells reach (unbounded without them, or
+    // a reach beyond the wall). Those sites get all four mirrors and the cells
+    // are made again; the identity proves the result.
+    std::vector<Ellipse> sites = random_ellipses(3, 30, Rational(0), Rational(10));
+    const CellDomain box = rectangle(CellDomain::Kind::box, Rational(-20), Rational(-20), Rational(400), Rational(400));
+    CellOptions o;
+    o.boundary_tolerance = 4;
+    const CellTessellation t = cell_tessellation(sites, box, o);
+    check_area_identity(t, o.tolerance);
+    CHECK(t.attempts >= 2);
+    long right_or_top = 0;
+    for (const Cell& c : t.cells)
+        for (const CellSide& side : c.sides) right_or_top += side.wall == Wall::right || side.wall == Wall::top;
+    CHECK(right_or_top >= 2);
+    // The cells of a few of them alone (the neighbourhood's diagram) are the same.
+    CellOptions some = o;
+    some.only = {0, 7, 19};
+    const CellTessellation u = cell_tessellation(sites, box, some);
+    for (SiteId s : some.only) CHECK(arb_overlaps(u.cells[s].area.get(), t.cells[s].area.get()));
+}
+
+TEST_CASE("cells in a box: a bounded cell past a wall its site was not mirrored across", "[cells]") {
+    // 98 circles in a grid on the left (even spacing 10: mirrors within 20 of
+    // a wall), one circle 30 from the right wall between two near its
+    // corners, 90 apart: its cell reaches the wall between them and past it,
+    // bounded there by their mirrors. Its proven reach is then not below the
+    // wall's distance: it gets its mirrors, and the cells are made again.
+    std::vector<Ellipse> sites;
+    for (long i = 0; i < 7; ++i)
+        for (long j = 0; j < 14; ++j)
+            sites.push_back(Ellipse::circle(Rational(4 + 8 * i), Rational(7 + 14 * j, 2), Rational(1)));
+    for (long y : {5L, 95L}) sites.push_back(Ellipse::circle(Rational(95), Rational(y), Rational(1)));
+    sites.push_back(Ellipse::circle(Rational(70), Rational(50), Rational(1)));
+    const CellDomain box = rectangle(CellDomain::Kind::box, Rational(0), Rational(0), Rational(100), Rational(100));
+    CellOptions o;
+    o.boundary_tolerance = 4;
+    const CellTessellation t = cell_tessellation(sites, box, o);
+    check_area_identity(t, o.tolerance);
+    CHECK(t.attempts == 2);
+    const Cell& lone = t.cells.back();
+    CHECK(std::count_if(lone.sides.begin(), lone.sides.end(), [](const CellSide& side) { return side.wall == Wall::right; }) == 1);
+}
+
 namespace {
 
 std::vector<Ellipse> shifted_sites(const std::vector<Ellipse>& sites, const Rational& dx, const Rational& dy) {
@@ -433,6 +479,7 @@ TEST_CASE("cells in a periodic box: one site near a corner needs a second ring o
     const CellTessellation t =
         cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(100)), o);
     check_area_identity(t, o.tolerance);
+    CHECK(t.attempts == 2);
     // Its neighbours are its own copies.
     for (const CellSide& s : t.cells[0].sides) {
         CHECK(s.neighbor == 0);
