@@ -187,25 +187,27 @@ struct ComplexTaylorModel {
         p.radius_powers(power);
         for (int k = 0; k <= N; ++k) na[k] = norm1(a.c[k]), nb[k] = norm1(b.c[k]);
         double rounding = 0, high = 0;
-        for (int k = 0; k <= 2 * N; ++k) {
+        for (int k = 0; k <= N; ++k) {
             Complex sum;
             double magnitudes = 0;
-            for (int i = k > N ? k - N : 0; i <= k && i <= N; ++i) {
-                if (k <= N) {
-                    const Complex &x = a.c[i], &y = b.c[k - i];
-                    sum.re += x.re * y.re - x.im * y.im;
-                    sum.im += x.re * y.im + x.im * y.re;
-                }
+            for (int i = 0; i <= k; ++i) {
+                const Complex &x = a.c[i], &y = b.c[k - i];
+                sum.re += x.re * y.re - x.im * y.im;
+                sum.im += x.re * y.im + x.im * y.re;
                 magnitudes += na[i] * nb[k - i];
             }
-            if (k <= N) {
-                p.c[k] = sum;
-                rounding += magnitudes * power[k];
-            } else {
-                high += magnitudes * power[k];  // |sum of products| <= sum of |products|
-            }
+            p.c[k] = sum;
+            rounding += magnitudes * power[k];
         }
-        const double cross = a.polynomial_bound() * b.remainder + b.polynomial_bound() * a.remainder;
+        for (int k = N + 1; k <= 2 * N; ++k) {
+            double magnitudes = 0;
+            for (int i = k - N; i <= N; ++i) magnitudes += na[i] * nb[k - i];
+            high += magnitudes * power[k];  // |sum of products| <= sum of |products|
+        }
+        // polynomial_bound() of each, from the 1-norms above.
+        double bound_a = na[N], bound_b = nb[N];
+        for (int k = N - 1; k >= 0; --k) bound_a = bound_a * a.radius + na[k], bound_b = bound_b * b.radius + nb[k];
+        const double cross = bound_a * b.remainder + bound_b * a.remainder;
         p.remainder = inflated(gamma(2 * N + 2) * rounding + high + cross + a.remainder * b.remainder);
         return p;
     }
