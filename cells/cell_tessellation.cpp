@@ -424,7 +424,8 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
             break;
         case CellDomain::Kind::box: {
             // Mirrors across the walls near each site, a guess of where the
-            // cells reach (twice the spacing of sites spread evenly); a wanted
+            // cells reach (four times the spacing of sites spread evenly:
+            // twice made 10^4 random cells twice, for two cells); a wanted
             // cell that reaches a wall its site has no mirror across
             // (unbounded, or its reach, proven, not below the wall's distance)
             // gets its site's four mirrors, and the cells are made again; the
@@ -432,7 +433,7 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
             // four mirrors made a five times larger diagram.)
             const double area = ((domain.x1 - domain.x0) * (domain.y1 - domain.y0)).to_double();
             std::vector<WallMirrors> across =
-                walls_near(sites, domain, 2 * std::sqrt(area / static_cast<double>(std::max<std::size_t>(1, sites.size()))));
+                walls_near(sites, domain, 4 * std::sqrt(area / static_cast<double>(std::max<std::size_t>(1, sites.size()))));
             for (out.attempts = 1;; ++out.attempts) {
                 if (out.attempts == 3) across.assign(sites.size(), {true, true, true, true});
                 PlaneSites mirrored = plane_sites(with_box_mirrors(sites, domain, across));

@@ -91,7 +91,7 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
         const Interval half = (B - A) * Interval(0.5), mid = (A + B) * Interval(0.5);
         const std::optional<NormalRayInDoubles::DiskBounds> bounds = bounds_on_ellipse(bisector, mid, half);
         if (!bounds) {
-            ++count.failed_boxes;
+            ++count.failed_disks;
             if (!shrink()) return false;
             continue;
         }

@@ -7,13 +7,13 @@
 namespace ellvor {
 
 // What integrate_edge did, added up (for the benchmarks): the pieces it
-// integrated, the boxes whose certificate failed (the piece was halved), the
+// integrated, the disks whose certificate failed (the piece was halved), the
 // density nodes it evaluated, the edges whose ends came in reverse order
 // (integrated from the second to the first: an edge of length zero).
 struct QuadratureCounts {
-    std::size_t pieces = 0, failed_boxes = 0, nodes = 0, reversed_edges = 0;
+    std::size_t pieces = 0, failed_disks = 0, nodes = 0, reversed_edges = 0;
     QuadratureCounts& operator+=(const QuadratureCounts& o) {
-        pieces += o.pieces, failed_boxes += o.failed_boxes, nodes += o.nodes, reversed_edges += o.reversed_edges;
+        pieces += o.pieces, failed_disks += o.failed_disks, nodes += o.nodes, reversed_edges += o.reversed_edges;
         return *this;
     }
 };

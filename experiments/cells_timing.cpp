@@ -111,7 +111,7 @@ TableRow measure(const CellSet& set, bool box, double tolerance, bool rings = fa
             fmt("%.1f", 100.0 * static_cast<double>(from_neighbors) /
                             static_cast<double>(std::max<std::size_t>(1, certified + by_arb + from_neighbors))),
             certified ? fmt("%.1f", static_cast<double>(quadrature.pieces) / edges) : "-",
-            certified ? fmt("%.1f", static_cast<double>(quadrature.failed_boxes) / edges) : "-",
+            certified ? fmt("%.1f", static_cast<double>(quadrature.failed_disks) / edges) : "-",
             certified ? fmt("%.0f", static_cast<double>(quadrature.nodes) / edges) : "-",
             peak.error.empty() ? fmt("%.1f", (peak.peak_kb - peak.start_kb) / 1024.0) : peak.error};
 }
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
     Report report("Certified cells against the build", "cells_timing", args.command);
     Table table("cells", {"set", "sites", "domain", "T", "bounded cells", "build s", "cells s", "cells / build",
                           "ms per bounded cell", "edges in doubles %", "edges with nodes in Arb %",
-                          "edges from neighbours %", "pieces per edge", "failed boxes per edge",
+                          "edges from neighbours %", "pieces per edge", "failed disks per edge",
                           "nodes per edge", "cells peak MB"});
     if (large) {
         for (long n : {10000L, 100000L})
@@ -159,16 +159,16 @@ int main(int argc, char** argv) {
                 table.add(measure(packing_set(n), true, T));
             }
     report.intro("CPU seconds, one run each. `build s`: the graph of the sites alone; `cells s`: "
-                 "cell_tessellation (with a box: the graph of the sites and their mirror images, then every "
+                 "cell_tessellation (with a box: the graph of the sites and their mirror images across nearby walls, then every "
                  "original cell's area, perimeter, centroid and second moments certified to T; `+ rings`: "
                  "the rings too, at the default boundary tolerance, 10^-3 of the median semi-axis). `edges in "
                  "doubles`: the share of the cells' edges integrated by the double-interval stage "
                  "(cells/edge_quadrature.hpp, goals up to 44 bits), `with nodes in Arb` by its pieces with the nodes "
                  "evaluated in Arb (beyond 44 bits), the rest by Arb's integrator (shares of the edges a cell "
                  "integrated itself); `edges from neighbours`: the share of the cells' edges whose integrals the "
-                 "neighbour's cell had made for both (docs/DESIGN.md §10); `pieces`, `failed boxes` and "
+                 "neighbour's cell had made for both (docs/DESIGN.md §10); `pieces`, `failed disks` and "
                  "`nodes per edge`: the work of those two stages on each edge they integrated, the pieces it "
-                 "integrated, the pieces whose complex box it could not certify (then halved) and the density "
+                 "integrated, the pieces whose complex disk it could not certify (then halved) and the density "
                  "nodes. Peak memory: " +
                  std::string(kPeakMemoryMethod) + ", here of one cell_tessellation.");
     report.table(table);

@@ -111,9 +111,9 @@ TEST_CASE("cells in a box: random ellipses add up to the box area", "[cells]") {
 }
 
 TEST_CASE("cells in a box: sites in a corner reach the walls they were not mirrored across", "[cells]") {
-    // Mirrors are first made across the walls within twice the even spacing
-    // (here about 150) of a site: none across the right and top walls, 400
-    // away, which the cluster's outer cells reach (unbounded without them, or
+    // Mirrors are first made across the walls within four times the even
+    // spacing (here about 300) of a site: none across the right and top
+    // walls, 400 away, which the cluster's outer cells reach (unbounded without them, or
     // a reach beyond the wall). Those sites get all four mirrors and the cells
     // are made again; the identity proves the result.
     std::vector<Ellipse> sites = random_ellipses(3, 30, Rational(0), Rational(10));
@@ -135,17 +135,17 @@ TEST_CASE("cells in a box: sites in a corner reach the walls they were not mirro
 }
 
 TEST_CASE("cells in a box: a bounded cell past a wall its site was not mirrored across", "[cells]") {
-    // 98 circles in a grid on the left (even spacing 10: mirrors within 20 of
-    // a wall), one circle 30 from the right wall between two near its
-    // corners, 90 apart: its cell reaches the wall between them and past it,
-    // bounded there by their mirrors. Its proven reach is then not below the
-    // wall's distance: it gets its mirrors, and the cells are made again.
+    // 196 circles in a grid on the left (mirrors within 4 * 100 / sqrt(199)
+    // = 28.4 of a wall), one circle 34 from the right wall between two near
+    // its corners, 90 apart: its cell reaches the wall between them and past
+    // it, bounded there by their mirrors. Its proven reach is then not below
+    // the wall's distance: it gets its mirrors, and the cells are made again.
     std::vector<Ellipse> sites;
-    for (long i = 0; i < 7; ++i)
+    for (long i = 0; i < 14; ++i)
         for (long j = 0; j < 14; ++j)
-            sites.push_back(Ellipse::circle(Rational(4 + 8 * i), Rational(7 + 14 * j, 2), Rational(1)));
+            sites.push_back(Ellipse::circle(Rational(4 + 7 * i, 2), Rational(7 + 14 * j, 2), Rational(1)));
     for (long y : {5L, 95L}) sites.push_back(Ellipse::circle(Rational(95), Rational(y), Rational(1)));
-    sites.push_back(Ellipse::circle(Rational(70), Rational(50), Rational(1)));
+    sites.push_back(Ellipse::circle(Rational(66), Rational(50), Rational(1)));
     const CellDomain box = rectangle(CellDomain::Kind::box, Rational(0), Rational(0), Rational(100), Rational(100));
     CellOptions o;
     o.boundary_tolerance = 4;
