@@ -23,7 +23,7 @@ void require_sites_inside_box(const std::vector<Ellipse>& sites, const CellDomai
     for (SiteId i = 0; i < sites.size(); ++i) {
         const Ellipse& e = sites[i];
         const bool center_inside = box.x0 < e.xc() && e.xc() < box.x1 && box.y0 < e.yc() && e.yc() < box.y1;
-        for (Wall w : {Wall::left, Wall::bottom, Wall::right, Wall::top})
+        for (Wall w : kWalls)
             if (!center_inside || !strictly_beside(e, wall_line(w, box)))
                 throw InputError("cells: site " + std::to_string(i) + " is not strictly inside the box (" +
                                      (center_inside ? std::string("it reaches the ") + wall_name(w) + " wall"
@@ -32,10 +32,6 @@ void require_sites_inside_box(const std::vector<Ellipse>& sites, const CellDomai
                                  InputError::SitePair{i, i});
     }
 }
-
-namespace {
-constexpr Wall kWalls[4] = {Wall::left, Wall::bottom, Wall::right, Wall::top};
-}  // namespace
 
 MirroredSites with_box_mirrors(const std::vector<Ellipse>& sites, const CellDomain& box,
                                const std::vector<WallMirrors>& across) {

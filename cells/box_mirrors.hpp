@@ -24,11 +24,12 @@ AxisLine wall_line(Wall wall, const CellDomain& box);
 // each wall's line (sites/mirror_symmetry.hpp).
 void require_sites_inside_box(const std::vector<Ellipse>& sites, const CellDomain& box);
 
-// Which walls a site is mirrored across (left, bottom, right, top).
+// Which walls a site is mirrored across, in the order of kWalls.
+constexpr Wall kWalls[4] = {Wall::left, Wall::bottom, Wall::right, Wall::top};
 using WallMirrors = std::array<bool, 4>;
 
 // The sites followed by their mirrors across the walls `across` names for
-// each (site by site, walls in the order above).
+// each (site by site, walls in kWalls' order).
 struct MirroredSites {
     std::vector<Ellipse> sites;
     std::size_t originals = 0;

@@ -454,7 +454,7 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                     if (!wanted[s] || !out.cells[s].visible || all_walls(across[s])) continue;
                     for (int k = 0; k < 4; ++k)
                         if (!across[s][static_cast<std::size_t>(k)] &&
-                            !(out.cells[s].reach < distance_to_wall(sites[s], static_cast<Wall>(1 + k), domain))) {
+                            !(out.cells[s].reach < distance_to_wall(sites[s], kWalls[k], domain))) {
                             across[s] = {true, true, true, true};
                             past_the_walls = true;
                         }
