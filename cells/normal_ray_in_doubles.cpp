@@ -269,10 +269,14 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval&
     // to each other, make a good start; else from the bisector point on the
     // ray (it may lead to another root of the system, which the certificate
     // rejects).
-    double x0[2], C[2][2];
-    if (newton(theta0, last_, x0, C))
+    double x0[2], C[2][2], start[2] = {last_[0], last_[1]};
+    // Or from the last disk's polynomial at theta0, on its real diameter.
+    if (disk_ && std::fabs(theta0 - disk_->mid) <= disk_->R) {
+        const double d = theta0 - disk_->mid;
+        for (int i = 0; i < 2; ++i) start[i] = disk_->x[i][0] + d * (disk_->x[i][1] + d * disk_->x[i][2]);
+    }
+    if (newton(theta0, start, x0, C))
         if (std::optional<Node> n = certified(theta, x0, C, with_densities)) return n;
-    double start[2];
     if (!ray_start(theta0, start) || !newton(theta0, start, x0, C)) return std::nullopt;
     return certified(theta, x0, C, with_densities);
 }
@@ -291,30 +295,77 @@ bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
 
 namespace {
 
-// What certify_node reads: the pair, Newton's point x0 and inverse C, and the
+// What certify_node reads: the pair, Newton's point x0 and inverse C, theta, and the
 // sines and cosines at theta (an interval) and at x0's phi.
 struct NodeInput {
     const Site &p, &q;
     bool is_signed;
     const Interval &medial_p, &medial_q;  // r_p, r_q
     const double (&q_slack)[2];           // NormalRayInDoubles::q_slack_
-    Interval sin_theta, cos_theta, sin_phi, cos_phi;
+    Interval theta, sin_theta, cos_theta, sin_phi, cos_phi;
     const double (&x0)[2];
     const double (&C)[2][2];
     const double (&origin)[2];
     bool with_densities;
 };
 
+// q's frame over phi0 +- r from the frame at phi0 (sines and cosines there):
+// sine and cosine move by at most r (their derivatives are at most 1), and
+// q's frame, linear in them, by r times q_slack (the whole frame of the
+// signed tie from the widened sine and cosine: sin(phi0 + t) = sin phi0 cos t
+// + cos phi0 sin t, cos t in [1 - r^2/2, 1], |sin t| <= min(r, 1)). Under the
+// upward rounding mode.
+Frame<UpwardInterval> widened_q_frame(const NodeInput& in, const UpwardSite& q, const Frame<UpwardInterval>& bq0,
+                                      double r) {
+    using U = UpwardInterval;
+    if (in.is_signed) {
+        const double h = std::min(r, 1.0);
+        const U sin_phi(in.sin_phi), cos_phi(in.cos_phi), sin_t(-h, h), cos_t(-((r * r) * 0.5 - 1.0), 1.0);
+        return Frame<U>(q, sin_phi * cos_t + cos_phi * sin_t, cos_phi * cos_t - sin_phi * sin_t);
+    }
+    Frame<U> bq = bq0;
+    const double mx = r * in.q_slack[0], my = r * in.q_slack[1];  // rounded up
+    const U move[2] = {U(-mx, mx), U(-my, my)};
+    bq.x = bq.x + move[0], bq.dx = bq.dx + move[0], bq.ny = bq.ny + move[0];
+    bq.y = bq.y + move[1], bq.dy = bq.dy + move[1], bq.nx = bq.nx + move[1];
+    return bq;
+}
+
+// What a node gives once s(theta) is enclosed in `root`: the point V and
+// (with_densities) the densities, with s' = -g_theta / g_s from the tie's
+// derivatives over a box holding the root (System's J[1][0], F_theta[1]).
+// The densities are left empty when |V'|^2 > 0 or finiteness is not proved.
+// Under the upward rounding mode.
+void node_values(const NodeInput& in, const Frame<UpwardInterval>& bp, const UpwardInterval& root,
+                 const System<UpwardInterval>& on_box, std::optional<MeasureIntervals>& densities,
+                 std::optional<std::array<Interval, 2>>& point) {
+    using U = UpwardInterval;
+    const U ds = -(on_box.F_theta[1] / on_box.J[1][0]);
+    const U v[2] = {bp.x + root * bp.nx, bp.y + root * bp.ny};
+    if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
+    if (!in.with_densities) return;
+    // The densities of NormalRayBisector::densities.
+    const U vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
+    U out[MeasureIntervals::count];
+    green_densities(v[0] - U(in.origin[0]), v[1] - U(in.origin[1]), vx, vy, out);
+    const U v2 = dot(vx, vy, vx, vy);
+    if (!v2.positive()) return;
+    out[MeasureIntervals::length] = v2.sqrt();
+    MeasureIntervals d;
+    for (int j = 0; j < MeasureIntervals::count; ++j) {
+        if (!out[j].finite()) return;
+        d.m[j] = out[j].interval();
+    }
+    densities = d;
+}
+
 // The Krawczyk test about x0 with epsilon-inflation, F(x0) over the whole
 // interval of theta (C may be any matrix to the proof), and at the root it
-// proves the point V and (with_densities) the densities. All of it under the upward rounding
+// proves the node's values (node_values). All of it under the upward rounding
 // mode (util/upward_interval.hpp: one rounding an operation, no widening
 // step; these operations in Interval were about half of a cell's time). The
 // sines and cosines come from the caller (util/interval_trig.hpp needs
-// round-to-nearest); over phi0 +- r they follow from those at phi0:
-// sin(phi0 + t) = sin phi0 cos t + cos phi0 sin t, cos t in [1 - r^2/2, 1],
-// |sin t| <= min(r, 1). False when the root is not certified; the densities
-// are left empty when |V'|^2 > 0 or finiteness is not proved.
+// round-to-nearest). False when the root is not certified.
 ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::optional<MeasureIntervals>& densities,
                                                   std::optional<std::array<Interval, 2>>& point) {
     using U = UpwardInterval;
@@ -324,8 +375,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
     const double(&x0)[2] = in.x0;
     const double(&C)[2][2] = in.C;
     const Frame<U> bp(p, U(in.sin_theta), U(in.cos_theta));
-    const U sin_phi(in.sin_phi), cos_phi(in.cos_phi);
-    const Frame<U> bq0(q, sin_phi, cos_phi, q_parts<U>(is_signed));
+    const Frame<U> bq0(q, U(in.sin_phi), U(in.cos_phi), q_parts<U>(is_signed));
     const U s0(x0[0]);
     U F[2];
     Differences<U>(bp, bq0, s0).residual(bp, bq0, s0, is_signed, F);
@@ -340,20 +390,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
         const U s = s0 + U(-r[0], r[0]);
         // s > 0, or s > -r_p with the signed tie (normal_ray_bisector.hpp).
         if (!(is_signed ? s + medial_p : s).positive()) return false;
-        // On phi0 +- r: sine and cosine move by at most r (their derivatives
-        // are at most 1), and q's frame, linear in them, by r times q_slack
-        // (the whole frame of the signed tie from the widened sine and cosine).
-        Frame<U> bq = bq0;
-        if (is_signed) {
-            const double h = std::min(r[1], 1.0);
-            const U sin_t(-h, h), cos_t(-((r[1] * r[1]) * 0.5 - 1.0), 1.0);
-            bq = Frame<U>(q, sin_phi * cos_t + cos_phi * sin_t, cos_phi * cos_t - sin_phi * sin_t);
-        } else {
-            const double mx = r[1] * in.q_slack[0], my = r[1] * in.q_slack[1];  // rounded up
-            const U move[2] = {U(-mx, mx), U(-my, my)};
-            bq.x = bq.x + move[0], bq.dx = bq.dx + move[0], bq.ny = bq.ny + move[0];
-            bq.y = bq.y + move[1], bq.dy = bq.dy + move[1], bq.nx = bq.nx + move[1];
-        }
+        const Frame<U> bq = widened_q_frame(in, q, bq0, r[1]);
         const System<U> on_box(q, bp, bq, s, is_signed);
         const U Y[2] = {U(-r[0], r[0]), U(-r[1], r[1])};
         U K[2];
@@ -364,41 +401,112 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
         // V outside q along its normal, or above q's medial axis with the signed tie.
         if (!(is_signed ? side(bp, bq, s) + medial_q * bq.n2 : side(bp, bq, s)).positive()) return false;
         // The root: s in x0 + K; the tie derivatives over X contain their values there.
-        const U& g_s = on_box.J[1][0];
-        if (g_s.contains_zero()) return false;
-        const U root = s0 + K[0], ds = -(on_box.F_theta[1] / g_s);  // s' = -g_theta / g_s
-        const U v[2] = {bp.x + root * bp.nx, bp.y + root * bp.ny};
-        if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
-        if (!in.with_densities) return true;
-        // The densities of NormalRayBisector::densities.
-        const U vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
-        U out[MeasureIntervals::count];
-        green_densities(v[0] - U(in.origin[0]), v[1] - U(in.origin[1]), vx, vy, out);
-        const U v2 = dot(vx, vy, vx, vy);
-        if (!v2.positive()) return true;
-        out[MeasureIntervals::length] = v2.sqrt();
-        MeasureIntervals d;
-        for (int j = 0; j < MeasureIntervals::count; ++j) {
-            if (!out[j].finite()) return true;
-            d.m[j] = out[j].interval();
-        }
-        densities = d;
+        if (on_box.J[1][0].contains_zero()) return false;
+        node_values(in, bp, s0 + K[0], on_box, densities, point);
         return true;
     }
     return false;
 }
 
+// The node from the last disk certificate, whose theta lies on the disk's
+// real diameter: there the system has one root x* in X(theta) = x_model(theta)
+// + D(0, reach), the bisector point; with C(theta) = C + C1 d and A the
+// mean-value Jacobian between x0 and x* (both in X(theta), and so the segment
+// between), x0 - x* = C(theta) F(x0) + (I - C(theta) A)(x0 - x*), whose rows
+// the disk bounds: sum_j |I - C(theta) A|_ij reach_j <= linear_part_i <
+// reach_i. So with t = max_i |C(theta) F(x0)|_i / (reach_i - linear_part_i),
+// |x0 - x*|_i <= t reach_i = delta_i: no Krawczyk test, no side check (the
+// disk's hold for its root). p's frame at theta and q's at phi0 given; false
+// when x0 is not in X(theta). Under the upward rounding mode. Then
+// certify_node_in_disk gives the node's values from the root in x0 +- delta.
+bool disk_offsets(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk, const Frame<UpwardInterval>& bp,
+                  const Frame<UpwardInterval>& bq0, double (&delta)[2]) {
+    using U = UpwardInterval;
+    const double(&x0)[2] = in.x0;
+    const U d = U(in.theta) - U(disk.mid);
+    // x0 in X(theta)?
+    for (int i = 0; i < 2; ++i) {
+        const U model = U(disk.x[i][0]) + d * (U(disk.x[i][1]) + d * U(disk.x[i][2]));
+        if (!(magnitude(U(x0[i]) - model) < disk.reach[i])) return false;
+    }
+    const U s0(x0[0]);
+    U F[2];
+    Differences<U>(bp, bq0, s0).residual(bp, bq0, s0, in.is_signed, F);
+    double t = 0;
+    for (int i = 0; i < 2; ++i) {
+        const U CF = (U(disk.C[i][0]) + U(disk.C1[i][0]) * d) * F[0] + (U(disk.C[i][1]) + U(disk.C1[i][1]) * d) * F[1];
+        const U margin = U(disk.reach[i]) - U(disk.linear_part[i]);
+        if (!margin.positive()) return false;
+        t = std::max(t, (U(magnitude(CF)) / margin).hi);
+    }
+    for (int i = 0; i < 2; ++i) delta[i] = (U(t) * U(disk.reach[i])).hi;
+    return std::isfinite(delta[0]) && delta[1] <= 1;
+}
+
+ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node_in_disk(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk,
+                                                          std::optional<MeasureIntervals>& densities,
+                                                          std::optional<std::array<Interval, 2>>& point) {
+    using U = UpwardInterval;
+    const UpwardRoundingScope upward;
+    const UpwardSite p(in.p), q(in.q);
+    const Frame<U> bp(p, U(in.sin_theta), U(in.cos_theta));
+    const Frame<U> bq0(q, U(in.sin_phi), U(in.cos_phi), q_parts<U>(in.is_signed));
+    double delta[2];
+    if (!disk_offsets(in, disk, bp, bq0, delta)) return false;
+    const U s = U(in.x0[0]) + U(-delta[0], delta[0]);
+    const Frame<U> bq = widened_q_frame(in, q, bq0, delta[1]);
+    const System<U> on_box(q, bp, bq, s, in.is_signed);
+    if (on_box.J[1][0].contains_zero()) return false;
+    node_values(in, bp, s, on_box, densities, point);
+    return true;
+}
+
+// disk_offsets alone (NormalRayInDoubles::root_from_disk).
+ELLVOR_UPWARD_ROUNDING_FUNCTION bool root_offsets_in_disk(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk,
+                                                          double (&delta)[2]) {
+    using U = UpwardInterval;
+    const UpwardRoundingScope upward;
+    const UpwardSite p(in.p), q(in.q);
+    const Frame<U> bp(p, U(in.sin_theta), U(in.cos_theta));
+    const Frame<U> bq0(q, U(in.sin_phi), U(in.cos_phi), q_parts<U>(in.is_signed));
+    return disk_offsets(in, disk, bp, bq0, delta);
+}
+
 }  // namespace
+
+bool NormalRayInDoubles::on_disk(const Interval& theta) const {
+    if (!disk_) return false;
+    const Interval d = theta - Interval(disk_->mid);
+    return std::max(-d.lo, d.hi) <= disk_->R;
+}
+
+std::optional<std::array<Interval, 2>> NormalRayInDoubles::root_from_disk(const Interval& theta, const double (&x)[2]) {
+    if (!on_disk(theta)) return std::nullopt;
+    Interval sin, cos, sin_phi, cos_phi;
+    sin_cos(theta, sin, cos);
+    sin_cos(Interval(x[1]), sin_phi, cos_phi);
+    const double C[2][2] = {{0, 0}, {0, 0}};  // the disk's are used
+    const NodeInput in{p_, q_, signed_, medial_p_, medial_q_, q_slack_, theta, sin, cos, sin_phi, cos_phi,
+                       x, C,  origin_, false};
+    double delta[2];
+    if (!root_offsets_in_disk(in, *disk_, delta)) return std::nullopt;
+    return std::array<Interval, 2>{Interval(x[0]) + Interval(-delta[0], delta[0]),
+                                   Interval(x[1]) + Interval(-delta[1], delta[1])};
+}
 
 std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Interval& theta, const double (&x0)[2],
                                                                       const double (&C)[2][2], bool with_densities) {
     Interval sin, cos, sin_phi, cos_phi;
     sin_cos(theta, sin, cos);
     sin_cos(Interval(x0[1]), sin_phi, cos_phi);
+    const NodeInput in{p_, q_, signed_, medial_p_, medial_q_, q_slack_, theta, sin, cos, sin_phi, cos_phi,
+                       x0, C,  origin_, with_densities};
     Node out;
-    if (!certify_node({p_, q_, signed_, medial_p_, medial_q_, q_slack_, sin, cos, sin_phi, cos_phi, x0, C, origin_,
-                      with_densities},
-                      out.densities, out.point))
+    // From the last disk's proof when theta is on its real diameter (a
+    // node of its piece), else by a Krawczyk test of its own.
+    if (on_disk(theta) && certify_node_in_disk(in, *disk_, out.densities, out.point))
+        ++disk_nodes_;
+    else if (!certify_node(in, out.densities, out.point))
         return std::nullopt;
     last_[0] = x0[0], last_[1] = x0[1];
     return out;
@@ -432,6 +540,8 @@ struct NormalRayInDoubles::DiskRoot {
 
 std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double mid, double R) {
     using CI = ComplexInterval;
+    static_assert(kModelDegree == 2, "DiskProof holds the root's polynomial of degree 2");
+    disk_.reset();
     constexpr int N = kModelDegree;
     // Newton's root x0 at the real middle (the certificate below covers it:
     // a wrong root fails its checks), the inverse C of J there and the
@@ -522,14 +632,17 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // One test: wider Y (retries at twice the radius) succeeded twice in 1500
     // failures on 150 random cells in a box; the caller halves the piece.
     bool inside = true;
-    double k_bound[2];
+    double k_bound[2], linear_part[2];
     for (int i = 0; i < 2; ++i) {
         k_bound[i] = CH[i];
+        linear_part[i] = 0;
         for (int j = 0; j < 2; ++j) {
             Model m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j] +
                         variable * (C1[i][0] * on_box.J[0][j] + C1[i][1] * on_box.J[1][j]));
             if (i == j) m = m + Interval(1.0);
-            k_bound[i] = Interval::up(k_bound[i] + Interval::up(m.bound() * reach[j]));
+            const double term = Interval::up(m.bound() * reach[j]);
+            k_bound[i] = Interval::up(k_bound[i] + term);
+            linear_part[i] = Interval::up(linear_part[i] + term);
         }
         inside = inside && k_bound[i] < r[i];
     }
@@ -550,6 +663,12 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     higher.c[1] = {0, 0};
     const double remainder = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
+    DiskProof proof{mid, R, {}, {}, {}, {reach[0], reach[1]}, {linear_part[0], linear_part[1]}};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) proof.C[i][j] = C[i][j], proof.C1[i][j] = C1[i][j];
+    for (int i = 0; i < 2; ++i)
+        for (int k = 0; k <= N; ++k) proof.x[i][k] = x[i][k];
+    disk_ = proof;
     // Of K's bound over r, at least 1/2 (r = 2 |C H| + ...): the rest, the
     // contraction's share, grows with the square of R.
     const double contraction = std::max(k_bound[0] / r[0], k_bound[1] / r[1]);

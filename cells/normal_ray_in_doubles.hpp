@@ -92,6 +92,25 @@ public:
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center
         EllipseShape shape;
     };
+    // What the last disk certificate proved, for the nodes on its real
+    // diameter (the .cpp's certify_node_in_disk): with d = theta - mid, the
+    // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
+    // = sum x[i][k] d^k), and the preconditioner C + C1 d bounds
+    // sum_j |I - (C + C1 d) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
+    // How many nodes the disks' proofs certified (the rest by their own
+    // Krawczyk tests).
+    std::size_t disk_nodes() const { return disk_nodes_; }
+    // The root (s, phi) at theta on the last disk's real diameter, from any
+    // point x of X(theta) (DiskProof) by the disk's proof, as its nodes take
+    // it from Newton's point: x +- delta. Nothing off the disk, or when x is
+    // not in X(theta).
+    std::optional<std::array<Interval, 2>> root_from_disk(const Interval& theta, const double (&x)[2]);
+    struct DiskProof {
+        double mid, R;
+        double C[2][2], C1[2][2];
+        double x[2][3];
+        double reach[2], linear_part[2];
+    };
 
 private:
     // Newton on the system in doubles at the angle theta from `start`; false
@@ -115,6 +134,8 @@ private:
     // The certificate about the point x0 (Newton's root).
     std::optional<Node> certified(const Interval& theta, const double (&x0)[2], const double (&C)[2][2],
                                   bool with_densities);
+    // Whether theta lies on the last disk's real diameter.
+    bool on_disk(const Interval& theta) const;
 
     Site p_, q_;
     bool signed_;
@@ -126,6 +147,10 @@ private:
     double q_slack_[2];
     // The root at the last node: the next node's start.
     double last_[2] = {NAN, NAN};
+    // The last disk certificate's proof, while its nodes are integrated
+    // (none after a failed one).
+    std::optional<DiskProof> disk_;
+    std::size_t disk_nodes_ = 0;
 };
 
 }  // namespace ellvor

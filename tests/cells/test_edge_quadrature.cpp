@@ -357,6 +357,100 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex disk hol
     CHECK(checked_points >= points * 9 / 10);
 }
 
+TEST_CASE("NormalRayInDoubles: nodes from a disk's proof hold Arb's densities, as narrow as their own tests", "[cells][quadrature]") {
+    // After a disk certificate, a node on its real diameter is certified from
+    // the disk's contraction (certify_node_in_disk), not by a Krawczyk test of
+    // its own; off the disk, by its own.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int from_disks = 0, compared = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayInDoubles fast(p, q, trial % 2), own(p, q, trial % 2);
+        NormalRayBisector arb(p, q, trial % 2);
+        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
+        if (!fast.bounds_on_disk(mid, R, R)) continue;
+        for (int k = 0; k < 6; ++k) {
+            const double theta = mid + R * unit(rng);
+            const std::size_t before = fast.disk_nodes();
+            const std::optional<MeasureIntervals> d = fast.densities(Interval(theta));
+            REQUIRE(d);
+            CHECK(fast.disk_nodes() == before + 1);
+            ++from_disks;
+            NormalRayBisector::Densities reference;
+            REQUIRE(densities_at_200_bits(arb, theta, reference));
+            INFO("trial " << trial << " theta " << theta);
+            check_overlaps(*d, reference);
+            ++compared;
+            // As narrow as a node's own Krawczyk test (within a factor 2 of
+            // its width or 2^-40 of the value).
+            const std::optional<MeasureIntervals> e = own.densities(Interval(theta));
+            REQUIRE(e);
+            CHECK(own.disk_nodes() == 0);
+            for (int j = 0; j < MeasureIntervals::count; ++j)
+                CHECK(d->m[j].hi - d->m[j].lo <=
+                      2 * (e->m[j].hi - e->m[j].lo) + std::ldexp(std::fabs(e->m[j].mid()), -40));
+        }
+        // Off the disk: its own test.
+        const std::size_t before = fast.disk_nodes();
+        REQUIRE(fast.densities(Interval(mid + 1.5 * R)));
+        CHECK(fast.disk_nodes() == before);
+    }
+    CHECK(compared >= 120);
+    CHECK(from_disks == compared);
+}
+
+TEST_CASE("NormalRayInDoubles: a disk's proof encloses the root from any point of X(theta)", "[cells][quadrature]") {
+    // root_from_disk is the nodes' proof (certify_node_in_disk) from a given
+    // point: x +- delta must hold the root for points far from it too (Newton's
+    // are within rounding, which would hide a delta too small). The root: s
+    // from Arb at 200 bits, phi q's nearest point to V.
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int proofs = 0, far_proofs = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayInDoubles fast(p, q, trial % 2);
+        NormalRayBisector arb(p, q, trial % 2);
+        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
+        if (!fast.bounds_on_disk(mid, R, R)) continue;
+        const EllipseShape ps = EllipseShape::of(p), qs = EllipseShape::of(q);
+        for (int k = 0; k < 8; ++k) {
+            const double theta = mid + R * unit(rng);
+            ComplexBall ball, s;
+            arb_set_d(ball.real(), theta);
+            REQUIRE(arb.solve(ball, 200, s));
+            const double s_root = arf_get_d(arb_midref(acb_realref(s.get())), ARF_RND_NEAR);
+            double px, py, nx, ny;
+            ps.point(theta, px, py);
+            ps.normal(theta, nx, ny);
+            const double rho = s_root * std::hypot(ps.b * std::cos(theta), ps.a * std::sin(theta));
+            const double phi_root = qs.nearest_angle(px + rho * nx, py + rho * ny);
+            for (const double scale : {0.0, 1e-10, 1e-6, 1e-4, 1e-3}) {
+                const double x[2] = {s_root * (1 + scale * unit(rng)), phi_root + scale * unit(rng)};
+                const std::optional<std::array<Interval, 2>> root = fast.root_from_disk(Interval(theta), x);
+                if (!root) continue;
+                ++proofs;
+                far_proofs += scale >= 1e-4;
+                INFO("trial " << trial << " theta " << theta << " scale " << scale);
+                CHECK(overlap((*root)[0], s));
+                CHECK((*root)[1].lo <= phi_root + 1e-12);
+                CHECK(phi_root - 1e-12 <= (*root)[1].hi);
+                // A bound, not everything: about the point's distance to the
+                // root (in either unknown: the proof's norm couples them).
+                const double distance = std::fabs(x[0] - s_root) + (1 + std::fabs(s_root)) * std::fabs(x[1] - phi_root);
+                CHECK((*root)[0].hi - (*root)[0].lo <= 1e3 * (distance + 1e-12 * (1 + std::fabs(s_root))));
+            }
+        }
+        // Off the disk: nothing.
+        const double x[2] = {1, 0};
+        CHECK(!fast.root_from_disk(Interval(mid + 1.5 * R), x));
+    }
+    INFO("proofs " << proofs << ", from points 1e-4 or farther " << far_proofs);
+    CHECK(proofs >= 600);
+    CHECK(far_proofs >= 100);
+}
+
 // The system of normal_ray_bisector.hpp in complex doubles, for Newton's
 // method: F0 = (V - Q) . Q', F1 the squared tie or the signed one
 // (principal square roots).
