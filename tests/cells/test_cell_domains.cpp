@@ -113,9 +113,9 @@ TEST_CASE("cells in a box: random ellipses add up to the box area", "[cells]") {
 TEST_CASE("cells in a box: sites in a corner reach the walls they were not mirrored across", "[cells]") {
     // Mirrors are first made across the walls within four times the even
     // spacing (here about 300) of a site: none across the right and top
-    // walls, 400 away, which the cluster's outer cells reach (unbounded without them, or
-    // a reach beyond the wall). Those sites get all four mirrors and the cells
-    // are made again; the identity proves the result.
+    // walls, 400 away, which the cluster's outer cells reach (unbounded
+    // without them, or a reach beyond the wall). Those sites get all four
+    // mirrors and the cells are made again; the identity proves the result.
     std::vector<Ellipse> sites = random_ellipses(3, 30, Rational(0), Rational(10));
     const CellDomain box = rectangle(CellDomain::Kind::box, Rational(-20), Rational(-20), Rational(400), Rational(400));
     CellOptions o;
