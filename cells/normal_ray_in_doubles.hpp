@@ -92,11 +92,6 @@ public:
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center
         EllipseShape shape;
     };
-    // What the last disk certificate proved, for the nodes on its real
-    // diameter (the .cpp's certify_node_in_disk): with d = theta - mid, the
-    // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
-    // = sum x[i][k] d^k), and the preconditioner C + C1 d bounds
-    // sum_j |I - (C + C1 d) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
     // How many nodes the disks' proofs certified (the rest by their own
     // Krawczyk tests).
     std::size_t disk_nodes() const { return disk_nodes_; }
@@ -105,6 +100,11 @@ public:
     // it from Newton's point: x +- delta. Nothing off the disk, or when x is
     // not in X(theta).
     std::optional<std::array<Interval, 2>> root_from_disk(const Interval& theta, const double (&x)[2]);
+    // What the last disk certificate proved, for the nodes on its real
+    // diameter (the .cpp's certify_node_in_disk): with d = theta - mid, the
+    // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
+    // = sum x[i][k] d^k), and the preconditioner C + C1 d bounds
+    // sum_j |I - (C + C1 d) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
     struct DiskProof {
         double mid, R;
         double C[2][2], C1[2][2];
