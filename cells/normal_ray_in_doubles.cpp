@@ -48,7 +48,6 @@ void green_densities(const T& X, const T& Y, const T& dX, const T& dY, T (&out)[
 }
 
 UpwardInterval square(const UpwardInterval& x) { return x.square(); }
-ComplexInterval square(const ComplexInterval& z) { return z * z; }
 double square(double x) { return x * x; }
 
 // Principal square roots where the real part is positive (the squared normal
@@ -273,7 +272,10 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval&
     // Or from the last disk's polynomial at theta0, on its real diameter.
     if (disk_ && std::fabs(theta0 - disk_->mid) <= disk_->R) {
         const double d = theta0 - disk_->mid;
-        for (int i = 0; i < 2; ++i) start[i] = disk_->x[i][0] + d * (disk_->x[i][1] + d * disk_->x[i][2]);
+        for (int i = 0; i < 2; ++i) {
+            start[i] = disk_->x[i][kDiskDegree];
+            for (int k = kDiskDegree - 1; k >= 0; --k) start[i] = start[i] * d + disk_->x[i][k];
+        }
     }
     if (newton(theta0, start, x0, C))
         if (std::optional<Node> n = certified(theta, x0, C, with_densities)) return n;
@@ -422,11 +424,13 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
 bool disk_offsets(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk, const Frame<UpwardInterval>& bp,
                   const Frame<UpwardInterval>& bq0, double (&delta)[2]) {
     using U = UpwardInterval;
+    constexpr int kDegree = NormalRayInDoubles::kDiskDegree;
     const double(&x0)[2] = in.x0;
     const U d = U(in.theta) - U(disk.mid);
     // x0 in X(theta)?
     for (int i = 0; i < 2; ++i) {
-        const U model = U(disk.x[i][0]) + d * (U(disk.x[i][1]) + d * U(disk.x[i][2]));
+        U model(disk.x[i][kDegree]);
+        for (int k = kDegree - 1; k >= 0; --k) model = model * d + U(disk.x[i][k]);
         if (!(magnitude(U(x0[i]) - model) < disk.reach[i])) return false;
     }
     const U s0(x0[0]);
@@ -434,7 +438,8 @@ bool disk_offsets(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk
     Differences<U>(bp, bq0, s0).residual(bp, bq0, s0, in.is_signed, F);
     double t = 0;
     for (int i = 0; i < 2; ++i) {
-        const U CF = (U(disk.C[i][0]) + U(disk.C1[i][0]) * d) * F[0] + (U(disk.C[i][1]) + U(disk.C1[i][1]) * d) * F[1];
+        U CF = U(disk.C[kDegree][i][0]) * F[0] + U(disk.C[kDegree][i][1]) * F[1];
+        for (int k = kDegree - 1; k >= 0; --k) CF = CF * d + (U(disk.C[k][i][0]) * F[0] + U(disk.C[k][i][1]) * F[1]);
         const U margin = U(disk.reach[i]) - U(disk.linear_part[i]);
         if (!margin.positive()) return false;
         t = std::max(t, (U(magnitude(CF)) / margin).hi);
@@ -516,7 +521,7 @@ namespace {
 
 // The Taylor models of the disk certificate: degree 2 (the root's model
 // below is its Taylor polynomial of that degree).
-constexpr int kModelDegree = 2;
+constexpr int kModelDegree = NormalRayInDoubles::kDiskDegree;
 using Model = ComplexTaylorModel<kModelDegree>;
 
 // sum x_k d^k, exact coefficients, on the disk of radius R.
@@ -540,7 +545,6 @@ struct NormalRayInDoubles::DiskRoot {
 
 std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double mid, double R) {
     using CI = ComplexInterval;
-    static_assert(kModelDegree == 2, "DiskProof holds the root's polynomial of degree 2");
     disk_.reset();
     constexpr int N = kModelDegree;
     // Newton's root x0 at the real middle (the certificate below covers it:
@@ -585,20 +589,20 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // jets, overestimated H and I - C J(X) ten to thirty times over and kept
     // the boxes small.)
     if (!(R >= 0) || !std::isfinite(R)) return std::nullopt;
-    const Model variable = Model::variable(CI(), R);  // d
     sin_cos(Model::variable(CI(Interval(mid)), R), sin, cos);
     const Frame<Model> bp_model(p_, sin, cos);
     const Model s_model = polynomial(x[0], R), phi_model = polynomial(x[1], R);
     residual(bp_model, s_model, phi_model, H);
-    // Bounds of C(theta) H(theta) on the disk for the preconditioner
-    // C(theta) = C + C1 d.
-    const auto preconditioned = [&](const double (&C1)[2][2], double (&bound)[2]) {
-        for (int i = 0; i < 2; ++i)
-            bound[i] = (C[i][0] * H[0] + C[i][1] * H[1] + variable * (C1[i][0] * H[0] + C1[i][1] * H[1])).bound();
+    // Bounds of C(theta) H(theta) on the disk for a preconditioner
+    // C(theta), a matrix of models.
+    const auto preconditioned = [&](const Model (&Ct)[2][2], double (&bound)[2]) {
+        for (int i = 0; i < 2; ++i) bound[i] = (Ct[i][0] * H[0] + Ct[i][1] * H[1]).bound();
     };
-    const double constant_C[2][2] = {{0, 0}, {0, 0}};
+    Model Ct[2][2];
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) Ct[i][j] = Model(CI(Interval(C[i][j])), R);
     double CH[2], r[2];
-    preconditioned(constant_C, CH);
+    preconditioned(Ct, CH);
     for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i] + std::ldexp(1 + std::fabs(x0[i]), -44);
     if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
     // Y_i = +- r_i + i (+- r_i) lies in the disk of radius sqrt(2) r_i
@@ -615,20 +619,32 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     sin_cos(X[1], sin, cos);
     const Frame<Model> bq(q_, sin, cos, q_parts<Model>(signed_));
     const System<Model> on_box(q_, bp_model, bq, X[0], signed_);
-    // The Krawczyk test at each theta with its own preconditioner
-    // C(theta) = C + C1 d, C1 = -C J' C the derivative of J^-1 along the
-    // model at mid (any matrix is sound at each theta; this one cancels
-    // the first order of I - C(theta) J): |I - C(theta) J(X(theta))| and
-    // |C(theta) H(theta)| bounded by their models, pointwise in theta.
-    double C1[2][2];
+    // The Krawczyk test at each theta with its own preconditioner C(theta)
+    // = sum C_k d^k, the Taylor polynomial of J^-1 along the model at mid
+    // (C_0 = C, C_k = -C sum_{j=1..k} J_j C_{k-j}, J_j the Taylor
+    // coefficients of J(x_model(theta), theta); any matrices are sound at
+    // each theta: these cancel I - C(theta) J to order N):
+    // |I - C(theta) J(X(theta))| and |C(theta) H(theta)| bounded by their
+    // models, pointwise in theta.
+    double Ck[N + 1][2][2];
     for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) {
-            C1[i][j] = 0;
-            for (int k = 0; k < 2; ++k)
-                for (int l = 0; l < 2; ++l) C1[i][j] -= C[i][k] * on_box.J[k][l].c[1].re * C[l][j];
-            if (!std::isfinite(C1[i][j])) return std::nullopt;
-        }
-    preconditioned(C1, CH);
+        for (int j = 0; j < 2; ++j) Ck[0][i][j] = C[i][j];
+    for (int k = 1; k <= N; ++k) {
+        double JC[2][2] = {{0, 0}, {0, 0}};  // sum_j J_j C_{k-j}
+        for (int j = 1; j <= k; ++j)
+            for (int a = 0; a < 2; ++a)
+                for (int b = 0; b < 2; ++b)
+                    for (int l = 0; l < 2; ++l) JC[a][b] += on_box.J[a][l].c[j].re * Ck[k - j][l][b];
+        for (int a = 0; a < 2; ++a)
+            for (int b = 0; b < 2; ++b) {
+                Ck[k][a][b] = -(C[a][0] * JC[0][b] + C[a][1] * JC[1][b]);
+                if (!std::isfinite(Ck[k][a][b])) return std::nullopt;
+            }
+    }
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            for (int k = 1; k <= N; ++k) Ct[i][j].c[k] = {Ck[k][i][j], 0};
+    preconditioned(Ct, CH);
     // One test: wider Y (retries at twice the radius) succeeded twice in 1500
     // failures on 150 random cells in a box; the caller halves the piece.
     bool inside = true;
@@ -637,8 +653,7 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         k_bound[i] = CH[i];
         linear_part[i] = 0;
         for (int j = 0; j < 2; ++j) {
-            Model m = -(C[i][0] * on_box.J[0][j] + C[i][1] * on_box.J[1][j] +
-                        variable * (C1[i][0] * on_box.J[0][j] + C1[i][1] * on_box.J[1][j]));
+            Model m = -(Ct[i][0] * on_box.J[0][j] + Ct[i][1] * on_box.J[1][j]);
             if (i == j) m = m + Interval(1.0);
             const double term = Interval::up(m.bound() * reach[j]);
             k_bound[i] = Interval::up(k_bound[i] + term);
@@ -663,9 +678,10 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     higher.c[1] = {0, 0};
     const double remainder = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
-    DiskProof proof{mid, R, {}, {}, {}, {reach[0], reach[1]}, {linear_part[0], linear_part[1]}};
-    for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) proof.C[i][j] = C[i][j], proof.C1[i][j] = C1[i][j];
+    DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]}, {linear_part[0], linear_part[1]}};
+    for (int k = 0; k <= N; ++k)
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) proof.C[k][i][j] = Ck[k][i][j];
     for (int i = 0; i < 2; ++i)
         for (int k = 0; k <= N; ++k) proof.x[i][k] = x[i][k];
     disk_ = proof;
@@ -683,17 +699,26 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     const Frame<Model>& bp = r->bp;
     const Model &s = r->s, &ds = r->ds;
     // The densities of NormalRayBisector::densities on the disk, as models.
-    // |V'| = sqrt(V' . V'), holomorphic where Re V' . V' > 0.
     const Model x = bp.x + s * bp.nx, y = bp.y + s * bp.ny;  // V
     const Model vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
-    const Model v2 = dot(vx, vy, vx, vy);
-    if (!v2.enclose_disk().re.positive()) return std::nullopt;
+    // The length density |V'| = sqrt(V' . V') = sqrt(u A) sqrt(conj(u) B) /
+    // |u| with A = V'x + i V'y, B = V'x - i V'y (conjugates on the reals) and
+    // any u != 0: holomorphic where u A and conj(u) B avoid the principal
+    // square root's cut, its modulus sqrt(|A| |B|). With u = conj(A(mid))
+    // each factor turns half as fast as V' . V' (whose own principal root
+    // failed on most disks near the end of a long edge).
+    const CI i_unit(Interval(0.0), Interval(1.0));
+    const Model A = vx + i_unit * vy, B = vx - i_unit * vy;
+    const CI u(Interval(A.c[0].re), Interval(-A.c[0].im));
+    const auto off_the_cut = [](const CI& z) { return z.re.positive() || z.im.positive() || (-z.im).positive(); };
+    if (!off_the_cut((u * A).enclose_disk()) || !off_the_cut((CI(u.re, -u.im) * B).enclose_disk()))
+        return std::nullopt;
     Model densities[MeasureIntervals::count];
     green_densities(x - Interval(origin_[0]), y - Interval(origin_[1]), vx, vy, densities);
     DiskBounds out;
     out.contraction = r->contraction;
     for (int j = 0; j < MeasureIntervals::count; ++j) out.density[j] = densities[j].bound();
-    out.density[MeasureIntervals::length] = Interval(v2.bound()).sqrt().hi;
+    out.density[MeasureIntervals::length] = (Interval(A.bound()).sqrt() * Interval(B.bound()).sqrt()).hi;
     for (double b : out.density)
         if (!std::isfinite(b)) return std::nullopt;
     // |V - C|^2 as a model, on the real angles mid +- half: there the root,

@@ -105,10 +105,11 @@ public:
     // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
     // = sum x[i][k] d^k), and the preconditioner C + C1 d bounds
     // sum_j |I - (C + C1 d) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
+    static constexpr int kDiskDegree = 2;
     struct DiskProof {
         double mid, R;
-        double C[2][2], C1[2][2];
-        double x[2][3];
+        double C[kDiskDegree + 1][2][2];
+        double x[2][kDiskDegree + 1];
         double reach[2], linear_part[2];
     };
 

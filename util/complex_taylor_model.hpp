@@ -266,27 +266,41 @@ double geometric_tail(double W) {
 }
 
 // sin and cos of u = u0 + w: sin u0 cos w + cos u0 sin w and cos u0 cos w -
-// sin u0 sin w, the series of cos w and sin w to w^N, their tails at most
-// sum over m > N of W^m / m! <= W^(N+1) e^W / (N + 1)! for |w| <= W.
+// sin u0 sin w, the series of cos w and sin w to w^N (sharing the powers of
+// w; when w is d itself, as for an angle's own variable, the powers are
+// monomials and need no products), their tails at most sum over m > N of
+// W^m / m! <= W^(N+1) e^W / (N + 1)! for |w| <= W.
 template <int N>
 void sin_cos(const ComplexTaylorModel<N>& u, ComplexTaylorModel<N>& sin, ComplexTaylorModel<N>& cos) {
+    using Model = ComplexTaylorModel<N>;
     ComplexInterval s, c;
     sin_cos(ComplexInterval(Interval(u.c[0].re), Interval(u.c[0].im)), s, c);
-    const ComplexTaylorModel<N> w = u.variation();
+    const Model w = u.variation();
     const double W = w.bound();
-    Interval sin_coefficient[N + 1], cos_coefficient[N + 1], inverse_factorial(1.0);
-    for (int m = 0; m <= N; ++m) {
-        if (m > 0) inverse_factorial = inverse_factorial / Interval(static_cast<double>(m));
-        const Interval signed_term = (m / 2) % 2 ? -inverse_factorial : inverse_factorial;
-        sin_coefficient[m] = m % 2 ? signed_term : Interval(0.0);
-        cos_coefficient[m] = m % 2 ? Interval(0.0) : signed_term;
-    }
+    bool monomial = w.remainder == 0 && w.c[1].re == 1 && w.c[1].im == 0;
+    for (int k = 2; k <= N; ++k) monomial = monomial && w.c[k].re == 0 && w.c[k].im == 0;
     Interval tail = Interval(W);
     for (int m = 1; m <= N; ++m) tail = tail * Interval(W) / Interval(static_cast<double>(m + 1));
     // e^W rounded up: the library's exp is within an ulp, a few ulps cover it.
     const double tail_bound = Interval::up((tail * Interval(std::exp(W) * (1 + 0x1p-48))).hi);
-    const ComplexTaylorModel<N> cos_w = power_series(w, cos_coefficient, tail_bound),
-                                sin_w = power_series(w, sin_coefficient, tail_bound);
+    Model cos_w(ComplexInterval(Interval(1.0)), w.radius), sin_w = w, power = w;
+    Interval inverse_factorial(1.0);
+    for (int m = 2; m <= N; ++m) {
+        inverse_factorial = inverse_factorial / Interval(static_cast<double>(m));
+        if (monomial) {
+            power.c[m - 1] = {0, 0};
+            power.c[m] = {1, 0};
+        } else {
+            power = power * w;
+        }
+        const Interval term = (m / 2) % 2 ? -inverse_factorial : inverse_factorial;
+        if (m % 2)
+            sin_w = sin_w + term * power;
+        else
+            cos_w = cos_w + term * power;
+    }
+    cos_w.remainder = Interval::up(cos_w.remainder + tail_bound);
+    sin_w.remainder = Interval::up(sin_w.remainder + tail_bound);
     // u's own remainder is in w (u0 is a point).
     sin = s * cos_w + c * sin_w;
     cos = c * cos_w - s * sin_w;
