@@ -717,8 +717,19 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     green_densities(x - Interval(origin_[0]), y - Interval(origin_[1]), vx, vy, densities);
     DiskBounds out;
     out.contraction = r->contraction;
-    for (int j = 0; j < MeasureIntervals::count; ++j) out.density[j] = densities[j].bound();
-    out.density[MeasureIntervals::length] = (Interval(A.bound()).sqrt() * Interval(B.bound()).sqrt()).hi;
+    // The length's model: u A(mid) = |A(mid)|^2 > 0, so each root is the
+    // principal one's series (its remainder infinite where that fails: then
+    // only the modulus bound serves).
+    const Interval modulus_u = (u.re.square() + u.im.square()).sqrt();
+    densities[MeasureIntervals::length] =
+        (Interval(1.0) / modulus_u) * (principal_root(u * A) * principal_root(CI(u.re, -u.im) * B));
+    for (int j = 0; j < MeasureIntervals::count; ++j) {
+        out.density[j] = densities[j].bound();
+        out.beyond_polynomial[j] = densities[j].remainder;
+        for (int k = 0; k <= kDiskDegree; ++k) out.polynomial[j][k] = {densities[j].c[k].re, densities[j].c[k].im};
+    }
+    out.density[MeasureIntervals::length] = std::min(
+        out.density[MeasureIntervals::length], (Interval(A.bound()).sqrt() * Interval(B.bound()).sqrt()).hi);
     for (double b : out.density)
         if (!std::isfinite(b)) return std::nullopt;
     // |V - C|^2 as a model, on the real angles mid +- half: there the root,

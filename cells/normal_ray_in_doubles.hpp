@@ -71,11 +71,17 @@ public:
     // |V - p's center| and |V - q's center| at the real angles mid +- half,
     // half <= R (how far the edge gets from either site's center). Nothing
     // when the certificate fails.
+    // `beyond_polynomial`: for each density f, a polynomial p of degree
+    // kDiskDegree in theta - mid (`polynomial`, complex coefficients from
+    // the lowest) with |f - p| <= beyond_polynomial on the disk (infinite
+    // where none was found); a Gauss rule exact for p errs on f as on f - p.
     // `contraction`: how near the Krawczyk test came to failing, the
     // largest ratio of the image's bound to the box's (between 1/2 and 1):
     // a step size's guide, not a bound.
+    static constexpr int kDiskDegree = 2;
     struct DiskBounds {
-        std::array<double, MeasureIntervals::count> density;
+        std::array<double, MeasureIntervals::count> density, beyond_polynomial;
+        std::array<std::array<std::array<double, 2>, kDiskDegree + 1>, MeasureIntervals::count> polynomial;
         std::array<double, 2> center_distance;
         double contraction;
     };
@@ -105,7 +111,6 @@ public:
     // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
     // = sum x[i][k] d^k), and the preconditioner C + C1 d bounds
     // sum_j |I - (C + C1 d) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
-    static constexpr int kDiskDegree = 2;
     struct DiskProof {
         double mid, R;
         double C[kDiskDegree + 1][2][2];

@@ -249,12 +249,13 @@ TEST_CASE("close disjoint sites: the signed tie's densities equal the squared ti
     CHECK(certified >= compared * 9 / 10);
 }
 
-TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex disk hold at Arb's points inside", "[cells][quadrature]") {
+TEST_CASE("NormalRayInDoubles: its bounds, polynomials and linear model on a complex disk hold at Arb's points inside", "[cells][quadrature]") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(-1, 1);
     // Small disks, and disks where the models' second-order terms decide.
     const double radii[] = {0.024, 0.05};
     int disks = 0, bounded = 0, large_disks = 0, large_bounded = 0, points = 0, checked_points = 0;
+    int checked_remainders = 0, useful_remainders = 0;
     for (int trial = 0; trial < 80; ++trial) {
         const auto [p, q] = random_pair(rng);
         NormalRayInDoubles fast(p, q);
@@ -347,6 +348,29 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex disk hol
                 acb_get_mag_lower(m.get(), d.m[j].get());
                 INFO("trial " << trial << " measure " << j << " bound " << M[j]);
                 CHECK(mag_get_d(m.get()) <= M[j]);
+                // |f - p| <= beyond_polynomial, p the density's polynomial in
+                // z - mid; the length's model continues |V'| and Arb's value
+                // is the principal root: the same up to sign.
+                if (!std::isfinite(bounds->beyond_polynomial[j])) continue;
+                ComplexBall polynomial, coefficient, difference;
+                for (int k = NormalRayInDoubles::kDiskDegree; k >= 0; --k) {
+                    acb_mul(polynomial.get(), polynomial.get(), dz.get(), 128);
+                    acb_set_d_d(coefficient.get(), bounds->polynomial[j][k][0], bounds->polynomial[j][k][1]);
+                    acb_add(polynomial.get(), polynomial.get(), coefficient.get(), 128);
+                }
+                acb_sub(difference.get(), d.m[j].get(), polynomial.get(), 128);
+                Mag e_minus, e_plus;
+                acb_get_mag_lower(e_minus.get(), difference.get());
+                acb_add(difference.get(), d.m[j].get(), polynomial.get(), 128);
+                acb_get_mag_lower(e_plus.get(), difference.get());
+                const double e_density = j == MeasureIntervals::length
+                                             ? std::min(mag_get_d(e_minus.get()), mag_get_d(e_plus.get()))
+                                             : mag_get_d(e_minus.get());
+                INFO("beyond the polynomial " << e_density << ", bound " << bounds->beyond_polynomial[j]);
+                CHECK(e_density <= bounds->beyond_polynomial[j]);
+                ++checked_remainders;
+                // Of the model's order, mostly far below the modulus's.
+                useful_remainders += bounds->beyond_polynomial[j] <= M[j] / 10;
             }
         }
     }
@@ -356,6 +380,10 @@ TEST_CASE("NormalRayInDoubles: its bounds and linear model on a complex disk hol
     CHECK(large_bounded >= large_disks / 2);
     INFO("points checked: " << checked_points << " of " << points);
     CHECK(checked_points >= points * 9 / 10);
+    // Every density's model has a finite remainder on nearly every disk.
+    INFO("remainders checked: " << checked_remainders << ", a tenth of the modulus's bound or less: " << useful_remainders);
+    CHECK(checked_remainders >= checked_points * MeasureIntervals::count * 9 / 10);
+    CHECK(useful_remainders >= checked_remainders * 3 / 4);
 }
 
 // Two unit circles 10 apart: the edge is the line x = 5, V = (5, 5 tan theta)
