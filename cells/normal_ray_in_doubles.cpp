@@ -172,8 +172,8 @@ bool inverse(const double (&J)[2][2], double (&C)[2][2]) {
 }
 
 Site site_of(const Ellipse& e) {
-    return {enclose(e.a()), enclose(e.b()), enclose(e.cos_rotation()), enclose(e.sin_rotation()),
-            enclose(e.xc()),  enclose(e.yc()), EllipseShape::of(e)};
+    const Ellipse::Enclosure k = e.enclosure();  // enclose() of each parameter, kept by the ellipse
+    return {k.a, k.b, k.cos, k.sin, k.xc, k.yc, EllipseShape::of(e)};
 }
 
 // min(a, b) / max(a, b): the depth of the medial axis in units of n~.

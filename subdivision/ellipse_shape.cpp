@@ -50,15 +50,18 @@ double inner_nearest_angle(double a, double b, double X, double Y) {
 // ---------------------------------------------------------------- EllipseShape
 
 EllipseShape EllipseShape::of(const Ellipse& e) {
+    // The nearest doubles of the parameters, as to_double gives them: up(lo)
+    // of the ellipse's kept enclosures (util/interval.hpp, enclose), + 0.0
+    // making -0 +0 (the rationals' conversions cost Arb divisions).
+    const Ellipse::Enclosure k = e.enclosure();
+    const auto nearest = [](const Interval& x) { return Interval::up(x.lo) + 0.0; };
     EllipseShape s;
-    s.a = e.a().to_double();
-    s.b = e.b().to_double();
-    // The nearest doubles of cos and sin, as to_double gives them: up(lo) of
-    // their enclosures (util/interval.hpp, enclose), + 0.0 making -0 +0.
-    s.c = Interval::up(e.enclosure().cos.lo) + 0.0;
-    s.s = Interval::up(e.enclosure().sin.lo) + 0.0;
-    s.xc = e.xc().to_double();
-    s.yc = e.yc().to_double();
+    s.a = nearest(k.a);
+    s.b = nearest(k.b);
+    s.c = nearest(k.cos);
+    s.s = nearest(k.sin);
+    s.xc = nearest(k.xc);
+    s.yc = nearest(k.yc);
     return s;
 }
 
