@@ -549,10 +549,15 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     constexpr int N = kModelDegree;
     // Newton's root x0 at the real middle (the certificate below covers it:
     // a wrong root fails its checks), the inverse C of J there and the
-    // root's Taylor polynomial x(mid + d) = sum x_k d^k: x_1 = -C F_theta,
-    // then each x_k = -C H_k, H_k the coefficient of d^k of F along the
-    // polynomial so far (models on a disk of radius 0: Taylor coefficients);
-    // all in doubles (any C and polynomial are sound; these keep Y small).
+    // root's Taylor polynomial x(mid + d) = sum x_k d^k: x_1 = -C F_theta;
+    // x_2 by central differences of Newton's roots at mid +- h, h = R / 8
+    // (their rounding moves x_2 by about 64 u |x| / R^2, the residual on the
+    // disk by 64 u |x|, below the certificate's floor; a model evaluation at
+    // radius 0 cost 5% of a cell); each further x_k = -C H_k, H_k the
+    // coefficient of d^k of F along the polynomial so far (models on a disk
+    // of radius 0: Taylor coefficients). All in doubles: any C and
+    // polynomial are sound, these keep Y small.
+    if (!(R >= 0) || !std::isfinite(R)) return std::nullopt;
     double x0[2], start[2], C[2][2];
     if (!newton(mid, last_, x0, C) && !(ray_start(mid, start) && newton(mid, start, x0, C))) return std::nullopt;
     const Frame<double> bp_mid(p_.shape, std::sin(mid), std::cos(mid));
@@ -565,6 +570,15 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         x[i][0] = x0[i];
         x[i][1] = -(C[i][0] * at.F_theta[0] + C[i][1] * at.F_theta[1]);
     }
+    const double h = R / 8;
+    double ahead[2], behind[2], C_unused[2][2];
+    const double start_ahead[2] = {x0[0] + h * x[0][1], x0[1] + h * x[1][1]};
+    const double start_behind[2] = {x0[0] - h * x[0][1], x0[1] - h * x[1][1]};
+    if (h > 0 && newton(mid + h, start_ahead, ahead, C_unused) && newton(mid - h, start_behind, behind, C_unused))
+        for (int i = 0; i < 2; ++i) {
+            const double x2 = (ahead[i] - 2 * x0[i] + behind[i]) / (2 * h * h);
+            x[i][2] = std::isfinite(x2) ? x2 : 0.0;
+        }
     Model sin, cos;
     const auto residual = [&](const Frame<Model>& bp, const Model& s, const Model& phi, Model (&F)[2]) {
         sin_cos(phi, sin, cos);
@@ -572,13 +586,15 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         Differences<Model>(bp, bq, s).residual(bp, bq, s, signed_, F);
     };
     Model H[2];
-    sin_cos(Model::variable(CI(Interval(mid)), 0), sin, cos);
-    const Frame<Model> bp_at_mid(p_, sin, cos);
-    for (int k = 2; k <= N; ++k) {
-        residual(bp_at_mid, polynomial(x[0], 0), polynomial(x[1], 0), H);
-        for (int i = 0; i < 2; ++i) {
-            x[i][k] = -(C[i][0] * H[0].c[k].re + C[i][1] * H[1].c[k].re);
-            if (!std::isfinite(x[i][k])) return std::nullopt;
+    if constexpr (N > 2) {
+        sin_cos(Model::variable(CI(Interval(mid)), 0), sin, cos);
+        const Frame<Model> bp_at_mid(p_, sin, cos);
+        for (int k = 3; k <= N; ++k) {
+            residual(bp_at_mid, polynomial(x[0], 0), polynomial(x[1], 0), H);
+            for (int i = 0; i < 2; ++i) {
+                x[i][k] = -(C[i][0] * H[0].c[k].re + C[i][1] * H[1].c[k].re);
+                if (!std::isfinite(x[i][k])) return std::nullopt;
+            }
         }
     }
 
@@ -588,7 +604,6 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // quantity follows d: a first-order mean-value form, then second-order
     // jets, overestimated H and I - C J(X) ten to thirty times over and kept
     // the boxes small.)
-    if (!(R >= 0) || !std::isfinite(R)) return std::nullopt;
     sin_cos(Model::variable(CI(Interval(mid)), R), sin, cos);
     const Frame<Model> bp_model(p_, sin, cos);
     const Model s_model = polynomial(x[0], R), phi_model = polynomial(x[1], R);
