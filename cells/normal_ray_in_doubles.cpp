@@ -538,8 +538,8 @@ Model polynomial(const std::array<double, kModelDegree + 1>& x, double R) {
 struct NormalRayInDoubles::DiskRoot {
     Frame<Model> bp;                     // p's boundary on the disk
     Model s, ds;                         // s and s' on the disk
-    double s0, slope;                    // s = s0 + slope (theta - mid) + e(theta),
-    double remainder;                    // |e(theta)| <= remainder
+    double s0, slope, curvature;         // s = s0 + slope d + e(theta) = ... + curvature d^2 + e2(theta),
+    double remainder, remainder2;        // |e| <= remainder, |e2| <= remainder2
     double contraction;                  // DiskBounds::contraction
 };
 
@@ -689,9 +689,13 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     s_root.remainder = Interval::up(s_root.remainder + k_bound[0]);
     const Model ds = -(on_box.F_theta[1] / on_box.J[1][0]);
     if (!std::isfinite(ds.remainder)) return std::nullopt;
-    Model higher = s_model.variation();  // x_2 d^2 = s - (x_0 + x_1 d) - K
+    // s - (x_0 + x_1 d) = x_2 d^2 + (higher terms) + K_0, s - (x_0 + x_1 d
+    // + x_2 d^2) = (higher terms) + K_0.
+    Model higher = s_model.variation();
     higher.c[1] = {0, 0};
     const double remainder = Interval::up(higher.bound() + k_bound[0]);
+    higher.c[2] = {0, 0};
+    const double remainder2 = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
     DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]}, {linear_part[0], linear_part[1]}};
     for (int k = 0; k <= N; ++k)
@@ -703,7 +707,8 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // Of K's bound over r, at least 1/2 (r = 2 |C H| + ...): the rest, the
     // contraction's share, grows with the square of R.
     const double contraction = std::max(k_bound[0] / r[0], k_bound[1] / r[1]);
-    return DiskRoot{bp_model, s_root, ds, x0[0], x[0][1], remainder, contraction};
+    static_assert(N >= 2, "DiskRoot's curvature is x_2");
+    return DiskRoot{bp_model, s_root, ds, x0[0], x[0][1], x[0][2], remainder, remainder2, contraction};
 }
 
 std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk(double mid, double R, double half) {
@@ -761,13 +766,15 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     return out;
 }
 
-std::optional<NormalRayInDoubles::LinearModel> NormalRayInDoubles::linear_model(double mid, double R) {
+std::optional<NormalRayInDoubles::RootModel> NormalRayInDoubles::root_model(double mid, double R) {
     const std::optional<DiskRoot> r = disk_root(mid, R);
     if (!r) return std::nullopt;
     // |n~| <= sqrt(|nx|^2 + |ny|^2).
     const double nx = r->bp.nx.bound(), ny = r->bp.ny.bound();
-    LinearModel model{mid, r->s0, r->slope, r->remainder, (Interval(nx).square() + Interval(ny).square()).sqrt().hi};
-    if (!std::isfinite(model.remainder) || !std::isfinite(model.normal)) return std::nullopt;
+    RootModel model{mid,          r->s0,         r->slope, r->curvature, r->remainder, r->remainder2,
+                    (Interval(nx).square() + Interval(ny).square()).sqrt().hi};
+    if (!std::isfinite(model.remainder) || !std::isfinite(model.quadratic_remainder) || !std::isfinite(model.normal))
+        return std::nullopt;
     return model;
 }
 

@@ -86,13 +86,14 @@ public:
         double contraction;
     };
     std::optional<DiskBounds> bounds_on_disk(double mid, double R, double half);
-    // The root's linear model on that disk, from the same certificate: for
-    // every theta there s(theta) = s0 + s1 (theta - mid) + e(theta), e
-    // holomorphic with |e| <= remainder; and |n~| <= normal there.
-    struct LinearModel {
-        double mid, s0, s1, remainder, normal;
+    // The root's models on that disk, from the same certificate: for every
+    // theta there s(theta) = s0 + s1 d + e(theta) = s0 + s1 d + s2 d^2 +
+    // e2(theta) (d = theta - mid), e and e2 holomorphic with |e| <= remainder
+    // and |e2| <= quadratic_remainder; and |n~| <= normal there.
+    struct RootModel {
+        double mid, s0, s1, s2, remainder, quadratic_remainder, normal;
     };
-    std::optional<LinearModel> linear_model(double mid, double R);
+    std::optional<RootModel> root_model(double mid, double R);
 
     struct Site {
         Interval a, b, c, s, xc, yc;  // semi-axes, cosine and sine of the rotation, center

@@ -69,17 +69,21 @@ double magnitude_up(const acb_t z) {
 // Points a second-order piece may ask for before it is halved instead.
 constexpr double kMaxPointsAPiece = 4096;
 
-// Bounds on a piece J = [l, h] from the root's linear model on a region Z
-// about J (in doubles the disk of radius half + margin about J's middle;
-// Arb's, the box of real radius half + margin, imaginary radius margin): with
-// s_lin = s0 + s1 (theta - mid) and W = P + s_lin n~ = C + R (c (a + b s_lin),
-// sn (b + a s_lin)) (c, sn the cosine and sine of theta, R the rotation),
+// Bounds on a piece J = [l, h] from the root's model on a region Z about J
+// (in doubles the disk of radius half + margin about J's middle, its
+// quadratic model; Arb's, the box of real radius half + margin, imaginary
+// radius margin, its linear one): with s_m = s0 + s1 d + s2 d^2 (d = theta -
+// mid; s2 = 0 for Arb's) and W = P + s_m n~ = C + R (c A, sn B), A = a + b
+// s_m, B = b + a s_m (c, sn the cosine and sine of theta, R the rotation),
 // V = W + e n~ where |e n~| <= M = remainder sup_Z |n~| on Z, so on J
 // (Cauchy, margin the distance from J to Z's boundary)
 //     |V'| <= |W'| + M / margin,   |V''| <= |W''| + 2 M / margin^2,
-// W' and W'' in closed form over J (s_lin'' = 0):
-//     u' = -sn (a + b s_lin) + c b s1,     v' = c (b + a s_lin) + sn a s1,
-//     u'' = -c (a + b s_lin) - 2 sn b s1,  v'' = -sn (b + a s_lin) + 2 c a s1.
+// W' and W'' in closed form over J (s_m' = s1 + 2 s2 d, s_m'' = 2 s2):
+//     u' = -sn A + c b s_m',               v' = c B + sn a s_m',
+//     u'' = -c A - 2 sn b s_m' + c b s_m'', v'' = -sn B + 2 c a s_m' + sn a s_m''.
+// (The quadratic model's remainder is of the third order in the disk's
+// radius where the linear one's is of the second: its Cauchy term no longer
+// sets the rings' point spacing on nearly straight edges.)
 struct PieceBounds {
     double speed, curvature;  // the bounds of |V'| and |V''| on J
     Ball x, y;                // V(J)
@@ -91,16 +95,17 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
     const double half = 0.5 * (h - l), m = 0.5 * (l + h);
     // The model: in double intervals, else by Arb when the caller allows it
     // (a rule of cost: a piece is never accepted without a certificate).
-    Ball mid, s0, s1;
+    Ball mid, s0, s1, s2;
     double remainder, M;  // |e| and |e n~| on Z
-    const std::optional<NormalRayInDoubles::LinearModel> fast = doubles.linear_model(m, half + margin);
+    const std::optional<NormalRayInDoubles::RootModel> fast = doubles.root_model(m, half + margin);
     if (!fast && !arb_may_try) return std::nullopt;
     if (fast) {
         doubles_held = true;
         arb_set_d(mid.get(), fast->mid);
         arb_set_d(s0.get(), fast->s0);
         arb_set_d(s1.get(), fast->s1);
-        remainder = fast->remainder;
+        arb_set_d(s2.get(), fast->s2);
+        remainder = fast->quadratic_remainder;
         M = remainder * fast->normal * (1 + 1e-15);
     } else {
         ComplexBall z;
@@ -124,31 +129,33 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
 
     // Over J, in real balls.
     const Ball J = ball_of(Interval(l, h), prec);
-    Ball cj, sj, s_lin, u1, v1, u2, v2, A, B;
+    Ball cj, sj, d, s_m, ds, dds, A, B, t;
     arb_sin_cos(sj.get(), cj.get(), J.get(), prec);
-    arb_sub(s_lin.get(), J.get(), mid.get(), prec);
-    arb_mul(s_lin.get(), s_lin.get(), s1.get(), prec);
-    arb_add(s_lin.get(), s_lin.get(), s0.get(), prec);
-    arb_mul(A.get(), p.b.get(), s_lin.get(), prec);  // A = a + b s_lin
+    arb_sub(d.get(), J.get(), mid.get(), prec);
+    arb_mul(s_m.get(), s2.get(), d.get(), prec);  // s_m = (s2 d + s1) d + s0
+    arb_add(s_m.get(), s_m.get(), s1.get(), prec);
+    arb_mul(s_m.get(), s_m.get(), d.get(), prec);
+    arb_add(s_m.get(), s_m.get(), s0.get(), prec);
+    arb_mul_2exp_si(dds.get(), s2.get(), 1);  // s_m'' = 2 s2
+    arb_mul(ds.get(), dds.get(), d.get(), prec);  // s_m' = s1 + 2 s2 d
+    arb_add(ds.get(), ds.get(), s1.get(), prec);
+    arb_mul(A.get(), p.b.get(), s_m.get(), prec);  // A = a + b s_m
     arb_add(A.get(), A.get(), p.a.get(), prec);
-    arb_mul(B.get(), p.a.get(), s_lin.get(), prec);  // B = b + a s_lin
+    arb_mul(B.get(), p.a.get(), s_m.get(), prec);  // B = b + a s_m
     arb_add(B.get(), B.get(), p.b.get(), prec);
-    const auto combine = [prec](Ball& out, const Ball& f, const Ball& g, const Ball& k, const Ball& e, const Ball& s1,
-                                int scale) {  // out = f g + scale k e s1
+    // out = sum of coefficient * f * g * (k or 1).
+    const auto term = [prec](Ball& out, long coefficient, const Ball& f, const Ball& g, const Ball* k = nullptr) {
         Ball t;
-        arb_mul(out.get(), f.get(), g.get(), prec);
-        arb_mul(t.get(), k.get(), e.get(), prec);
-        arb_mul(t.get(), t.get(), s1.get(), prec);
-        arb_mul_si(t.get(), t.get(), scale, prec);
+        arb_mul(t.get(), f.get(), g.get(), prec);
+        if (k) arb_mul(t.get(), t.get(), k->get(), prec);
+        arb_mul_si(t.get(), t.get(), coefficient, prec);
         arb_add(out.get(), out.get(), t.get(), prec);
     };
-    Ball minus_s, minus_c;
-    arb_neg(minus_s.get(), sj.get());
-    arb_neg(minus_c.get(), cj.get());
-    combine(u1, minus_s, A, cj, p.b, s1, 1);
-    combine(v1, cj, B, sj, p.a, s1, 1);
-    combine(u2, minus_c, A, sj, p.b, s1, -2);
-    combine(v2, minus_s, B, cj, p.a, s1, 2);
+    Ball u1, v1, u2, v2;
+    term(u1, -1, sj, A), term(u1, 1, cj, p.b, &ds);
+    term(v1, 1, cj, B), term(v1, 1, sj, p.a, &ds);
+    term(u2, -1, cj, A), term(u2, -2, sj, p.b, &ds), term(u2, 1, cj, p.b, &dds);
+    term(v2, -1, sj, B), term(v2, 2, cj, p.a, &ds), term(v2, 1, sj, p.a, &dds);
     const auto up = [](const Ball& b) {
         Mag m;
         arb_get_mag(m.get(), b.get());
@@ -157,9 +164,9 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
     PieceBounds out;
     out.speed = hypot_up(up(u1), up(v1)) + M / margin * (1 + 1e-12);
     out.curvature = hypot_up(up(u2), up(v2)) + 2 * M / (margin * margin) * (1 + 1e-12);
-    // V(J) within W(J) and M: s(J) within s_lin(J) +- remainder.
+    // V(J) within W(J) and M: s(J) within s_m(J) +- remainder.
     ComplexBall sJ, vx, vy;
-    arb_set(sJ.real(), s_lin.get());
+    arb_set(sJ.real(), s_m.get());
     Mag e;
     mag_set_d(e.get(), remainder);
     arb_add_error_mag(sJ.real(), e.get());

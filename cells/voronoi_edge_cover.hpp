@@ -7,11 +7,12 @@
 // end of the second's, is split into consecutive pieces J, bisecting until
 // one of two certificates holds on J (never a guess: a piece that fails both
 // is bisected, down to 2^-40 of the range, then an Error):
-//  - second order: the root's linear model (NormalRayBisector::LinearModel)
-//    on the box of real radius |J| and imaginary radius |J|/2 about J's
-//    middle bounds |V'| and |V''| on J (voronoi_edge_cover.cpp: closed forms
-//    for the model's part, Cauchy's estimates for its remainder, holomorphic
-//    on the box); J is cut into k equal steps with step^2/8 |V''| <= 9/10 of
+//  - second order: the root's model on a region about J (the quadratic
+//    NormalRayInDoubles::RootModel on the disk of radius |J| about J's
+//    middle, else the linear NormalRayBisector::LinearModel on the box of
+//    real radius |J| and imaginary radius |J|/2) bounds |V'| and |V''| on J
+//    (voronoi_edge_cover.cpp: closed forms for the model's part, Cauchy's
+//    estimates for its remainder, holomorphic there); J is cut into k equal steps with step^2/8 |V''| <= 9/10 of
 //    the radius less the overshoot |V'| w (at the range's ends V runs past
 //    the true vertex by at most that, w the vertex ball's width), and V at
 //    the k + 1 angles, certified in double intervals (NormalRayInDoubles, else

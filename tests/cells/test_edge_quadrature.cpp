@@ -249,13 +249,13 @@ TEST_CASE("close disjoint sites: the signed tie's densities equal the squared ti
     CHECK(certified >= compared * 9 / 10);
 }
 
-TEST_CASE("NormalRayInDoubles: its bounds, polynomials and linear model on a complex disk hold at Arb's points inside", "[cells][quadrature]") {
+TEST_CASE("NormalRayInDoubles: its bounds, polynomials and root models on a complex disk hold at Arb's points inside", "[cells][quadrature]") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(-1, 1);
     // Small disks, and disks where the models' second-order terms decide.
     const double radii[] = {0.024, 0.05};
     int disks = 0, bounded = 0, large_disks = 0, large_bounded = 0, points = 0, checked_points = 0;
-    int checked_remainders = 0, useful_remainders = 0;
+    int checked_remainders = 0, useful_remainders = 0, quadratic_tighter = 0;
     for (int trial = 0; trial < 80; ++trial) {
         const auto [p, q] = random_pair(rng);
         NormalRayInDoubles fast(p, q);
@@ -264,7 +264,7 @@ TEST_CASE("NormalRayInDoubles: its bounds, polynomials and linear model on a com
         const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = radii[large];
         ++(large ? large_disks : disks);
         const std::optional<NormalRayInDoubles::DiskBounds> bounds = fast.bounds_on_disk(mid, R, R);
-        const std::optional<NormalRayInDoubles::LinearModel> model = fast.linear_model(mid, R);
+        const std::optional<NormalRayInDoubles::RootModel> model = fast.root_model(mid, R);
         // One certificate: the bounds need it and more (|V'|'s factors off the
         // square root's cut on the disk).
         CHECK((!bounds || model));
@@ -343,6 +343,16 @@ TEST_CASE("NormalRayInDoubles: its bounds, polynomials and linear model on a com
             Mag e;
             acb_get_mag_lower(e.get(), error.get());
             CHECK(mag_get_d(e.get()) <= model->remainder);
+            // The quadratic model: |s(z) - s0 - s1 (z - mid) - s2 (z - mid)^2| <= quadratic_remainder.
+            ComplexBall d2;
+            Ball s2;
+            arb_set_d(s2.get(), model->s2);
+            acb_sqr(d2.get(), dz.get(), 128);
+            acb_mul_arb(d2.get(), d2.get(), s2.get(), 128);
+            acb_sub(error.get(), error.get(), d2.get(), 128);
+            acb_get_mag_lower(e.get(), error.get());
+            CHECK(mag_get_d(e.get()) <= model->quadratic_remainder);
+            quadratic_tighter += model->quadratic_remainder < model->remainder;
             for (int j = 0; j < MeasureIntervals::count; ++j) {
                 Mag m;
                 acb_get_mag_lower(m.get(), d.m[j].get());
@@ -384,6 +394,9 @@ TEST_CASE("NormalRayInDoubles: its bounds, polynomials and linear model on a com
     INFO("remainders checked: " << checked_remainders << ", a tenth of the modulus's bound or less: " << useful_remainders);
     CHECK(checked_remainders >= checked_points * MeasureIntervals::count * 9 / 10);
     CHECK(useful_remainders >= checked_remainders * 3 / 4);
+    // The quadratic model's remainder below the linear one's nearly always.
+    INFO("quadratic remainder the tighter at " << quadratic_tighter << " of " << checked_points);
+    CHECK(quadratic_tighter >= checked_points * 9 / 10);
 }
 
 // Two unit circles 10 apart: the edge is the line x = 5, V = (5, 5 tan theta)
