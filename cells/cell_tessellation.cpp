@@ -173,11 +173,15 @@ public:
 
 private:
     // The cell's vertex angles (CellVertexAngles::lifted) at vertex_precision_,
-    // or at the covers' when two are less than a thousand times their radii
-    // apart (a very short edge: its end pieces must hold the vertex balls).
+    // or at the covers' when the ends of an edge to be covered are less than
+    // a thousand times their radii apart (a very short edge: its end pieces
+    // must hold the vertex balls). (A wall's sides are not covered: the
+    // zero-length side between two mirrors' vertices had sent a third of a
+    // box's cells to Arb, a tenth of a JSON run.)
     std::vector<Ball> lifted_angles(const VoronoiCell& cell) {
         std::vector<Ball> lifted = angles_.lifted(cell, vertex_precision_);
         for (std::size_t k = 0; k + 1 < lifted.size(); ++k) {
+            if (sites_.wall[cell.edges[k].neighbor] != Wall::none) continue;
             const double gap = lifted[k + 1].mid_double() - lifted[k].mid_double();
             if (!(gap > 1024 * (lifted[k].radius_double() + lifted[k + 1].radius_double())))
                 return angles_.lifted(cell, cover_.prec + 24);
