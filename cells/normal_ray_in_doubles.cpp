@@ -208,10 +208,10 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
     if (!std::isfinite(start[0])) return false;
     x[0] = start[0], x[1] = start[1];
     const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
-    // Until a step is below 1e-10 (relative: quadratic convergence leaves
-    // the point after it at rounding level; a step more cost 2% of a cell),
-    // or stops shrinking quadratically (rounding noise).
-    double previous = INFINITY;
+    // Until a step is below 1e-8 (relative: quadratic convergence leaves
+    // the point after it within about 1e-16 of the root times the system's
+    // curvature; 1e-10 and 1e-15 each cost a step more, 1% and 2% of a cell,
+    // for the same widths).
     for (int step = 0; step < 8; ++step) {
         const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), q_parts<double>(signed_)),
                                 x[0], signed_);
@@ -221,8 +221,7 @@ bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (
         x[0] -= d0, x[1] -= d1;
         if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return false;
         const double size = std::max(std::fabs(d0) / (1 + std::fabs(x[0])), std::fabs(d1) / (1 + std::fabs(x[1])));
-        if (size <= 1e-10 || (size > 0.25 * previous && size < 1e-8)) return x[0] > (signed_ ? -medial_p_.hi : 0.0);
-        previous = size;
+        if (size <= 1e-8) return x[0] > (signed_ ? -medial_p_.hi : 0.0);
     }
     return false;
 }
