@@ -15,8 +15,9 @@
 // rule integrates polynomials of degree 2n - 1 exactly, M may bound f - p
 // instead, p the model's polynomial (degree 2, so n >= 2): its remainder,
 // about a tenth of |f|'s bound (1.5 nodes fewer a piece). The nodes
-// are certified in double intervals too. A piece whose disk or nodes cannot be
-// certified is halved; nothing is claimed when that goes too deep, and the
+// are certified in double intervals too. An edge's first piece is as wide as
+// the edge or as its pole angles allow (NormalRayInDoubles::pole_angles); a
+// piece whose disk or nodes cannot be certified is halved; nothing is claimed when that goes too deep, and the
 // caller integrates the edge with Arb's integrator instead.
 #pragma once
 

@@ -240,6 +240,15 @@ void NormalRayInDoubles::start_near(double theta, double x, double y) {
     last_[1] = q_.shape.nearest_angle(x, y);
 }
 
+std::array<double, 2> NormalRayInDoubles::pole_angles() const {
+    const EllipseShape &ps = p_.shape, &qs = q_.shape;
+    const double dx = qs.xc - ps.xc, dy = qs.yc - ps.yc;
+    const double lx = ps.c * dx + ps.s * dy, ly = -ps.s * dx + ps.c * dy;  // in p's frame
+    // n~ . (lx, ly) = b cos lx + a sin ly = 0.
+    const double t = std::atan2(-ps.b * lx, ps.a * ly);
+    return {t, t > 0 ? t - M_PI : t + M_PI};
+}
+
 std::optional<double> NormalRayInDoubles::area_density_estimate(double theta) {
     double x[2], start[2], C[2][2];
     if (!newton(theta, last_, x, C) && !(ray_start(theta, start) && newton(theta, start, x, C))) return std::nullopt;

@@ -61,6 +61,10 @@ public:
     // certificates); without one, or when Newton fails from it, the start is
     // found along the normal ray (about twenty times the cost of Newton).
     void start_near(double theta, double x, double y);
+    // The angles theta (two, pi apart, in [-pi, pi]) where p's normal is
+    // perpendicular to the line of the centers: for sites far apart the
+    // normal ray runs along the bisector there, s has a pole near it.
+    std::array<double, 2> pole_angles() const;
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
     std::optional<double> area_density_estimate(double theta);

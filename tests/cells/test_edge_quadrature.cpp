@@ -406,6 +406,26 @@ TEST_CASE("NormalRayInDoubles: its bounds, polynomials and root models on a comp
 // sqrt(V'x + i V'y) sqrt(V'x - i V'y): its own principal root failed beyond R
 // = 0.059 there, the factors' hold at 0.08; the length's bound holds at every
 // point of the disk.
+TEST_CASE("NormalRayInDoubles: its pole angles are where p's normal is perpendicular to the centers' line", "[cells][quadrature]") {
+    std::mt19937_64 rng(5);
+    for (int trial = 0; trial < 50; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        const std::array<double, 2> poles = NormalRayInDoubles(p, q).pole_angles();
+        const double a = p.a().to_double(), b = p.b().to_double();
+        const double c = p.cos_rotation().to_double(), s = p.sin_rotation().to_double();
+        const double dx = q.xc().to_double() - p.xc().to_double(), dy = q.yc().to_double() - p.yc().to_double();
+        for (double theta : poles) {
+            // n~ in the plane: (b cos, a sin) of p's frame, rotated.
+            const double lx = b * std::cos(theta), ly = a * std::sin(theta);
+            const double nx = c * lx - s * ly, ny = s * lx + c * ly;
+            INFO("trial " << trial << " theta " << theta);
+            CHECK(std::fabs(nx * dx + ny * dy) <= 1e-12 * std::hypot(nx, ny) * std::hypot(dx, dy));
+            CHECK(std::fabs(theta) <= M_PI);
+        }
+        CHECK(std::fabs(std::fabs(poles[0] - poles[1]) - M_PI) <= 1e-12);
+    }
+}
+
 TEST_CASE("NormalRayInDoubles: the length's bound on a disk near the edge's pole, from |V'|'s factors", "[cells][quadrature]") {
     const Ellipse p(Rational(1), Rational(1), Rational(0), Rational(0), Rational(0));
     const Ellipse q(Rational(1), Rational(1), Rational(0), Rational(10), Rational(0));
