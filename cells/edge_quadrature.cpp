@@ -41,19 +41,6 @@ constexpr double kDiskOverWidth = (kRho + 1 / kRho) / 4;
 // failed 2.5 times an edge. 0.15, 0.2, 0.3 measured (callgrind).
 constexpr double kPoleShare = 0.15;
 
-// The widest piece from `start` within kPoleShare of its poles: a pole a
-// ahead needs kDiskOverWidth w <= share (a - start - w/2), one behind
-// kDiskOverWidth w <= share (start - a + w/2).
-double pole_limited_width(const std::array<double, 2>& poles, double start) {
-    double width = INFINITY;
-    for (double pole : poles)
-        for (int turn = -2; turn <= 2; ++turn) {
-            const double a = pole + 2 * M_PI * turn;
-            width = std::min(width, a >= start ? kPoleShare * (a - start) / (kDiskOverWidth + kPoleShare / 2)
-                                               : kPoleShare * (start - a) / (kDiskOverWidth - kPoleShare / 2));
-        }
-    return width;
-}
 
 // The bounds of NormalRayInDoubles::bounds_on_disk over a disk holding the
 // Bernstein ellipse of [a, b] (the center distances over [a, b]): about the
@@ -105,7 +92,7 @@ bool integrate_pieces(NormalRayInDoubles& bisector, const Interval& a, const Int
     // at least a 64th of it: an edge may pass an angle that is no pole,
     // between close sites); capping every piece so made some edges crawl
     // (150 random cells: 29 times the instructions).
-    const double first_width = std::max(pole_limited_width(bisector.pole_angles(), first), length / 64);
+    const double first_width = std::max(bisector.pole_limited_width(first, kDiskOverWidth, kPoleShare), length / 64);
     double start = first, width = std::min(length, first_width);
     int done = 0;
     while (start < last) {

@@ -249,6 +249,19 @@ std::array<double, 2> NormalRayInDoubles::pole_angles() const {
     return {t, t > 0 ? t - M_PI : t + M_PI};
 }
 
+double NormalRayInDoubles::pole_limited_width(double start, double disk_over_width, double share) const {
+    // A pole a ahead needs disk_over_width w <= share (a - start - w/2), one
+    // behind disk_over_width w <= share (start - a + w/2).
+    double width = INFINITY;
+    for (double pole : pole_angles())
+        for (int turn = -2; turn <= 2; ++turn) {
+            const double a = pole + 2 * M_PI * turn;
+            width = std::min(width, a >= start ? share * (a - start) / (disk_over_width + share / 2)
+                                               : share * (start - a) / (disk_over_width - share / 2));
+        }
+    return width;
+}
+
 std::optional<double> NormalRayInDoubles::area_density_estimate(double theta) {
     double x[2], start[2], C[2][2];
     if (!newton(theta, last_, x, C) && !(ray_start(theta, start) && newton(theta, start, x, C))) return std::nullopt;

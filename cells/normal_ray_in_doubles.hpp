@@ -65,6 +65,11 @@ public:
     // perpendicular to the line of the centers: for sites far apart the
     // normal ray runs along the bisector there, s has a pole near it.
     std::array<double, 2> pole_angles() const;
+    // The widest piece [start, start + w] whose disk about its middle, of
+    // radius disk_over_width w, stays within `share` of the middle's distance
+    // to every pole angle (a step size's guide: the disk certificate holds to
+    // about a fifth of the distance to a pole, two circles 10 apart).
+    double pole_limited_width(double start, double disk_over_width, double share) const;
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
     std::optional<double> area_density_estimate(double theta);
