@@ -437,9 +437,6 @@ private:
         return true;
     }
 
-    // The cell's area by 8 Gauss nodes an edge in floating point (Green's
-    // formula about the site's center), or 0 when a node fails: a scale, not
-    // a bound.
     // The area of the polygon of the cell's vertices, in doubles about the
     // site's center, not certified: the first pass's scale. (Within a few
     // percent of the cell's where its edges are nearly straight, as between
@@ -463,6 +460,9 @@ private:
         return std::isfinite(twice) ? 0.5 * twice : 0;
     }
 
+    // The cell's area by 8 Gauss nodes an edge in floating point (Green's
+    // formula about the site's center), or 0 when a node fails: a scale, not
+    // a bound.
     double estimated_area(const VoronoiCell& cell, const std::vector<Ball>& lifted) {
         const Ellipse& site = sites_[cell.site];
         const GaussLegendreRule& rule = rules_.rule(8);

@@ -41,7 +41,6 @@ constexpr double kDiskOverWidth = (kRho + 1 / kRho) / 4;
 // failed 2.5 times an edge. 0.15, 0.2, 0.3 measured (callgrind).
 constexpr double kPoleShare = 0.15;
 
-
 // The bounds of NormalRayInDoubles::bounds_on_disk over a disk holding the
 // Bernstein ellipse of [a, b] (the center distances over [a, b]): about the
 // middle, of radius its semi-major axis h (rho + 1/rho) / 2, rounded up, plus

@@ -433,7 +433,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
 
 // The node from the last disk certificate, whose theta lies on the disk's
 // real diameter: there the system has one root x* in X(theta) = x_model(theta)
-// + D(0, reach), the bisector point; with C(theta) = C + C1 d and A the
+// + D(0, reach), the bisector point; with C(theta) = sum C_k d^k and A the
 // mean-value Jacobian between x0 and x* (both in X(theta), and so the segment
 // between), x0 - x* = C(theta) F(x0) + (I - C(theta) A)(x0 - x*), whose rows
 // the disk bounds: sum_j |I - C(theta) A|_ij reach_j <= linear_part_i <

@@ -18,8 +18,9 @@
 // polynomial x_model(theta) = x0 + x1 d + x2 d^2 (d = theta - mid, the
 // coefficients from Newton in doubles), every quantity a complex Taylor model
 // in d on the disk (util/complex_taylor_model.hpp), with its own
-// preconditioner C(theta) = C + C1 d at each theta (C1 = -C J' C, which
-// cancels the first order of I - C(theta) J). Interval evaluations over the
+// preconditioner C(theta) = sum C_k d^k at each theta (the Taylor polynomial
+// of J^-1 along x_model, which cancels I - C(theta) J to that degree; x2 by
+// central differences of Newton's roots). Interval evaluations over the
 // box (a first-order mean-value form, then second-order jets) enclosed H =
 // F(x_model(theta), theta) and I - C J(X) ten to thirty times over their true
 // ranges; with the models the certified pieces are two to three times wider.
@@ -119,8 +120,8 @@ public:
     // What the last disk certificate proved, for the nodes on its real
     // diameter (the .cpp's certify_node_in_disk): with d = theta - mid, the
     // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
-    // = sum x[i][k] d^k), and the preconditioner C + C1 d bounds
-    // sum_j |I - (C + C1 d) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
+    // = sum x[i][k] d^k), and the preconditioner C(theta) = sum C[k] d^k
+    // bounds sum_j |I - C(theta) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
     struct DiskProof {
         double mid, R;
         double C[kDiskDegree + 1][2][2];
