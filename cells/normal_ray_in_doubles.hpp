@@ -74,6 +74,10 @@ public:
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
     std::optional<double> area_density_estimate(double theta);
+    // The degree of the disk certificate's Taylor models, of the root's
+    // polynomial and of the preconditioner (3 to 6 certified wider pieces but
+    // cost more than they saved: experiments/results/cells_timing.md).
+    static constexpr int kDiskDegree = 2;
     // Upper bounds over the complex disk |theta - mid| <= R, where the same
     // certificate, on Taylor models about the root's polynomial in theta,
     // proves the densities holomorphic: of the densities' moduli
@@ -88,7 +92,6 @@ public:
     // `contraction`: how near the Krawczyk test came to failing, the
     // largest ratio of the image's bound to the box's (between 1/2 and 1):
     // a step size's guide, not a bound.
-    static constexpr int kDiskDegree = 2;
     struct DiskBounds {
         std::array<double, MeasureIntervals::count> density, beyond_polynomial;
         std::array<std::array<std::array<double, 2>, kDiskDegree + 1>, MeasureIntervals::count> polynomial;
