@@ -23,7 +23,7 @@ struct GaussLegendreBallRule {
 class GaussLegendreRules {
 public:
     // Enough for a tolerance of 10^-30 on pieces whose Bernstein ellipse is
-    // certified (cells/edge_quadrature.cpp: rho = 9/4, error ~ 5^-n).
+    // certified (cells/edge_quadrature.cpp: rho = 5/2, error ~ 6^-n).
     static constexpr int kMaxPoints = 64;
     // The n-point rule, 1 <= n <= kMaxPoints.
     const GaussLegendreRule& rule(int n);
