@@ -129,7 +129,7 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
 
     // Over J, in real balls.
     const Ball J = ball_of(Interval(l, h), prec);
-    Ball cj, sj, d, s_m, ds, dds, A, B, t;
+    Ball cj, sj, d, s_m, ds, dds, A, B;
     arb_sin_cos(sj.get(), cj.get(), J.get(), prec);
     arb_sub(d.get(), J.get(), mid.get(), prec);
     arb_mul(s_m.get(), s2.get(), d.get(), prec);  // s_m = (s2 d + s1) d + s0
@@ -143,7 +143,7 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
     arb_add(A.get(), A.get(), p.a.get(), prec);
     arb_mul(B.get(), p.a.get(), s_m.get(), prec);  // B = b + a s_m
     arb_add(B.get(), B.get(), p.b.get(), prec);
-    // out = sum of coefficient * f * g * (k or 1).
+    // out += coefficient f g (k).
     const auto term = [prec](Ball& out, long coefficient, const Ball& f, const Ball& g, const Ball* k = nullptr) {
         Ball t;
         arb_mul(t.get(), f.get(), g.get(), prec);
