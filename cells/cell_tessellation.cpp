@@ -328,34 +328,39 @@ private:
     EdgeCoverOptions cover_;
 };
 
-void fill_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellOptions& options,
-                const std::vector<char>& wanted, CellTessellation& out) {
+// A cell's measures into its description, from cell_areas' CellArea or
+// from the cell's description in an earlier try (the same names); its reach
+// the lesser of the two.
+template <class Measures>
+void take_measures(const Measures& a, Cell& c) {
+    c.area = a.area;
+    c.site_area = a.site_area;
+    c.precision = a.precision;
+    c.edges_in_doubles = a.edges_in_doubles;
+    c.edges_by_nodes_in_arb = a.edges_by_nodes_in_arb;
+    c.edges_by_arb = a.edges_by_arb;
+    c.edges_from_neighbors = a.edges_from_neighbors;
+    c.quadrature = a.quadrature;
+    c.perimeter = a.perimeter;
+    c.centroid = a.centroid;
+    c.second_moments = a.second_moments;
+    c.reach = std::min(c.reach, a.reach);
+}
+
+// The areas of the originals in `which` (the mirrors' and copies' are not
+// wanted), by site.
+std::vector<CellArea> measured_areas(const PlaneSites& sites, const DelaunayGraph& graph, const CellOptions& options,
+                                     const std::vector<char>& which) {
     CellAreaOptions o;
     o.tolerance = options.tolerance;
     o.arb_integrator_only = options.arb_integrator_only;
-    // Only the wanted originals' cells: the mirrors' and copies' are not wanted.
     for (SiteId s = 0; s < sites.originals; ++s)
-        if (wanted[s]) o.only.push_back(s);
+        if (which[s]) o.only.push_back(s);
     o.progress = options.progress;
     o.threads = options.threads;
     o.chunk = options.chunk;
     o.input_ids = sites.original;
-    const std::vector<CellArea> areas = cell_areas(graph, sites.sites, o);
-    for (SiteId s : o.only) {
-        Cell& c = out.cells[s];
-        c.area = areas[s].area;
-        c.site_area = areas[s].site_area;
-        c.precision = areas[s].precision;
-        c.edges_in_doubles = areas[s].edges_in_doubles;
-        c.edges_by_nodes_in_arb = areas[s].edges_by_nodes_in_arb;
-        c.edges_by_arb = areas[s].edges_by_arb;
-        c.edges_from_neighbors = areas[s].edges_from_neighbors;
-        c.quadrature = areas[s].quadrature;
-        c.perimeter = areas[s].perimeter;
-        c.centroid = areas[s].centroid;
-        c.second_moments = areas[s].second_moments;
-        c.reach = std::min(c.reach, areas[s].reach);
-    }
+    return cell_areas(graph, sites.sites, o);
 }
 
 // The cells of sites whose centers are near the origin (cell_tessellation moves them there).
@@ -411,13 +416,27 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
         }
         if (options.rings) cells->rings(originals, options.threads, options.chunk, out);
     };
+    // A visible cell proven in a try (its cell among the sites and the
+    // mirrors or copies then is the box's or the torus's: docs/DESIGN.md §10)
+    // is final: more mirrors or copies leave it as it is, so a later try
+    // keeps its measures (and reach) and measures only the others.
+    std::vector<std::optional<Cell>> final_cells(sites.size());
     // The areas, and each bounded cell's reach: the areas' (or the rings',
     // the less), else by covering the cell's edges.
     auto measure_all = [&]() {
-        fill_areas(*plane, cells->graph(), options, wanted, out);
-        for (SiteId s = 0; s < sites.size(); ++s)
-            if (wanted[s] && out.cells[s].bounded && std::isinf(out.cells[s].reach))
-                out.cells[s].reach = cells->reach(s);
+        std::vector<char> which(sites.size());
+        for (SiteId s = 0; s < sites.size(); ++s) which[s] = wanted[s] && !final_cells[s];
+        const std::vector<CellArea> areas = measured_areas(*plane, cells->graph(), options, which);
+        for (SiteId s = 0; s < sites.size(); ++s) {
+            if (!wanted[s]) continue;
+            if (final_cells[s]) {
+                take_measures(*final_cells[s], out.cells[s]);
+                continue;
+            }
+            take_measures(areas[s], out.cells[s]);
+            ++out.cells_measured;
+            if (out.cells[s].bounded && std::isinf(out.cells[s].reach)) out.cells[s].reach = cells->reach(s);
+        }
     };
     switch (domain.kind) {
         case CellDomain::Kind::plane:
@@ -455,13 +474,17 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                 describe_all();
                 measure_all();
                 for (SiteId s = 0; s < sites.size(); ++s) {
-                    if (!wanted[s] || !out.cells[s].visible || all_walls(across[s])) continue;
+                    if (!wanted[s] || !out.cells[s].visible || final_cells[s]) continue;
+                    bool proven = true;
                     for (int k = 0; k < 4; ++k)
-                        if (!across[s][static_cast<std::size_t>(k)] &&
-                            !(out.cells[s].reach < distance_to_wall(sites[s], kWalls[k], domain))) {
-                            across[s] = {true, true, true, true};
-                            past_the_walls = true;
-                        }
+                        proven = proven && (across[s][static_cast<std::size_t>(k)] ||
+                                            out.cells[s].reach < distance_to_wall(sites[s], kWalls[k], domain));
+                    if (proven) {
+                        final_cells[s] = out.cells[s];
+                    } else {
+                        across[s] = {true, true, true, true};
+                        past_the_walls = true;
+                    }
                 }
                 if (!past_the_walls) break;
             }
@@ -479,8 +502,8 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                               : std::min((domain.x1 - domain.x0).to_double(), (domain.y1 - domain.y0).to_double()) / 8;
             // Each ring more moves the missing copies a period farther out;
             // a cell that still reaches them after three more is an Error.
-            // (The areas are measured with each try: the first nearly always
-            // proves every cell.)
+            // (Each try measures the cells the earlier ones did not prove: the
+            // first nearly always proves every cell.)
             for (long rings = first;; ++rings) {
                 out.attempts = static_cast<int>(rings - first + 1);
                 if (rings > first + 3)
@@ -492,9 +515,14 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                 describe_all();
                 measure_all();
                 bool proven = true;
-                for (SiteId s = 0; s < sites.size() && proven; ++s)
-                    proven = !wanted[s] || !out.cells[s].visible ||
-                             periodic_cell_is_proven(out.cells[s].reach, sites[s], distance_to_missing_copies(sites[s], domain, rings), e_max);
+                for (SiteId s = 0; s < sites.size(); ++s) {
+                    if (!wanted[s] || !out.cells[s].visible || final_cells[s]) continue;
+                    if (periodic_cell_is_proven(out.cells[s].reach, sites[s],
+                                                distance_to_missing_copies(sites[s], domain, rings), e_max))
+                        final_cells[s] = out.cells[s];
+                    else
+                        proven = false;
+                }
                 if (proven) break;
             }
             break;

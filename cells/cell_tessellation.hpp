@@ -112,6 +112,9 @@ struct CellTessellation {
     // How many times the mirrors (a box) or the copies (a torus) were made:
     // more than once when a cell reached past them.
     int attempts = 1;
+    // The cells measured over all those tries: a try after the first
+    // measures only the cells the earlier ones did not prove.
+    std::size_t cells_measured = 0;
 };
 
 // Throws InputError for a tolerance outside (0, 1], a box with x0 >= x1 or

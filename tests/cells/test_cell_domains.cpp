@@ -152,6 +152,11 @@ TEST_CASE("cells in a box: a bounded cell past a wall its site was not mirrored 
     const CellTessellation t = cell_tessellation(sites, box, o);
     check_area_identity(t, o.tolerance);
     CHECK(t.attempts == 2);
+    // The second try measured only the cells the first did not prove: the
+    // lone one (and no more than a few), the rest kept.
+    INFO("cells measured " << t.cells_measured);
+    CHECK(t.cells_measured > sites.size());
+    CHECK(t.cells_measured <= sites.size() + 3);
     const Cell& lone = t.cells.back();
     CHECK(std::count_if(lone.sides.begin(), lone.sides.end(), [](const CellSide& side) { return side.wall == Wall::right; }) == 1);
 }
@@ -480,6 +485,7 @@ TEST_CASE("cells in a periodic box: one site near a corner needs a second ring o
         cell_tessellation(sites, rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(100)), o);
     check_area_identity(t, o.tolerance);
     CHECK(t.attempts == 2);
+    CHECK(t.cells_measured == 2);  // the first try did not prove it
     // Its neighbours are its own copies.
     for (const CellSide& s : t.cells[0].sides) {
         CHECK(s.neighbor == 0);
