@@ -55,8 +55,8 @@ double square(double x) { return x * x; }
 // every later check.
 double root_of(double x) { return std::sqrt(x); }
 UpwardInterval root_of(const UpwardInterval& x) { return x.lo > 0 ? x.sqrt() : UpwardInterval(-INFINITY, INFINITY); }
-template <int N>
-ComplexTaylorModel<N> root_of(const ComplexTaylorModel<N>& a) {
+template <int N, class Coefficient>
+TaylorModel<N, Coefficient> root_of(const TaylorModel<N, Coefficient>& a) {
     return principal_root(a);
 }
 
@@ -543,12 +543,12 @@ namespace {
 // The Taylor models of the disk certificate: degree 2 (the root's model
 // below is its Taylor polynomial of that degree).
 constexpr int kModelDegree = NormalRayInDoubles::kDiskDegree;
-using Model = ComplexTaylorModel<kModelDegree>;
+using Model = RealTaylorModel<kModelDegree>;
 
 // sum x_k d^k, exact coefficients, on the disk of radius R.
 Model polynomial(const std::array<double, kModelDegree + 1>& x, double R) {
     Model m(ComplexInterval(Interval(x[0])), R);
-    for (int k = 1; k <= kModelDegree; ++k) m.c[k] = {x[k], 0};
+    for (int k = 1; k <= kModelDegree; ++k) m.c[k] = x[k];
     return m;
 }
 
@@ -613,7 +613,7 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         for (int k = 3; k <= N; ++k) {
             residual(bp_at_mid, polynomial(x[0], 0), polynomial(x[1], 0), H);
             for (int i = 0; i < 2; ++i) {
-                x[i][k] = -(C[i][0] * H[0].c[k].re + C[i][1] * H[1].c[k].re);
+                x[i][k] = -(C[i][0] * H[0].c[k] + C[i][1] * H[1].c[k]);
                 if (!std::isfinite(x[i][k])) return std::nullopt;
             }
         }
@@ -670,7 +670,7 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         for (int j = 1; j <= k; ++j)
             for (int a = 0; a < 2; ++a)
                 for (int b = 0; b < 2; ++b)
-                    for (int l = 0; l < 2; ++l) JC[a][b] += on_box.J[a][l].c[j].re * Ck[k - j][l][b];
+                    for (int l = 0; l < 2; ++l) JC[a][b] += on_box.J[a][l].c[j] * Ck[k - j][l][b];
         for (int a = 0; a < 2; ++a)
             for (int b = 0; b < 2; ++b) {
                 Ck[k][a][b] = -(C[a][0] * JC[0][b] + C[a][1] * JC[1][b]);
@@ -679,7 +679,7 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     }
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j)
-            for (int k = 1; k <= N; ++k) Ct[i][j].c[k] = {Ck[k][i][j], 0};
+            for (int k = 1; k <= N; ++k) Ct[i][j].c[k] = Ck[k][i][j];
     preconditioned(Ct, CH);
     // One test: wider Y (retries at twice the radius) succeeded twice in 1500
     // failures on 150 random cells in a box; the caller halves the piece.
@@ -713,9 +713,9 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // s - (x_0 + x_1 d) = x_2 d^2 + (higher terms) + K_0, s - (x_0 + x_1 d
     // + x_2 d^2) = (higher terms) + K_0.
     Model higher = s_model.variation();
-    higher.c[1] = {0, 0};
+    higher.c[1] = 0;
     const double remainder = Interval::up(higher.bound() + k_bound[0]);
-    higher.c[2] = {0, 0};
+    higher.c[2] = 0;
     const double remainder2 = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
     DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]}, {linear_part[0], linear_part[1]}};
@@ -748,8 +748,9 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     // square root's cut, its modulus sqrt(|A| |B|). With u = conj(A(mid))
     // each factor turns half as fast as V' . V' (whose own principal root
     // failed on most disks near the end of a long edge).
+    using ComplexModel = ComplexTaylorModel<kModelDegree>;
     const CI i_unit(Interval(0.0), Interval(1.0));
-    const Model A = vx + i_unit * vy, B = vx - i_unit * vy;
+    const ComplexModel A = ComplexModel(vx) + i_unit * ComplexModel(vy), B = ComplexModel(vx) - i_unit * ComplexModel(vy);
     const CI u(Interval(A.c[0].re), Interval(-A.c[0].im));
     const auto off_the_cut = [](const CI& z) { return z.re.positive() || z.im.positive() || (-z.im).positive(); };
     if (!off_the_cut((u * A).enclose_disk()) || !off_the_cut((CI(u.re, -u.im) * B).enclose_disk()))
@@ -762,12 +763,18 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     // principal one's series (its remainder infinite where that fails: then
     // only the modulus bound serves).
     const Interval modulus_u = (u.re.square() + u.im.square()).sqrt();
-    densities[MeasureIntervals::length] =
+    const ComplexModel length =
         (Interval(1.0) / modulus_u) * (principal_root(u * A) * principal_root(CI(u.re, -u.im) * B));
     for (int j = 0; j < MeasureIntervals::count; ++j) {
+        if (j == MeasureIntervals::length) {
+            out.density[j] = length.bound();
+            out.beyond_polynomial[j] = length.remainder;
+            for (int k = 0; k <= kDiskDegree; ++k) out.polynomial[j][k] = {length.c[k].re, length.c[k].im};
+            continue;
+        }
         out.density[j] = densities[j].bound();
         out.beyond_polynomial[j] = densities[j].remainder;
-        for (int k = 0; k <= kDiskDegree; ++k) out.polynomial[j][k] = {densities[j].c[k].re, densities[j].c[k].im};
+        for (int k = 0; k <= kDiskDegree; ++k) out.polynomial[j][k] = {densities[j].c[k], 0};
     }
     out.density[MeasureIntervals::length] = std::min(
         out.density[MeasureIntervals::length], (Interval(A.bound()).sqrt() * Interval(B.bound()).sqrt()).hi);

@@ -1,5 +1,6 @@
-// Complex Taylor models (util/complex_taylor_model.hpp) against Arb at 200
-// bits: for random centers and disk radii (0 included), each operation and
+// Taylor models (util/complex_taylor_model.hpp), complex and real
+// coefficients, against Arb at 200 bits: for random centers (real ones for
+// real coefficients) and disk radii (0 included), each operation and
 // a longer expression built from them, the exact function minus the model's
 // polynomial, at random points of the disk and on its circle, is within the
 // remainder, and the function lies in the model's enclosure of the disk; and
@@ -12,6 +13,7 @@
 
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <vector>
 
@@ -25,12 +27,15 @@ ComplexInterval point(double re, double im) { return {Interval(re), Interval(im)
 
 // |truth - polynomial(d)| <= remainder, the polynomial evaluated in Arb
 // from its exact coefficients.
-template <int N>
-bool within(const ComplexTaylorModel<N>& model, const ComplexBall& d, const ComplexBall& truth) {
+void set_coefficient(ComplexBall& b, const taylor_model_detail::Complex& z) { acb_set_d_d(b.get(), z.re, z.im); }
+void set_coefficient(ComplexBall& b, double x) { acb_set_d(b.get(), x); }
+
+template <class Model>
+bool within(const Model& model, const ComplexBall& d, const ComplexBall& truth) {
     ComplexBall p, coefficient;
-    for (int k = N; k >= 0; --k) {
+    for (int k = static_cast<int>(std::size(model.c)) - 1; k >= 0; --k) {
         acb_mul(p.get(), p.get(), d.get(), kPrec);
-        acb_set_d_d(coefficient.get(), model.c[k].re, model.c[k].im);
+        set_coefficient(coefficient, model.c[k]);
         acb_add(p.get(), p.get(), coefficient.get(), kPrec);
     }
     acb_sub(p.get(), truth.get(), p.get(), kPrec);
@@ -54,16 +59,15 @@ bool holds(const ComplexInterval& rectangle, const ComplexBall& z) {
 }
 
 // A function of theta in both arithmetics.
-template <int N>
+template <class Model>
 struct Case {
     const char* name;
-    std::function<ComplexTaylorModel<N>(const ComplexTaylorModel<N>&)> model;
+    std::function<Model(const Model&)> model;
     std::function<void(ComplexBall&, const ComplexBall&)> exact;
 };
 
-template <int N>
-std::vector<Case<N>> cases() {
-    using M = ComplexTaylorModel<N>;
+template <class M>
+std::vector<Case<M>> cases() {
     const auto ball = [](double x) {
         ComplexBall b;
         acb_set_d(b.get(), x);
@@ -126,23 +130,24 @@ std::vector<Case<N>> cases() {
     };
 }
 
-template <int N>
+template <class Model>
 void check_against_arb(unsigned seed) {
+    constexpr int N = static_cast<int>(std::size(Model().c)) - 1;
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0, 1);
     const double radii[] = {0, 1e-6, 1e-3, 0.05, 0.3};
     int checked = 0;
-    for (const Case<N>& c : cases<N>())
+    for (const Case<Model>& c : cases<Model>())
         for (double R : radii)
             for (int trial = 0; trial < 6; ++trial) {
-                const double re = -3 + 6 * unit(random), im = -0.5 + unit(random);
+                const double re = -3 + 6 * unit(random), im = Model::is_real ? 0 : -0.5 + unit(random);
                 // Half the trials start from a rectangle, not a point: the
                 // model's constant is then uncertain, and the exact theta is
                 // anywhere in it.
                 const double width = trial % 2 ? 1e-9 : 0;
                 const ComplexInterval center(Interval(re - width, re + width), Interval(im - width, im + width));
-                const ComplexTaylorModel<N> theta = ComplexTaylorModel<N>::variable(center, R);
-                const ComplexTaylorModel<N> model = c.model(theta);
+                const Model theta = Model::variable(center, R);
+                const Model model = c.model(theta);
                 INFO(c.name << " at " << re << " + " << im << "i, R = " << R << ", remainder " << model.remainder);
                 REQUIRE(std::isfinite(model.remainder));
                 for (int sample = 0; sample < 12; ++sample) {
@@ -166,17 +171,54 @@ void check_against_arb(unsigned seed) {
                 // rounding and the constant's uncertainty.
                 CHECK(model.remainder <= 300 * std::pow(R, N + 1) + 1e-12 + 1e3 * width);
             }
-    CHECK(checked == static_cast<int>(cases<N>().size()) * 5 * 6 * 12);
+    CHECK(checked == static_cast<int>(cases<Model>().size()) * 5 * 6 * 12);
 }
 
 }  // namespace
 
 TEST_CASE("complex Taylor models of degree 2 hold Arb's values on their disks", "[taylor_model]") {
-    check_against_arb<2>(20261128);
+    check_against_arb<ComplexTaylorModel<2>>(20261128);
 }
 
 TEST_CASE("complex Taylor models of degree 3 hold Arb's values on their disks", "[taylor_model]") {
-    check_against_arb<3>(11282026);
+    check_against_arb<ComplexTaylorModel<3>>(11282026);
+}
+
+TEST_CASE("real Taylor models of degrees 2 and 4 hold Arb's values on their disks", "[taylor_model]") {
+    // Real centers: the functions are real on the reals, their Taylor
+    // coefficients real; the disks are complex all the same.
+    check_against_arb<RealTaylorModel<2>>(20261129);
+    check_against_arb<RealTaylorModel<4>>(29112026);
+}
+
+TEST_CASE("real Taylor models: the same polynomial as the complex ones, a remainder no larger", "[taylor_model]") {
+    // The expression of the last case above, about real centers in both
+    // arithmetics: the real model's coefficients are the complex one's real
+    // parts (their imaginary parts 0), and its remainder, with a quarter of
+    // the products' roundings, is at most the complex one's.
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(-3, 3);
+    for (int trial = 0; trial < 50; ++trial) {
+        const ComplexInterval center(Interval(unit(random)));
+        const double R = 0.1 * std::fabs(unit(random));
+        const auto expression = [](const auto& t) {
+            auto s = t, c = t, s1 = t, c1 = t;
+            sin_cos(t, s, c);
+            sin_cos(t + Interval(1.0), s1, c1);
+            return principal_root(s * c1 * square(t) + Interval(5.0)) - 2.5 * t / (c + Interval(3.0));
+        };
+        const RealTaylorModel<2> real = expression(RealTaylorModel<2>::variable(center, R));
+        const ComplexTaylorModel<2> complex = expression(ComplexTaylorModel<2>::variable(center, R));
+        for (int k = 0; k <= 2; ++k) {
+            CHECK(complex.c[k].im == 0);
+            CHECK(std::fabs(real.c[k] - complex.c[k].re) <= 1e-13 * (1 + std::fabs(complex.c[k].re)));
+        }
+        CHECK(real.remainder <= complex.remainder * (1 + 1e-9));
+        // And a real model converted is the complex one of the same function.
+        const ComplexTaylorModel<2> converted(real);
+        CHECK(converted.c[1].re == real.c[1]);
+        CHECK(converted.remainder == real.remainder);
+    }
 }
 
 TEST_CASE("complex Taylor models: outside their domains the remainder is infinite", "[taylor_model]") {
