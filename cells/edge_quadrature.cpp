@@ -37,10 +37,11 @@ constexpr int kMinPoints = (NormalRayInDoubles::kDiskDegree + 2) / 2;
 constexpr double kDiskOverWidth = (kRho + 1 / kRho) / 4;
 // The share of its middle's distance to the nearest pole angle
 // (NormalRayInDoubles::pole_angles) that an edge's first piece's disk is given
-// at most: the disk certificate holds to about a fifth of the distance to a
-// pole (two circles 10 apart: 0.19-0.24), and the whole edge, tried first,
-// failed 2.5 times an edge. 0.15, 0.2, 0.3 measured (callgrind).
-constexpr double kPoleShare = 0.15;
+// at most: the disk certificate holds to about a quarter of the distance to
+// a pole (two circles 10 apart: 0.25-0.27), and the whole edge, tried first,
+// failed 2.5 times an edge. 0.15, 0.18, 0.2, 0.25 measured (callgrind; 0.15
+// before the residual's models of degree 4).
+constexpr double kPoleShare = 0.2;
 
 // The bounds of NormalRayInDoubles::bounds_on_disk over a disk holding the
 // Bernstein ellipse of [a, b] (the center distances over [a, b]): about the

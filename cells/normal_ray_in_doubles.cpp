@@ -73,6 +73,7 @@ struct Frame {
     enum Parts { point_normal = 0, tangent = 1, all = 3 };
     T x{}, y{}, nx{}, ny{}, dx{}, dy{}, dnx{}, dny{}, n2{};
 
+    Frame() = default;
     template <class S>
     Frame(const S& e, const T& sin, const T& cos, int parts = all) {
         const auto rotate = [&e](const T& lx, const T& ly, T& X, T& Y) {
@@ -91,6 +92,17 @@ struct Frame {
     }
 };
 
+// A frame of models as one of lower degree (truncated(): the dropped terms
+// in the remainders).
+template <int M, int N>
+Frame<RealTaylorModel<M>> truncated(const Frame<RealTaylorModel<N>>& f) {
+    Frame<RealTaylorModel<M>> t;
+    t.x = truncated<M>(f.x), t.y = truncated<M>(f.y), t.nx = truncated<M>(f.nx), t.ny = truncated<M>(f.ny);
+    t.dx = truncated<M>(f.dx), t.dy = truncated<M>(f.dy), t.dnx = truncated<M>(f.dnx), t.dny = truncated<M>(f.dny);
+    t.n2 = truncated<M>(f.n2);
+    return t;
+}
+
 // V - Q, P - Q and (P - Q) . n~ at s (V = P + s n~), and F from them.
 template <class T>
 struct Differences {
@@ -108,30 +120,35 @@ struct Differences {
 };
 
 // The bisector system of normal_ray_bisector.cpp (BisectorSystem) at s, p's
-// boundary bp and q's boundary bq: F, its Jacobian in (s, phi), and the
-// theta-derivative of its second row; the signed tie's row when it is the
-// signed one (both frames whole).
+// boundary bp and q's boundary bq: F, its Jacobian in (s, phi), and (unless
+// asked not to: left empty) the theta-derivative of its second row; the
+// signed tie's row when it is the signed one (both frames whole).
 template <class T>
 struct System {
     T F[2], J[2][2], F_theta[2];
 
     template <class S>
-    System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s, bool is_signed) {
+    System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s, bool is_signed, bool with_theta = true) {
         const Differences<T> d(bp, bq, s);
         d.residual(bp, bq, s, is_signed, F);
         const T &dx = d.dx, &dy = d.dy, &ex = d.ex, &ey = d.ey, &e_n = d.e_n;
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
         J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
-        J[1][0] = 2.0 * e_n;
-        J[1][1] = -2.0 * F[0];
-        const T wx = bp.dx + s * bp.dnx, wy = bp.dy + s * bp.dny;  // W = P' + s n~'
-        F_theta[0] = dot(wx, wy, bq.dx, bq.dy);
-        F_theta[1] = 2.0 * dot(ex, ey, wx, wy);
-        if (!is_signed) return;
+        T wx{}, wy{};  // W = P' + s n~'
+        if (with_theta) {
+            wx = bp.dx + s * bp.dnx, wy = bp.dy + s * bp.dny;
+            F_theta[0] = dot(wx, wy, bq.dx, bq.dy);
+        }
+        if (!is_signed) {
+            J[1][0] = 2.0 * e_n;
+            J[1][1] = -2.0 * F[0];
+            if (with_theta) F_theta[1] = 2.0 * dot(ex, ey, wx, wy);
+            return;
+        }
         const T np = root_of(bp.n2), nq = root_of(bq.n2), nn = np * nq;
         J[1][0] = dot(bp.nx, bp.ny, bq.nx, bq.ny) - nn;
         J[1][1] = dot(dx, dy, bq.dnx, bq.dny) - s * np * dot(bq.nx, bq.ny, bq.dnx, bq.dny) / nq;
-        F_theta[1] = dot(wx, wy, bq.nx, bq.ny) - s * nq * dot(bp.nx, bp.ny, bp.dnx, bp.dny) / np;
+        if (with_theta) F_theta[1] = dot(wx, wy, bq.nx, bq.ny) - s * nq * dot(bp.nx, bp.ny, bp.dnx, bp.dny) / np;
     }
 };
 
@@ -435,13 +452,17 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
 // real diameter: there the system has one root x* in X(theta) = x_model(theta)
 // + D(0, reach), the bisector point; with C(theta) = sum C_k d^k and A the
 // mean-value Jacobian between x0 and x* (both in X(theta), and so the segment
-// between), x0 - x* = C(theta) F(x0) + (I - C(theta) A)(x0 - x*), whose rows
-// the disk bounds: sum_j |I - C(theta) A|_ij reach_j <= linear_part_i <
-// reach_i. So with t = max_i |C(theta) F(x0)|_i / (reach_i - linear_part_i),
-// |x0 - x*|_i <= t reach_i = delta_i: no Krawczyk test, no side check (the
-// disk's hold for its root). p's frame at theta and q's at phi0 given; false
-// when x0 is not in X(theta). Under the upward rounding mode. Then
-// certify_node_in_disk gives the node's values from the root in x0 +- delta.
+// between), x0 - x* = C(theta) F(x0) + (I - C(theta) A)(x0 - x*), whose
+// entries the disk bounds: |I - C(theta) A|_ij <= a_ij (`coupling`). So e =
+// |x0 - x*| satisfies (I - a) e <= c, c = |C(theta) F(x0)|, and as sum_j a_ij
+// reach_j < reach_i (the disk's test), I - a has a nonnegative inverse: e <=
+// (I - a)^-1 c = delta. No Krawczyk test, no side check (the disk's hold for
+// its root). (A common scale t reach_i for both unknowns, t = max_i c_i /
+// (reach_i - sum_j a_ij reach_j), was as wide as s's reach allowed when phi's
+// row of the test had little margin: a thousand times the root's error.)
+// p's frame at theta and q's at phi0 given; false when x0 is not in
+// X(theta). Under the upward rounding mode. Then certify_node_in_disk gives
+// the node's values from the root in x0 +- delta.
 bool disk_offsets(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk, const Frame<UpwardInterval>& bp,
                   const Frame<UpwardInterval>& bq0, double (&delta)[2]) {
     using U = UpwardInterval;
@@ -457,15 +478,18 @@ bool disk_offsets(const NodeInput& in, const NormalRayInDoubles::DiskProof& disk
     const U s0(x0[0]);
     U F[2];
     Differences<U>(bp, bq0, s0).residual(bp, bq0, s0, in.is_signed, F);
-    double t = 0;
+    U c[2];
     for (int i = 0; i < 2; ++i) {
         U CF = U(disk.C[kDegree][i][0]) * F[0] + U(disk.C[kDegree][i][1]) * F[1];
         for (int k = kDegree - 1; k >= 0; --k) CF = CF * d + (U(disk.C[k][i][0]) * F[0] + U(disk.C[k][i][1]) * F[1]);
-        const U margin = U(disk.reach[i]) - U(disk.linear_part[i]);
-        if (!margin.positive()) return false;
-        t = std::max(t, (U(magnitude(CF)) / margin).hi);
+        c[i] = U(magnitude(CF));
     }
-    for (int i = 0; i < 2; ++i) delta[i] = (U(t) * U(disk.reach[i])).hi;
+    const double(&a)[2][2] = disk.coupling;
+    const U diagonal[2] = {U(1.0) - U(a[0][0]), U(1.0) - U(a[1][1])};
+    const U det = diagonal[0] * diagonal[1] - U(a[0][1]) * U(a[1][0]);
+    if (!det.positive() || !diagonal[0].positive() || !diagonal[1].positive()) return false;
+    delta[0] = ((diagonal[1] * c[0] + U(a[0][1]) * c[1]) / det).hi;
+    delta[1] = ((U(a[1][0]) * c[0] + diagonal[0] * c[1]) / det).hi;
     return std::isfinite(delta[0]) && delta[1] <= 1;
 }
 
@@ -545,9 +569,20 @@ namespace {
 constexpr int kModelDegree = NormalRayInDoubles::kDiskDegree;
 using Model = RealTaylorModel<kModelDegree>;
 
+// The residual H(theta) = F(x_model(theta), theta) and the preconditioned
+// C(theta) H(theta) are models of a higher degree: x_model cancels H to
+// order kModelDegree, and its next terms are large and cancel between F's
+// terms (two circles 10 apart: the tie's d^4 coefficient 17 where C H is
+// 0.03 on the disk), which a model of degree 2 bounds term by term, by
+// their 1-norms: 6.5 times C H's true size there, a certified disk a third
+// narrower.
+constexpr int kResidualDegree = 4;
+using ResidualModel = RealTaylorModel<kResidualDegree>;
+
 // sum x_k d^k, exact coefficients, on the disk of radius R.
-Model polynomial(const std::array<double, kModelDegree + 1>& x, double R) {
-    Model m(ComplexInterval(Interval(x[0])), R);
+template <int M = kModelDegree>
+RealTaylorModel<M> polynomial(const std::array<double, kModelDegree + 1>& x, double R) {
+    RealTaylorModel<M> m(ComplexInterval(Interval(x[0])), R);
     for (int k = 1; k <= kModelDegree; ++k) m.c[k] = x[k];
     return m;
 }
@@ -606,8 +641,8 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         const Frame<Model> bq(q_, sin, cos, q_parts<Model>(signed_));
         Differences<Model>(bp, bq, s).residual(bp, bq, s, signed_, F);
     };
-    Model H[2];
     if constexpr (N > 2) {
+        Model H[2];
         sin_cos(Model::variable(CI(Interval(mid)), 0), sin, cos);
         const Frame<Model> bp_at_mid(p_, sin, cos);
         for (int k = 3; k <= N; ++k) {
@@ -619,42 +654,20 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
         }
     }
 
-    // On the disk mid + d, |d| <= R: x = x_model(theta) + y. H(theta) =
-    // F(x_model(theta), theta) as a model: the polynomial leaves it of the
-    // order N + 1 in R. (Interval evaluations over a box lose how every
-    // quantity follows d: a first-order mean-value form, then second-order
-    // jets, overestimated H and I - C J(X) ten to thirty times over and kept
-    // the boxes small.)
-    sin_cos(Model::variable(CI(Interval(mid)), R), sin, cos);
-    const Frame<Model> bp_model(p_, sin, cos);
-    const Model s_model = polynomial(x[0], R), phi_model = polynomial(x[1], R);
-    residual(bp_model, s_model, phi_model, H);
-    // Bounds of C(theta) H(theta) on the disk for a preconditioner
-    // C(theta), a matrix of models.
-    const auto preconditioned = [&](const Model (&Ct)[2][2], double (&bound)[2]) {
-        for (int i = 0; i < 2; ++i) bound[i] = (Ct[i][0] * H[0] + Ct[i][1] * H[1]).bound();
-    };
-    Model Ct[2][2];
-    for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) Ct[i][j] = Model(CI(Interval(C[i][j])), R);
-    double CH[2], r[2];
-    preconditioned(Ct, CH);
-    for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i] + std::ldexp(1 + std::fabs(x0[i]), -44);
-    if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
-    // Y_i = +- r_i + i (+- r_i) lies in the disk of radius sqrt(2) r_i
-    // (1.4142135623730951 > sqrt(2)).
-    double reach[2];
-    Model X[2] = {s_model, phi_model};
-    for (int i = 0; i < 2; ++i) {
-        reach[i] = Interval::up(r[i] * 1.4142135623730951);
-        X[i].remainder = Interval::up(X[i].remainder + reach[i]);
-    }
-    // Re s > 0, or Re s > -r_p with the signed tie (normal_ray_bisector.hpp).
-    const CI s_disk = X[0].enclose_disk();
-    if (!(signed_ ? s_disk.re + medial_p_ : s_disk.re).positive()) return std::nullopt;
-    sin_cos(X[1], sin, cos);
-    const Frame<Model> bq(q_, sin, cos, q_parts<Model>(signed_));
-    const System<Model> on_box(q_, bp_model, bq, X[0], signed_);
+    // On the disk mid + d, |d| <= R: x = x_model(theta) + y. The system
+    // along x_model (H(theta) = F(x_model(theta), theta), of the order N + 1
+    // in R, and J) as models of the residual's degree. (Interval evaluations
+    // over a box lose how every quantity follows d: a first-order mean-value
+    // form, then second-order jets, overestimated H and I - C J(X) ten to
+    // thirty times over and kept the boxes small.)
+    using RM = ResidualModel;
+    static_assert(kResidualDegree >= N, "the residual's models hold x_model");
+    RM sin_along, cos_along;
+    sin_cos(RM::variable(CI(Interval(mid)), R), sin_along, cos_along);
+    const Frame<RM> bp_along(p_, sin_along, cos_along);
+    sin_cos(polynomial<kResidualDegree>(x[1], R), sin_along, cos_along);
+    const System<RM> along(q_, bp_along, Frame<RM>(q_, sin_along, cos_along, q_parts<RM>(signed_)),
+                           polynomial<kResidualDegree>(x[0], R), signed_, false);
     // The Krawczyk test at each theta with its own preconditioner C(theta)
     // = sum C_k d^k, the Taylor polynomial of J^-1 along the model at mid
     // (C_0 = C, C_k = -C sum_{j=1..k} J_j C_{k-j}, J_j the Taylor
@@ -662,53 +675,80 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // each theta: these cancel I - C(theta) J to order N):
     // |I - C(theta) J(X(theta))| and |C(theta) H(theta)| bounded by their
     // models, pointwise in theta.
-    double Ck[N + 1][2][2];
+    std::array<double, N + 1> Ck[2][2];
     for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) Ck[0][i][j] = C[i][j];
+        for (int j = 0; j < 2; ++j) Ck[i][j][0] = C[i][j];
     for (int k = 1; k <= N; ++k) {
         double JC[2][2] = {{0, 0}, {0, 0}};  // sum_j J_j C_{k-j}
         for (int j = 1; j <= k; ++j)
             for (int a = 0; a < 2; ++a)
                 for (int b = 0; b < 2; ++b)
-                    for (int l = 0; l < 2; ++l) JC[a][b] += on_box.J[a][l].c[j] * Ck[k - j][l][b];
+                    for (int l = 0; l < 2; ++l) JC[a][b] += along.J[a][l].c[j] * Ck[l][b][k - j];
         for (int a = 0; a < 2; ++a)
             for (int b = 0; b < 2; ++b) {
-                Ck[k][a][b] = -(C[a][0] * JC[0][b] + C[a][1] * JC[1][b]);
-                if (!std::isfinite(Ck[k][a][b])) return std::nullopt;
+                Ck[a][b][k] = -(C[a][0] * JC[0][b] + C[a][1] * JC[1][b]);
+                if (!std::isfinite(Ck[a][b][k])) return std::nullopt;
             }
     }
+    double CH[2], r[2];
     for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j)
-            for (int k = 1; k <= N; ++k) Ct[i][j].c[k] = Ck[k][i][j];
-    preconditioned(Ct, CH);
-    // One test: wider Y (retries at twice the radius) succeeded twice in 1500
-    // failures on 150 random cells in a box; the caller halves the piece.
-    bool inside = true;
-    double k_bound[2], linear_part[2];
-    for (int i = 0; i < 2; ++i) {
-        k_bound[i] = CH[i];
-        linear_part[i] = 0;
-        for (int j = 0; j < 2; ++j) {
-            Model m = -(Ct[i][0] * on_box.J[0][j] + Ct[i][1] * on_box.J[1][j]);
-            if (i == j) m = m + Interval(1.0);
-            const double term = Interval::up(m.bound() * reach[j]);
-            k_bound[i] = Interval::up(k_bound[i] + term);
-            linear_part[i] = Interval::up(linear_part[i] + term);
+        CH[i] = (polynomial<kResidualDegree>(Ck[i][0], R) * along.F[0] +
+                 polynomial<kResidualDegree>(Ck[i][1], R) * along.F[1]).bound();
+    for (int i = 0; i < 2; ++i) r[i] = 2 * CH[i] + std::ldexp(1 + std::fabs(x0[i]), -44);
+    const Frame<Model> bp_model = truncated<N>(bp_along);
+    const Model s_model = polynomial(x[0], R), phi_model = polynomial(x[1], R);
+    Model Ct[2][2];
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) Ct[i][j] = polynomial(Ck[i][j], R);
+    // The test on X(theta) = x_model(theta) + Y, Y_i = +- r_i + i (+- r_i)
+    // in the disk of radius reach_i = sqrt(2) r_i (1.4142135623730951 >
+    // sqrt(2)). Two at most: r = 2 |C H|, then, where that failed, twice
+    // K's bound (with |C H| nearly exact, a row whose |C H| is much smaller
+    // than the other's fails by the coupling through the other's reach
+    // alone); a failure after that halves the piece (the caller).
+    double reach[2], k_bound[2], coupling[2][2];
+    Model X[2];
+    std::optional<Frame<Model>> bq;
+    std::optional<System<Model>> on_box;
+    for (int test = 0;; ++test) {
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || r[1] > 1) return std::nullopt;
+        X[0] = s_model, X[1] = phi_model;
+        for (int i = 0; i < 2; ++i) {
+            reach[i] = Interval::up(r[i] * 1.4142135623730951);
+            X[i].remainder = Interval::up(X[i].remainder + reach[i]);
         }
-        inside = inside && k_bound[i] < r[i];
+        // Re s > 0, or Re s > -r_p with the signed tie (normal_ray_bisector.hpp).
+        const CI s_disk = X[0].enclose_disk();
+        if (!(signed_ ? s_disk.re + medial_p_ : s_disk.re).positive()) return std::nullopt;
+        sin_cos(X[1], sin, cos);
+        bq.emplace(q_, sin, cos, q_parts<Model>(signed_));
+        on_box.emplace(q_, bp_model, *bq, X[0], signed_);
+        bool inside = true;
+        for (int i = 0; i < 2; ++i) {
+            k_bound[i] = CH[i];
+            for (int j = 0; j < 2; ++j) {
+                Model m = -(Ct[i][0] * on_box->J[0][j] + Ct[i][1] * on_box->J[1][j]);
+                if (i == j) m = m + Interval(1.0);
+                coupling[i][j] = m.bound();
+                k_bound[i] = Interval::up(k_bound[i] + Interval::up(coupling[i][j] * reach[j]));
+            }
+            inside = inside && k_bound[i] < r[i];
+        }
+        if (inside) break;
+        if (test == 1) return std::nullopt;
+        for (int i = 0; i < 2; ++i) r[i] = Interval::max(r[i], 2 * k_bound[i]);
     }
-    if (!inside) return std::nullopt;
     // One root in X, holomorphic in theta; q's nearest point when V - Q
     // points out of q (normal_ray_bisector.hpp), or above q's medial axis
     // with the signed tie.
-    const Model side = dot(bp_model.x + X[0] * bp_model.nx - bq.x, bp_model.y + X[0] * bp_model.ny - bq.y, bq.nx, bq.ny);
-    if (!(signed_ ? side + medial_q_ * bq.n2 : side).enclose_disk().re.positive()) return std::nullopt;
+    const Model side = dot(bp_model.x + X[0] * bp_model.nx - bq->x, bp_model.y + X[0] * bp_model.ny - bq->y, bq->nx, bq->ny);
+    if (!(signed_ ? side + medial_q_ * bq->n2 : side).enclose_disk().re.positive()) return std::nullopt;
     // The root s(theta) lies within |K_0| <= k_bound[0] of x_model(theta),
     // and s' = -g_theta / g_s (g_s zero-free on the disk, else the
     // reciprocal's remainder is infinite).
     Model s_root = s_model;
     s_root.remainder = Interval::up(s_root.remainder + k_bound[0]);
-    const Model ds = -(on_box.F_theta[1] / on_box.J[1][0]);
+    const Model ds = -(on_box->F_theta[1] / on_box->J[1][0]);
     if (!std::isfinite(ds.remainder)) return std::nullopt;
     // s - (x_0 + x_1 d) = x_2 d^2 + (higher terms) + K_0, s - (x_0 + x_1 d
     // + x_2 d^2) = (higher terms) + K_0.
@@ -718,10 +758,10 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     higher.c[2] = 0;
     const double remainder2 = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
-    DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]}, {linear_part[0], linear_part[1]}};
+    DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]}, {{coupling[0][0], coupling[0][1]}, {coupling[1][0], coupling[1][1]}}};
     for (int k = 0; k <= N; ++k)
         for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) proof.C[k][i][j] = Ck[k][i][j];
+            for (int j = 0; j < 2; ++j) proof.C[k][i][j] = Ck[i][j][k];
     for (int i = 0; i < 2; ++i)
         for (int k = 0; k <= N; ++k) proof.x[i][k] = x[i][k];
     disk_ = proof;

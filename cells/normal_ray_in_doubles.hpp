@@ -16,8 +16,9 @@
 //
 // On a complex disk of theta the Krawczyk test runs about the root's Taylor
 // polynomial x_model(theta) = x0 + x1 d + x2 d^2 (d = theta - mid, the
-// coefficients from Newton in doubles), every quantity a complex Taylor model
-// in d on the disk (util/complex_taylor_model.hpp), with its own
+// coefficients from Newton in doubles), every quantity a Taylor model in d on
+// the disk (util/complex_taylor_model.hpp: real coefficients; the residual
+// F(x_model(theta), theta) of degree 4, the rest of degree 2), with its own
 // preconditioner C(theta) = sum C_k d^k at each theta (the Taylor polynomial
 // of J^-1 along x_model, which cancels I - C(theta) J to that degree; x2 by
 // central differences of Newton's roots). Interval evaluations over the
@@ -69,7 +70,7 @@ public:
     // The widest piece [start, start + w] whose disk about its middle, of
     // radius disk_over_width w, stays within `share` of the middle's distance
     // to every pole angle (a step size's guide: the disk certificate holds to
-    // about a fifth of the distance to a pole, two circles 10 apart).
+    // about a quarter of the distance to a pole, two circles 10 apart).
     double pole_limited_width(double start, double disk_over_width, double share) const;
     // Green's area density (X dY - Y dX) / 2 at theta by Newton in doubles,
     // not certified: a scale (cell_area.cpp's first estimate of an area).
@@ -124,12 +125,13 @@ public:
     // diameter (the .cpp's certify_node_in_disk): with d = theta - mid, the
     // system has one root in X(theta) = x_model(d) + D(0, reach) (x_model(d)
     // = sum x[i][k] d^k), and the preconditioner C(theta) = sum C[k] d^k
-    // bounds sum_j |I - C(theta) J(X(theta))|_ij reach_j <= linear_part[i] < reach[i].
+    // bounds |I - C(theta) J(X(theta))|_ij <= coupling[i][j], with
+    // sum_j coupling[i][j] reach_j < reach[i].
     struct DiskProof {
         double mid, R;
         double C[kDiskDegree + 1][2][2];
         double x[2][kDiskDegree + 1];
-        double reach[2], linear_part[2];
+        double reach[2], coupling[2][2];
     };
 
 private:

@@ -291,6 +291,23 @@ using ComplexTaylorModel = TaylorModel<N, taylor_model_detail::Complex>;
 template <int N>
 using RealTaylorModel = TaylorModel<N, double>;
 
+// The model of degree M <= N of the same function: the terms above d^M
+// bounded on the disk (moduli times R^k), into the remainder.
+template <int M, int N, class C>
+TaylorModel<M, C> truncated(const TaylorModel<N, C>& a) {
+    static_assert(M <= N, "a truncation lowers the degree");
+    TaylorModel<M, C> t;
+    t.radius = a.radius;
+    for (int k = 0; k <= M; ++k) t.c[k] = a.c[k];
+    double high = 0, power = 1;
+    for (int k = 1; k <= N; ++k) {
+        power *= a.radius;
+        if (k > M) high += taylor_model_detail::modulus(a.c[k]) * power;
+    }
+    t.remainder = taylor_model_detail::inflated(a.remainder + high);
+    return t;
+}
+
 template <int N, class C>
 TaylorModel<N, C> square(const TaylorModel<N, C>& x) {
     return x * x;

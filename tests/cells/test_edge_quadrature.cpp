@@ -399,13 +399,6 @@ TEST_CASE("NormalRayInDoubles: its bounds, polynomials and root models on a comp
     CHECK(quadratic_tighter >= checked_points * 9 / 10);
 }
 
-// Two unit circles 10 apart: the edge is the line x = 5, V = (5, 5 tan theta)
-// from p's angle theta, so |V'| continues as 5 sec^2 theta off the reals.
-// Near the edge's far end (theta = 1.2, its pole at pi/2) V' . V' = 25
-// sec^4 theta turns twice as fast as either factor of |V'| =
-// sqrt(V'x + i V'y) sqrt(V'x - i V'y): its own principal root failed beyond R
-// = 0.059 there, the factors' hold at 0.08; the length's bound holds at every
-// point of the disk.
 TEST_CASE("NormalRayInDoubles: its pole angles are where p's normal is perpendicular to the centers' line", "[cells][quadrature]") {
     std::mt19937_64 rng(5);
     for (int trial = 0; trial < 50; ++trial) {
@@ -426,6 +419,13 @@ TEST_CASE("NormalRayInDoubles: its pole angles are where p's normal is perpendic
     }
 }
 
+// Two unit circles 10 apart: the edge is the line x = 5, V = (5, 5 tan theta)
+// from p's angle theta, so |V'| continues as 5 sec^2 theta off the reals.
+// Near the edge's far end (theta = 1.2, its pole at pi/2) V' . V' = 25
+// sec^4 theta turns twice as fast as either factor of |V'| =
+// sqrt(V'x + i V'y) sqrt(V'x - i V'y): its own principal root failed beyond R
+// = 0.059 there, the factors' hold at 0.08; the length's bound holds at every
+// point of the disk.
 TEST_CASE("NormalRayInDoubles: the length's bound on a disk near the edge's pole, from |V'|'s factors", "[cells][quadrature]") {
     const Ellipse p(Rational(1), Rational(1), Rational(0), Rational(0), Rational(0));
     const Ellipse q(Rational(1), Rational(1), Rational(0), Rational(10), Rational(0));
@@ -445,6 +445,33 @@ TEST_CASE("NormalRayInDoubles: the length's bound on a disk near the edge's pole
     CHECK(largest * (1 + 1e-12) <= M);
     // A bound, not a guess at infinity.
     CHECK(M <= 2 * largest);
+}
+
+// The same circles: s(theta) = 5 sec theta - 1, analytic but for poles at
+// +-pi/2. Disks about 0 and 0.6 of radii 0.4 and 0.22 (about a quarter of
+// the distance to the pole) are certified, and their root models hold the
+// closed form on the disk's circle. With the residual H = F(x_model, theta)
+// as a model of degree 2 the certificate failed beyond 0.29 and 0.17: H's
+// terms of degrees 3 and 4 cancel between F's terms, and a degree-2 model
+// bounds them one by one (normal_ray_in_doubles.cpp, kResidualDegree).
+TEST_CASE("NormalRayInDoubles: the disk certificate reaches a quarter of the way to the pole", "[cells][quadrature]") {
+    const Ellipse p(Rational(1), Rational(1), Rational(0), Rational(0), Rational(0));
+    const Ellipse q(Rational(1), Rational(1), Rational(0), Rational(10), Rational(0));
+    for (const auto& [mid, R] : {std::pair<double, double>{0.0, 0.4}, {0.6, 0.22}}) {
+        NormalRayInDoubles fast(p, q);
+        INFO("mid " << mid << ", R " << R);
+        REQUIRE(fast.bounds_on_disk(mid, R, R));
+        const std::optional<NormalRayInDoubles::RootModel> model = fast.root_model(mid, R);
+        REQUIRE(model);
+        for (int k = 0; k < 64; ++k) {
+            const std::complex<double> d = std::polar(R, k * M_PI / 32);
+            const std::complex<double> s = 5.0 / std::cos(mid + d) - 1.0;
+            const std::complex<double> quadratic = model->s0 + model->s1 * d + model->s2 * d * d;
+            CHECK(std::abs(s - quadratic) <= model->quadratic_remainder * (1 + 1e-9));
+        }
+        // A bound of the size of the truncated terms, not a guess at infinity.
+        CHECK(model->quadratic_remainder <= 0.5);
+    }
 }
 
 TEST_CASE("NormalRayInDoubles: nodes from a disk's proof hold Arb's densities, as narrow as their own tests", "[cells][quadrature]") {
@@ -516,12 +543,12 @@ TEST_CASE("NormalRayInDoubles: a disk's proof encloses the root from any point o
             ps.normal(theta, nx, ny);
             const double rho = s_root * std::hypot(ps.b * std::cos(theta), ps.a * std::sin(theta));
             const double phi_root = qs.nearest_angle(px + rho * nx, py + rho * ny);
-            for (const double scale : {0.0, 1e-10, 1e-6, 1e-4, 1e-3}) {
+            for (const double scale : {0.0, 1e-10, 1e-6, 1e-5, 1e-4, 1e-3}) {
                 const double x[2] = {s_root * (1 + scale * unit(rng)), phi_root + scale * unit(rng)};
                 const std::optional<std::array<Interval, 2>> root = fast.root_from_disk(Interval(theta), x);
                 if (!root) continue;
                 ++proofs;
-                far_proofs += scale >= 1e-4;
+                far_proofs += scale >= 1e-5;
                 INFO("trial " << trial << " theta " << theta << " scale " << scale);
                 CHECK(overlap((*root)[0], s));
                 CHECK((*root)[1].lo <= phi_root + 1e-12);
@@ -536,7 +563,7 @@ TEST_CASE("NormalRayInDoubles: a disk's proof encloses the root from any point o
         const double x[2] = {1, 0};
         CHECK(!fast.root_from_disk(Interval(mid + 1.5 * R), x));
     }
-    INFO("proofs " << proofs << ", from points 1e-4 or farther " << far_proofs);
+    INFO("proofs " << proofs << ", from points 1e-5 or farther " << far_proofs);
     CHECK(proofs >= 600);
     CHECK(far_proofs >= 100);
 }

@@ -221,6 +221,43 @@ TEST_CASE("real Taylor models: the same polynomial as the complex ones, a remain
     }
 }
 
+TEST_CASE("Taylor models truncated to a lower degree hold Arb's values on their disks", "[taylor_model]") {
+    // sin(t) cos(t + 1) / (t + 3) of degree 4 about random real centers,
+    // truncated to degrees 2 and 1: the dropped terms are in the remainder.
+    std::mt19937_64 random(31);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int trial = 0; trial < 40; ++trial) {
+        const double center = -3 + 6 * unit(random), R = 0.4 * unit(random);
+        using M = RealTaylorModel<4>;
+        const M t = M::variable(ComplexInterval(Interval(center)), R);
+        M s, c, s1, c1;
+        sin_cos(t, s, c);
+        sin_cos(t + Interval(1.0), s1, c1);
+        const M f = s * c1 / (t + Interval(3.0));
+        const RealTaylorModel<2> f2 = truncated<2>(f);
+        const RealTaylorModel<1> f1 = truncated<1>(f);
+        CHECK(f2.remainder >= f.remainder);
+        CHECK(f1.remainder >= f2.remainder);
+        for (int sample = 0; sample < 16; ++sample) {
+            const double rho = R * (1 - 0x1p-40) * (sample < 4 ? 1 : std::sqrt(unit(random)));
+            const double angle = 6.283185307179586 * unit(random);
+            ComplexBall d, theta, truth, a, b;
+            acb_set_d_d(d.get(), rho * std::cos(angle), rho * std::sin(angle));
+            acb_set_d(theta.get(), center);
+            acb_add(theta.get(), theta.get(), d.get(), kPrec);
+            acb_sin(truth.get(), theta.get(), kPrec);
+            acb_add_ui(a.get(), theta.get(), 1, kPrec);
+            acb_cos(a.get(), a.get(), kPrec);
+            acb_mul(truth.get(), truth.get(), a.get(), kPrec);
+            acb_add_ui(b.get(), theta.get(), 3, kPrec);
+            acb_div(truth.get(), truth.get(), b.get(), kPrec);
+            INFO("center " << center << ", R " << R);
+            CHECK(within(f2, d, truth));
+            CHECK(within(f1, d, truth));
+        }
+    }
+}
+
 TEST_CASE("complex Taylor models: outside their domains the remainder is infinite", "[taylor_model]") {
     using M = ComplexTaylorModel<2>;
     const M t = M::variable(point(0.5, 0), 0.1);
