@@ -119,10 +119,32 @@ struct Differences {
     }
 };
 
+// The tie's (F's second row's) derivatives in s and in theta, g_s and
+// g_theta (System's J[1][0] and F_theta[1]; g_theta left empty unless asked
+// for): s' = -g_theta / g_s, all that a node's densities need of the system.
+// Also W = P' + s n~' (with g_theta) and, with the signed tie, N and Nq.
+template <class T>
+struct TieDerivatives {
+    T g_s, g_theta, wx, wy, np, nq;
+
+    TieDerivatives(const Frame<T>& bp, const Frame<T>& bq, const T& s, const Differences<T>& d, bool is_signed,
+                   bool with_theta = true) {
+        if (with_theta) wx = bp.dx + s * bp.dnx, wy = bp.dy + s * bp.dny;
+        if (!is_signed) {
+            g_s = 2.0 * d.e_n;
+            if (with_theta) g_theta = 2.0 * dot(d.ex, d.ey, wx, wy);
+            return;
+        }
+        np = root_of(bp.n2), nq = root_of(bq.n2);
+        g_s = dot(bp.nx, bp.ny, bq.nx, bq.ny) - np * nq;
+        if (with_theta) g_theta = dot(wx, wy, bq.nx, bq.ny) - s * nq * dot(bp.nx, bp.ny, bp.dnx, bp.dny) / np;
+    }
+};
+
 // The bisector system of normal_ray_bisector.cpp (BisectorSystem) at s, p's
 // boundary bp and q's boundary bq: F, its Jacobian in (s, phi), and (unless
-// asked not to: left empty) the theta-derivative of its second row; the
-// signed tie's row when it is the signed one (both frames whole).
+// asked not to: left empty) the theta-derivatives of its rows; the signed
+// tie's row when it is the signed one (both frames whole).
 template <class T>
 struct System {
     T F[2], J[2][2], F_theta[2];
@@ -131,24 +153,15 @@ struct System {
     System(const S& q, const Frame<T>& bp, const Frame<T>& bq, const T& s, bool is_signed, bool with_theta = true) {
         const Differences<T> d(bp, bq, s);
         d.residual(bp, bq, s, is_signed, F);
-        const T &dx = d.dx, &dy = d.dy, &ex = d.ex, &ey = d.ey, &e_n = d.e_n;
         J[0][0] = dot(bp.nx, bp.ny, bq.dx, bq.dy);
-        J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(dx, dy, bq.x - q.xc, bq.y - q.yc);
-        T wx{}, wy{};  // W = P' + s n~'
-        if (with_theta) {
-            wx = bp.dx + s * bp.dnx, wy = bp.dy + s * bp.dny;
-            F_theta[0] = dot(wx, wy, bq.dx, bq.dy);
-        }
-        if (!is_signed) {
-            J[1][0] = 2.0 * e_n;
-            J[1][1] = -2.0 * F[0];
-            if (with_theta) F_theta[1] = 2.0 * dot(ex, ey, wx, wy);
-            return;
-        }
-        const T np = root_of(bp.n2), nq = root_of(bq.n2), nn = np * nq;
-        J[1][0] = dot(bp.nx, bp.ny, bq.nx, bq.ny) - nn;
-        J[1][1] = dot(dx, dy, bq.dnx, bq.dny) - s * np * dot(bq.nx, bq.ny, bq.dnx, bq.dny) / nq;
-        if (with_theta) F_theta[1] = dot(wx, wy, bq.nx, bq.ny) - s * nq * dot(bp.nx, bp.ny, bp.dnx, bp.dny) / np;
+        J[0][1] = -dot(bq.dx, bq.dy, bq.dx, bq.dy) - dot(d.dx, d.dy, bq.x - q.xc, bq.y - q.yc);
+        const TieDerivatives<T> tie(bp, bq, s, d, is_signed, with_theta);
+        J[1][0] = tie.g_s;
+        J[1][1] = is_signed ? dot(d.dx, d.dy, bq.dnx, bq.dny) - s * tie.np * dot(bq.nx, bq.ny, bq.dnx, bq.dny) / tie.nq
+                            : -2.0 * F[0];
+        if (!with_theta) return;
+        F_theta[0] = dot(tie.wx, tie.wy, bq.dx, bq.dy);
+        F_theta[1] = tie.g_theta;
     }
 };
 
@@ -377,10 +390,10 @@ Frame<UpwardInterval> widened_q_frame(const NodeInput& in, const UpwardSite& q, 
 // The densities are left empty when |V'|^2 > 0 or finiteness is not proved.
 // Under the upward rounding mode.
 void node_values(const NodeInput& in, const Frame<UpwardInterval>& bp, const UpwardInterval& root,
-                 const System<UpwardInterval>& on_box, std::optional<MeasureIntervals>& densities,
+                 const TieDerivatives<UpwardInterval>& on_box, std::optional<MeasureIntervals>& densities,
                  std::optional<std::array<Interval, 2>>& point) {
     using U = UpwardInterval;
-    const U ds = -(on_box.F_theta[1] / on_box.J[1][0]);
+    const U ds = -(on_box.g_theta / on_box.g_s);
     const U v[2] = {bp.x + root * bp.nx, bp.y + root * bp.ny};
     if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
     if (!in.with_densities) return;
@@ -441,8 +454,9 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node(const NodeInput& in, std::opti
         // V outside q along its normal, or above q's medial axis with the signed tie.
         if (!(is_signed ? side(bp, bq, s) + medial_q * bq.n2 : side(bp, bq, s)).positive()) return false;
         // The root: s in x0 + K; the tie derivatives over X contain their values there.
-        if (on_box.J[1][0].contains_zero()) return false;
-        node_values(in, bp, s0 + K[0], on_box, densities, point);
+        const TieDerivatives<U> tie(bp, bq, s, Differences<U>(bp, bq, s), is_signed);
+        if (tie.g_s.contains_zero()) return false;
+        node_values(in, bp, s0 + K[0], tie, densities, point);
         return true;
     }
     return false;
@@ -505,9 +519,9 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node_in_disk(const NodeInput& in, c
     if (!disk_offsets(in, disk, bp, bq0, delta)) return false;
     const U s = U(in.x0[0]) + U(-delta[0], delta[0]);
     const Frame<U> bq = widened_q_frame(in, q, bq0, delta[1]);
-    const System<U> on_box(q, bp, bq, s, in.is_signed);
-    if (on_box.J[1][0].contains_zero()) return false;
-    node_values(in, bp, s, on_box, densities, point);
+    const TieDerivatives<U> tie(bp, bq, s, Differences<U>(bp, bq, s), in.is_signed);
+    if (tie.g_s.contains_zero()) return false;
+    node_values(in, bp, s, tie, densities, point);
     return true;
 }
 
