@@ -755,7 +755,8 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     // One root in X, holomorphic in theta; q's nearest point when V - Q
     // points out of q (normal_ray_bisector.hpp), or above q's medial axis
     // with the signed tie.
-    const Model side = dot(bp_model.x + X[0] * bp_model.nx - bq->x, bp_model.y + X[0] * bp_model.ny - bq->y, bq->nx, bq->ny);
+    const Model side =
+        dot(bp_model.x + X[0] * bp_model.nx - bq->x, bp_model.y + X[0] * bp_model.ny - bq->y, bq->nx, bq->ny);
     if (!(signed_ ? side + medial_q_ * bq->n2 : side).enclose_disk().re.positive()) return std::nullopt;
     // The root s(theta) lies within |K_0| <= k_bound[0] of x_model(theta),
     // and s' = -g_theta / g_s (g_s zero-free on the disk, else the
@@ -772,7 +773,8 @@ std::optional<NormalRayInDoubles::DiskRoot> NormalRayInDoubles::disk_root(double
     higher.c[2] = 0;
     const double remainder2 = Interval::up(higher.bound() + k_bound[0]);
     last_[0] = x0[0], last_[1] = x0[1];  // the next piece's Newton start (when no node is certified in doubles)
-    DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]}, {{coupling[0][0], coupling[0][1]}, {coupling[1][0], coupling[1][1]}}};
+    DiskProof proof{mid, R, {}, {}, {reach[0], reach[1]},
+                    {{coupling[0][0], coupling[0][1]}, {coupling[1][0], coupling[1][1]}}};
     for (int k = 0; k <= N; ++k)
         for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j) proof.C[k][i][j] = Ck[i][j][k];
@@ -804,7 +806,8 @@ std::optional<NormalRayInDoubles::DiskBounds> NormalRayInDoubles::bounds_on_disk
     // failed on most disks near the end of a long edge).
     using ComplexModel = ComplexTaylorModel<kModelDegree>;
     const CI i_unit(Interval(0.0), Interval(1.0));
-    const ComplexModel A = ComplexModel(vx) + i_unit * ComplexModel(vy), B = ComplexModel(vx) - i_unit * ComplexModel(vy);
+    const ComplexModel complex_vx(vx), complex_vy(vy);
+    const ComplexModel A = complex_vx + i_unit * complex_vy, B = complex_vx - i_unit * complex_vy;
     const CI u(Interval(A.c[0].re), Interval(-A.c[0].im));
     const auto off_the_cut = [](const CI& z) { return z.re.positive() || z.im.positive() || (-z.im).positive(); };
     if (!off_the_cut((u * A).enclose_disk()) || !off_the_cut((CI(u.re, -u.im) * B).enclose_disk()))

@@ -21,11 +21,11 @@
 // their magnitudes (Higham, Accuracy and Stability, Lemma 3.1 and eq. 3.5;
 // a fused multiply-add only removes roundings); a complex coefficient is two
 // such sums, so its error is at most gamma_n times the sum of the products
-// of the factors' 1-norms |re| + |im| (a real one: one sum, n products). Bounds are sums and products of
-// nonnegative doubles rounded to nearest: a chain of n such operations
-// errs by a factor of at most (1 - u)^-n, so every stored bound is the
-// computed one times 1 + 2^-40 (`inflated`), enough for chains of thousands
-// of operations. A NaN or infinite bound fails every later comparison.
+// of the factors' 1-norms |re| + |im| (a real one: one sum of n products).
+// Bounds are sums and products of nonnegative doubles rounded to nearest:
+// a chain of n such operations errs by a factor of at most (1 - u)^-n, so
+// every stored bound is the computed one times 1 + 2^-40 (`inflated`),
+// enough for chains of thousands of operations. A NaN or infinite bound fails every later comparison.
 #pragma once
 
 #include "util/complex_interval.hpp"
@@ -47,7 +47,9 @@ inline double norm1(const Complex& z) { return std::fabs(z.re) + std::fabs(z.im)
 inline double norm1(double x) { return std::fabs(x); }
 inline double modulus(const Complex& z) { return std::sqrt(z.re * z.re + z.im * z.im); }
 inline double modulus(double x) { return std::fabs(x); }
-inline Complex plus(const Complex& a, const Complex& b, double sign) { return {a.re + sign * b.re, a.im + sign * b.im}; }
+inline Complex plus(const Complex& a, const Complex& b, double sign) {
+    return {a.re + sign * b.re, a.im + sign * b.im};
+}
 inline double plus(double a, double b, double sign) { return a + sign * b; }
 inline Complex negated(const Complex& z) { return {-z.re, -z.im}; }
 inline double negated(double x) { return -x; }
