@@ -420,7 +420,13 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
     // mirrors or copies then is the box's or the torus's: docs/DESIGN.md §10)
     // is final: more mirrors or copies leave it as it is, so a later try
     // keeps its measures (and reach) and measures only the others.
-    std::vector<std::optional<Cell>> final_cells(sites.size());
+    // (Kept aside only before a retry, which replaces out.cells, and behind
+    // pointers: a Cell is half a kilobyte, an optional one a tenth of the
+    // peak memory at 10^5 sites.)
+    std::vector<std::unique_ptr<Cell>> final_cells(sites.size());
+    const auto keep_final = [&](const std::vector<SiteId>& proven) {
+        for (SiteId s : proven) final_cells[s] = std::make_unique<Cell>(std::move(out.cells[s]));
+    };
     // The areas, and each bounded cell's reach: the areas' (or the rings',
     // the less), else by covering the cell's edges.
     auto measure_all = [&]() {
@@ -473,6 +479,7 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                 if (past_the_walls) continue;
                 describe_all();
                 measure_all();
+                std::vector<SiteId> proven_now;
                 for (SiteId s = 0; s < sites.size(); ++s) {
                     if (!wanted[s] || !out.cells[s].visible || final_cells[s]) continue;
                     bool proven = true;
@@ -480,13 +487,14 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                         proven = proven && (across[s][static_cast<std::size_t>(k)] ||
                                             out.cells[s].reach < distance_to_wall(sites[s], kWalls[k], domain));
                     if (proven) {
-                        final_cells[s] = out.cells[s];
+                        proven_now.push_back(s);
                     } else {
                         across[s] = {true, true, true, true};
                         past_the_walls = true;
                     }
                 }
                 if (!past_the_walls) break;
+                keep_final(proven_now);
             }
             break;
         }
@@ -515,15 +523,17 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                 describe_all();
                 measure_all();
                 bool proven = true;
+                std::vector<SiteId> proven_now;
                 for (SiteId s = 0; s < sites.size(); ++s) {
                     if (!wanted[s] || !out.cells[s].visible || final_cells[s]) continue;
                     if (periodic_cell_is_proven(out.cells[s].reach, sites[s],
                                                 distance_to_missing_copies(sites[s], domain, rings), e_max))
-                        final_cells[s] = out.cells[s];
+                        proven_now.push_back(s);
                     else
                         proven = false;
                 }
                 if (proven) break;
+                keep_final(proven_now);
             }
             break;
         }
