@@ -384,6 +384,14 @@ Frame<UpwardInterval> widened_q_frame(const NodeInput& in, const UpwardSite& q, 
     return bq;
 }
 
+// The point V = P + s n~ once s(theta) is enclosed in `root` (left empty
+// when its finiteness is not proved). Under the upward rounding mode.
+void point_of(const Frame<UpwardInterval>& bp, const UpwardInterval& root, std::array<UpwardInterval, 2>& v,
+              std::optional<std::array<Interval, 2>>& point) {
+    v = {bp.x + root * bp.nx, bp.y + root * bp.ny};
+    if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
+}
+
 // What a node gives once s(theta) is enclosed in `root`: the point V and
 // (with_densities) the densities, with s' = -g_theta / g_s from the tie's
 // derivatives over a box holding the root (System's J[1][0], F_theta[1]).
@@ -394,8 +402,8 @@ void node_values(const NodeInput& in, const Frame<UpwardInterval>& bp, const Upw
                  std::optional<std::array<Interval, 2>>& point) {
     using U = UpwardInterval;
     const U ds = -(on_box.g_theta / on_box.g_s);
-    const U v[2] = {bp.x + root * bp.nx, bp.y + root * bp.ny};
-    if (v[0].finite() && v[1].finite()) point = std::array<Interval, 2>{v[0].interval(), v[1].interval()};
+    std::array<U, 2> v;
+    point_of(bp, root, v, point);
     if (!in.with_densities) return;
     // The densities of NormalRayBisector::densities.
     const U vx = bp.dx + ds * bp.nx + root * bp.dnx, vy = bp.dy + ds * bp.ny + root * bp.dny;
@@ -513,11 +521,18 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION bool certify_node_in_disk(const NodeInput& in, c
     using U = UpwardInterval;
     const UpwardRoundingScope upward;
     const UpwardSite p(in.p), q(in.q);
-    const Frame<U> bp(p, U(in.sin_theta), U(in.cos_theta));
+    // A point alone (a ring's) needs of p's frame what F does, and no s'.
+    const Frame<U> bp(p, U(in.sin_theta), U(in.cos_theta),
+                      in.with_densities || in.is_signed ? Frame<U>::all : Frame<U>::point_normal);
     const Frame<U> bq0(q, U(in.sin_phi), U(in.cos_phi), q_parts<U>(in.is_signed));
     double delta[2];
     if (!disk_offsets(in, disk, bp, bq0, delta)) return false;
     const U s = U(in.x0[0]) + U(-delta[0], delta[0]);
+    if (!in.with_densities) {
+        std::array<U, 2> v;
+        point_of(bp, s, v, point);
+        return true;
+    }
     const Frame<U> bq = widened_q_frame(in, q, bq0, delta[1]);
     const TieDerivatives<U> tie(bp, bq, s, Differences<U>(bp, bq, s), in.is_signed);
     if (tie.g_s.contains_zero()) return false;
