@@ -237,14 +237,16 @@ NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool 
 bool NormalRayInDoubles::newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const {
     if (!std::isfinite(start[0])) return false;
     x[0] = start[0], x[1] = start[1];
-    const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta));
+    // F and J alone: of p's frame what they need, no theta-derivatives.
+    const Frame<double> bp(p_.shape, std::sin(theta), std::cos(theta),
+                           signed_ ? Frame<double>::all : Frame<double>::point_normal);
     // Until a step is below 1e-8 (relative: quadratic convergence leaves
     // the point after it within about 1e-16 of the root times the system's
     // curvature; 1e-10 and 1e-15 each cost a step more, 1% and 2% of a cell,
     // for the same widths).
     for (int step = 0; step < 8; ++step) {
         const System<double> at(q_.shape, bp, Frame<double>(q_.shape, std::sin(x[1]), std::cos(x[1]), q_parts<double>(signed_)),
-                                x[0], signed_);
+                                x[0], signed_, false);
         if (!inverse(at.J, C)) return false;
         const double f0 = at.F[0], f1 = at.F[1];
         const double d0 = C[0][0] * f0 + C[0][1] * f1, d1 = C[1][0] * f0 + C[1][1] * f1;
