@@ -229,9 +229,9 @@ struct TaylorModel {
 
     // (p_a + e_a)(p_b + e_b): the product's terms up to d^N (rounding: at
     // most gamma_(N+1) times the sum of |a_i|_1 |b_j|_1 R^k for real
-    // coefficients, gamma_(2N+2) for complex ones); its terms d^k, k > N,
-    // bounded by the 1-norms of their products times R^k; and |p_a| e_b +
-    // |p_b| e_a + e_a e_b.
+    // coefficients, gamma_(2N+2) for complex ones, a sum at most |p_a| |p_b|
+    // bounded by 1-norms); its terms d^k, k > N, bounded by the 1-norms of
+    // their products times R^k; and |p_a| e_b + |p_b| e_a + e_a e_b.
     friend TaylorModel operator*(const TaylorModel& a, const TaylorModel& b) {
         using namespace taylor_model_detail;
         TaylorModel p;
@@ -239,17 +239,12 @@ struct TaylorModel {
         double power[2 * N + 1], na[N + 1], nb[N + 1];
         p.radius_powers(power);
         for (int k = 0; k <= N; ++k) na[k] = norm1(a.c[k]), nb[k] = norm1(b.c[k]);
-        double rounding = 0, high = 0;
         for (int k = 0; k <= N; ++k) {
             Coefficient sum{};
-            double magnitudes = 0;
-            for (int i = 0; i <= k; ++i) {
-                add_product(sum, a.c[i], b.c[k - i]);
-                magnitudes += na[i] * nb[k - i];
-            }
+            for (int i = 0; i <= k; ++i) add_product(sum, a.c[i], b.c[k - i]);
             p.c[k] = sum;
-            rounding += magnitudes * power[k];
         }
+        double high = 0;
         for (int k = N + 1; k <= 2 * N; ++k) {
             double magnitudes = 0;
             for (int i = k - N; i <= N; ++i) magnitudes += na[i] * nb[k - i];
@@ -259,7 +254,7 @@ struct TaylorModel {
         double bound_a = na[N], bound_b = nb[N];
         for (int k = N - 1; k >= 0; --k) bound_a = bound_a * a.radius + na[k], bound_b = bound_b * b.radius + nb[k];
         const double cross = bound_a * b.remainder + bound_b * a.remainder;
-        p.remainder = inflated(gamma(kProductsPerTerm<Coefficient> * (N + 1)) * rounding + high + cross +
+        p.remainder = inflated(gamma(kProductsPerTerm<Coefficient> * (N + 1)) * (bound_a * bound_b) + high + cross +
                                a.remainder * b.remainder);
         return p;
     }
