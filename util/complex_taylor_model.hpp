@@ -185,7 +185,8 @@ struct TaylorModel {
     }
 
     // k a for a rectangle k = m + D(0, rho) (complex models): m a's
-    // coefficients (rounding: gamma_2 |m|_1 |c_j|_1), and rho |a| + |m| e.
+    // coefficients (rounding: gamma_2 |m|_1 |c_j|_1 each, gamma_2 |m|_1 |p_a|
+    // on the disk), and rho |a| + |m| e.
     friend TaylorModel operator*(const ComplexInterval& k, const TaylorModel& a) {
         static_assert(!is_real, "a complex constant times a real model: convert the model");
         using namespace taylor_model_detail;
@@ -194,34 +195,25 @@ struct TaylorModel {
         split(k, m, rho);
         TaylorModel p;
         p.radius = a.radius;
-        double power[2 * N + 1], rounding = 0;
-        a.radius_powers(power);
-        const double m1 = norm1(m);
-        for (int j = 0; j <= N; ++j) {
+        const double m1 = norm1(m), bound = a.polynomial_bound();
+        for (int j = 0; j <= N; ++j)
             p.c[j] = {m.re * a.c[j].re - m.im * a.c[j].im, m.re * a.c[j].im + m.im * a.c[j].re};
-            rounding += m1 * norm1(a.c[j]) * power[j];
-        }
-        p.remainder = inflated(gamma(2) * rounding + rho * (a.polynomial_bound() + a.remainder) + m1 * a.remainder);
+        p.remainder = inflated(gamma(2) * (m1 * bound) + rho * (bound + a.remainder) + m1 * a.remainder);
         return p;
     }
     // k a for a real interval k = m + [-rho, rho]: as above with one rounding
-    // per part (gamma_1 |m| |c_j|_1): the sites' numbers times models in the
-    // box certificate (as complex rectangles they were 9% of a cell's
-    // instructions).
+    // per part (gamma_1 |m| |c_j|_1, gamma_1 |m| |p_a| on the disk): the
+    // sites' numbers times models in the box certificate (as complex
+    // rectangles they were 9% of a cell's instructions).
     friend TaylorModel operator*(const Interval& k, const TaylorModel& a) {
         using namespace taylor_model_detail;
         const double m = k.mid(), above = k.hi - m, below = m - k.lo;
         const double rho = std::isfinite(m) ? inflated(above > below ? above : below) : INFINITY;
         TaylorModel p;
         p.radius = a.radius;
-        double power[2 * N + 1], rounding = 0;
-        a.radius_powers(power);
-        const double m1 = std::fabs(m);
-        for (int j = 0; j <= N; ++j) {
-            p.c[j] = scaled(m, a.c[j]);
-            rounding += m1 * norm1(a.c[j]) * power[j];
-        }
-        p.remainder = inflated(gamma(1) * rounding + rho * (a.polynomial_bound() + a.remainder) + m1 * a.remainder);
+        const double m1 = std::fabs(m), bound = a.polynomial_bound();
+        for (int j = 0; j <= N; ++j) p.c[j] = scaled(m, a.c[j]);
+        p.remainder = inflated(gamma(1) * (m1 * bound) + rho * (bound + a.remainder) + m1 * a.remainder);
         return p;
     }
     friend TaylorModel operator*(const TaylorModel& a, const Interval& k) { return k * a; }
