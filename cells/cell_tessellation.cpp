@@ -147,23 +147,26 @@ public:
                 continue;
             }
             // Along the neighbour's angle the edge runs from `to` to `from`.
-            std::vector<EdgeCoverBox> boxes;
+            CoveredEdge edge;
             const auto shared = shared_.find({static_cast<long>(e.neighbor), static_cast<long>(s), e.to, e.from});
             if (shared != shared_.end()) {
-                boxes = std::move(shared->second);
+                edge = std::move(shared->second);
                 shared_.erase(shared);
-                std::reverse(boxes.begin(), boxes.end());
-                for (EdgeCoverBox& box : boxes) std::reverse(box.points.begin(), box.points.end());
+                std::reverse(edge.boxes.begin(), edge.boxes.end());
+                for (EdgeCoverBox& box : edge.boxes) std::reverse(box.points.begin(), box.points.end());
+                std::reverse(edge.polyline.begin(), edge.polyline.end());
             } else {
                 if (lifted.empty()) lifted = lifted_angles(cell);
                 NormalRayBisector bisector(site, sites_.sites[e.neighbor]);
-                boxes = voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_);
+                edge.boxes = voronoi_edge_cover(bisector, lifted[k], lifted[k + 1], cover_);
+                // Made once, so that both cells' rings have the same points along it.
+                edge.polyline = simplified_polyline(edge.boxes, cover_.radius);
                 if (pending_[e.neighbor])
                     shared_.emplace(std::array<long, 4>{static_cast<long>(s), static_cast<long>(e.neighbor), e.from, e.to},
-                                    boxes);
+                                    edge);
             }
-            for (const EdgeCoverBox& box : boxes) {
-                if (ring) ring->insert(ring->end(), box.points.begin(), box.points.end());
+            if (ring) ring->insert(ring->end(), edge.polyline.begin(), edge.polyline.end());
+            for (const EdgeCoverBox& box : edge.boxes) {
                 reach = std::max(reach, std::min(distance_bound(box, site.xc(), site.yc(), cover_.prec),
                                                  polyline_distance_bound(box, site)));
             }
@@ -224,8 +227,13 @@ private:
     EdgeCoverOptions cover_;
     long vertex_precision_;
     std::vector<char> pending_;
-    // By (covered cell, neighbour, from, to): an edge's boxes until the neighbour takes them.
-    std::map<std::array<long, 4>, std::vector<EdgeCoverBox>> shared_;
+    // An edge's boxes (for the reach) and its ring points.
+    struct CoveredEdge {
+        std::vector<EdgeCoverBox> boxes;
+        std::vector<std::array<double, 2>> polyline;
+    };
+    // By (covered cell, neighbour, from, to): an edge's cover until the neighbour takes it.
+    std::map<std::array<long, 4>, CoveredEdge> shared_;
 };
 
 // The cells of the originals of a plane diagram: sides, vertices, rings, and

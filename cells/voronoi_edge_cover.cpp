@@ -3,6 +3,7 @@
 #include "cells/normal_ray_in_doubles.hpp"
 #include "util/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -239,9 +240,10 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                 : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec, doubles_held, arb_may_try);
         if (bounds) {
             certified_width = h - l;
-            // Nine tenths of the radius for the chords and the overshoot, a
-            // tenth for the points' own enclosures (double intervals: ~1e-13).
-            const double chords = 0.9 * options.radius - bounds->speed * overshoot;
+            // Seven tenths of the radius for the chords and the overshoot, a
+            // tenth at most for the points' own enclosures (double intervals:
+            // ~1e-13), the rest for simplified_polyline.
+            const double chords = 0.7 * options.radius - bounds->speed * overshoot;
             const double pieces = chords > 0 ? std::ceil((h - l) / std::sqrt(8 * chords / bounds->curvature)) : INFINITY;
             if (pieces <= kMaxPointsAPiece) {
                 const int k = static_cast<int>(std::max(1.0, pieces));
@@ -265,6 +267,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
                 const double step = (h - l) / k * (1 + 1e-12);
                 const double err = step * step / 8 * bounds->curvature + bounds->speed * overshoot + gap;
                 ok = err <= options.radius;
+                box.error = err;
                 if (ok) {
                     arb_set(box.x.get(), bounds->x.get());
                     arb_set(box.y.get(), bounds->y.get());
@@ -279,7 +282,8 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
         if (!ok && !apart(points, l, h, 2 * options.radius) &&
             real_ray_points(bisector, p, ball_of(Interval(l, h), prec), prec, box.x, box.y)) {
             const std::array<double, 2> c{box.x.mid_double(), box.y.mid_double()};
-            ok = hypot_up(gap_bound(box.x, c[0], prec), gap_bound(box.y, c[1], prec)) <= options.radius;
+            box.error = hypot_up(gap_bound(box.x, c[0], prec), gap_bound(box.y, c[1], prec));
+            ok = box.error <= options.radius;
             box.points = {c};
         }
         if (ok) {
@@ -299,6 +303,50 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
     // last box hold the true vertices); pieces that small mean a failure anyway.
     if (out.empty() || !(first_piece_end >= first_end) || !(last_piece_start <= last_start))
         throw Error("voronoi_edge_cover: an end piece is narrower than its vertex ball");
+    return out;
+}
+
+std::vector<std::array<double, 2>> simplified_polyline(const std::vector<EdgeCoverBox>& boxes, double radius) {
+    using Point = std::array<double, 2>;
+    std::vector<Point> points;
+    double error = 0, extent = 0;
+    for (const EdgeCoverBox& box : boxes) {
+        error = std::max(error, box.error);
+        for (const Point& q : box.points) {
+            if (points.empty() || q != points.back()) points.push_back(q);  // boxes share their ends
+            extent = std::max({extent, std::fabs(q[0]), std::fabs(q[1])});
+        }
+    }
+    // The distances below, in doubles, err by a few units of extent's last
+    // place: 2^-40 extent covers them.
+    const double tolerance = radius - error - std::ldexp(extent, -40);
+    if (points.size() <= 2 || !(tolerance > 0)) return points;
+    const auto distance_to_segment = [](const Point& q, const Point& a, const Point& b) {
+        const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+        double t = length2 > 0 ? ((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / length2 : 0;
+        t = std::min(1.0, std::max(0.0, t));
+        return std::hypot(q[0] - (a[0] + t * dx), q[1] - (a[1] + t * dy));
+    };
+    std::vector<char> keep(points.size(), 0);
+    keep.front() = keep.back() = 1;
+    std::vector<std::pair<std::size_t, std::size_t>> stack{{0, points.size() - 1}};
+    while (!stack.empty()) {
+        const auto [from, to] = stack.back();
+        stack.pop_back();
+        double farthest = -1;
+        std::size_t at = from;
+        for (std::size_t i = from + 1; i < to; ++i) {
+            const double d = distance_to_segment(points[i], points[from], points[to]);
+            if (!(d <= farthest)) farthest = d, at = i;  // a NaN distance is kept
+        }
+        if (at == from || farthest <= tolerance) continue;
+        keep[at] = 1;
+        stack.push_back({from, at});
+        stack.push_back({at, to});
+    }
+    std::vector<Point> out;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (keep[i]) out.push_back(points[i]);
     return out;
 }
 

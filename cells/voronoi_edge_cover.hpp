@@ -12,7 +12,7 @@
 //    middle, else the linear NormalRayBisector::LinearModel on the box of
 //    real radius |J| and imaginary radius |J|/2) bounds |V'| and |V''| on J
 //    (voronoi_edge_cover.cpp: closed forms for the model's part, Cauchy's
-//    estimates for its remainder, holomorphic there); J is cut into k equal steps with step^2/8 |V''| <= 9/10 of
+//    estimates for its remainder, holomorphic there); J is cut into k equal steps with step^2/8 |V''| <= 7/10 of
 //    the radius less the overshoot |V'| w (at the range's ends V runs past
 //    the true vertex by at most that, w the vertex ball's width), and V at
 //    the k + 1 angles, certified in double intervals (NormalRayInDoubles, else
@@ -38,6 +38,7 @@ namespace ellvor {
 struct EdgeCoverBox {
     Ball x, y;                                  // encloses V(J)
     std::vector<std::array<double, 2>> points;  // the piece's polyline (above)
+    double error = 0;                           // it and V(J) within this of each other (<= radius)
 };
 
 struct EdgeCoverOptions {
@@ -52,6 +53,17 @@ struct EdgeCoverOptions {
 // never a guess.
 std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const Ball& from, const Ball& to,
                                              const EdgeCoverOptions& options);
+
+// The boxes' points as one polyline from the edge's start to its end, fewer
+// of them: Douglas-Peucker within `radius` less the boxes' largest error.
+// Each dropped point lies within that of the segment that replaces it, so
+// the segment lies within it of the dropped part (the part's points project
+// onto all of the segment, and the segment's neighbourhood is convex), and
+// the polyline is within `radius` of the edge as the boxes' points are (the
+// boxes' points, certified for the chords' sagitta under a bound of |V''|
+// that is mostly the speed's change along the edge, are five to seven times
+// as many as a polyline of that tolerance needs).
+std::vector<std::array<double, 2>> simplified_polyline(const std::vector<EdgeCoverBox>& boxes, double radius);
 
 // An upper bound (rounded up) of |x - (cx, cy)| over the points x of a box.
 double distance_bound(const EdgeCoverBox& box, const Rational& cx, const Rational& cy, long prec);
