@@ -76,6 +76,23 @@ TEST_CASE("cell rings lie within the boundary tolerance of the cells", "[cells]"
         ++bounded;
         REQUIRE(c.ring.size() >= 3);
         check_ring(sites, t, c);
+        // Neighbours' rings have the same points along their common edge (its
+        // polyline is made once): at least its two ends, the same doubles,
+        // in one run of the ring (a point of the edge in one ring only would
+        // split the run).
+        for (const CellSide& side : c.sides) {
+            if (side.neighbor < 0 || side.from < 0 || side.to < 0) continue;
+            const Cell& n = t.cells.at(static_cast<std::size_t>(side.neighbor));
+            if (!n.bounded) continue;
+            const std::size_t m = c.ring.size();
+            std::vector<char> shared(m);
+            for (std::size_t i = 0; i < m; ++i)
+                shared[i] = std::find(n.ring.begin(), n.ring.end(), c.ring[i]) != n.ring.end();
+            long runs = 0;
+            for (std::size_t i = 0; i < m; ++i) runs += shared[i] && !shared[(i + 1) % m];
+            CHECK(std::count(shared.begin(), shared.end(), 1) >= 2);
+            CHECK(runs == 1);
+        }
     }
     CHECK(bounded >= 1);
 }
