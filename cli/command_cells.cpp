@@ -172,8 +172,10 @@ int run(const std::vector<std::string>& arguments) {
     auto write = [&](std::ostream& o) {
         if (format == "csv")
             write_cells_csv(o, cells);
+        else if (format == "json")
+            write_cells_json(o, cells), o << "\n";
         else
-            o << (format == "json" ? cells_json(cells) : cells_geojson(cells)).dump() << "\n";
+            write_cells_geojson(o, cells), o << "\n";
     };
     const std::string out = parsed.value("-o", "-");
     if (out == "-") {

@@ -5,6 +5,7 @@
 #include "output/packing_fraction.hpp"
 
 #include <algorithm>
+#include <ostream>
 
 namespace ellvor {
 namespace {
@@ -23,14 +24,14 @@ double twice_signed_area(const std::vector<std::array<double, 2>>& ring) {
 
 }  // namespace
 
-nlohmann::json cells_geojson(const CellTessellation& t) {
-    nlohmann::json features = nlohmann::json::array();
-    std::size_t without_ring = 0;
+void write_cells_geojson(std::ostream& out, const CellTessellation& t) {
+    // The members in nlohmann's (sorted) order; each feature dumped alone.
+    const std::size_t without_ring =
+        std::count_if(t.cells.begin(), t.cells.end(), [](const Cell& c) { return c.ring.empty(); });
+    out << "{\"cells_without_ring\":" << without_ring << ",\"features\":[";
+    bool first = true;
     for (const Cell& c : t.cells) {
-        if (c.ring.empty()) {
-            ++without_ring;
-            continue;
-        }
+        if (c.ring.empty()) continue;
         std::vector<std::array<double, 2>> points = c.ring;
         // RFC 7946: an exterior ring runs counter-clockwise, and is closed.
         if (twice_signed_area(points) < 0) std::reverse(points.begin(), points.end());
@@ -39,16 +40,18 @@ nlohmann::json cells_geojson(const CellTessellation& t) {
         const auto [area_lo, area_hi] = double_bounds(c.area);
         const std::optional<Ball> fraction = packing_fraction(c);
         const auto [pf_lo, pf_hi] = fraction ? double_bounds(*fraction) : std::pair<double, double>{NAN, NAN};
-        features.push_back({{"type", "Feature"},
-                            {"geometry", {{"type", "Polygon"}, {"coordinates", {ring}}}},
-                            {"properties",
-                             {{"site", c.site},
-                              {"area_lo", json_bound(area_lo)},
-                              {"area_hi", json_bound(area_hi)},
-                              {"packing_fraction_lo", json_bound(pf_lo)},
-                              {"packing_fraction_hi", json_bound(pf_hi)}}}});
+        const nlohmann::json feature = {{"type", "Feature"},
+                                        {"geometry", {{"type", "Polygon"}, {"coordinates", {ring}}}},
+                                        {"properties",
+                                         {{"site", c.site},
+                                          {"area_lo", json_bound(area_lo)},
+                                          {"area_hi", json_bound(area_hi)},
+                                          {"packing_fraction_lo", json_bound(pf_lo)},
+                                          {"packing_fraction_hi", json_bound(pf_hi)}}}};
+        out << (first ? "" : ",") << feature.dump();
+        first = false;
     }
-    return {{"type", "FeatureCollection"}, {"features", features}, {"cells_without_ring", without_ring}};
+    out << "],\"type\":\"FeatureCollection\"}";
 }
 
 }  // namespace ellvor

@@ -8,10 +8,11 @@
 
 #include "cells/cell_tessellation.hpp"
 
-#include <nlohmann/json.hpp>
+#include <ostream>
 
 namespace ellvor {
 
-nlohmann::json cells_geojson(const CellTessellation& cells);
+// One line, no newline, a feature at a time (as write_cells_json).
+void write_cells_geojson(std::ostream& out, const CellTessellation& cells);
 
 }  // namespace ellvor

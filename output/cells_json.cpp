@@ -66,17 +66,19 @@ nlohmann::json ball_json(const Ball& b) {
     return {{"lo", json_bound(lo)}, {"hi", json_bound(hi)}};
 }
 
-nlohmann::json cells_json(const CellTessellation& t) {
-    nlohmann::json j;
-    j["domain"] = {{"kind", domain_kind(t.domain.kind)}};
+void write_cells_json(std::ostream& out, const CellTessellation& t) {
+    // The members in nlohmann's (sorted) order; each cell and vertex dumped alone.
+    nlohmann::json domain = {{"kind", domain_kind(t.domain.kind)}};
     if (t.domain.kind != CellDomain::Kind::plane)
-        j["domain"]["box"] = {t.domain.x0.str(), t.domain.y0.str(), t.domain.x1.str(), t.domain.y1.str()};
-    j["boundary_tolerance"] = t.boundary_tolerance;
-    j["vertices"] = nlohmann::json::array();
-    for (const CellVertex& v : t.vertices) j["vertices"].push_back({{"x", ball_json(v.x)}, {"y", ball_json(v.y)}});
-    j["cells"] = nlohmann::json::array();
-    for (const Cell& c : t.cells) j["cells"].push_back(cell_json(c));
-    return j;
+        domain["box"] = {t.domain.x0.str(), t.domain.y0.str(), t.domain.x1.str(), t.domain.y1.str()};
+    out << "{\"boundary_tolerance\":" << nlohmann::json(t.boundary_tolerance).dump() << ",\"cells\":[";
+    for (std::size_t k = 0; k < t.cells.size(); ++k) out << (k ? "," : "") << cell_json(t.cells[k]).dump();
+    out << "],\"domain\":" << domain.dump() << ",\"vertices\":[";
+    for (std::size_t k = 0; k < t.vertices.size(); ++k) {
+        const CellVertex& v = t.vertices[k];
+        out << (k ? "," : "") << nlohmann::json{{"x", ball_json(v.x)}, {"y", ball_json(v.y)}}.dump();
+    }
+    out << "]}";
 }
 
 }  // namespace ellvor

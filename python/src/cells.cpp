@@ -16,6 +16,8 @@
 
 #include <cmath>
 #include <limits>
+#include <ostream>
+#include <sstream>
 
 namespace ellvor::python {
 namespace {
@@ -200,17 +202,31 @@ py::dict arrays(const Cells& c) {
     return out;
 }
 
+// The JSON or GeoJSON document of the cells, with its newline.
+void write_document(std::ostream& out, const Cells& c, const std::string& format) {
+    if (format == "geojson")
+        write_cells_geojson(out, c.t);
+    else
+        write_cells_json(out, c.t);
+    out << "\n";
+}
+
+std::string document(const Cells& c, const std::string& format) {
+    std::ostringstream out;
+    write_document(out, c, format);
+    return out.str();
+}
+
 }  // namespace
 
 void bind_cells(py::module_& m) {
     py::class_<Cells, std::unique_ptr<Cells>>(m, "_Cells")
         .def("arrays", &arrays)
-        .def("json", [](const Cells& c) { return cells_json(c.t).dump() + "\n"; })
-        .def("geojson", [](const Cells& c) { return cells_geojson(c.t).dump() + "\n"; })
+        .def("json", [](const Cells& c) { return document(c, "json"); })
+        .def("geojson", [](const Cells& c) { return document(c, "geojson"); })
         .def("write", [](const Cells& c, const std::string& path, const std::string& format) {
-            const nlohmann::json j = format == "geojson" ? cells_geojson(c.t) : cells_json(c.t);
             py::gil_scoped_release release;
-            write_file_atomically(path, [&](std::ostream& o) { o << j.dump() << "\n"; });
+            write_file_atomically(path, [&](std::ostream& o) { write_document(o, c, format); });
         });
     m.def("_cells", &cells, py::arg("sites"), py::arg("box"), py::arg("periodic"), py::arg("tolerance"),
           py::arg("boundary_tolerance"), py::arg("rings"), py::arg("only") = std::vector<SiteId>{},
