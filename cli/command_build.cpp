@@ -143,13 +143,14 @@ int run(const std::vector<std::string>& args) {
         }
     }
     if (parsed.has("--json")) {
-        const nlohmann::json j = graph_json(graph, sites, stats);
+        // Every certified value first: nothing is written when one fails.
+        const std::vector<VoronoiVertexValue> vertices = voronoi_vertex_values(graph, sites);
+        const auto write = [&](std::ostream& o) { write_graph_json(o, graph, sites, stats, vertices), o << "\n"; };
         const std::string out = parsed.value("--json");
-        if (out == "-") {
-            std::cout << j.dump() << "\n";
-        } else {
-            write_file_atomically(out, [&](std::ostream& o) { o << j.dump() << "\n"; });
-        }
+        if (out == "-")
+            write(std::cout);
+        else
+            write_file_atomically(out, write);
     }
     if (parsed.has("--svg")) {
         SvgOptions options;

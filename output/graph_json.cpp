@@ -36,35 +36,43 @@ nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds) {
     return s;
 }
 
-nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats) {
+std::vector<VoronoiVertexValue> voronoi_vertex_values(const DelaunayGraph& graph, const std::vector<Ellipse>& sites) {
     std::vector<VoronoiVertexValue> vertices;
     for (const auto& f : graph.faces()) vertices.push_back(voronoi_vertex_value(sites, f));
-    return graph_json(graph, sites, stats, vertices);
+    return vertices;
 }
 
-nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats,
-                          const std::vector<VoronoiVertexValue>& vertices) {
+void write_graph_json(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                      const nlohmann::json& stats, const std::vector<VoronoiVertexValue>& vertices) {
     const auto faces = graph.faces();
-    if (vertices.size() != faces.size()) throw Error("graph_json: one Voronoi vertex per face expected");
-    nlohmann::json j;
-    j["sites"] = nlohmann::json::array();
-    for (const Ellipse& e : sites) j["sites"].push_back(e.str());
+    if (vertices.size() != faces.size()) throw Error("write_graph_json: one Voronoi vertex per face expected");
+    // Each member an array written an element at a time, the members in
+    // nlohmann's (sorted) order.
+    const auto array = [&out](const char* name, std::size_t size, const auto& element) {
+        out << '"' << name << "\":[";
+        for (std::size_t k = 0; k < size; ++k) out << (k ? "," : "") << nlohmann::json(element(k)).dump();
+        out << ']';
+    };
+    const auto edges = graph.edges();
+    const auto hidden = graph.hidden();
+    out << '{';
+    array("edges", edges.size(), [&](std::size_t k) { return nlohmann::json{edges[k].first, edges[k].second}; });
+    out << ',';
+    array("faces", faces.size(), [&](std::size_t k) { return nlohmann::json(faces[k]); });
+    out << ',';
+    array("hidden", hidden.size(), [&](std::size_t k) { return nlohmann::json{hidden[k].first, hidden[k].second}; });
+    out << ",\"removed\":" << nlohmann::json(graph.removed()).dump() << ',';
     // Removed sites keep their ids and appear nowhere else: null here.
-    for (SiteId r : graph.removed()) j["sites"][r] = nullptr;
-    j["removed"] = graph.removed();
-    j["hidden"] = nlohmann::json::array();
-    for (const auto& [h, by] : graph.hidden()) j["hidden"].push_back({h, by});
-    j["edges"] = nlohmann::json::array();
-    for (const auto& [a, b] : graph.edges()) j["edges"].push_back({a, b});
-    j["faces"] = faces;
-    j["voronoi_vertices"] = nlohmann::json::array();
-    for (std::size_t k = 0; k < faces.size(); ++k) {
+    std::vector<char> removed(sites.size(), 0);
+    for (SiteId r : graph.removed()) removed.at(r) = 1;
+    array("sites", sites.size(),
+          [&](std::size_t k) { return removed[k] ? nlohmann::json(nullptr) : nlohmann::json(sites[k].str()); });
+    out << ",\"stats\":" << stats.dump() << ',';
+    array("voronoi_vertices", faces.size(), [&](std::size_t k) {
         const VoronoiVertexValue& v = vertices[k];
-        j["voronoi_vertices"].push_back(
-            {{"face", faces[k]}, {"center", {v.x, v.y}}, {"radius", v.radius}, {"error", v.error}});
-    }
-    j["stats"] = stats;
-    return j;
+        return nlohmann::json{{"face", faces[k]}, {"center", {v.x, v.y}}, {"radius", v.radius}, {"error", v.error}};
+    });
+    out << '}';
 }
 
 }  // namespace ellvor

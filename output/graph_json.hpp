@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <ostream>
 #include <vector>
 
 namespace ellvor {
@@ -27,13 +28,16 @@ VoronoiVertexValue voronoi_vertex_value(const std::vector<Ellipse>& sites, const
 // {"seconds", "inserted", "predicates": {name: {"calls", one count per stage}}}.
 nlohmann::json build_stats_json(const DelaunayGraph& graph, double seconds);
 
-// The whole document; `sites` are the graph's sites, `stats` the build's
-// statistics (build_stats_json taken right after the build: validation asks
-// predicates too).
-nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats);
-// The same with the Voronoi vertices already computed, one per face of
-// graph.faces(), in that order (the Python module keeps them as arrays too).
-nlohmann::json graph_json(const DelaunayGraph& graph, const std::vector<Ellipse>& sites, const nlohmann::json& stats,
-                          const std::vector<VoronoiVertexValue>& vertices);
+// The Voronoi vertices of graph.faces(), in that order.
+std::vector<VoronoiVertexValue> voronoi_vertex_values(const DelaunayGraph& graph, const std::vector<Ellipse>& sites);
+
+// Writes the whole document (one line, no newline); `sites` are the graph's
+// sites, `stats` the build's statistics (build_stats_json taken right after
+// the build: validation asks predicates too), `vertices` one per face of
+// graph.faces(), in that order. An element at a time: the bytes of
+// nlohmann's dump of the whole (its members in order) without the document
+// held whole (10^5 random ellipses: 335 MB at the peak, 83 MB for the build).
+void write_graph_json(std::ostream& out, const DelaunayGraph& graph, const std::vector<Ellipse>& sites,
+                      const nlohmann::json& stats, const std::vector<VoronoiVertexValue>& vertices);
 
 }  // namespace ellvor

@@ -14,6 +14,7 @@
 
 #include <pybind11/stl.h>
 
+#include <sstream>
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -328,7 +329,9 @@ py::tuple face_vertices(py::handle sites, py::array_t<std::int64_t, py::array::c
 std::string json(Diagram& d) {
     return locked(d, [](Diagram& g) {
         // The bytes `ellvor build --json` writes.
-        return graph_json(*g.graph, *g.sites, nlohmann::json::parse(g.stats), g.vertex_values()).dump() + "\n";
+        std::ostringstream out;
+        write_graph_json(out, *g.graph, *g.sites, nlohmann::json::parse(g.stats), g.vertex_values());
+        return out.str() + "\n";
     });
 }
 
