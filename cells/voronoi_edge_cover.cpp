@@ -2,6 +2,7 @@
 
 #include "cells/normal_ray_in_doubles.hpp"
 #include "util/error.hpp"
+#include "util/interval_trig.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -91,21 +92,18 @@ struct PieceBounds {
 };
 
 std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayInDoubles& doubles, const SiteBalls& p,
-                                        double l, double h, double margin, long prec, bool& doubles_held,
-                                        bool arb_may_try) {
+                                        const Ellipse::Enclosure& site, double l, double h, double margin, long prec,
+                                        bool& doubles_held, bool arb_may_try) {
     const double half = 0.5 * (h - l), m = 0.5 * (l + h);
     // The model: in double intervals, else by Arb when the caller allows it
     // (a rule of cost: a piece is never accepted without a certificate).
-    Ball mid, s0, s1, s2;
+    Interval mid, s0, s1, s2;
     double remainder, M;  // |e| and |e n~| on Z
     const std::optional<NormalRayInDoubles::RootModel> fast = doubles.root_model(m, half + margin);
     if (!fast && !arb_may_try) return std::nullopt;
     if (fast) {
         doubles_held = true;
-        arb_set_d(mid.get(), fast->mid);
-        arb_set_d(s0.get(), fast->s0);
-        arb_set_d(s1.get(), fast->s1);
-        arb_set_d(s2.get(), fast->s2);
+        mid = Interval(fast->mid), s0 = Interval(fast->s0), s1 = Interval(fast->s1), s2 = Interval(fast->s2);
         remainder = fast->quadratic_remainder;
         M = remainder * fast->normal * (1 + 1e-15);
     } else {
@@ -115,9 +113,12 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
         mag_set_d(arb_radref(z.imag()), margin);
         NormalRayBisector::LinearModel model;
         if (!bisector.solve(z, prec, model)) return std::nullopt;
-        arb_set(mid.get(), model.mid.real());
-        arb_set(s0.get(), model.s0.real());
-        arb_set(s1.get(), model.s1.real());
+        const auto real_part = [](const ComplexBall& z) {
+            Ball r;
+            arb_set(r.get(), z.real());
+            return enclose(r);
+        };
+        mid = real_part(model.mid), s0 = real_part(model.s0), s1 = real_part(model.s1);
         // sup_Z |n~| = sup |(b c, a sn)|
         ComplexBall c, sn, t;
         acb_sin_cos(sn.get(), c.get(), z.get(), prec);
@@ -128,52 +129,26 @@ std::optional<PieceBounds> piece_bounds(NormalRayBisector& bisector, NormalRayIn
         M = remainder * hypot_up(bc, magnitude_up(t.get())) * (1 + 1e-15);
     }
 
-    // Over J, in real balls.
-    const Ball J = ball_of(Interval(l, h), prec);
-    Ball cj, sj, d, s_m, ds, dds, A, B;
-    arb_sin_cos(sj.get(), cj.get(), J.get(), prec);
-    arb_sub(d.get(), J.get(), mid.get(), prec);
-    arb_mul(s_m.get(), s2.get(), d.get(), prec);  // s_m = (s2 d + s1) d + s0
-    arb_add(s_m.get(), s_m.get(), s1.get(), prec);
-    arb_mul(s_m.get(), s_m.get(), d.get(), prec);
-    arb_add(s_m.get(), s_m.get(), s0.get(), prec);
-    arb_mul_2exp_si(dds.get(), s2.get(), 1);  // s_m'' = 2 s2
-    arb_mul(ds.get(), dds.get(), d.get(), prec);  // s_m' = s1 + 2 s2 d
-    arb_add(ds.get(), ds.get(), s1.get(), prec);
-    arb_mul(A.get(), p.b.get(), s_m.get(), prec);  // A = a + b s_m
-    arb_add(A.get(), A.get(), p.a.get(), prec);
-    arb_mul(B.get(), p.a.get(), s_m.get(), prec);  // B = b + a s_m
-    arb_add(B.get(), B.get(), p.b.get(), prec);
-    // out += coefficient f g (k).
-    const auto term = [prec](Ball& out, long coefficient, const Ball& f, const Ball& g, const Ball* k = nullptr) {
-        Ball t;
-        arb_mul(t.get(), f.get(), g.get(), prec);
-        if (k) arb_mul(t.get(), t.get(), k->get(), prec);
-        arb_mul_si(t.get(), t.get(), coefficient, prec);
-        arb_add(out.get(), out.get(), t.get(), prec);
-    };
-    Ball u1, v1, u2, v2;
-    term(u1, -1, sj, A), term(u1, 1, cj, p.b, &ds);
-    term(v1, 1, cj, B), term(v1, 1, sj, p.a, &ds);
-    term(u2, -1, cj, A), term(u2, -2, sj, p.b, &ds), term(u2, 1, cj, p.b, &dds);
-    term(v2, -1, sj, B), term(v2, 2, cj, p.a, &ds), term(v2, 1, sj, p.a, &dds);
-    const auto up = [](const Ball& b) {
-        Mag m;
-        arb_get_mag(m.get(), b.get());
-        return mag_get_d(m.get());
-    };
+    // Over J, in double intervals (Arb's balls were a twelfth of a JSON run).
+    const Interval J(l, h), &a = site.a, &b = site.b;
+    Interval sj, cj;
+    sin_cos(J, sj, cj);
+    const Interval d = J - mid;
+    const Interval s_m = (s2 * d + s1) * d + s0;
+    const Interval dds = 2.0 * s2, ds = dds * d + s1;  // s_m'' = 2 s2, s_m' = s1 + 2 s2 d
+    const Interval A = a + b * s_m, B = b + a * s_m;
+    const Interval u1 = -(sj * A) + cj * b * ds, v1 = cj * B + sj * a * ds;
+    const Interval u2 = -(cj * A) - 2.0 * (sj * b * ds) + cj * b * dds;
+    const Interval v2 = -(sj * B) + 2.0 * (cj * a * ds) + sj * a * dds;
+    const auto up = [](const Interval& x) { return Interval::max(std::fabs(x.lo), std::fabs(x.hi)); };
     PieceBounds out;
     out.speed = hypot_up(up(u1), up(v1)) + M / margin * (1 + 1e-12);
     out.curvature = hypot_up(up(u2), up(v2)) + 2 * M / (margin * margin) * (1 + 1e-12);
-    // V(J) within W(J) and M: s(J) within s_m(J) +- remainder.
-    ComplexBall sJ, vx, vy;
-    arb_set(sJ.real(), s_m.get());
-    Mag e;
-    mag_set_d(e.get(), remainder);
-    arb_add_error_mag(sJ.real(), e.get());
-    ray_points(p, ComplexBall(J), sJ, prec, vx, vy);
-    arb_set(out.x.get(), vx.real());
-    arb_set(out.y.get(), vy.real());
+    // V(J) within W(J) and M: s(J) within s_m(J) +- remainder; V = C + R (c (a + s b), sn (b + s a)).
+    const Interval sJ = s_m + Interval(-remainder, remainder);
+    const Interval lx = cj * (a + sJ * b), ly = sj * (b + sJ * a);
+    out.x = ball_of(site.xc + lx * site.cos - ly * site.sin, prec);
+    out.y = ball_of(site.yc + lx * site.sin + ly * site.cos, prec);
     if (!std::isfinite(out.speed) || !std::isfinite(out.curvature)) return std::nullopt;
     return out;
 }
@@ -198,6 +173,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
     const long prec = options.prec;
     const SiteBalls p(bisector.first(), prec);
     NormalRayInDoubles points(bisector.first(), bisector.second(), bisector.signed_tie());
+    const Ellipse::Enclosure site = bisector.first().enclosure();
     Arf lo_arf, hi_arf, from_hi, to_lo;
     arb_get_lbound_arf(lo_arf.get(), from.get(), prec);
     arb_get_ubound_arf(hi_arf.get(), to.get(), prec);
@@ -237,7 +213,7 @@ std::vector<EdgeCoverBox> voronoi_edge_cover(NormalRayBisector& bisector, const 
         const std::optional<PieceBounds> bounds =
             h - l > 2 * certified_width
                 ? std::nullopt
-                : piece_bounds(bisector, points, p, l, h, 0.5 * (h - l), prec, doubles_held, arb_may_try);
+                : piece_bounds(bisector, points, p, site, l, h, 0.5 * (h - l), prec, doubles_held, arb_may_try);
         if (bounds) {
             certified_width = h - l;
             // Seven tenths of the radius for the chords and the overshoot, a
