@@ -66,7 +66,7 @@ PlaneSites plane_sites(const PeriodicCopies& c) {
     PlaneSites out;
     out.sites = c.sites;
     out.originals = c.originals;
-    for (SiteId s = 0; s < c.sites.size(); ++s) out.original.push_back(c.original_of(s));
+    out.original = c.original;
     out.wall.assign(c.sites.size(), Wall::none);
     out.shift = c.shift;
     return out;
@@ -516,17 +516,30 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
             const double cover_tolerance =
                 options.rings ? boundary_tolerance
                               : std::min((domain.x1 - domain.x0).to_double(), (domain.y1 - domain.y0).to_double()) / 8;
-            // Each ring more moves the missing copies a period farther out;
-            // a cell that still reaches them after three more is an Error.
-            // (Each try measures the cells the earlier ones did not prove: the
-            // first nearly always proves every cell.)
-            for (long rings = first;; ++rings) {
-                out.attempts = static_cast<int>(rings - first + 1);
-                if (rings > first + 3)
+            // The copies: first those within four even spacings plus twice the
+            // largest semi-axis of the box (as a box's mirrors; beyond it every
+            // copy is apart from every site in the box), the margin doubled
+            // while a cell is not proven; then whole rings of copies, each a
+            // period farther out; a cell that still reaches the missing copies
+            // after three rings more than the first is an Error. (Each try
+            // measures the cells the earlier ones did not prove: the first
+            // nearly always proves every cell. Whole rings from the start made
+            // a graph of nine times the sites: a third of 10^4 packed cells.)
+            const CopyMargin rings = ring_margin(domain, first);
+            std::vector<CopyMargin> margins;
+            const double spacing = std::sqrt((domain.x1 - domain.x0).to_double() * (domain.y1 - domain.y0).to_double() /
+                                             static_cast<double>(std::max<std::size_t>(sites.size(), 1)));
+            for (Rational d = Rational(2) * e_max + Rational::of_double(4 * spacing); d < std::min(rings[0], rings[1]);
+                 d = Rational(2) * d)
+                margins.push_back({d, d});
+            for (long k = first; k <= first + 3; ++k) margins.push_back(ring_margin(domain, k));
+            for (std::size_t m = 0;; ++m) {
+                out.attempts = static_cast<int>(m + 1);
+                if (m == margins.size())
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
-                                std::to_string(rings - 1) + " rings of copies");
+                                std::to_string(first + 3) + " rings of copies");
                 plane = std::make_unique<PlaneSites>(
-                    neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, rings)), wanted));
+                    neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, margins[m])), wanted));
                 cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, options.rings);
                 describe_all();
                 measure_all();
@@ -535,7 +548,7 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                 for (SiteId s = 0; s < sites.size(); ++s) {
                     if (!wanted[s] || !out.cells[s].visible || final_cells[s]) continue;
                     if (periodic_cell_is_proven(out.cells[s].reach, sites[s],
-                                                distance_to_missing_copies(sites[s], domain, rings), e_max))
+                                                distance_to_missing_copies(sites[s], domain, margins[m]), e_max))
                         proven_now.push_back(s);
                     else
                         proven = false;

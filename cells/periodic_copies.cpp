@@ -46,23 +46,41 @@ Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box) {
     return shifted(e, -(i * lx), -(j * ly));
 }
 
-PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, long rings) {
+PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, const CopyMargin& margin) {
     const Rational lx = box.x1 - box.x0, ly = box.y1 - box.y0;
     PeriodicCopies out;
     out.originals = wrapped.size();
-    out.rings = rings;
     out.sites = wrapped;
+    for (SiteId s = 0; s < wrapped.size(); ++s) out.original.push_back(s);
     out.shift.assign(wrapped.size(), {0, 0});
-    const std::array<long, 2> k = rings_along_axes(box, rings);
-    for (long i = -k[0]; i <= k[0]; ++i)
-        for (long j = -k[1]; j <= k[1]; ++j) {
+    // Whole periods that may bring a center (in the box) within the margin.
+    const auto periods = [](const Rational& d, const Rational& l) {
+        Integer c;
+        const Rational q = d / l;
+        fmpz_cdiv_q(c.get(), fmpq_numref(q.get()), fmpq_denref(q.get()));
+        return fmpz_get_si(c.get());
+    };
+    const long ki = periods(margin[0], lx), kj = periods(margin[1], ly);
+    const Rational x_lo = box.x0 - margin[0], x_hi = box.x1 + margin[0];
+    const Rational y_lo = box.y0 - margin[1], y_hi = box.y1 + margin[1];
+    for (long i = -ki; i <= ki; ++i)
+        for (long j = -kj; j <= kj; ++j) {
             if (i == 0 && j == 0) continue;
-            for (const Ellipse& e : wrapped) {
-                out.sites.push_back(shifted(e, Rational(i) * lx, Rational(j) * ly));
+            const Rational dx = Rational(i) * lx, dy = Rational(j) * ly;
+            for (SiteId s = 0; s < wrapped.size(); ++s) {
+                const Rational x = wrapped[s].xc() + dx, y = wrapped[s].yc() + dy;
+                if (x < x_lo || !(x < x_hi) || y < y_lo || !(y < y_hi)) continue;
+                out.sites.push_back(shifted(wrapped[s], dx, dy));
+                out.original.push_back(s);
                 out.shift.push_back({i, j});
             }
         }
     return out;
+}
+
+CopyMargin ring_margin(const CellDomain& box, long rings) {
+    const std::array<long, 2> k = rings_along_axes(box, rings);
+    return {Rational(k[0]) * (box.x1 - box.x0), Rational(k[1]) * (box.y1 - box.y0)};
 }
 
 long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box) {
@@ -76,21 +94,16 @@ long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box) 
     }
 }
 
-Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, long rings) {
-    const std::array<long, 2> k = rings_along_axes(box, rings);
-    const Rational dx = Rational(k[0]) * (box.x1 - box.x0) + std::min(box.x1 - p.xc(), p.xc() - box.x0);
-    const Rational dy = Rational(k[1]) * (box.y1 - box.y0) + std::min(box.y1 - p.yc(), p.yc() - box.y0);
+Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, const CopyMargin& margin) {
+    const Rational dx = margin[0] + std::min(box.x1 - p.xc(), p.xc() - box.x0);
+    const Rational dy = margin[1] + std::min(box.y1 - p.yc(), p.yc() - box.y0);
     return std::min(dx, dy);
 }
 
 bool periodic_cell_is_proven(double reach, const Ellipse& p, const Rational& d_out, const Rational& e_max) {
     if (!std::isfinite(reach)) return false;
     // reach is a double, hence an exact rational: the comparison is exact.
-    Arf a;
-    arf_set_d(a.get(), reach);
-    Rational r;
-    arf_get_fmpq(r.get(), a.get());
-    return Rational(2) * r < d_out + std::min(p.a(), p.b()) - e_max;
+    return Rational(2) * Rational::of_double(reach) < d_out + std::min(p.a(), p.b()) - e_max;
 }
 
 void require_sites_fit_periodic_box(const std::vector<Ellipse>& wrapped, const CellDomain& box) {

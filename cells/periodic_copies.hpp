@@ -18,19 +18,25 @@ namespace ellvor {
 // exactly: xc - floor((xc - x0) / Lx) Lx.
 Ellipse wrap_into_box(const Ellipse& e, const CellDomain& box);
 
+// How far beyond the box copies are made: (Dx, Dy).
+using CopyMargin = std::array<Rational, 2>;
+
 // The wrapped sites (ids 0..n-1) followed by their copies shifted by (i Lx,
-// j Ly) for every (i, j) != (0, 0) with |i| <= kx, |j| <= ky, shift by shift:
-// at ring level k, k rings along the longer period and k times the ratio of
-// the periods (rounded up) along the shorter, so that the copies reach about
-// as far both ways.
+// j Ly), (i, j) != (0, 0), whose centers lie in [x0 - Dx, x1 + Dx) x
+// [y0 - Dy, y1 + Dy): a copy left out has its center at least
+// distance_to_missing_copies from the center of any site in the box.
 struct PeriodicCopies {
     std::vector<Ellipse> sites;
+    std::vector<SiteId> original;            // per site: the site it copies
     std::vector<std::array<long, 2>> shift;  // per site
     std::size_t originals = 0;
-    long rings = 0;
-    SiteId original_of(SiteId s) const { return s % originals; }
 };
-PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, long rings);
+PeriodicCopies periodic_copies(const std::vector<Ellipse>& wrapped, const CellDomain& box, const CopyMargin& margin);
+
+// The margin of whole rings of copies at level k: k rings along the longer
+// period and k times the ratio of the periods (rounded up) along the
+// shorter, so that the copies reach about as far both ways.
+CopyMargin ring_margin(const CellDomain& box, long rings);
 
 // Throws InputError naming the site and the shift (in periods) when a site
 // meets one of its own periodic images: the periodic box is too small for
@@ -45,9 +51,9 @@ void require_sites_fit_periodic_box(const std::vector<Ellipse>& wrapped, const C
 long starting_rings(const std::vector<Ellipse>& wrapped, const CellDomain& box);
 
 // A lower bound of the distance from the center of wrapped site p to the
-// center of any copy of any site outside the rings of level `rings`:
-// min(kx Lx + min(x1 - xc, xc - x0), ky Ly + min(y1 - yc, yc - y0)).
-Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, long rings);
+// center of any copy left out at `margin`:
+// min(Dx + min(x1 - xc, xc - x0), Dy + min(y1 - yc, yc - y0)).
+Rational distance_to_missing_copies(const Ellipse& p, const CellDomain& box, const CopyMargin& margin);
 
 // The certificate (docs/DESIGN.md §10): when every point x of p's cell among
 // the copies has |x - c_p| <= reach, and 2 reach < d_out + min(a_p, b_p) -

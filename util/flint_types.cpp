@@ -27,6 +27,14 @@ long Rational::bits() const {
     return n > d ? n : d;
 }
 
+Rational Rational::of_double(double x) {
+    Arf a;
+    arf_set_d(a.get(), x);
+    Rational r;
+    arf_get_fmpq(r.get(), a.get());
+    return r;
+}
+
 double Rational::to_double() const {
     // One correctly rounded division to 53 bits (no double rounding): the
     // nearest double, which the semi-static filters rely on

@@ -69,6 +69,7 @@ public:
     // Bits of the larger of |numerator| and denominator.
     long bits() const;
     double to_double() const;  // the nearest double (in the normal range)
+    static Rational of_double(double x);  // x's exact value (x finite)
     // n / 2^k with |n| < 2^53 and 2^k a single-word integer: exactly a
     // double, a multiple of 2^-61 below 2^53 in magnitude (the inputs of the
     // semi-static filters, circles/semi_static.hpp).

@@ -492,3 +492,59 @@ TEST_CASE("cells in a periodic box: one site near a corner needs a second ring o
         CHECK((s.shift[0] != 0 || s.shift[1] != 0));
     }
 }
+
+TEST_CASE("cells in a periodic box: copies near the box first, farther where a cell reaches past them", "[cells]") {
+    // 196 circles on the left half, one on the right: the copies are first
+    // made within 4 * 100 / sqrt(197) + 2 = 30.5 of the box (not whole rings:
+    // eight times the sites), where the lone cell, a lens some 30 from its
+    // center between the cluster and its copies one period right, is not
+    // proven (twice its reach is past 30.5 + 25 + 1 - 1); with the margin
+    // doubled it is. The retry measures only the cells not proven.
+    std::vector<Ellipse> sites;
+    for (long i = 0; i < 14; ++i)
+        for (long j = 0; j < 14; ++j)
+            sites.push_back(Ellipse::circle(Rational(4 + 7 * i, 2), Rational(7 + 14 * j, 2), Rational(1)));
+    sites.push_back(Ellipse::circle(Rational(75), Rational(50), Rational(1)));
+    CellOptions o;
+    o.boundary_tolerance = 4;
+    const CellDomain box = rectangle(CellDomain::Kind::periodic, Rational(0), Rational(0), Rational(100), Rational(100));
+    const CellTessellation t = cell_tessellation(sites, box, o);
+    check_area_identity(t, o.tolerance);
+    CHECK(t.attempts == 2);
+    INFO("cells measured " << t.cells_measured);
+    CHECK(t.cells_measured > sites.size());
+    CHECK(t.cells_measured < 2 * sites.size());
+    // The lone cell's neighbours: cluster circles and their copies one period right.
+    long copies = 0;
+    for (const CellSide& s : t.cells.back().sides) copies += s.shift[0] == 1;
+    CHECK(copies >= 2);
+
+    // The copies at a margin: exactly those with their centers within it, and
+    // every other copy (brute force over two rings) no nearer any site's
+    // center than distance_to_missing_copies says.
+    const CopyMargin margin = {Rational(61, 2), Rational(20)};
+    const PeriodicCopies c = periodic_copies(sites, box, margin);
+    REQUIRE(c.sites.size() == c.original.size());
+    REQUIRE(c.sites.size() == c.shift.size());
+    std::size_t within = 0;
+    for (long i = -2; i <= 2; ++i)
+        for (long j = -2; j <= 2; ++j)
+            for (SiteId s = 0; s < sites.size(); ++s) {
+                if (i == 0 && j == 0) continue;
+                const Rational x = sites[s].xc() + Rational(100 * i), y = sites[s].yc() + Rational(100 * j);
+                const bool inside = !(x < -margin[0]) && x < Rational(100) + margin[0] && !(y < -margin[1]) &&
+                                    y < Rational(100) + margin[1];
+                within += inside;
+                if (inside) continue;
+                for (SiteId p = 0; p < sites.size(); p += 13) {
+                    const double dx = (x - sites[p].xc()).to_double(), dy = (y - sites[p].yc()).to_double();
+                    CHECK(std::hypot(dx, dy) >= distance_to_missing_copies(sites[p], box, margin).to_double() * (1 - 1e-12));
+                }
+            }
+    CHECK(c.sites.size() == sites.size() + within);
+    for (SiteId s = sites.size(); s < c.sites.size(); ++s) {
+        const Ellipse& o = sites[c.original[s]];
+        CHECK(c.sites[s].xc() == o.xc() + Rational(100 * c.shift[s][0]));
+        CHECK(c.sites[s].yc() == o.yc() + Rational(100 * c.shift[s][1]));
+    }
+}
