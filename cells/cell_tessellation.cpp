@@ -529,9 +529,10 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
             std::vector<CopyMargin> margins;
             const double spacing = std::sqrt((domain.x1 - domain.x0).to_double() * (domain.y1 - domain.y0).to_double() /
                                              static_cast<double>(std::max<std::size_t>(sites.size(), 1)));
-            for (Rational d = Rational(2) * e_max + Rational::of_double(4 * spacing); d < std::min(rings[0], rings[1]);
-                 d = Rational(2) * d)
-                margins.push_back({d, d});
+            if (std::isfinite(spacing))  // (a box beyond the doubles' range: whole rings only)
+                for (Rational d = Rational(2) * e_max + Rational::of_double(4 * spacing); d < std::min(rings[0], rings[1]);
+                     d = Rational(2) * d)
+                    margins.push_back({d, d});
             for (long k = first; k <= first + 3; ++k) margins.push_back(ring_margin(domain, k));
             for (std::size_t m = 0;; ++m) {
                 out.attempts = static_cast<int>(m + 1);
