@@ -539,8 +539,12 @@ CellTessellation cells_near_origin(const std::vector<Ellipse>& input, const Cell
                 if (m == margins.size())
                     throw Error("cell_tessellation: the periodic cells could not be proven with " +
                                 std::to_string(first + 3) + " rings of copies");
-                plane = std::make_unique<PlaneSites>(
-                    neighbourhood_of_originals(plane_sites(periodic_copies(sites, domain, margins[m])), wanted));
+                // Cut down to the originals' neighbourhood (a graph more) only
+                // where it pays: whole rings, or some cells wanted.
+                PlaneSites copies = plane_sites(periodic_copies(sites, domain, margins[m]));
+                plane = std::make_unique<PlaneSites>(options.only.empty() && copies.sites.size() < 2 * sites.size()
+                                                         ? std::move(copies)
+                                                         : neighbourhood_of_originals(copies, wanted));
                 cells = std::make_unique<OriginalCells>(*plane, cover_tolerance, options.rings);
                 describe_all();
                 measure_all();
