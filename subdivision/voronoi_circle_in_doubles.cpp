@@ -322,6 +322,138 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
     return std::nullopt;
 }
 
+// The center alone, when the circle touches every site from outside
+// (docs/DESIGN.md §4.1a, "by distances"). Then V is a root of the plane system
+//     G(V) = (d_1(V) - d_2(V), d_1(V) - d_3(V)) = 0,
+// d_i the distance to E_i, and Krawczyk's test on G needs three boundary
+// points at the point m, none over a box:
+// - At a point c and an exact boundary point P (at the double parameter
+//   m_i) with outward unit normal n: E_i lies in the half-plane
+//   n . (y - P) <= 0, so n . (c - P) <= d_i(c) <= |c - P| (c is outside E_i
+//   when the left side is positive). E_i's nearest point Q to c lies in that
+//   half-plane no farther from c than P, so n . (c - Q)/|c - Q| >=
+//   n . (c - P)/|c - P| = cos delta: grad d_i(c) = (c - Q)/|c - Q| is within
+//   the angle delta of n, and tan delta = |n x (c - P)| / n . (c - P) (the
+//   `slope` below) bounds delta and |grad d_i(c) - n| = 2 sin(angle / 2).
+// - Over a box: c - Q(c) is 1-Lipschitz (the identity minus the projection
+//   on a convex set is nonexpansive), and unit vectors obey
+//   |u/|u| - v/|v|| <= 2 |u - v| / (|u| + |v|) (Dunkl-Williams, in an inner
+//   product space), so |grad d_i(y) - grad d_i(c)| <= |y - c| / (d_i(c) - |y - c|).
+// So J(X)'s rows grad d_1 - grad d_k are enclosed from the normals at m, and
+// K(X) inside X proves one root V of G in X: a point at the same distance
+// rho > 0 from the three sites, i.e. a circle touching each from outside at
+// its nearest point; with those points counter-clockwise (the normals
+// grad d_i(V) are: P_i = V - rho grad d_i(V)), THE Voronoi circle, as in
+// voronoi_circle_enclosure.hpp. rho = d_i(V) is within |V - c| of d_i(c).
+// The tangency parameters follow from the normals' directions: the normal's
+// angle grows with the ellipse angle theta at the rate a b / |g|^2 >=
+// a b / max(a, b)^2 (boundary_at), and dt/dtheta = (1 + t^2)/2 (either chart).
+// Under the upward rounding mode as krawczyk(), whose arguments this takes
+// (`converged_step_only` the same rule, on G's Newton step); it fails where
+// a center is not proven outside a site (crossing sites, rho <= 0), and
+// krawczyk() runs.
+ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_krawczyk(
+    const std::array<Shape<UpwardInterval>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m,
+    double length_scale, bool converged_step_only = false) {
+    const UpwardRoundingScope upward;
+    using U = UpwardInterval;
+    const double c[2] = {m[4], m[5]};
+    std::array<BoundaryPoint<U>, 3> at;
+    double near[3], far[3], slope[3];  // d_i(c) in [near, far]; tan delta_i <= slope
+    for (int i = 0; i < 3; ++i) {
+        boundary_at(k[i], flipped[i], U(m[i]), Parts::point, at[i]);
+        const U wx = U(c[0]) - at[i].px, wy = U(c[1]) - at[i].py;
+        const U along = at[i].nx * wx + at[i].ny * wy, across = at[i].nx * wy - at[i].ny * wx;
+        if (!(along.lo > 0) || !across.finite()) return std::nullopt;  // c not proven outside E_i
+        near[i] = along.lo;
+        far[i] = (wx.square() + wy.square()).sqrt().hi;
+        slope[i] = magnitude(across) / along.lo;
+    }
+    const U G[2] = {U(near[0], far[0]) - U(near[1], far[1]), U(near[0], far[0]) - U(near[2], far[2])};
+    // Y ~ J(c)^-1 from the normals' midpoints (any Y is sound).
+    const auto mid = [](const U& x) { return 0.5 * (x.lo + x.hi); };
+    const double j00 = mid(at[0].nx) - mid(at[1].nx), j01 = mid(at[0].ny) - mid(at[1].ny);
+    const double j10 = mid(at[0].nx) - mid(at[2].nx), j11 = mid(at[0].ny) - mid(at[2].ny);
+    const double det = j00 * j11 - j01 * j10;
+    const double Y[2][2] = {{j11 / det, -j01 / det}, {-j10 / det, j00 / det}};
+    if (!std::isfinite(Y[0][0] + Y[0][1] + Y[1][0] + Y[1][1])) return std::nullopt;  // finite only if each is
+    U correction[2];  // Y G(c)
+    double r[2];
+    for (int j = 0; j < 2; ++j) {
+        correction[j] = Y[j][0] * G[0] + Y[j][1] * G[1];
+        if (!correction[j].finite()) return std::nullopt;
+        const double unit = std::fabs(c[j]) + length_scale;
+        if (converged_step_only && !(magnitude(correction[j]) <= kConvergedStep * unit)) return std::nullopt;
+        r[j] = 2 * magnitude(correction[j]) + 1e-15 * unit;
+    }
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        U X[2];
+        double reach_of_box[2];  // |y - c| bound per axis: the rounding widened X beyond c +- r
+        for (int j = 0; j < 2; ++j) {
+            X[j] = U(-(r[j] - c[j]), c[j] + r[j]);
+            reach_of_box[j] = Interval::max(c[j] - X[j].lo, X[j].hi - c[j]);
+        }
+        const double reach = std::sqrt(reach_of_box[0] * reach_of_box[0] + reach_of_box[1] * reach_of_box[1]);
+        U gradient_x[3], gradient_y[3];  // grad d_i over X
+        for (int i = 0; i < 3; ++i) {
+            const double room = -(reach - near[i]);  // d_i(y) >= near - reach, rounded down
+            if (!(room > 0)) return std::nullopt;
+            const double spread = slope[i] + reach / room;
+            gradient_x[i] = at[i].nx + U(-spread, spread), gradient_y[i] = at[i].ny + U(-spread, spread);
+        }
+        const U J[2][2] = {{gradient_x[0] - gradient_x[1], gradient_y[0] - gradient_y[1]},
+                           {gradient_x[0] - gradient_x[2], gradient_y[0] - gradient_y[2]}};
+        bool inside = true;
+        U K[2];
+        double reach_of_K[2];
+        for (int j = 0; j < 2; ++j) {
+            double spread = 0;  // |(I - Y J(X)) (X - c)| bound, row j
+            for (int l = 0; l < 2; ++l) {
+                const U entry = U(j == l ? 1.0 : 0.0) - (Y[j][0] * J[0][l] + Y[j][1] * J[1][l]);
+                if (!entry.finite()) return std::nullopt;
+                spread += magnitude(entry) * reach_of_box[l];
+            }
+            K[j] = U(c[j]) - correction[j] + U(-spread, spread);
+            if (!K[j].finite()) return std::nullopt;
+            if (!(K[j].lo > X[j].lo && K[j].hi < X[j].hi)) inside = false;
+            reach_of_K[j] = Interval::max(c[j] - K[j].lo, K[j].hi - c[j]);
+        }
+        if (!inside) {
+            for (int j = 0; j < 2; ++j) r[j] = 2 * Interval::max(r[j], reach_of_K[j]);
+            continue;
+        }
+        // The root V in K: rho, the normals grad d_i(V) and the tangency parameters.
+        const double reach_V = std::sqrt(reach_of_K[0] * reach_of_K[0] + reach_of_K[1] * reach_of_K[1]);
+        double rho_lo = 0, rho_hi = HUGE_VAL;
+        U normal_x[3], normal_y[3];
+        std::array<Interval, 6> box;
+        for (int i = 0; i < 3; ++i) {
+            const double room = -(reach_V - near[i]);  // positive: reach_V <= reach
+            rho_lo = Interval::max(rho_lo, room), rho_hi = Interval::min(rho_hi, far[i] + reach_V);
+            const double chord = reach_V / room;  // |grad d_i(V) - grad d_i(c)|
+            if (!(chord <= 1)) return std::nullopt;
+            const double spread = slope[i] + chord;
+            normal_x[i] = at[i].nx + U(-spread, spread), normal_y[i] = at[i].ny + U(-spread, spread);
+            // The angle from n_i to grad d_i(V): delta_i + 2 arcsin(chord / 2),
+            // and arcsin x <= (pi / 2) x on [0, 1].
+            const double angle = slope[i] + 1.5708 * chord;
+            // |theta_i - theta(m_i)| <= angle max(a, b)^2 / (a b); t moves at
+            // most 1 while (1 + t^2)/2 <= (1 + (|m_i| + 1)^2)/2.
+            const double major = Interval::max(k[i].a.hi, k[i].b.hi), t_bound = std::fabs(m[i]) + 1;
+            const double step = angle * (major * major) / k[i].ab.lo * (1 + t_bound * t_bound) / 2;
+            if (!(step <= 1)) return std::nullopt;
+            box[i] = Interval(-(step - m[i]), m[i] + step);
+        }
+        if (!(rho_lo > 0 && rho_lo <= rho_hi)) return std::nullopt;
+        const U orientation = (normal_x[1] - normal_x[0]) * (normal_y[2] - normal_y[0]) -
+                              (normal_y[1] - normal_y[0]) * (normal_x[2] - normal_x[0]);
+        if (!orientation.positive()) return std::nullopt;
+        box[3] = Interval(rho_lo, rho_hi), box[4] = K[0].interval(), box[5] = K[1].interval();
+        return box;
+    }
+    return std::nullopt;
+}
+
 // J d = f for the Jacobian of the tritangent system, by its structure
 // (tritangent_system): rows 2i, 2i + 1 read
 //     scale_i nu_i^perp d_ti + nu_i d_rho - d_V = f_i.
@@ -416,7 +548,8 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
     return step;
 }
 
-// Newton in doubles in the charts from x, then the Krawczyk certificate;
+// Newton in doubles in the charts from x, then the certificates (by
+// distances, else the 6 x 6 Krawczyk test);
 // `shape` and `enclosed` are the sites in doubles and enclosed. Keeps each
 // parameter in the chart where it is at most 1 in magnitude. `damped`: steps
 // by damped_step, and more of them (the retry of a start that did not
@@ -454,9 +587,10 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     // the step before: any nonsingular Y is sound.)
     constexpr double kNearlyConverged = 1e-7;
     bool tried_early = false;
-    const auto certified = [&](const std::array<Interval, 6>& box) {
+    const auto certified = [&](const std::array<Interval, 6>& box, bool by_distances) {
         if (diverged) *diverged = false;
         DoubleVoronoiCircle circle;
+        circle.by_distances = by_distances;
         for (int i = 0; i < 3; ++i) circle.parameter[i] = box[i];
         circle.flipped = flipped;
         circle.radius = box[3], circle.center_x = box[4], circle.center_y = box[5];
@@ -490,22 +624,25 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         if (converged) Y = newton.inverse();
         if (!converged && relative <= kNearlyConverged && !tried_early) {
             tried_early = true;
+            const Eigen::Map<const Vector6> m(x.data());
+            if (const auto box = distance_krawczyk(enclosed, flipped, m, length_scale, true)) return certified(*box, true);
             Y = newton.inverse();
             if (!std::isfinite(Y.sum())) continue;  // a sum is finite only if each term is
-            if (const auto box = krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale, true))
-                return certified(*box);
+            if (const auto box = krawczyk(enclosed, flipped, m, Y, length_scale, true)) return certified(*box, false);
         }
     }
-    if (!converged || !std::isfinite(Y.sum())) return std::nullopt;
+    if (!converged) return std::nullopt;
+    const Eigen::Map<const Vector6> m(x.data());
+    if (const auto box = distance_krawczyk(enclosed, flipped, m, length_scale)) return certified(*box, true);
+    if (!std::isfinite(Y.sum())) return std::nullopt;
     if (diverged) *diverged = false;
-    const std::optional<std::array<Interval, 6>> box =
-        krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(x.data()), Y, length_scale);
+    const std::optional<std::array<Interval, 6>> box = krawczyk(enclosed, flipped, m, Y, length_scale);
     if (!box) {
         // Stalled at the rounding noise: a start for Arb (the first one met).
         if (stalled && !*stalled && previous > kConvergedStep) offer_stalled_root(at, flipped, x, *stalled);
         return std::nullopt;
     }
-    return certified(*box);
+    return certified(*box, false);
 }
 
 }  // namespace

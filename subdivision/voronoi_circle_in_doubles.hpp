@@ -12,7 +12,10 @@
 // K(X) inside the interior of X proves exactly one solution in X, and it lies
 // in K(X). With rho > 0 and the tangency points counter-clockwise on the box,
 // that solution is THE counter-clockwise Voronoi circle, for the reason given
-// in voronoi_circle_enclosure.hpp. Anything the doubles cannot prove
+// in voronoi_circle_enclosure.hpp. First, where the center lies outside the
+// three sites (rho > 0), a cheaper test proves the same from the center's
+// distances to the sites alone (the .cpp's distance_krawczyk, DESIGN.md
+// §4.1a "By distances first"). Anything the doubles cannot prove
 // (no convergence, a box that does not contract, an overflow, rho or the
 // orientation not of certain sign) is "not certified", and the Arb solver
 // runs; it never answers "no circle".
@@ -33,6 +36,9 @@ struct DoubleVoronoiCircle {
     std::array<Interval, 3> parameter;
     std::array<bool, 3> flipped{};
     bool from_tangent_line = false;  // certified from a huge circle's tangent-line start
+    // Certified by the center's distances to the sites (rho > 0), not by the
+    // whole tritangent system.
+    bool by_distances = false;
 };
 
 // A root of the tritangent system that Newton in doubles reached only to the

@@ -46,8 +46,15 @@ std::string show(const Interval& x) {
 }
 
 struct Tally {
-    int triples = 0, by_arb = 0, by_doubles = 0, no_circle = 0;
+    int triples = 0, by_arb = 0, by_doubles = 0, by_distances = 0, no_circle = 0;
 };
+
+// Whether the box holds the ball (Arb's enclosure, refined far below the
+// box's width): a strict test of the box, where meeting is a weak one.
+bool holds(const Interval& box, const Ball& b) {
+    const Interval e = enclose(b);
+    return box.lo <= e.lo && e.hi <= box.hi;
+}
 
 // One triple: the double certificate against Arb's.
 void compare_with_arb(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, Tally& tally) {
@@ -91,12 +98,23 @@ void compare_with_arb(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, T
     // a radius to about 10^-3), and nearly collinear triples are ill-conditioned:
     // a circle R times its smallest site loses about log2(R / size) more bits
     // (10^7 times: ten times wider).
-    const double size = d->radius.hi + std::fabs(d->center_x.hi) + std::fabs(d->center_y.hi);
+    const double size = std::fmax(std::fabs(d->radius.lo), std::fabs(d->radius.hi)) + std::fabs(d->center_x.hi) + std::fabs(d->center_y.hi);
     double smallest = HUGE_VAL;
     for (const Ellipse* e : {&e1, &e2, &e3}) smallest = std::min({smallest, e->enclosure().a.lo, e->enclosure().b.lo});
     const double condition = std::fmax(1.0, d->radius.lo / smallest / 1e6);
     INFO("radius / smallest semi-axis " << d->radius.lo / smallest);
     CHECK(d->radius.hi - d->radius.lo <= 1e-6 * condition * size);
+    if (!d->by_distances) return;
+    // The certificate by distances (rho > 0) encloses the circle: Arb's, at
+    // 80 correct bits, lies inside each of its intervals.
+    ++tally.by_distances;
+    CHECK(d->radius.lo > 0);
+    REQUIRE(arb.refine(80));
+    CHECK(holds(d->center_x, c.center_x));
+    CHECK(holds(d->center_y, c.center_y));
+    CHECK(holds(d->radius, c.radius));
+    for (int i = 0; i < 3; ++i)
+        if (d->flipped[i] == c.flipped[i]) CHECK(holds(d->parameter[i], c.parameter[i]));
 }
 
 Ellipse random_site(Rng& rng, long half_box, long max_axis_tenths, long min_axis_tenths = 2) {
@@ -128,10 +146,13 @@ TEST_CASE("doubles vs Arb: 10^4 random triples, certified or handed over, never 
         compare_with_arb(e[0], e[1], e[2], tally);
     }
     if (verbose())
-        std::printf("[doubles vs Arb] random: %d triples, %d with a circle, %d certified in doubles, %d without\n",
-                    tally.triples, tally.by_arb, tally.by_doubles, tally.no_circle);
+        std::printf("[doubles vs Arb] random: %d triples, %d with a circle, %d certified in doubles (%d by distances), %d without\n",
+                    tally.triples, tally.by_arb, tally.by_doubles, tally.by_distances, tally.no_circle);
     CHECK(tally.no_circle >= 1000);  // both kinds are exercised
     CHECK(tally.by_doubles >= 0.95 * tally.by_arb);
+    // Sites apart: the circle touches each from outside, and the center's
+    // distances certify it (the 6 x 6 test is the exception).
+    CHECK(tally.by_distances >= 0.95 * tally.by_doubles);
 }
 
 TEST_CASE("doubles vs Arb: elongated sites that nearly touch (a dense packing), by the damped retry",
@@ -207,8 +228,8 @@ TEST_CASE("doubles vs Arb: near-degenerate triples", "[subdivision][voronoi_circ
             else compare_with_arb(t[0], t[2], t[1], tally);
         }
     if (verbose())
-        std::printf("[doubles vs Arb] near-degenerate: %d triples, %d with a circle, %d certified in doubles, %d without\n",
-                    tally.triples, tally.by_arb, tally.by_doubles, tally.no_circle);
+        std::printf("[doubles vs Arb] near-degenerate: %d triples, %d with a circle, %d certified in doubles (%d by distances), %d without\n",
+                    tally.triples, tally.by_arb, tally.by_doubles, tally.by_distances, tally.no_circle);
     CHECK(tally.by_doubles > 0);
     CHECK(tally.by_doubles < tally.by_arb);  // some are beyond doubles and handed over
 }
@@ -328,17 +349,13 @@ TEST_CASE("doubles: the 3e5-radius hull circle of 10^6 random ellipses certifies
     VoronoiCircleSolver arb(s[0], s[1], s[2]);
     REQUIRE(arb.refine(80));
     const VoronoiCircleEnclosure& c = arb.enclosure();
-    auto inside = [](const Ball& b, const Interval& box) {
-        const Interval e = enclose(b);
-        return box.lo <= e.lo && e.hi <= box.hi;
-    };
     INFO("doubles: x " << show(d->center_x) << " y " << show(d->center_y) << " radius " << show(d->radius));
     INFO("Arb: x " << c.center_x.str(20) << " y " << c.center_y.str(20) << " radius " << c.radius.str(20));
-    CHECK(inside(c.center_x, d->center_x));
-    CHECK(inside(c.center_y, d->center_y));
-    CHECK(inside(c.radius, d->radius));
+    CHECK(holds(d->center_x, c.center_x));
+    CHECK(holds(d->center_y, c.center_y));
+    CHECK(holds(d->radius, c.radius));
     for (int i = 0; i < 3; ++i)
-        if (d->flipped[i] == c.flipped[i]) CHECK(inside(c.parameter[i], d->parameter[i]));
+        if (d->flipped[i] == c.flipped[i]) CHECK(holds(d->parameter[i], c.parameter[i]));
     // InCircle decides on the double circle (the filter stage) without
     // building the Arb solver: a site far right of the disk, one inside it.
     VoronoiCircle circle(s[0], s[1], s[2]);
@@ -471,4 +488,30 @@ TEST_CASE("doubles: no root at all for a circle 10^11 sizes across; the Arb solv
         CHECK(arb_overlaps(reversed.enclosure().center_x.get(), reversed_fresh.enclosure().center_x.get()));
         CHECK(!arb_overlaps(reversed.enclosure().radius.get(), c.radius.get()));
     }
+}
+
+TEST_CASE("doubles: a center inside the sites (crossing sites, rho < 0) is certified by the 6 x 6 test, not by distances",
+          "[subdivision][voronoi_circle_in_doubles]") {
+    // Three ellipses that cross one another around the origin: the circle's
+    // center lies inside all three, where the distance certificate proves
+    // nothing (no point outside a site); the tritangent test with
+    // Blaschke's bound certifies the internal circle, as Arb does.
+    const Ellipse e1(Rational(8, 5), Rational(7, 5), 0, 1, 0);
+    const Ellipse e2(Rational(8, 5), Rational(7, 5), Rational(1, 2), Rational(-1, 2), Rational(7, 8));
+    const Ellipse e3(Rational(8, 5), Rational(7, 5), Rational(-1, 3), Rational(-1, 2), Rational(-7, 8));
+    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(e1, e2, e3);
+    REQUIRE(d.has_value());
+    CHECK(!d->by_distances);
+    CHECK(d->radius.hi < 0);
+    Tally tally;
+    compare_with_arb(e1, e2, e3, tally);
+    CHECK(tally.by_doubles == 1);
+    CHECK(tally.by_distances == 0);
+    // Moved apart, the same shapes' circle is certified by distances.
+    const Ellipse f1(Rational(8, 5), Rational(7, 5), 0, 5, 0);
+    const Ellipse f2(Rational(8, 5), Rational(7, 5), Rational(1, 2), Rational(-5, 2), Rational(35, 8));
+    const Ellipse f3(Rational(8, 5), Rational(7, 5), Rational(-1, 3), Rational(-5, 2), Rational(-35, 8));
+    compare_with_arb(f1, f2, f3, tally);
+    CHECK(tally.by_doubles == 2);
+    CHECK(tally.by_distances == 1);
 }
