@@ -45,7 +45,8 @@ const DoubleVoronoiCircle* CellVertexAngles::circle_in_doubles(long face) {
     if (!tried_in_doubles_[f]) {
         tried_in_doubles_[f] = 1;
         circles_in_doubles_[f] =
-            certify_voronoi_circle_in_doubles(sites_[(*faces_)[f][0]], sites_[(*faces_)[f][1]], sites_[(*faces_)[f][2]]);
+            certify_voronoi_circle_in_doubles(sites_[(*faces_)[f][0]], sites_[(*faces_)[f][1]], sites_[(*faces_)[f][2]],
+                                              nullptr, DoubleCertificate::tritangent_only);
     }
     return circles_in_doubles_[f] ? &*circles_in_doubles_[f] : nullptr;
 }

@@ -26,7 +26,8 @@ bool is_tight(const VoronoiCircleBox& c) {
 }
 
 VoronoiCircleBox voronoi_circle_box(const std::vector<Ellipse>& sites, const std::array<SiteId, 3>& face) {
-    const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(sites[face[0]], sites[face[1]], sites[face[2]]);
+    const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(sites[face[0]], sites[face[1]], sites[face[2]], nullptr,
+                                                                                   DoubleCertificate::tritangent_only);
     return voronoi_circle_box(sites, face, c ? &*c : nullptr);
 }
 

@@ -569,6 +569,7 @@ double damped_step(const std::array<Shape<double>, 3>& shape, const std::array<b
 
 std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<double>, 3>& shape,
                                                        const std::array<Shape<UpwardInterval>, 3>& enclosed,
+                                                       DoubleCertificate which,
                                                        std::array<bool, 3> flipped, std::array<double, 6> x,
                                                        double length_scale, bool damped = false,
                                                        bool* diverged = nullptr,
@@ -625,7 +626,8 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
         if (!converged && relative <= kNearlyConverged && !tried_early) {
             tried_early = true;
             const Eigen::Map<const Vector6> m(x.data());
-            if (const auto box = distance_krawczyk(enclosed, flipped, m, length_scale, true)) return certified(*box, true);
+            if (which == DoubleCertificate::distances_first)
+                if (const auto box = distance_krawczyk(enclosed, flipped, m, length_scale, true)) return certified(*box, true);
             Y = newton.inverse();
             if (!std::isfinite(Y.sum())) continue;  // a sum is finite only if each term is
             if (const auto box = krawczyk(enclosed, flipped, m, Y, length_scale, true)) return certified(*box, false);
@@ -633,7 +635,8 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     }
     if (!converged) return std::nullopt;
     const Eigen::Map<const Vector6> m(x.data());
-    if (const auto box = distance_krawczyk(enclosed, flipped, m, length_scale)) return certified(*box, true);
+    if (which == DoubleCertificate::distances_first)
+        if (const auto box = distance_krawczyk(enclosed, flipped, m, length_scale)) return certified(*box, true);
     if (!std::isfinite(Y.sum())) return std::nullopt;
     if (diverged) *diverged = false;
     const std::optional<std::array<Interval, 6>> box = krawczyk(enclosed, flipped, m, Y, length_scale);
@@ -649,7 +652,8 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
 
 std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
                                                                       const Ellipse& e3,
-                                                                      std::optional<StalledDoubleRoot>* stalled) {
+                                                                      std::optional<StalledDoubleRoot>* stalled,
+                                                                      DoubleCertificate which) {
     if (stalled) stalled->reset();
     const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
     std::array<Shape<double>, 3> shape;
@@ -687,7 +691,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
             }
             if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) continue;
             bool diverged = false;
-            if (auto certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, circle[0]), false,
+            if (auto certified = newton_then_certify(shape, enclosed, which, flipped, x, std::max(size, circle[0]), false,
                                                      &diverged, stalled))
                 return certified;
             if (diverged) retries.push_back({flipped, x, std::max(size, circle[0])});
@@ -697,7 +701,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
     // step overshoots and cycles). Only after every plain start failed, so
     // the inputs those decide cost the same as before.
     for (const Retry& r : retries)
-        if (auto certified = newton_then_certify(shape, enclosed, r.flipped, r.x, r.length_scale, true, nullptr, stalled))
+        if (auto certified = newton_then_certify(shape, enclosed, which, r.flipped, r.x, r.length_scale, true, nullptr, stalled))
             return certified;
     // Circles far larger than the sites (three sites nearly on a line): the
     // models' circles may lead Newton to the clockwise one, or not exist; the
@@ -707,7 +711,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
     std::optional<DoubleVoronoiCircle> certified;
     const auto try_start = [&](const std::array<bool, 3>& flipped, const std::array<double, 6>& x) {
         if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) return false;
-        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, x[3]), false, nullptr, stalled);
+        certified = newton_then_certify(shape, enclosed, which, flipped, x, std::max(size, x[3]), false, nullptr, stalled);
         if (certified) certified->from_tangent_line = true;
         return certified.has_value();
     };
@@ -728,7 +732,7 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
             flipped[i] = cos < 0;
             x[i] = flipped[i] ? -sin / (1 - cos) : sin / (1 + cos);
         }
-        certified = newton_then_certify(shape, enclosed, flipped, x, std::max(size, c.radius), false, nullptr, stalled);
+        certified = newton_then_certify(shape, enclosed, which, flipped, x, std::max(size, c.radius), false, nullptr, stalled);
         return certified.has_value();
     };
     if (for_each_bisector_walk_circle(e1, e2, e3, try_walked)) return certified;

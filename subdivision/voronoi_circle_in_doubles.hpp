@@ -53,11 +53,17 @@ struct StalledDoubleRoot {
     std::array<double, 6> x{};
 };
 
+// Which certificates may prove the circle: the center's distances first
+// (the build's), or the 6 x 6 test only, whose tangency parameters are some
+// ten times narrower (callers that read the tangency angles or the vertex to
+// ~2^-44: the cells' vertex angles, the Voronoi vertices written out).
+enum class DoubleCertificate { distances_first, tritangent_only };
+
 // Starts from the Apollonius circles of circle models of the sites
 // (voronoi_circle_guess.hpp), Newton in doubles; nullopt when none certifies.
 // Then, if `stalled` is given, the first stalled root met (nullopt if none).
-std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellipse& e1, const Ellipse& e2,
-                                                                      const Ellipse& e3,
-                                                                      std::optional<StalledDoubleRoot>* stalled = nullptr);
+std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(
+    const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, std::optional<StalledDoubleRoot>* stalled = nullptr,
+    DoubleCertificate which = DoubleCertificate::distances_first);
 
 }  // namespace ellvor

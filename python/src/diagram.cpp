@@ -391,7 +391,8 @@ py::tuple seam_circles(Diagram& d, py::array_t<bool, py::array::c_style | py::ar
         auto certify = [&](std::size_t k) {
             if (box[k]) return;
             const auto& f = g.faces[k];
-            const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]]);
+            const std::optional<DoubleVoronoiCircle> c = certify_voronoi_circle_in_doubles(s[f[0]], s[f[1]], s[f[2]], nullptr,
+                                                                                      DoubleCertificate::tritangent_only);
             set_box(k, c ? &*c : nullptr);
         };
         auto tighten = [&](std::size_t k) {

@@ -33,8 +33,13 @@ void check_box(const std::vector<Ellipse>& s, const VoronoiCircleBox& box, doubl
 
 TEST_CASE("voronoi_circle_box: a tight double box is kept", "[output][voronoi_circle_box]") {
     const std::vector<Ellipse> s = {Ellipse(2, 1, 0, 6, 0), Ellipse::circle(0, 6, 1), Ellipse(1, Rational(1, 2), 1, -6, 0)};
-    const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(s[0], s[1], s[2]);
+    // The box written out is the 6 x 6 test's (the narrower one), not the
+    // build's certificate by distances.
+    const std::optional<DoubleVoronoiCircle> d =
+        certify_voronoi_circle_in_doubles(s[0], s[1], s[2], nullptr, DoubleCertificate::tritangent_only);
     REQUIRE(d.has_value());
+    CHECK(!d->by_distances);
+    CHECK(certify_voronoi_circle_in_doubles(s[0], s[1], s[2])->by_distances);
     const VoronoiCircleBox box = voronoi_circle_box(s, {0, 1, 2});
     CHECK(box.radius.lo == d->radius.lo);
     CHECK(box.radius.hi == d->radius.hi);
