@@ -4,6 +4,7 @@
 #include "subdivision/huge_circle_start.hpp"
 #include "subdivision/voronoi_circle_guess.hpp"
 #include "util/precision.hpp"
+#include "util/upward_ball.hpp"
 #include "util/upward_interval.hpp"
 
 #include <Eigen/Core>
@@ -22,25 +23,32 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 // (1 for the chart parameters, the length scale for rho and V).
 constexpr double kConvergedStep = 1e-13;
 
-// The same formulas in doubles (Newton on the midpoint) and in intervals (the
-// certificate, computed under the upward rounding mode: util/upward_interval.hpp,
-// which is why this file is compiled with the Makefile's ROUNDING_MATH flags):
-// N is double or UpwardInterval.
+// The same formulas in doubles (Newton on the midpoint), in intervals (the
+// 6 x 6 certificate) and in balls (the certificate by distances), both
+// computed under the upward rounding mode (util/upward_interval.hpp,
+// util/upward_ball.hpp; which is why this file is compiled with the
+// Makefile's ROUNDING_MATH flags): N is double, UpwardInterval or UpwardBall.
 double constant(double c, double) { return c; }
 UpwardInterval constant(double c, const UpwardInterval&) { return UpwardInterval(c); }
+UpwardBall constant(double c, const UpwardBall&) { return UpwardBall(c); }
 double root(double x) { return std::sqrt(x); }
 UpwardInterval root(const UpwardInterval& x) { return x.sqrt(); }
+UpwardBall root(const UpwardBall& x) { return x.sqrt(); }
 // x^2, 2 x, -x and 1/x: in intervals the square is nonnegative, doubling and
 // negation are exact (below the overflow range), and a positive divisor needs
 // two quotients, not four and their ordering.
 double square(double x) { return x * x; }
 UpwardInterval square(const UpwardInterval& x) { return x.square(); }
+UpwardBall square(const UpwardBall& x) { return x.square(); }
 double twice(double x) { return 2 * x; }
 UpwardInterval twice(const UpwardInterval& x) { return x.twice(); }
+UpwardBall twice(const UpwardBall& x) { return x.twice(); }
 double negated_if(bool negate, double x) { return negate ? -x : x; }
 UpwardInterval negated_if(bool negate, const UpwardInterval& x) { return negate ? -x : x; }
+UpwardBall negated_if(bool negate, const UpwardBall& x) { return negate ? -x : x; }
 double reciprocal(double x) { return 1 / x; }
 UpwardInterval reciprocal(const UpwardInterval& x) { return x.reciprocal(); }
+UpwardBall reciprocal(const UpwardBall& x) { return x.reciprocal(); }
 
 // An ellipse: semi-axes, rotation (cos, sin), center, and the product a b.
 template <class N>
@@ -356,67 +364,73 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_
     const std::array<Shape<UpwardInterval>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m,
     double length_scale, bool converged_step_only = false) {
     const UpwardRoundingScope upward;
-    using U = UpwardInterval;
+    using B = UpwardBall;
     const double c[2] = {m[4], m[5]};
-    std::array<BoundaryPoint<U>, 3> at;
+    std::array<BoundaryPoint<B>, 3> at;
     double near[3], far[3], slope[3];  // d_i(c) in [near, far]; tan delta_i <= slope
     for (int i = 0; i < 3; ++i) {
-        boundary_at(k[i], flipped[i], U(m[i]), Parts::point, at[i]);
-        const U wx = U(c[0]) - at[i].px, wy = U(c[1]) - at[i].py;
-        const U along = at[i].nx * wx + at[i].ny * wy, across = at[i].nx * wy - at[i].ny * wx;
-        if (!(along.lo > 0) || !across.finite()) return std::nullopt;  // c not proven outside E_i
-        near[i] = along.lo;
-        far[i] = (wx.square() + wy.square()).sqrt().hi;
-        slope[i] = magnitude(across) / along.lo;
+        const Shape<UpwardInterval>& e = k[i];
+        const Shape<B> shape{B::around(e.a),  B::around(e.b),  B::around(e.cos), B::around(e.sin),
+                             B::around(e.xc), B::around(e.yc), B::around(e.ab)};
+        boundary_at(shape, flipped[i], B(m[i]), Parts::point, at[i]);
+        const B wx = B(c[0]) - at[i].px, wy = B(c[1]) - at[i].py;
+        const B along = at[i].nx * wx + at[i].ny * wy, across = at[i].nx * wy - at[i].ny * wx;
+        const B distance = (wx.square() + wy.square()).sqrt();
+        near[i] = along.lower();
+        // c not proven outside E_i (or an overflow: NaN fails too).
+        if (!(near[i] > 0) || !across.finite() || !distance.finite()) return std::nullopt;
+        far[i] = distance.upper();
+        slope[i] = across.magnitude() / near[i];
     }
-    const U G[2] = {U(near[0], far[0]) - U(near[1], far[1]), U(near[0], far[0]) - U(near[2], far[2])};
+    const B G[2] = {B::around(UpwardInterval(near[0], far[0]) - UpwardInterval(near[1], far[1])),
+                    B::around(UpwardInterval(near[0], far[0]) - UpwardInterval(near[2], far[2]))};
     // Y ~ J(c)^-1 from the normals' midpoints (any Y is sound).
-    const auto mid = [](const U& x) { return 0.5 * (x.lo + x.hi); };
-    const double j00 = mid(at[0].nx) - mid(at[1].nx), j01 = mid(at[0].ny) - mid(at[1].ny);
-    const double j10 = mid(at[0].nx) - mid(at[2].nx), j11 = mid(at[0].ny) - mid(at[2].ny);
+    const double j00 = at[0].nx.mid - at[1].nx.mid, j01 = at[0].ny.mid - at[1].ny.mid;
+    const double j10 = at[0].nx.mid - at[2].nx.mid, j11 = at[0].ny.mid - at[2].ny.mid;
     const double det = j00 * j11 - j01 * j10;
     const double Y[2][2] = {{j11 / det, -j01 / det}, {-j10 / det, j00 / det}};
     if (!std::isfinite(Y[0][0] + Y[0][1] + Y[1][0] + Y[1][1])) return std::nullopt;  // finite only if each is
-    U correction[2];  // Y G(c)
+    B correction[2];  // Y G(c)
     double r[2];
     for (int j = 0; j < 2; ++j) {
         correction[j] = Y[j][0] * G[0] + Y[j][1] * G[1];
         if (!correction[j].finite()) return std::nullopt;
         const double unit = std::fabs(c[j]) + length_scale;
-        if (converged_step_only && !(magnitude(correction[j]) <= kConvergedStep * unit)) return std::nullopt;
-        r[j] = 2 * magnitude(correction[j]) + 1e-15 * unit;
+        // Converged: Newton's step from c (the midpoint) is; the radius is
+        // the rounding of G(c), which no further step removes.
+        if (converged_step_only && !(std::fabs(correction[j].mid) <= kConvergedStep * unit)) return std::nullopt;
+        r[j] = 2 * correction[j].magnitude() + 1e-15 * unit;
     }
     for (int attempt = 0; attempt < 3; ++attempt) {
-        U X[2];
+        double X_lo[2], X_hi[2];
         double reach_of_box[2];  // |y - c| bound per axis: the rounding widened X beyond c +- r
         for (int j = 0; j < 2; ++j) {
-            X[j] = U(-(r[j] - c[j]), c[j] + r[j]);
-            reach_of_box[j] = Interval::max(c[j] - X[j].lo, X[j].hi - c[j]);
+            X_lo[j] = -(r[j] - c[j]), X_hi[j] = c[j] + r[j];
+            reach_of_box[j] = Interval::max(c[j] - X_lo[j], X_hi[j] - c[j]);
         }
         const double reach = std::sqrt(reach_of_box[0] * reach_of_box[0] + reach_of_box[1] * reach_of_box[1]);
-        U gradient_x[3], gradient_y[3];  // grad d_i over X
+        B gradient_x[3], gradient_y[3];  // grad d_i over X
         for (int i = 0; i < 3; ++i) {
             const double room = -(reach - near[i]);  // d_i(y) >= near - reach, rounded down
             if (!(room > 0)) return std::nullopt;
             const double spread = slope[i] + reach / room;
-            gradient_x[i] = at[i].nx + U(-spread, spread), gradient_y[i] = at[i].ny + U(-spread, spread);
+            gradient_x[i] = {at[i].nx.mid, at[i].nx.rad + spread}, gradient_y[i] = {at[i].ny.mid, at[i].ny.rad + spread};
         }
-        const U J[2][2] = {{gradient_x[0] - gradient_x[1], gradient_y[0] - gradient_y[1]},
+        const B J[2][2] = {{gradient_x[0] - gradient_x[1], gradient_y[0] - gradient_y[1]},
                            {gradient_x[0] - gradient_x[2], gradient_y[0] - gradient_y[2]}};
         bool inside = true;
-        U K[2];
-        double reach_of_K[2];
+        double K_lo[2], K_hi[2], reach_of_K[2];
         for (int j = 0; j < 2; ++j) {
             double spread = 0;  // |(I - Y J(X)) (X - c)| bound, row j
             for (int l = 0; l < 2; ++l) {
-                const U entry = U(j == l ? 1.0 : 0.0) - (Y[j][0] * J[0][l] + Y[j][1] * J[1][l]);
-                if (!entry.finite()) return std::nullopt;
-                spread += magnitude(entry) * reach_of_box[l];
+                const B entry = B(j == l ? 1.0 : 0.0) - (Y[j][0] * J[0][l] + Y[j][1] * J[1][l]);
+                spread += entry.magnitude() * reach_of_box[l];
             }
-            K[j] = U(c[j]) - correction[j] + U(-spread, spread);
-            if (!K[j].finite()) return std::nullopt;
-            if (!(K[j].lo > X[j].lo && K[j].hi < X[j].hi)) inside = false;
-            reach_of_K[j] = Interval::max(c[j] - K[j].lo, K[j].hi - c[j]);
+            const B K = B(c[j]) - correction[j] + B(0, spread);
+            if (!K.finite()) return std::nullopt;
+            K_lo[j] = K.lower(), K_hi[j] = K.upper();
+            if (!(K_lo[j] > X_lo[j] && K_hi[j] < X_hi[j])) inside = false;
+            reach_of_K[j] = Interval::max(c[j] - K_lo[j], K_hi[j] - c[j]);
         }
         if (!inside) {
             for (int j = 0; j < 2; ++j) r[j] = 2 * Interval::max(r[j], reach_of_K[j]);
@@ -425,7 +439,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_
         // The root V in K: rho, the normals grad d_i(V) and the tangency parameters.
         const double reach_V = std::sqrt(reach_of_K[0] * reach_of_K[0] + reach_of_K[1] * reach_of_K[1]);
         double rho_lo = 0, rho_hi = HUGE_VAL;
-        U normal_x[3], normal_y[3];
+        B normal_x[3], normal_y[3];
         std::array<Interval, 6> box;
         for (int i = 0; i < 3; ++i) {
             const double room = -(reach_V - near[i]);  // positive: reach_V <= reach
@@ -433,7 +447,7 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_
             const double chord = reach_V / room;  // |grad d_i(V) - grad d_i(c)|
             if (!(chord <= 1)) return std::nullopt;
             const double spread = slope[i] + chord;
-            normal_x[i] = at[i].nx + U(-spread, spread), normal_y[i] = at[i].ny + U(-spread, spread);
+            normal_x[i] = {at[i].nx.mid, at[i].nx.rad + spread}, normal_y[i] = {at[i].ny.mid, at[i].ny.rad + spread};
             // The angle from n_i to grad d_i(V): delta_i + 2 arcsin(chord / 2),
             // and arcsin x <= (pi / 2) x on [0, 1].
             const double angle = slope[i] + 1.5708 * chord;
@@ -445,10 +459,10 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_
             box[i] = Interval(-(step - m[i]), m[i] + step);
         }
         if (!(rho_lo > 0 && rho_lo <= rho_hi)) return std::nullopt;
-        const U orientation = (normal_x[1] - normal_x[0]) * (normal_y[2] - normal_y[0]) -
+        const B orientation = (normal_x[1] - normal_x[0]) * (normal_y[2] - normal_y[0]) -
                               (normal_y[1] - normal_y[0]) * (normal_x[2] - normal_x[0]);
-        if (!orientation.positive()) return std::nullopt;
-        box[3] = Interval(rho_lo, rho_hi), box[4] = K[0].interval(), box[5] = K[1].interval();
+        if (!(orientation.lower() > 0)) return std::nullopt;
+        box[3] = Interval(rho_lo, rho_hi), box[4] = Interval(K_lo[0], K_hi[0]), box[5] = Interval(K_lo[1], K_hi[1]);
         return box;
     }
     return std::nullopt;
