@@ -23,11 +23,7 @@ namespace {
 
 constexpr long kPrec = 4200;
 
-Ball exact(double x) {
-    Ball b;
-    arb_set_d(b.get(), x);
-    return b;
-}
+Ball exact(double x) { return Ball(Rational::of_double(x), kPrec); }
 
 // The exact reals mid - rad and mid + rad of a ball.
 struct Ends {
@@ -112,24 +108,23 @@ void product_range(const Ends& a, const Ends& b, Ball& lo, Ball& hi) {
 
 using Check = std::function<void(Count&, std::mt19937_64&)>;
 
-const Check kAdd = [](Count& n, std::mt19937_64& rng) {
+// a + b, or a - b: the exact range [lo_a + lo_b, hi_a + hi_b], or [lo_a - hi_b, hi_a - lo_b].
+void check_sum(Count& n, std::mt19937_64& rng, bool difference) {
     const UpwardBall a = random_ball(rng, 1023), b = random_ball(rng, 1023);
-    const Result r = upward([&] { return a + b; });
+    const Result r = upward([&] { return difference ? a - b : a + b; });
     const Ends x = ends(a), y = ends(b);
     Ball lo, hi;
-    arb_add(lo.get(), x.lo.get(), y.lo.get(), kPrec);
-    arb_add(hi.get(), x.hi.get(), y.hi.get(), kPrec);
+    if (difference) {
+        arb_sub(lo.get(), x.lo.get(), y.hi.get(), kPrec);
+        arb_sub(hi.get(), x.hi.get(), y.lo.get(), kPrec);
+    } else {
+        arb_add(lo.get(), x.lo.get(), y.lo.get(), kPrec);
+        arb_add(hi.get(), x.hi.get(), y.hi.get(), kPrec);
+    }
     tally(n, r, lo, hi);
-};
-const Check kSubtract = [](Count& n, std::mt19937_64& rng) {
-    const UpwardBall a = random_ball(rng, 1023), b = random_ball(rng, 1023);
-    const Result r = upward([&] { return a - b; });
-    const Ends x = ends(a), y = ends(b);
-    Ball lo, hi;
-    arb_sub(lo.get(), x.lo.get(), y.hi.get(), kPrec);
-    arb_sub(hi.get(), x.hi.get(), y.lo.get(), kPrec);
-    tally(n, r, lo, hi);
-};
+}
+const Check kAdd = [](Count& n, std::mt19937_64& rng) { check_sum(n, rng, false); };
+const Check kSubtract = [](Count& n, std::mt19937_64& rng) { check_sum(n, rng, true); };
 const Check kMultiply = [](Count& n, std::mt19937_64& rng) {
     const UpwardBall a = random_ball(rng, 530), b = random_ball(rng, 530);
     const Result r = upward([&] { return a * b; });
