@@ -357,8 +357,10 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> krawczyk(
 // angle grows with the ellipse angle theta at the rate a b / |g|^2 >=
 // a b / max(a, b)^2 (boundary_at), and dt/dtheta = (1 + t^2)/2 (either chart).
 // Under the upward rounding mode as krawczyk(), whose arguments this takes
-// (`converged_step_only` the same rule, on G's Newton step); it fails where
-// a center is not proven outside a site (crossing sites, rho <= 0), and
+// (`converged_step_only` the same rule, on G's Newton step), in
+// midpoint-radius balls (util/upward_ball.hpp: its operands are a few ulps
+// wide, and a ball's operations do not branch on signs); it fails where a
+// center is not proven outside a site (crossing sites, rho <= 0), and
 // krawczyk() runs.
 ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_krawczyk(
     const std::array<Shape<UpwardInterval>, 3>& k, const std::array<bool, 3>& flipped, const Vector6& m,
