@@ -17,9 +17,9 @@
 // 2^-1074 < DBL_MIN. So `rounding(m)` = 2^-52 (1 + 2^-51) |m| + DBL_MIN
 // bounds it. Overflow: a result above the range rounds up to inf, one below
 // it to -DBL_MAX, no bound of anything; |m| (1 + 2^-51) rounded up is inf
-// for |m| within a few ulps of DBL_MAX, and so is the radius. Callers test finite() before they trust a
-// ball; a reciprocal or square root of a ball that reaches zero (or below)
-// is NaN.
+// for |m| within a few ulps of DBL_MAX, and so is the radius. Callers test
+// finite() before they trust a ball; a reciprocal or square root of a ball
+// that reaches zero (or below) is NaN.
 //
 // Only valid inside an UpwardRoundingScope and in translation units
 // compiled with the Makefile's ROUNDING_MATH flags (util/upward_interval.hpp
@@ -52,7 +52,6 @@ struct UpwardBall {
     // RD(mid - rad) = -RU(rad - mid) and RU(mid + rad).
     double lower() const { return -(rad - mid); }
     double upper() const { return mid + rad; }
-    UpwardInterval interval() const { return {lower(), upper()}; }
     // An upper bound of |x| over the ball.
     double magnitude() const { return std::fabs(mid) + rad; }
     bool finite() const { return std::isfinite(mid) && std::isfinite(rad); }

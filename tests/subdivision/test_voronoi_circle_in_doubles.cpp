@@ -98,7 +98,8 @@ void compare_with_arb(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, T
     // a radius to about 10^-3), and nearly collinear triples are ill-conditioned:
     // a circle R times its smallest site loses about log2(R / size) more bits
     // (10^7 times: ten times wider).
-    const double size = std::fmax(std::fabs(d->radius.lo), std::fabs(d->radius.hi)) + std::fabs(d->center_x.hi) + std::fabs(d->center_y.hi);
+    const double size =
+        std::fmax(std::fabs(d->radius.lo), std::fabs(d->radius.hi)) + std::fabs(d->center_x.hi) + std::fabs(d->center_y.hi);
     double smallest = HUGE_VAL;
     for (const Ellipse* e : {&e1, &e2, &e3}) smallest = std::min({smallest, e->enclosure().a.lo, e->enclosure().b.lo});
     const double condition = std::fmax(1.0, d->radius.lo / smallest / 1e6);
@@ -146,7 +147,8 @@ TEST_CASE("doubles vs Arb: 10^4 random triples, certified or handed over, never 
         compare_with_arb(e[0], e[1], e[2], tally);
     }
     if (verbose())
-        std::printf("[doubles vs Arb] random: %d triples, %d with a circle, %d certified in doubles (%d by distances), %d without\n",
+        std::printf("[doubles vs Arb] random: %d triples, %d with a circle, %d certified in doubles "
+                    "(%d by distances), %d without\n",
                     tally.triples, tally.by_arb, tally.by_doubles, tally.by_distances, tally.no_circle);
     CHECK(tally.no_circle >= 1000);  // both kinds are exercised
     CHECK(tally.by_doubles >= 0.95 * tally.by_arb);
@@ -228,7 +230,8 @@ TEST_CASE("doubles vs Arb: near-degenerate triples", "[subdivision][voronoi_circ
             else compare_with_arb(t[0], t[2], t[1], tally);
         }
     if (verbose())
-        std::printf("[doubles vs Arb] near-degenerate: %d triples, %d with a circle, %d certified in doubles (%d by distances), %d without\n",
+        std::printf("[doubles vs Arb] near-degenerate: %d triples, %d with a circle, %d certified in doubles "
+                    "(%d by distances), %d without\n",
                     tally.triples, tally.by_arb, tally.by_doubles, tally.by_distances, tally.no_circle);
     CHECK(tally.by_doubles > 0);
     CHECK(tally.by_doubles < tally.by_arb);  // some are beyond doubles and handed over
