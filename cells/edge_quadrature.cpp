@@ -227,11 +227,16 @@ std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDou
         arb_mul_2exp_si(mid.get(), mid.get(), -1);
         const GaussLegendreBallRule& rule = rules.rule_in_arb(n, prec);
         NormalRayBisector::Densities sum, f;
+        QuadratureCounts& count = counts ? *counts : local;
         for (int k = 0; k < n; ++k) {
-            ComplexBall theta;
-            arb_mul(theta.real(), half.get(), rule.nodes[k].get(), prec);
-            arb_add(theta.real(), theta.real(), mid.get(), prec);
-            if (!bisector.densities(theta, prec, f)) return false;
+            Ball theta;
+            arb_mul(theta.get(), half.get(), rule.nodes[k].get(), prec);
+            arb_add(theta.get(), theta.get(), mid.get(), prec);
+            // From the piece's disk certificate, else certified by itself.
+            if (bounds.densities_in_balls(theta, prec, f))
+                ++count.ball_nodes_from_disks;
+            else if (!bisector.densities(ComplexBall(theta), prec, f))
+                return false;
             for (int j = 0; j < kMeasures; ++j)
                 acb_addmul_arb(sum.m[j].get(), f.m[j].get(), rule.weights[k].get(), prec);
         }

@@ -41,7 +41,8 @@ std::optional<MeasureIntervals> integrate_edge(NormalRayInDoubles& bisector, Gau
                                                QuadratureCounts* counts = nullptr, std::array<double, 2>* reach = nullptr);
 
 // The same measures at precision prec, between the exact angles `ends`
-// (balls of radius zero): the certificate of `bounds`, the nodes by
+// (balls of radius zero): the certificate of `bounds`, each node from its
+// piece's disk proof (NormalRayInDoubles::densities_in_balls) or else by
 // `bisector` (the same pair of sites); `counts` and `reach` as above.
 std::optional<NormalRayBisector::Densities> integrate_edge_in_arb(NormalRayInDoubles& bounds,
                                                                   NormalRayBisector& bisector,

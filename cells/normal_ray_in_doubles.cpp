@@ -2,6 +2,7 @@
 
 #include "util/complex_interval.hpp"
 #include "util/complex_taylor_model.hpp"
+#include "util/fixed_precision_ball.hpp"
 #include "util/interval_trig.hpp"
 #include "util/upward_interval.hpp"
 
@@ -225,7 +226,13 @@ NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q)
     : NormalRayInDoubles(p, q, NormalRayBisector::uses_signed_tie(p, q)) {}
 
 NormalRayInDoubles::NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool signed_tie)
-    : p_(site_of(p)), q_(site_of(q)), signed_(signed_tie), medial_p_(medial_depth(p_)), medial_q_(medial_depth(q_)) {
+    : p_(site_of(p)),
+      q_(site_of(q)),
+      p_ellipse_(&p),
+      q_ellipse_(&q),
+      signed_(signed_tie),
+      medial_p_(medial_depth(p_)),
+      medial_q_(medial_depth(q_)) {
     const EllipseShape &ps = p_.shape, &qs = q_.shape;
     origin_[0] = ps.xc, origin_[1] = ps.yc;
     size_ = std::max({ps.a, ps.b, qs.a, qs.b, std::hypot(ps.xc - qs.xc, ps.yc - qs.yc)});
@@ -323,17 +330,21 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::node(const Interval&
     // rejects).
     double x0[2], C[2][2], start[2] = {last_[0], last_[1]};
     // Or from the last disk's polynomial at theta0, on its real diameter.
-    if (disk_ && std::fabs(theta0 - disk_->mid) <= disk_->R) {
-        const double d = theta0 - disk_->mid;
-        for (int i = 0; i < 2; ++i) {
-            start[i] = disk_->x[i][kDiskDegree];
-            for (int k = kDiskDegree - 1; k >= 0; --k) start[i] = start[i] * d + disk_->x[i][k];
-        }
-    }
+    disk_start(theta0, start);
     if (newton(theta0, start, x0, C))
         if (std::optional<Node> n = certified(theta, x0, C, with_densities)) return n;
     if (!ray_start(theta0, start) || !newton(theta0, start, x0, C)) return std::nullopt;
     return certified(theta, x0, C, with_densities);
+}
+
+bool NormalRayInDoubles::disk_start(double theta, double (&start)[2]) const {
+    if (!disk_ || !(std::fabs(theta - disk_->mid) <= disk_->R)) return false;
+    const double d = theta - disk_->mid;
+    for (int i = 0; i < 2; ++i) {
+        start[i] = disk_->x[i][kDiskDegree];
+        for (int k = kDiskDegree - 1; k >= 0; --k) start[i] = start[i] * d + disk_->x[i][k];
+    }
+    return true;
 }
 
 bool NormalRayInDoubles::ray_start(double theta0, double (&start)[2]) const {
@@ -591,6 +602,135 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Inte
         return std::nullopt;
     last_[0] = x0[0], last_[1] = x0[1];
     return out;
+}
+
+namespace {
+
+using PrecisionBall = FixedPrecisionBall;
+
+// A site's exact parameters as balls, under Frame's member names.
+struct BallSite {
+    PrecisionBall a, b, c, s, xc, yc;
+    BallSite(const SiteBalls& e, long prec)
+        : a(e.a, prec), b(e.b, prec), c(e.cos, prec), s(e.sin, prec), xc(e.xc, prec), yc(e.yc, prec) {}
+};
+
+void sin_cos(const PrecisionBall& angle, PrecisionBall& sin, PrecisionBall& cos) {
+    Ball s, c;
+    arb_sin_cos(s.get(), c.get(), angle.ball().get(), angle.precision());
+    sin = PrecisionBall(s, angle.precision()), cos = PrecisionBall(c, angle.precision());
+}
+
+// An upper bound of |x| (infinite for a ball that is not finite).
+double magnitude(const PrecisionBall& x) {
+    arf_t bound;
+    arf_init(bound);
+    arb_get_abs_ubound_arf(bound, x.ball().get(), MAG_BITS);
+    const double m = arf_get_d(bound, ARF_RND_UP);
+    arf_clear(bound);
+    return std::isnan(m) ? INFINITY : m;
+}
+
+PrecisionBall midpoint(const PrecisionBall& x) {
+    Ball m;
+    arb_get_mid_arb(m.get(), x.ball().get());
+    return PrecisionBall(m, x.precision());
+}
+
+// sum_k coefficient(k) d^k, k = 0 .. kDiskDegree, by Horner.
+template <class Coefficient>
+PrecisionBall horner(const PrecisionBall& d, Coefficient&& coefficient) {
+    PrecisionBall sum = coefficient(NormalRayInDoubles::kDiskDegree);
+    for (int k = NormalRayInDoubles::kDiskDegree - 1; k >= 0; --k) sum = sum * d + coefficient(k);
+    return sum;
+}
+
+}  // namespace
+
+// A node as certify_node_in_disk's, in balls: the root's offsets from the
+// proof, e <= (I - a)^-1 |C(theta) F(x)|, at the point x refined by steps
+// x <- x - C F(x) with the inverse C of Newton's last Jacobian in doubles
+// (each gains about what |I - C J| loses, 45 bits: one step from the root in
+// doubles to 114 bits, the precision at a tolerance of 1e-15).
+bool NormalRayInDoubles::densities_in_balls(const Ball& theta_ball, long prec, NormalRayBisector::Densities& out) {
+    using B = PrecisionBall;
+    if (!disk_) return false;
+    const DiskProof& disk = *disk_;
+    const B theta(theta_ball, prec), d = theta - B(disk.mid);
+    if (!(magnitude(d) <= disk.R)) return false;
+    const double theta0 = theta_ball.mid_double();
+    double start[2], x0[2], C[2][2];
+    if (!disk_start(theta0, start) || !newton(theta0, start, x0, C)) return false;
+    if (balls_prec_ != prec) {
+        p_balls_ = SiteBalls(*p_ellipse_, prec), q_balls_ = SiteBalls(*q_ellipse_, prec);
+        balls_prec_ = prec;
+    }
+    const BallSite p(p_balls_, prec), q(q_balls_, prec);
+    B sin_theta, cos_theta;
+    sin_cos(theta, sin_theta, cos_theta);
+    const Frame<B> bp(p, sin_theta, cos_theta);
+    const auto residual = [&](const B& s, const B& phi, B (&F)[2]) {
+        B sin_phi, cos_phi;
+        sin_cos(phi, sin_phi, cos_phi);
+        const Frame<B> bq(q, sin_phi, cos_phi, q_parts<B>(signed_));
+        Differences<B>(bp, bq, s).residual(bp, bq, s, signed_, F);
+    };
+    // Steps x <- x - C F(x) until the next one is below 2^(24 - prec) |x|
+    // (F's rounding at prec keeps them from shrinking much further); its
+    // F(x) then gives the offsets, about that step.
+    B x[2] = {B(x0[0], prec), B(x0[1], prec)}, F[2];
+    for (int step = 0;; ++step) {
+        residual(x[0], x[1], F);
+        B correction[2];
+        bool converged = true;
+        for (int i = 0; i < 2; ++i) {
+            correction[i] = midpoint(B(C[i][0]) * F[0] + B(C[i][1]) * F[1]);
+            converged = converged && magnitude(correction[i]) <= std::ldexp(1 + std::fabs(x0[i]), 24 - prec);
+        }
+        if (converged) break;
+        if (step == 6) return false;
+        for (int i = 0; i < 2; ++i) x[i] = midpoint(x[i] - correction[i]);
+    }
+    // x in X(theta) for every theta in the ball, where the proof holds.
+    for (int i = 0; i < 2; ++i)
+        if (!(magnitude(x[i] - horner(d, [&](int k) { return B(disk.x[i][k]); })) < disk.reach[i])) return false;
+    B c[2];
+    for (int i = 0; i < 2; ++i)
+        c[i] = B(magnitude(horner(d, [&](int k) { return B(disk.C[k][i][0]) * F[0] + B(disk.C[k][i][1]) * F[1]; })));
+    const double(&a)[2][2] = disk.coupling;
+    const B diagonal[2] = {B(1.0) - B(a[0][0]), B(1.0) - B(a[1][1])};
+    const B det = diagonal[0] * diagonal[1] - B(a[0][1]) * B(a[1][0]);
+    if (!arb_is_positive(det.ball().get()) || !arb_is_positive(diagonal[0].ball().get()) ||
+        !arb_is_positive(diagonal[1].ball().get()))
+        return false;
+    const double delta[2] = {magnitude((diagonal[1] * c[0] + B(a[0][1]) * c[1]) / det),
+                             magnitude((B(a[1][0]) * c[0] + diagonal[0] * c[1]) / det)};
+    if (!std::isfinite(delta[0]) || !(delta[1] <= 1)) return false;
+    B root[2];
+    for (int i = 0; i < 2; ++i) {
+        Ball widened = x[i].ball();
+        Mag error;
+        mag_set_d(error.get(), delta[i]);
+        arb_add_error_mag(widened.get(), error.get());
+        root[i] = B(widened, prec);
+    }
+    // The densities from the root's ball, as node_values's.
+    B sin_phi, cos_phi;
+    sin_cos(root[1], sin_phi, cos_phi);
+    const Frame<B> bq(q, sin_phi, cos_phi, q_parts<B>(signed_));
+    const B& s = root[0];
+    const TieDerivatives<B> tie(bp, bq, s, Differences<B>(bp, bq, s), signed_);
+    if (arb_contains_zero(tie.g_s.ball().get())) return false;
+    const B ds = -(tie.g_theta / tie.g_s);
+    const B vx = bp.dx + ds * bp.nx + s * bp.dnx, vy = bp.dy + ds * bp.ny + s * bp.dny;
+    B densities[MeasureIntervals::count];
+    green_densities(bp.x + s * bp.nx - B(origin_[0]), bp.y + s * bp.ny - B(origin_[1]), vx, vy, densities);
+    densities[MeasureIntervals::length] = root_of(dot(vx, vy, vx, vy));
+    for (int j = 0; j < MeasureIntervals::count; ++j) {
+        if (!arb_is_finite(densities[j].ball().get())) return false;
+        acb_set_arb(out.m[j].get(), densities[j].ball().get());
+    }
+    return true;
 }
 
 namespace {

@@ -44,8 +44,8 @@ struct MeasureIntervals : EdgeMeasure {
 
 class NormalRayInDoubles {
 public:
-    // As NormalRayBisector: the first form asks
-    // NormalRayBisector::uses_signed_tie.
+    // As NormalRayBisector (the sites must outlive this object): the first
+    // form asks NormalRayBisector::uses_signed_tie.
     NormalRayInDoubles(const Ellipse& p, const Ellipse& q);
     NormalRayInDoubles(const Ellipse& p, const Ellipse& q, bool signed_tie);
 
@@ -116,6 +116,16 @@ public:
     // How many nodes the disks' proofs certified (the rest by their own
     // Krawczyk tests).
     std::size_t disk_nodes() const { return disk_nodes_; }
+    // The densities at the real ball theta at precision prec, for goals
+    // beyond the doubles' 44 bits (cells/edge_quadrature.hpp's nodes in
+    // Arb), from the last disk's proof: Newton in doubles, then steps in
+    // balls, the root's error bounded by the proof as a double node's is
+    // (the .cpp's disk_offsets), the sites' exact parameters as balls.
+    // About a tenth of the work of NormalRayBisector::densities, which
+    // certifies each node by itself. False when theta is not on the disk's
+    // real diameter or the proof does not cover the root: then nothing is
+    // claimed.
+    bool densities_in_balls(const Ball& theta, long prec, NormalRayBisector::Densities& out);
     // The root (s, phi) at theta on the last disk's real diameter, from any
     // point x of X(theta) (DiskProof) by the disk's proof, as its nodes take
     // it from Newton's point: x +- delta. Nothing off the disk, or when x is
@@ -142,6 +152,9 @@ private:
     bool newton(double theta, const double (&start)[2], double (&x)[2], double (&C)[2][2]) const;
     // Newton's start from the bisector point on p's normal ray at theta.
     bool ray_start(double theta, double (&start)[2]) const;
+    // Newton's start from the last disk's root polynomial, when theta lies
+    // on its real diameter (else false, `start` unchanged).
+    bool disk_start(double theta, double (&start)[2]) const;
     // What a node gives: the densities and the bisector point, each absent
     // where the certificate of the root holds but theirs does not.
     struct Node {
@@ -160,6 +173,9 @@ private:
     bool on_disk(const Interval& theta) const;
 
     Site p_, q_;
+    const Ellipse *p_ellipse_, *q_ellipse_;  // for densities_in_balls
+    SiteBalls p_balls_, q_balls_;            // theirs, at balls_prec_
+    long balls_prec_ = 0;
     bool signed_;
     Interval medial_p_, medial_q_;  // r_p, r_q of normal_ray_bisector.hpp
     double size_;  // scale of the pair, for the double start

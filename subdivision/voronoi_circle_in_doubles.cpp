@@ -470,6 +470,17 @@ ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<std::array<Interval, 6>> distance_
     return std::nullopt;
 }
 
+// The circle of a certified box (t_1, t_2, t_3, rho, V_x, V_y).
+DoubleVoronoiCircle circle_of(const std::array<Interval, 6>& box, const std::array<bool, 3>& flipped,
+                              bool by_distances) {
+    DoubleVoronoiCircle circle;
+    circle.by_distances = by_distances;
+    for (int i = 0; i < 3; ++i) circle.parameter[i] = box[i];
+    circle.flipped = flipped;
+    circle.radius = box[3], circle.center_x = box[4], circle.center_y = box[5];
+    return circle;
+}
+
 // J d = f for the Jacobian of the tritangent system, by its structure
 // (tritangent_system): rows 2i, 2i + 1 read
 //     scale_i nu_i^perp d_ti + nu_i d_rho - d_V = f_i.
@@ -606,12 +617,7 @@ std::optional<DoubleVoronoiCircle> newton_then_certify(const std::array<Shape<do
     bool tried_early = false;
     const auto certified = [&](const std::array<Interval, 6>& box, bool by_distances) {
         if (diverged) *diverged = false;
-        DoubleVoronoiCircle circle;
-        circle.by_distances = by_distances;
-        for (int i = 0; i < 3; ++i) circle.parameter[i] = box[i];
-        circle.flipped = flipped;
-        circle.radius = box[3], circle.center_x = box[4], circle.center_y = box[5];
-        return circle;
+        return circle_of(box, flipped, by_distances);
     };
     std::array<double, 6> F;
     std::array<BoundaryPoint<double>, 3> at;
@@ -761,6 +767,22 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(const Ellip
         return try_start(start.flipped, x);
     });
     return certified;
+}
+
+std::optional<DoubleVoronoiCircle> certify_voronoi_circle_by_distances_at(const Ellipse& e1, const Ellipse& e2,
+                                                                          const Ellipse& e3,
+                                                                          const std::array<bool, 3>& flipped,
+                                                                          const std::array<double, 6>& m) {
+    const std::array<const Ellipse*, 3> sites = {&e1, &e2, &e3};
+    std::array<Shape<UpwardInterval>, 3> enclosed;
+    double size = m[3];
+    for (int i = 0; i < 3; ++i) {
+        enclosed[i] = interval_shape(*sites[i]);
+        size = std::max({size, enclosed[i].a.hi, enclosed[i].b.hi});
+    }
+    const auto box = distance_krawczyk(enclosed, flipped, Eigen::Map<const Vector6>(m.data()), size);
+    if (!box) return std::nullopt;
+    return circle_of(*box, flipped, true);
 }
 
 }  // namespace ellvor

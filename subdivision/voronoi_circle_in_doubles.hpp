@@ -66,4 +66,14 @@ std::optional<DoubleVoronoiCircle> certify_voronoi_circle_in_doubles(
     const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, std::optional<StalledDoubleRoot>* stalled = nullptr,
     DoubleCertificate which = DoubleCertificate::distances_first);
 
+// The certificate by distances alone about the point m = (chart parameters
+// of the tangency points, rho, V_x, V_y), any point: a circle it returns is
+// THE counter-clockwise one, whatever m (the tests move m off Newton's
+// root, where the angle between a site's normal at m_i and the direction
+// to the center counts).
+std::optional<DoubleVoronoiCircle> certify_voronoi_circle_by_distances_at(const Ellipse& e1, const Ellipse& e2,
+                                                                          const Ellipse& e3,
+                                                                          const std::array<bool, 3>& flipped,
+                                                                          const std::array<double, 6>& m);
+
 }  // namespace ellvor

@@ -166,6 +166,8 @@ TEST_CASE("cell areas: equal circles have the point-Voronoi cells of their centr
         ++bounded;
         CHECK((T > 1e-12 ? areas[i].edges_by_nodes_in_arb : areas[i].edges_in_doubles) == 0);
         CHECK(areas[i].edges_by_arb == 0);
+        // Nodes in Arb from their pieces' disk proofs (densities_in_balls).
+        CHECK(areas[i].quadrature.ball_nodes_from_disks == (T > 1e-12 ? 0 : areas[i].quadrature.nodes));
         CHECK(contains(areas[i].area, cell.area()));
         CHECK(relative_width(areas[i].area) <= T);
         // The other measures: balls that contain the polygon's, reasonably tight.

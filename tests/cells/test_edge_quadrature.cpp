@@ -517,6 +517,52 @@ TEST_CASE("NormalRayInDoubles: nodes from a disk's proof hold Arb's densities, a
     CHECK(from_disks == compared);
 }
 
+TEST_CASE("NormalRayInDoubles: nodes in balls from a disk's proof hold Arb's densities at 400 bits, 2^-(prec - 40) wide",
+          "[cells][quadrature]") {
+    // densities_in_balls: the root refined in balls, its offsets from the
+    // disk's proof (no certificate of its own); the reference certifies each
+    // node by its own Krawczyk test at 400 bits. Both tie functions; nodes
+    // that are not doubles (theta + 2^-80).
+    std::mt19937_64 rng(19);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int compared = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayInDoubles fast(p, q, trial % 2);
+        NormalRayBisector arb(p, q, trial % 2);
+        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
+        if (!fast.bounds_on_disk(mid, R, R)) continue;
+        for (int k = 0; k < 6; ++k) {
+            const long prec = k % 2 ? 114 : 200;
+            Ball theta, offset;
+            arb_set_d(theta.get(), mid + R * unit(rng));
+            arb_one(offset.get());
+            arb_mul_2exp_si(offset.get(), offset.get(), -80);
+            arb_add(theta.get(), theta.get(), offset.get(), prec);
+            NormalRayBisector::Densities d, reference;
+            REQUIRE(fast.densities_in_balls(theta, prec, d));
+            REQUIRE(arb.densities(ComplexBall(theta), 400, reference));
+            for (int j = 0; j < MeasureIntervals::count; ++j) {
+                Ball ours, theirs;
+                arb_set(ours.get(), acb_realref(d.m[j].get()));
+                arb_set(theirs.get(), acb_realref(reference.m[j].get()));
+                INFO("trial " << trial << " prec " << prec << " measure " << j << " ours " << ours.str(40) << " Arb's "
+                              << theirs.str(40));
+                CHECK(arb_is_zero(acb_imagref(d.m[j].get())));
+                CHECK(arb_overlaps(ours.get(), theirs.get()));
+                CHECK(ours.radius_double() <= std::ldexp(std::max(1.0, std::fabs(ours.mid_double())), 40 - prec));
+            }
+            ++compared;
+        }
+        // Off the disk's diameter the proof says nothing.
+        Ball off;
+        arb_set_d(off.get(), mid + 1.5 * R);
+        NormalRayBisector::Densities d;
+        CHECK(!fast.densities_in_balls(off, 114, d));
+    }
+    CHECK(compared >= 120);
+}
+
 TEST_CASE("NormalRayInDoubles: a disk's proof encloses the root from any point of X(theta)", "[cells][quadrature]") {
     // root_from_disk is the nodes' proof (certify_node_in_disk) from a given
     // point: x +- delta must hold the root for points far from it too (Newton's

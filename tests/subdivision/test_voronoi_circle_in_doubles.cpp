@@ -157,6 +157,54 @@ TEST_CASE("doubles vs Arb: 10^4 random triples, certified or handed over, never 
     CHECK(tally.by_distances >= 0.95 * tally.by_doubles);
 }
 
+TEST_CASE("doubles: the certificate by distances about points off the root holds Arb's circle",
+          "[subdivision][voronoi_circle_in_doubles]") {
+    // Tangency parameters 1e-8 to 1e-2 off the root and a center 1e-8 to
+    // 1e-4 of the radius off: the normals at the parameters then miss the
+    // directions to the center by up to about that angle (the test's
+    // `slope`), which every enclosure must absorb (without it in the
+    // gradients' and the parameters' bounds 5019 checks fail, in the
+    // gradients' alone 6).
+    Rng rng(20261129);
+    std::uniform_real_distribution<double> exponent(0, 1), sign(-1, 1);
+    int attempts = 0, certified = 0;
+    while (attempts < 2000) {
+        std::vector<Ellipse> e;
+        while (e.size() < 3) {
+            Ellipse s = random_site(rng, 15, 40);
+            bool apart = true;
+            for (const Ellipse& o : e) apart = apart && bounding_circles_apart(o, s);
+            if (apart) e.push_back(s);
+        }
+        const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(e[0], e[1], e[2]);
+        if (!d || !d->by_distances) continue;
+        VoronoiCircleSolver arb(e[0], e[1], e[2]);
+        REQUIRE(arb.certify());
+        REQUIRE(arb.refine(80));
+        const VoronoiCircleEnclosure& c = arb.enclosure();
+        ++attempts;
+        std::array<double, 6> m;
+        const double parameter_off = std::pow(10.0, -8 + 6 * exponent(rng)), center_off = std::pow(10.0, -8 + 4 * exponent(rng));
+        for (int i = 0; i < 3; ++i) m[i] = d->parameter[i].mid() + parameter_off * sign(rng);
+        m[3] = d->radius.mid();
+        m[4] = d->center_x.mid() + center_off * m[3] * sign(rng);
+        m[5] = d->center_y.mid() + center_off * m[3] * sign(rng);
+        const std::optional<DoubleVoronoiCircle> off = certify_voronoi_circle_by_distances_at(e[0], e[1], e[2], d->flipped, m);
+        if (!off) continue;
+        ++certified;
+        INFO(apollonius::ell({&e[0], &e[1], &e[2]}));
+        INFO("parameters off " << parameter_off << ", center off " << center_off << " radii");
+        CHECK(off->by_distances);
+        CHECK(holds(off->center_x, c.center_x));
+        CHECK(holds(off->center_y, c.center_y));
+        CHECK(holds(off->radius, c.radius));
+        for (int i = 0; i < 3; ++i)
+            if (off->flipped[i] == c.flipped[i]) CHECK(holds(off->parameter[i], c.parameter[i]));
+    }
+    if (verbose()) std::printf("[doubles] by distances off the root: %d of %d certified\n", certified, attempts);
+    CHECK(certified >= attempts / 2);
+}
+
 TEST_CASE("doubles vs Arb: elongated sites that nearly touch (a dense packing), by the damped retry",
           "[subdivision][voronoi_circle_in_doubles][packing]") {
     // Three sites of `ellvor generate packing --count 300 --packing-fraction
