@@ -32,6 +32,26 @@ Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const E
     return separated;
 }
 
+// The orientation x1 x x2 + x2 x x3 + x3 x x1 at x_i = c_i + u_i, |u_i| <=
+// R_i, is its value at the centers plus u1 x (c2 - c3) + u2 x (c3 - c1) + u3 x
+// (c1 - c2) + u1 x u2 + u2 x u3 + u3 x u1: within R1 |c2 - c3| + R2 |c3 - c1| +
+// R3 |c1 - c2| + R1 R2 + R2 R3 + R3 R1 of it (a bound symmetric in the three).
+bool bounding_disks_uniformly_oriented(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
+    const Ellipse::Enclosure k[3] = {e1.enclosure(), e2.enclosure(), e3.enclosure()};
+    Interval R[3], distance[3];  // distance[i] = |c_{i+1} - c_{i+2}|
+    for (int i = 0; i < 3; ++i) {
+        const Ellipse::Enclosure &next = k[(i + 1) % 3], &after = k[(i + 2) % 3];
+        R[i] = Interval(std::fmax(k[i].a.hi, k[i].b.hi));
+        distance[i] = ((next.xc - after.xc).square() + (next.yc - after.yc).square()).sqrt();
+    }
+    const Interval d2x = k[1].xc - k[0].xc, d2y = k[1].yc - k[0].yc, d3x = k[2].xc - k[0].xc, d3y = k[2].yc - k[0].yc;
+    const Interval orientation = d2x * d3y - d2y * d3x;
+    const Interval spread = R[0] * distance[0] + R[1] * distance[1] + R[2] * distance[2] + R[0] * R[1] + R[1] * R[2] +
+                            R[2] * R[0];
+    const double least = orientation.lo > 0 ? orientation.lo : orientation.hi < 0 ? -orientation.hi : 0.0;
+    return spread.finite() && least > spread.hi;
+}
+
 namespace {
 
 // A point of x certainly outside y and z: then y and z do not cover x.
@@ -92,6 +112,11 @@ std::optional<Decision<VoronoiCircles>> count_circles(const Ellipse& e1, const E
     // site contains another.
     const Decision<VoronoiCircles> fast = circle_voronoi_circle_count_semi_static(e1, e2, e3);
     if (fast.is_decided()) return fast;
+    // Sites apart with one orientation: their kappa2 signs agree, 0 or 3 conflicts.
+    if (whether_both && bounding_disks_uniformly_oriented(e1, e2, e3)) {
+        *early = Decision<bool>::decided(false, Stage::filter);
+        return std::nullopt;
+    }
     const Decision<bool> separated = none_inside_another(e1, e2, e3);
     if (!*separated) return separated.with(VoronoiCircles::none);
     if (e1.is_circle() && e2.is_circle() && e3.is_circle())

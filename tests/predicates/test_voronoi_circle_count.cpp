@@ -138,6 +138,50 @@ TEST_CASE("has_both_voronoi_circles agrees with the count on random ellipse trip
     CHECK(early >= 100);
 }
 
+TEST_CASE("bounding disks of one orientation: the three kappa2 signs agree, and has_both says no by that filter",
+          "[predicates][voronoi_circle_count]") {
+    // Sites up to 20 across, centers within 60 of the origin: many triples
+    // near the filter's bound (its spread about its orientation).
+    Rng rng(20261130);
+    auto q = [&](long lo, long hi, long den) { return Rational(std::uniform_int_distribution<long>(lo, hi)(rng), den); };
+    int uniform = 0, mixed = 0, near_bound = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        std::vector<Ellipse> e;
+        for (int i = 0; i < 3; ++i)
+            e.emplace_back(q(5, 200, 20), q(5, 200, 20), q(-300, 300, 97), q(-600, 600, 10), q(-600, 600, 10));
+        if (!bounding_disks_uniformly_oriented(e[0], e[1], e[2])) {
+            ++mixed;
+            continue;
+        }
+        ++uniform;
+        INFO(oracle::ell({&e[0], &e[1], &e[2]}));
+        // Invariant under rotation and swaps of the triple.
+        CHECK(bounding_disks_uniformly_oriented(e[1], e[2], e[0]));
+        CHECK(bounding_disks_uniformly_oriented(e[0], e[2], e[1]));
+        const Sign first = *infinite_vertex_conflict(e[0], e[1], e[2]);
+        CHECK(first != Sign::zero);
+        CHECK(*infinite_vertex_conflict(e[1], e[2], e[0]) == first);
+        CHECK(*infinite_vertex_conflict(e[2], e[0], e[1]) == first);
+        const VoronoiCircles count = *voronoi_circle_count(e[0], e[1], e[2]);
+        CHECK((count == VoronoiCircles::ccw_only || count == VoronoiCircles::cw_only));
+        const Decision<bool> both = has_both_voronoi_circles(e[0], e[1], e[2]);
+        CHECK(!*both);
+        CHECK(both.stage == Stage::filter);
+        // Sites larger than a third of their mutual distances (where the
+        // bound's quadratic term counts).
+        double largest = 0, closest = HUGE_VAL;
+        for (int i = 0; i < 3; ++i) {
+            const Ellipse &a = e[i], &b = e[(i + 1) % 3];
+            largest = std::max({largest, a.a().to_double(), a.b().to_double()});
+            closest = std::min(closest, std::hypot(a.xc().to_double() - b.xc().to_double(), a.yc().to_double() - b.yc().to_double()));
+        }
+        near_bound += 3 * largest > closest;
+    }
+    CHECK(uniform >= 300);
+    CHECK(mixed >= 300);
+    CHECK(near_bound >= 30);
+}
+
 TEST_CASE("none_inside_another agrees with the pairs' relative positions, nested and crossing sites included",
           "[predicates][voronoi_circle_count]") {
     // Triples with a pair of nearby sites (nested, crossing or close): the
