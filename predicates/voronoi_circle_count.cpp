@@ -36,20 +36,25 @@ Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const E
 // R_i, is its value at the centers plus u1 x (c2 - c3) + u2 x (c3 - c1) + u3 x
 // (c1 - c2) + u1 x u2 + u2 x u3 + u3 x u1: within R1 |c2 - c3| + R2 |c3 - c1| +
 // R3 |c1 - c2| + R1 R2 + R2 R3 + R3 R1 of it (a bound symmetric in the three).
+// In doubles, about the centers' midpoints (their enclosures' widths added
+// to the radii): the orientation's rounding is Shewchuk's orient2d bound,
+// and the bound's, a sum of positive products and square roots, is below
+// 1e-14 of it.
 bool bounding_disks_uniformly_oriented(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
     const Ellipse::Enclosure k[3] = {e1.enclosure(), e2.enclosure(), e3.enclosure()};
-    Interval R[3], distance[3];  // distance[i] = |c_{i+1} - c_{i+2}|
+    double x[3], y[3], R[3];
     for (int i = 0; i < 3; ++i) {
-        const Ellipse::Enclosure &next = k[(i + 1) % 3], &after = k[(i + 2) % 3];
-        R[i] = Interval(std::fmax(k[i].a.hi, k[i].b.hi));
-        distance[i] = ((next.xc - after.xc).square() + (next.yc - after.yc).square()).sqrt();
+        x[i] = k[i].xc.mid(), y[i] = k[i].yc.mid();
+        R[i] = std::fmax(k[i].a.hi, k[i].b.hi) + (k[i].xc.hi - k[i].xc.lo) + (k[i].yc.hi - k[i].yc.lo);
     }
-    const Interval d2x = k[1].xc - k[0].xc, d2y = k[1].yc - k[0].yc, d3x = k[2].xc - k[0].xc, d3y = k[2].yc - k[0].yc;
-    const Interval orientation = d2x * d3y - d2y * d3x;
-    const Interval spread = R[0] * distance[0] + R[1] * distance[1] + R[2] * distance[2] + R[0] * R[1] + R[1] * R[2] +
-                            R[2] * R[0];
-    const double least = orientation.lo > 0 ? orientation.lo : orientation.hi < 0 ? -orientation.hi : 0.0;
-    return spread.finite() && least > spread.hi;
+    const double left = (x[1] - x[0]) * (y[2] - y[0]), right = (y[1] - y[0]) * (x[2] - x[0]);
+    const double orientation = std::fabs(left - right) - 3.3306690738754716e-16 * (std::fabs(left) + std::fabs(right));
+    double spread = R[0] * R[1] + R[1] * R[2] + R[2] * R[0];
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        spread += R[i] * std::sqrt((x[j] - x[l]) * (x[j] - x[l]) + (y[j] - y[l]) * (y[j] - y[l]));
+    }
+    return orientation > spread * (1 + 1e-14);  // false for NaN or infinity
 }
 
 namespace {
