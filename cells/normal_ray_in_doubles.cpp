@@ -631,6 +631,15 @@ double magnitude(const PrecisionBall& x) {
     return std::isnan(m) ? INFINITY : m;
 }
 
+// x widened by r (rounded up: the error is a Mag).
+void add_error(PrecisionBall& x, double r) {
+    Ball widened = x.ball();
+    Mag error;
+    mag_set_d(error.get(), r);
+    arb_add_error_mag(widened.get(), error.get());
+    x = PrecisionBall(widened, x.precision());
+}
+
 PrecisionBall midpoint(const PrecisionBall& x) {
     Ball m;
     arb_get_mid_arb(m.get(), x.ball().get());
@@ -669,10 +678,11 @@ bool NormalRayInDoubles::densities_in_balls(const Ball& theta_ball, long prec, N
     B sin_theta, cos_theta;
     sin_cos(theta, sin_theta, cos_theta);
     const Frame<B> bp(p, sin_theta, cos_theta);
+    B sin_phi, cos_phi;  // at the last point
+    Frame<B> bq;
     const auto residual = [&](const B& s, const B& phi, B (&F)[2]) {
-        B sin_phi, cos_phi;
         sin_cos(phi, sin_phi, cos_phi);
-        const Frame<B> bq(q, sin_phi, cos_phi, q_parts<B>(signed_));
+        bq = Frame<B>(q, sin_phi, cos_phi, q_parts<B>(signed_));
         Differences<B>(bp, bq, s).residual(bp, bq, s, signed_, F);
     };
     // Steps x <- x - C F(x) until the next one is below 2^(24 - prec) |x|
@@ -706,19 +716,18 @@ bool NormalRayInDoubles::densities_in_balls(const Ball& theta_ball, long prec, N
     const double delta[2] = {magnitude((diagonal[1] * c[0] + B(a[0][1]) * c[1]) / det),
                              magnitude((B(a[1][0]) * c[0] + diagonal[0] * c[1]) / det)};
     if (!std::isfinite(delta[0]) || !(delta[1] <= 1)) return false;
-    B root[2];
-    for (int i = 0; i < 2; ++i) {
-        Ball widened = x[i].ball();
-        Mag error;
-        mag_set_d(error.get(), delta[i]);
-        arb_add_error_mag(widened.get(), error.get());
-        root[i] = B(widened, prec);
+    // q's frame over phi +- delta_1 from the one at phi, as widened_q_frame's
+    // (sine and cosine move by at most delta_1).
+    if (signed_) {
+        add_error(sin_phi, delta[1]), add_error(cos_phi, delta[1]);
+        bq = Frame<B>(q, sin_phi, cos_phi);
+    } else {
+        for (B* part : {&bq.x, &bq.dx, &bq.ny}) add_error(*part, Interval::up(delta[1] * q_slack_[0]));
+        for (B* part : {&bq.y, &bq.dy, &bq.nx}) add_error(*part, Interval::up(delta[1] * q_slack_[1]));
     }
     // The densities from the root's ball, as node_values's.
-    B sin_phi, cos_phi;
-    sin_cos(root[1], sin_phi, cos_phi);
-    const Frame<B> bq(q, sin_phi, cos_phi, q_parts<B>(signed_));
-    const B& s = root[0];
+    B s = x[0];
+    add_error(s, delta[0]);
     const TieDerivatives<B> tie(bp, bq, s, Differences<B>(bp, bq, s), signed_);
     if (arb_contains_zero(tie.g_s.ball().get())) return false;
     const B ds = -(tie.g_theta / tie.g_s);
