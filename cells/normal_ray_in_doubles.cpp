@@ -606,23 +606,21 @@ std::optional<NormalRayInDoubles::Node> NormalRayInDoubles::certified(const Inte
 
 namespace {
 
-using PrecisionBall = FixedPrecisionBall;
-
 // A site's exact parameters as balls, under Frame's member names.
 struct BallSite {
-    PrecisionBall a, b, c, s, xc, yc;
+    FixedPrecisionBall a, b, c, s, xc, yc;
     BallSite(const SiteBalls& e, long prec)
         : a(e.a, prec), b(e.b, prec), c(e.cos, prec), s(e.sin, prec), xc(e.xc, prec), yc(e.yc, prec) {}
 };
 
-void sin_cos(const PrecisionBall& angle, PrecisionBall& sin, PrecisionBall& cos) {
+void sin_cos(const FixedPrecisionBall& angle, FixedPrecisionBall& sin, FixedPrecisionBall& cos) {
     Ball s, c;
     arb_sin_cos(s.get(), c.get(), angle.ball().get(), angle.precision());
-    sin = PrecisionBall(s, angle.precision()), cos = PrecisionBall(c, angle.precision());
+    sin = FixedPrecisionBall(s, angle.precision()), cos = FixedPrecisionBall(c, angle.precision());
 }
 
 // An upper bound of |x| (infinite for a ball that is not finite).
-double magnitude(const PrecisionBall& x) {
+double magnitude(const FixedPrecisionBall& x) {
     arf_t bound;
     arf_init(bound);
     arb_get_abs_ubound_arf(bound, x.ball().get(), MAG_BITS);
@@ -632,24 +630,24 @@ double magnitude(const PrecisionBall& x) {
 }
 
 // x widened by r (rounded up: the error is a Mag).
-void add_error(PrecisionBall& x, double r) {
+void add_error(FixedPrecisionBall& x, double r) {
     Ball widened = x.ball();
     Mag error;
     mag_set_d(error.get(), r);
     arb_add_error_mag(widened.get(), error.get());
-    x = PrecisionBall(widened, x.precision());
+    x = FixedPrecisionBall(widened, x.precision());
 }
 
-PrecisionBall midpoint(const PrecisionBall& x) {
+FixedPrecisionBall midpoint(const FixedPrecisionBall& x) {
     Ball m;
     arb_get_mid_arb(m.get(), x.ball().get());
-    return PrecisionBall(m, x.precision());
+    return FixedPrecisionBall(m, x.precision());
 }
 
 // sum_k coefficient(k) d^k, k = 0 .. kDiskDegree, by Horner.
 template <class Coefficient>
-PrecisionBall horner(const PrecisionBall& d, Coefficient&& coefficient) {
-    PrecisionBall sum = coefficient(NormalRayInDoubles::kDiskDegree);
+FixedPrecisionBall horner(const FixedPrecisionBall& d, Coefficient&& coefficient) {
+    FixedPrecisionBall sum = coefficient(NormalRayInDoubles::kDiskDegree);
     for (int k = NormalRayInDoubles::kDiskDegree - 1; k >= 0; --k) sum = sum * d + coefficient(k);
     return sum;
 }
@@ -662,7 +660,7 @@ PrecisionBall horner(const PrecisionBall& d, Coefficient&& coefficient) {
 // (each gains about what |I - C J| loses, 45 bits: one step from the root in
 // doubles to 114 bits, the precision at a tolerance of 1e-15).
 bool NormalRayInDoubles::densities_in_balls(const Ball& theta_ball, long prec, NormalRayBisector::Densities& out) {
-    using B = PrecisionBall;
+    using B = FixedPrecisionBall;
     if (!disk_) return false;
     const DiskProof& disk = *disk_;
     const B theta(theta_ball, prec), d = theta - B(disk.mid);
