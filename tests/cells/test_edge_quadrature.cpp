@@ -78,6 +78,23 @@ double facing_angle(const Ellipse& p, const Ellipse& q) {
     return std::atan2(ly * p.b().to_double(), lx * p.a().to_double());
 }
 
+// For each of `trials` random pairs (the signed tie on odd trials) whose
+// random disk certifies: body(trial, p, q, fast, arb, mid, R), `fast` a
+// NormalRayInDoubles holding the proof of the disk of radius R = 0.02 .. 0.05
+// about an angle mid within 0.4 of where p faces q, `arb` the pair's complex
+// solver.
+template <class Body>
+void for_each_certified_disk(std::mt19937_64& rng, int trials, Body&& body) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (int trial = 0; trial < trials; ++trial) {
+        const auto [p, q] = random_pair(rng);
+        NormalRayInDoubles fast(p, q, trial % 2);
+        NormalRayBisector arb(p, q, trial % 2);
+        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
+        if (fast.bounds_on_disk(mid, R, R)) body(trial, p, q, fast, arb, mid, R);
+    }
+}
+
 // One measure's density, for Arb's integrator.
 struct MeasureIntegrand {
     NormalRayBisector* bisector;
@@ -481,12 +498,9 @@ TEST_CASE("NormalRayInDoubles: nodes from a disk's proof hold Arb's densities, a
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> unit(-1, 1);
     int from_disks = 0, compared = 0;
-    for (int trial = 0; trial < 40; ++trial) {
-        const auto [p, q] = random_pair(rng);
-        NormalRayInDoubles fast(p, q, trial % 2), own(p, q, trial % 2);
-        NormalRayBisector arb(p, q, trial % 2);
-        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
-        if (!fast.bounds_on_disk(mid, R, R)) continue;
+    for_each_certified_disk(rng, 40, [&](int trial, const Ellipse& p, const Ellipse& q, NormalRayInDoubles& fast,
+                                         NormalRayBisector& arb, double mid, double R) {
+        NormalRayInDoubles own(p, q, trial % 2);
         for (int k = 0; k < 6; ++k) {
             const double theta = mid + R * unit(rng);
             const std::size_t before = fast.disk_nodes();
@@ -512,7 +526,7 @@ TEST_CASE("NormalRayInDoubles: nodes from a disk's proof hold Arb's densities, a
         const std::size_t before = fast.disk_nodes();
         REQUIRE(fast.densities(Interval(mid + 1.5 * R)));
         CHECK(fast.disk_nodes() == before);
-    }
+    });
     CHECK(compared >= 120);
     CHECK(from_disks == compared);
 }
@@ -526,12 +540,8 @@ TEST_CASE("NormalRayInDoubles: nodes in balls from a disk's proof hold Arb's den
     std::mt19937_64 rng(19);
     std::uniform_real_distribution<double> unit(-1, 1);
     int compared = 0;
-    for (int trial = 0; trial < 40; ++trial) {
-        const auto [p, q] = random_pair(rng);
-        NormalRayInDoubles fast(p, q, trial % 2);
-        NormalRayBisector arb(p, q, trial % 2);
-        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
-        if (!fast.bounds_on_disk(mid, R, R)) continue;
+    for_each_certified_disk(rng, 40, [&](int trial, const Ellipse& p, const Ellipse& q, NormalRayInDoubles& fast,
+                                         NormalRayBisector& arb, double mid, double R) {
         for (int k = 0; k < 6; ++k) {
             const long prec = k % 2 ? 114 : 200;
             Ball theta, offset;
@@ -559,7 +569,7 @@ TEST_CASE("NormalRayInDoubles: nodes in balls from a disk's proof hold Arb's den
         arb_set_d(off.get(), mid + 1.5 * R);
         NormalRayBisector::Densities d;
         CHECK(!fast.densities_in_balls(off, 114, d));
-    }
+    });
     CHECK(compared >= 120);
 }
 
@@ -571,12 +581,8 @@ TEST_CASE("NormalRayInDoubles: a disk's proof encloses the root from any point o
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<double> unit(-1, 1);
     int proofs = 0, far_proofs = 0;
-    for (int trial = 0; trial < 40; ++trial) {
-        const auto [p, q] = random_pair(rng);
-        NormalRayInDoubles fast(p, q, trial % 2);
-        NormalRayBisector arb(p, q, trial % 2);
-        const double mid = facing_angle(p, q) + 0.4 * unit(rng), R = 0.02 + 0.03 * std::fabs(unit(rng));
-        if (!fast.bounds_on_disk(mid, R, R)) continue;
+    for_each_certified_disk(rng, 40, [&](int trial, const Ellipse& p, const Ellipse& q, NormalRayInDoubles& fast,
+                                         NormalRayBisector& arb, double mid, double R) {
         const EllipseShape ps = EllipseShape::of(p), qs = EllipseShape::of(q);
         for (int k = 0; k < 8; ++k) {
             const double theta = mid + R * unit(rng);
@@ -608,7 +614,7 @@ TEST_CASE("NormalRayInDoubles: a disk's proof encloses the root from any point o
         // Off the disk: nothing.
         const double x[2] = {1, 0};
         CHECK(!fast.root_from_disk(Interval(mid + 1.5 * R), x));
-    }
+    });
     INFO("proofs " << proofs << ", from points 1e-5 or farther " << far_proofs);
     CHECK(proofs >= 600);
     CHECK(far_proofs >= 100);

@@ -130,6 +130,19 @@ Ellipse random_site(Rng& rng, long half_box, long max_axis_tenths, long min_axis
                    random_fraction(rng, -half_box * den_center, half_box * den_center, den_center));
 }
 
+// Three random sites (random_site, box 15, axes to 4) with their bounding
+// circles apart.
+std::vector<Ellipse> random_triple_apart(Rng& rng) {
+    std::vector<Ellipse> e;
+    while (e.size() < 3) {
+        Ellipse s = random_site(rng, 15, 40);
+        bool apart = true;
+        for (const Ellipse& o : e) apart = apart && bounding_circles_apart(o, s);
+        if (apart) e.push_back(s);
+    }
+    return e;
+}
+
 }  // namespace
 
 TEST_CASE("doubles vs Arb: 10^4 random triples, certified or handed over, never contradicting",
@@ -137,13 +150,7 @@ TEST_CASE("doubles vs Arb: 10^4 random triples, certified or handed over, never 
     Rng rng(20261124);
     Tally tally;
     while (tally.triples < 10000) {
-        std::vector<Ellipse> e;
-        while (e.size() < 3) {
-            Ellipse s = random_site(rng, 15, 40);
-            bool apart = true;
-            for (const Ellipse& o : e) apart = apart && bounding_circles_apart(o, s);
-            if (apart) e.push_back(s);
-        }
+        const std::vector<Ellipse> e = random_triple_apart(rng);
         compare_with_arb(e[0], e[1], e[2], tally);
     }
     if (verbose())
@@ -169,13 +176,7 @@ TEST_CASE("doubles: the certificate by distances about points off the root holds
     std::uniform_real_distribution<double> exponent(0, 1), sign(-1, 1);
     int attempts = 0, certified = 0;
     while (attempts < 2000) {
-        std::vector<Ellipse> e;
-        while (e.size() < 3) {
-            Ellipse s = random_site(rng, 15, 40);
-            bool apart = true;
-            for (const Ellipse& o : e) apart = apart && bounding_circles_apart(o, s);
-            if (apart) e.push_back(s);
-        }
+        const std::vector<Ellipse> e = random_triple_apart(rng);
         const std::optional<DoubleVoronoiCircle> d = certify_voronoi_circle_in_doubles(e[0], e[1], e[2]);
         if (!d || !d->by_distances) continue;
         VoronoiCircleSolver arb(e[0], e[1], e[2]);

@@ -20,11 +20,7 @@ namespace {
 
 constexpr long kExact = 2000;
 
-Ball exact(double x) {
-    Ball b;
-    arb_set_d(b.get(), x);
-    return b;
-}
+Ball exact(double x) { return Ball(Rational::of_double(x), kExact); }
 
 }  // namespace
 
