@@ -621,12 +621,9 @@ void sin_cos(const FixedPrecisionBall& angle, FixedPrecisionBall& sin, FixedPrec
 
 // An upper bound of |x| (infinite for a ball that is not finite).
 double magnitude(const FixedPrecisionBall& x) {
-    arf_t bound;
-    arf_init(bound);
-    arb_get_abs_ubound_arf(bound, x.ball().get(), MAG_BITS);
-    const double m = arf_get_d(bound, ARF_RND_UP);
-    arf_clear(bound);
-    return std::isnan(m) ? INFINITY : m;
+    Mag bound;
+    arb_get_mag(bound.get(), x.ball().get());
+    return mag_get_d(bound.get());  // rounded up
 }
 
 // x widened by r (rounded up: the error is a Mag).
