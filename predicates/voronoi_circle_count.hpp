@@ -29,8 +29,9 @@ Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& 
 Decision<bool> has_both_voronoi_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 // Whether every triple of points x_i of the sites' bounding disks (center,
-// the larger semi-axis) has one orientation, in double intervals (a bound
-// symmetric in the three: the answer does not depend on their order). Then the
+// the larger semi-axis) has one orientation, in doubles with a bound of their
+// rounding (a bound symmetric in the three: the answer does not depend on
+// their order). Then the
 // line through a point of one site and a point of the next has the third
 // strictly on one side, the same side for the three cyclic rotations: the
 // three kappa2 signs agree (their lines touch two of the sites), 0 or 3
