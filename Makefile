@@ -73,6 +73,7 @@ $(BUILD)/obj/%.o: %.cpp | $(DEPS_STAMP)
 # objects: the flags are measured in experiments/results/ellipse_speed.md.
 ROUNDING_MATH     := -frounding-math -ffp-contract=off -DELLVOR_ROUNDING_MATH
 ROUNDING_MATH_OBJ := $(BUILD)/obj/subdivision/voronoi_circle_in_doubles.o $(BUILD)/obj/cells/normal_ray_in_doubles.o \
+                     $(BUILD)/obj/subdivision/voronoi_circle_by_bounding_disks.o \
                      $(BUILD)/obj/tests/util/test_upward_interval.o $(BUILD)/obj/tests/util/test_upward_ball.o
 $(ROUNDING_MATH_OBJ): CXXFLAGS += $(ROUNDING_MATH)
 

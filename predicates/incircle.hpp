@@ -32,9 +32,11 @@ int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interva
 
 // The cascade: for four circles, a closed-form filter in double intervals
 // (circle_incircle_filter.hpp), then the closed form exactly in Q(sqrt D)
-// (circle_predicates.hpp). Otherwise the filter is the circle certified in
-// double intervals (voronoi_circle_in_doubles.hpp) and the distance d(V, Q)
-// in double intervals. When that does not decide: the existence of the
+// (circle_predicates.hpp). Otherwise the filters are the circle bounded by
+// the sites' inscribed and circumscribed disks
+// (voronoi_circle_by_bounding_disks.hpp), then the circle certified in
+// double intervals (voronoi_circle_in_doubles.hpp), each with the distance
+// d(V, Q) in double intervals. When that does not decide: the existence of the
 // counter-clockwise circle (certified by the doubles, or from three kappa2
 // signs); then the Arb enclosure of the circle (center V, radius rho) and
 // first the symmetry stage: two sites of the triple are mirror images

@@ -32,31 +32,6 @@ Decision<bool> none_inside_another(const Ellipse& e1, const Ellipse& e2, const E
     return separated;
 }
 
-// The orientation x1 x x2 + x2 x x3 + x3 x x1 at x_i = c_i + u_i, |u_i| <=
-// R_i, is its value at the centers plus u1 x (c2 - c3) + u2 x (c3 - c1) + u3 x
-// (c1 - c2) + u1 x u2 + u2 x u3 + u3 x u1: within R1 |c2 - c3| + R2 |c3 - c1| +
-// R3 |c1 - c2| + R1 R2 + R2 R3 + R3 R1 of it (a bound symmetric in the three).
-// In doubles, about the centers' midpoints (their enclosures' widths added
-// to the radii): the orientation's rounding is Shewchuk's orient2d bound,
-// and the bound's, a sum of positive products and square roots, is below
-// 1e-14 of it.
-bool bounding_disks_uniformly_oriented(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-    const Ellipse::Enclosure k[3] = {e1.enclosure(), e2.enclosure(), e3.enclosure()};
-    double x[3], y[3], R[3];
-    for (int i = 0; i < 3; ++i) {
-        x[i] = k[i].xc.mid(), y[i] = k[i].yc.mid();
-        R[i] = std::fmax(k[i].a.hi, k[i].b.hi) + (k[i].xc.hi - k[i].xc.lo) + (k[i].yc.hi - k[i].yc.lo);
-    }
-    const double left = (x[1] - x[0]) * (y[2] - y[0]), right = (y[1] - y[0]) * (x[2] - x[0]);
-    const double orientation = std::fabs(left - right) - 3.3306690738754716e-16 * (std::fabs(left) + std::fabs(right));
-    double spread = R[0] * R[1] + R[1] * R[2] + R[2] * R[0];
-    for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3, l = (i + 2) % 3;
-        spread += R[i] * std::sqrt((x[j] - x[l]) * (x[j] - x[l]) + (y[j] - y[l]) * (y[j] - y[l]));
-    }
-    return orientation > spread * (1 + 1e-14);  // false for NaN or infinity
-}
-
 namespace {
 
 // A point of x certainly outside y and z: then y and z do not cover x.

@@ -8,6 +8,7 @@
 #include "decision/stage.hpp"
 #include "decision/predicate_answers.hpp"
 #include "sites/ellipse.hpp"
+#include "subdivision/voronoi_circle_by_bounding_disks.hpp"
 
 namespace ellvor {
 
@@ -27,17 +28,6 @@ Decision<VoronoiCircles> voronoi_circle_count(const Ellipse& e1, const Ellipse& 
 // kappa2 signs without a conflict, already exclude it (for small sites
 // apart, the three signs mostly agree). Same stages.
 Decision<bool> has_both_voronoi_circles(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
-
-// Whether every triple of points x_i of the sites' bounding disks (center,
-// the larger semi-axis) has one orientation, in doubles with a bound of their
-// rounding (a bound symmetric in the three: the answer does not depend on
-// their order). Then the
-// line through a point of one site and a point of the next has the third
-// strictly on one side, the same side for the three cyclic rotations: the
-// three kappa2 signs agree (their lines touch two of the sites), 0 or 3
-// conflicts, never `both` (has_both_voronoi_circles' first filter). The
-// disks are then pairwise apart.
-bool bounding_disks_uniformly_oriented(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3);
 
 // Whether no site of the three lies inside another (the premise of a Voronoi
 // circle; a nested pair has none): every pair separated, externally tangent,

@@ -163,7 +163,9 @@ TEST_CASE("bounding disks of one orientation: the three kappa2 signs agree, and 
         CHECK(*infinite_vertex_conflict(e[1], e[2], e[0]) == first);
         CHECK(*infinite_vertex_conflict(e[2], e[0], e[1]) == first);
         const VoronoiCircles count = *voronoi_circle_count(e[0], e[1], e[2]);
-        CHECK((count == VoronoiCircles::ccw_only || count == VoronoiCircles::cw_only));
+        // Exactly one circle, whose tangency points have the disks' orientation.
+        CHECK(count == (bounding_disks_orientation(e[0], e[1], e[2]) > 0 ? VoronoiCircles::ccw_only
+                                                                          : VoronoiCircles::cw_only));
         const Decision<bool> both = has_both_voronoi_circles(e[0], e[1], e[2]);
         CHECK(!*both);
         CHECK(both.stage == Stage::filter);
