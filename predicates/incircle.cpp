@@ -168,11 +168,13 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
         own = std::make_unique<VoronoiCircle>(e1, e2, e3, common_medial_axis_tangency);
         circle = own.get();
     }
-    // The double-interval stage: a certified circle also proves that it exists.
+    // The circle bounded by the sites' bounding disks: no certificate to
+    // make for sites small against their distances.
     if (options.use_filter)
         if (const std::optional<CircleBounds> bounds = circle->bounds_from_disks())
             if (const int s = filtered_distance_minus_radius(bounds->center_x, bounds->center_y, bounds->radius, q))
                 return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : InCircle::no_conflict, Stage::filter);
+    // The double-interval stage: a certified circle also proves that it exists.
     const DoubleVoronoiCircle* in_doubles = options.use_filter ? circle->in_doubles() : nullptr;
     if (in_doubles) {
         const int s = filtered_distance_minus_radius(in_doubles->center_x, in_doubles->center_y, in_doubles->radius, q);
