@@ -10,6 +10,7 @@
 #include "subdivision/nearest_point.hpp"
 #include "predicates/voronoi_circle_count.hpp"
 #include "subdivision/point_ellipse_distance.hpp"
+#include "subdivision/voronoi_circle_by_bounding_disks.hpp"
 #include "util/error.hpp"
 #include "util/precision.hpp"
 #include "exact/medial_axis_tangency.hpp"
@@ -155,6 +156,14 @@ int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interva
     return 0;
 }
 
+Decision<InCircle> incircle_by_bounding_disks(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                              const Ellipse& q) {
+    if (const std::optional<CircleBounds> bounds = voronoi_circle_by_bounding_disks(e1, e2, e3))
+        if (const int s = filtered_distance_minus_radius(bounds->center_x, bounds->center_y, bounds->radius, q))
+            return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : InCircle::no_conflict, Stage::filter);
+    return Decision<InCircle>::undecided(Stage::filter, 0);
+}
+
 Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3, const Ellipse& q,
                             const InCircleOptions& options, VoronoiCircle* circle) {
     if (options.use_filter) {
@@ -163,17 +172,15 @@ Decision<InCircle> incircle(const Ellipse& e1, const Ellipse& e2, const Ellipse&
     }
     if (options.use_circle_closed_form && e1.is_circle() && e2.is_circle() && e3.is_circle() && q.is_circle())
         return circle_incircle_exactly(e1, e2, e3, q);
+    if (options.use_filter && options.use_bounding_disks) {
+        const Decision<InCircle> by_disks = incircle_by_bounding_disks(e1, e2, e3, q);
+        if (by_disks.is_decided()) return by_disks;
+    }
     std::unique_ptr<VoronoiCircle> own;
     if (!circle) {
         own = std::make_unique<VoronoiCircle>(e1, e2, e3, common_medial_axis_tangency);
         circle = own.get();
     }
-    // The circle bounded by the sites' bounding disks: no certificate to
-    // make for sites small against their distances.
-    if (options.use_filter)
-        if (const std::optional<CircleBounds> bounds = circle->bounds_from_disks())
-            if (const int s = filtered_distance_minus_radius(bounds->center_x, bounds->center_y, bounds->radius, q))
-                return Decision<InCircle>::decided(s < 0 ? InCircle::conflict : InCircle::no_conflict, Stage::filter);
     // The double-interval stage: a certified circle also proves that it exists.
     const DoubleVoronoiCircle* in_doubles = options.use_filter ? circle->in_doubles() : nullptr;
     if (in_doubles) {

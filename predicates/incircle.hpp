@@ -17,6 +17,8 @@ struct InCircleOptions {
     bool use_filter = true;        // false: skip the double-interval filters
     bool use_circle_closed_form = true;  // false: four circles take the general path (tests compare the two)
     bool use_symmetry = true;  // false: skip the symmetry stage (tests that reach the exact stage on symmetric sites)
+    // false: skip incircle_by_bounding_disks (a caller that asked it first).
+    bool use_bounding_disks = true;
 };
 
 // delta(V, Q) - rho with double intervals (incircle's filter; also the tiled
@@ -29,6 +31,15 @@ struct InCircleOptions {
 // circle (rho < 0) inside Q is left to the Arb stage, which measures the
 // depth.
 int filtered_distance_minus_radius(Interval center_x, Interval center_y, Interval radius, const Ellipse& q);
+
+// The circle bounded by the sites' bounding disks
+// (voronoi_circle_by_bounding_disks.hpp) against Q, with
+// filtered_distance_minus_radius: conflict or no conflict at Stage::filter,
+// else undecided. InCircle's first stage on ellipses; a cache of circles
+// asks it before it looks a face's circle up (most questions of a random
+// build end here, and their faces' circles are never made).
+Decision<InCircle> incircle_by_bounding_disks(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3,
+                                              const Ellipse& q);
 
 // The cascade: for four circles, a closed-form filter in double intervals
 // (circle_incircle_filter.hpp), then the closed form exactly in Q(sqrt D)

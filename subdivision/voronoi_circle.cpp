@@ -2,18 +2,6 @@
 
 namespace ellvor {
 
-std::optional<CircleBounds> VoronoiCircle::bounds_from_disks() {
-    if (doubles_tried_ != Tried::not_yet) return std::nullopt;
-    if (disks_tried_ == Disks::not_yet) {
-        const std::optional<CircleBounds> bounds = voronoi_circle_by_bounding_disks(*sites_[0], *sites_[1], *sites_[2]);
-        disks_tried_ = bounds ? Disks::bounded : Disks::unbounded;
-        if (bounds) doubles_.center_x = bounds->center_x, doubles_.center_y = bounds->center_y, doubles_.radius = bounds->radius;
-        return bounds;
-    }
-    if (disks_tried_ != Disks::bounded) return std::nullopt;
-    return CircleBounds{doubles_.center_x, doubles_.center_y, doubles_.radius};
-}
-
 const DoubleVoronoiCircle* VoronoiCircle::in_doubles() {
     if (doubles_tried_ == Tried::not_yet) {
         std::optional<StalledDoubleRoot> stalled;

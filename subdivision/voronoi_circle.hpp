@@ -7,7 +7,6 @@
 #pragma once
 
 #include "sites/ellipse.hpp"
-#include "subdivision/voronoi_circle_by_bounding_disks.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
 #include "subdivision/voronoi_circle_in_doubles.hpp"
 
@@ -24,11 +23,6 @@ public:
                   CommonAxisTangency common_axis_tangency = nullptr)
         : sites_{&e1, &e2, &e3}, common_axis_tangency_(common_axis_tangency) {}
 
-    // The center and radius enclosed by the sites' bounding disks
-    // (voronoi_circle_by_bounding_disks.hpp), computed on the first call;
-    // nullopt when they prove nothing, and once in_doubles() has been asked
-    // (whose enclosure is narrower and takes the same place).
-    std::optional<CircleBounds> bounds_from_disks();
     // The certified double enclosure, computed on the first call; nullptr
     // when the doubles could not certify it (which proves nothing: the
     // solver decides).
@@ -49,10 +43,6 @@ private:
     std::array<const Ellipse*, 3> sites_;
     enum class Tried : unsigned char { not_yet, certified, stalled, failed };
     Tried doubles_tried_ = Tried::not_yet;
-    // The disks' bounds live in doubles_'s center and radius until the
-    // doubles are tried (a cache keeps one circle a face: no room to spare).
-    enum class Disks : unsigned char { not_yet, bounded, unbounded };
-    Disks disks_tried_ = Disks::not_yet;
     DoubleVoronoiCircle doubles_;  // certified: the enclosure; stalled: the root's point intervals
     std::unique_ptr<VoronoiCircleSolver> solver_;
     CommonAxisTangency common_axis_tangency_ = nullptr;

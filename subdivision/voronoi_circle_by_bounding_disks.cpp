@@ -2,6 +2,7 @@
 
 #include "util/upward_ball.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ellvor {
@@ -15,11 +16,12 @@ namespace ellvor {
 // and the bound's, a sum of positive products and square roots, is below
 // 1e-14 of it.
 int bounding_disks_orientation(const Ellipse& e1, const Ellipse& e2, const Ellipse& e3) {
-    const Ellipse::Enclosure k[3] = {e1.enclosure(), e2.enclosure(), e3.enclosure()};
+    const Ellipse* sites[3] = {&e1, &e2, &e3};
     double x[3], y[3], R[3];
     for (int i = 0; i < 3; ++i) {
-        x[i] = k[i].xc.mid(), y[i] = k[i].yc.mid();
-        R[i] = std::fmax(k[i].a.hi, k[i].b.hi) + (k[i].xc.hi - k[i].xc.lo) + (k[i].yc.hi - k[i].yc.lo);
+        const Ellipse::Enclosure k = sites[i]->enclosure();  // the fields read here only
+        x[i] = k.xc.mid(), y[i] = k.yc.mid();
+        R[i] = std::max(k.a.hi, k.b.hi) + (k.xc.hi - k.xc.lo) + (k.yc.hi - k.yc.lo);
     }
     const double left = (x[1] - x[0]) * (y[2] - y[0]), right = (y[1] - y[0]) * (x[2] - x[0]);
     const double orientation = std::fabs(left - right) - 3.3306690738754716e-16 * (std::fabs(left) + std::fabs(right));

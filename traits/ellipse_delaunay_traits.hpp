@@ -56,9 +56,10 @@ public:
     }
 
     // The cached Voronoi circle of the face (i, j, k) (the same circle for
-    // every rotation), nullptr if no predicate has asked about it. After a
-    // build most faces have one, certified: readers of the faces' circles
-    // need not certify them again.
+    // every rotation), nullptr if no predicate has asked about it: after a
+    // build, the faces whose questions the bounding disks left open
+    // (incircle_by_bounding_disks), certified; readers need not certify
+    // those again.
     VoronoiCircle* cached_circle(SiteId i, SiteId j, SiteId k) {
         VoronoiCircleCache::Entry* e = cache_.find(i, j, k);
         return e ? &e->circle : nullptr;

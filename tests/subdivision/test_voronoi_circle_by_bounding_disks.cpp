@@ -7,6 +7,7 @@
 #include "subdivision/voronoi_circle.hpp"
 #include "subdivision/voronoi_circle_by_bounding_disks.hpp"
 #include "subdivision/voronoi_circle_enclosure.hpp"
+#include "traits/ellipse_delaunay_traits.hpp"
 #include "tests/support/apollonius_oracle.hpp"
 #include "tests/support/diagnostics.hpp"
 #include "tests/support/random_sites.hpp"
@@ -109,9 +110,9 @@ TEST_CASE("bounding disks: the counter-clockwise circle lies in the Apollonius c
 
 TEST_CASE("InCircle decided by the bounding disks' circle agrees with the Arb stage alone",
           "[predicates][incircle][voronoi_circle_by_bounding_disks]") {
-    // A query decided by the disks leaves the face's circle uncertified
-    // (bounds_from_disks() still there: in_doubles() was never asked); one
-    // they leave open goes on to the certified double circle.
+    // Each answer of incircle_by_bounding_disks is InCircle's answer and the
+    // Arb stage's; a cache of circles asked through the traits makes no
+    // entry for such a question, and one for a question the disks leave open.
     Rng rng(20261201);
     int by_disks = 0, beyond = 0;
     for (int trial = 0; trial < 3000; ++trial) {
@@ -120,23 +121,27 @@ TEST_CASE("InCircle decided by the bounding disks' circle agrees with the Arb st
         Ellipse q = random_site(rng, 10, 15);
         if (!bounding_circles_apart(q, e[0]) || !bounding_circles_apart(q, e[1]) || !bounding_circles_apart(q, e[2]))
             continue;
-        INFO(apollonius::ell({&e[0], &e[1], &e[2], &q}));
-        VoronoiCircle circle(e[0], e[1], e[2]);
-        const Decision<InCircle> got = incircle(e[0], e[1], e[2], q, {}, &circle);
         const VoronoiCircles count = *voronoi_circle_count(e[0], e[1], e[2]);
         if (count != VoronoiCircles::ccw_only && count != VoronoiCircles::both) continue;
-        REQUIRE(got.is_decided());
+        INFO(apollonius::ell({&e[0], &e[1], &e[2], &q}));
+        const Decision<InCircle> disks = incircle_by_bounding_disks(e[0], e[1], e[2], q);
+        const Decision<InCircle> got = incircle(e[0], e[1], e[2], q);
         InCircleOptions arb;
         arb.use_filter = false;
         const Decision<InCircle> by_arb = incircle(e[0], e[1], e[2], q, arb);
+        REQUIRE(got.is_decided());
         CHECK(by_arb.stage != Stage::filter);
         CHECK(*by_arb == *got);
-        if (circle.bounds_from_disks()) {
+        EllipseDelaunayTraits traits({e[0], e[1], e[2], q});
+        CHECK(traits.incircle(0, 1, 2, 3) == incircle_sign(*got));
+        if (disks.is_decided()) {
             ++by_disks;
-            CHECK(got.stage == Stage::filter);
-            CHECK(!circle.has_solver());
+            CHECK(disks.stage == Stage::filter);
+            CHECK(*disks == *got);
+            CHECK(traits.cached_circles() == 0);
         } else {
             ++beyond;
+            CHECK(traits.cached_circles() == 1);
         }
     }
     if (verbose()) std::printf("[bounding disks] InCircle: %d decided by the disks, %d beyond\n", by_disks, beyond);
