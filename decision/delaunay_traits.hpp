@@ -54,6 +54,11 @@ public:
     };
     virtual std::optional<WeightBounds> weight_bounds(SiteId i) const { return std::nullopt; }
     virtual LocationHint location_hint(SiteId i) const = 0;
+    // Only for speed, like location_hint: the graph is about to ask about
+    // site i (a walk step's neighbours, asked for all of them before the
+    // first question, so that their cache misses overlap). No answer
+    // depends on it.
+    virtual void prefetch(SiteId i) const {}
 
     // Called by a graph before its first insertion: a model may check here, at
     // once, every pair of sites it would reject later (throwing

@@ -29,6 +29,9 @@ public:
     std::optional<WeightBounds> weight_bounds(SiteId i) const override;
     // The center.
     LocationHint location_hint(SiteId i) const override;
+    // The site's exact parameters and enclosures, one pointer away from
+    // the site array.
+    void prefetch(SiteId i) const override { sites_[i].prefetch(); }
 
     // Every pair whose circumscribed disks may meet (sites/meeting_pair_candidates.hpp),
     // two circles aside (always acceptable): its relative position, memoized, and
