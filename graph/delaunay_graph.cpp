@@ -290,8 +290,7 @@ VertexIndex DelaunayGraph::nearest_vertex(SiteId p) {
     if (!tds_.is_vertex(v) || v == Triangulation::kInfiniteVertex) v = tds_.finite_vertices().front();
     for (bool moved = true; moved;) {
         tds_.any_incident_face(v, [&](FaceIndex f) {
-            const VertexIndex w = tds_.face(f).v[ccw(tds_.index(f, v))];
-            if (w != Triangulation::kInfiniteVertex) traits_->prefetch(site_of(w));
+            predicates().prefetch(tds_.face(f).v[ccw(tds_.index(f, v))]);
             return false;
         });
         VertexIndex next;

@@ -24,6 +24,10 @@ public:
     TriangulationPredicates(const Triangulation& tds, DelaunayTraits& traits) : tds_(tds), traits_(traits) {}
 
     SiteId site(VertexIndex v) const { return tds_.vertex(v).site(); }
+    // DelaunayTraits::prefetch of v's site (nothing for the infinite vertex).
+    void prefetch(VertexIndex v) const {
+        if (v != Triangulation::kInfiniteVertex) traits_.prefetch(site(v));
+    }
     // Site p hides site q (the traits' is_hidden).
     bool is_hidden(SiteId p, SiteId q) { return traits_.is_hidden(p, q); }
     bool crosses(SiteId p, SiteId q) { return traits_.crosses(p, q); }
