@@ -38,7 +38,8 @@ namespace {
 
 // The enclosure itself, in midpoint-radius balls under the upward rounding
 // mode (util/upward_ball.hpp: straight-line operations, where intervals
-// branch on signs; a third of their instructions).
+// branch on signs; written first in util/interval.hpp's intervals, the
+// function took 149 M instructions of a 10^4-site build, in balls 85 M).
 ELLVOR_UPWARD_ROUNDING_FUNCTION std::optional<CircleBounds> apollonius_bounds(const Ellipse& e1, const Ellipse& e2,
                                                                               const Ellipse& e3) {
     const UpwardRoundingScope upward;

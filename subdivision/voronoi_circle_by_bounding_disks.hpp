@@ -1,8 +1,9 @@
 // The Voronoi circle of an ordered triple (E1, E2, E3) bounded from the
-// sites' inscribed and circumscribed disks alone, in double intervals: the
-// cheapest enclosure of its center and radius (docs/DESIGN.md §3), which
-// decides most of InCircle's questions on sites small against their
-// distances before any circle is certified (VoronoiCircle::bounds_from_disks).
+// sites' inscribed and circumscribed disks alone, in doubles with proven
+// bounds: the cheapest enclosure of its center and radius (docs/DESIGN.md
+// §3), which decides most of InCircle's questions on sites small against
+// their distances before any circle is certified
+// (predicates/incircle.hpp, incircle_by_bounding_disks).
 #pragma once
 
 #include "sites/ellipse.hpp"
